@@ -1,0 +1,49 @@
+"""Errors raised by moik.
+
+Every error is a :class:`MoikError`; the subclasses say which kind of input was
+wrong. Messages name the bad value, what was expected and, for unknown names,
+the valid names.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+
+class MoikError(Exception):
+    """Base class of every error raised by moik for bad input or state."""
+
+
+class ShapeError(MoikError, ValueError):
+    """An array has the wrong shape."""
+
+
+class NonFiniteError(MoikError, ValueError):
+    """An array holds NaN or infinite values where finite ones are required."""
+
+
+class LimitsError(MoikError, ValueError):
+    """Joint or variable limits are inconsistent (lower > upper, wrong length)."""
+
+
+class UnknownNameError(MoikError, LookupError):
+    """A robot, algorithm, metric or convention name is not known."""
+
+    def __init__(self, kind: str, name: object, valid: Iterable[str]):
+        self.kind = kind
+        self.name = name
+        self.valid = sorted(valid)
+        super().__init__(
+            f"unknown {kind} {name!r}; expected one of: {', '.join(self.valid)}"
+        )
+
+    def __str__(self) -> str:  # LookupError would otherwise quote the message
+        return self.args[0]
+
+
+class ParameterError(MoikError, ValueError):
+    """A hyperparameter or option is outside its valid range."""
+
+
+class TargetError(MoikError, ValueError):
+    """A target pose or position is malformed or in the wrong unit range."""

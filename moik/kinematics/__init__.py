@@ -1,0 +1,1 @@
+"""Kinematics helpers: orientation conventions and metrics, Jacobians."""

@@ -1,0 +1,215 @@
+"""Every robot arm used by the four papers, by name.
+
+Each entry cites the paper and table its DH rows come from, and the public
+source used where the paper's text is ambiguous (lost minus signs).
+
+Papers (``shared/papers``):
+
+* EOSMA: Yin et al., "Multi-objective inverse kinematics optimization of 7-DOF
+  manipulators using EOSMA/MOEOSMA", Sci. Rep. 2022 (Table 1).
+* MO-m-PSO: Rokbani et al., "Multi-objective modified PSO for inverse kinematics
+  of a 5-DOF robotic arm", Appl. Sci. 12, 7091 (2022) (Table 1).
+* I-BES: improved bald eagle search for manipulator IK, 2024 (Tables 2-7).
+* MChOA: multi-strategy chimp optimisation for the ABB IRB-2600 (Table 1).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+
+from moik.exceptions import UnknownNameError
+from moik.robots.chain import Robot
+
+PI = np.pi
+DEG = PI / 180.0
+
+
+def _ibes_limits(types: tuple[str, ...]) -> tuple[np.ndarray, np.ndarray]:
+    """I-BES Section 5.1.1: revolute [-pi, pi], prismatic [0, 1.0] m."""
+    prismatic = np.array([t == "prismatic" for t in types])
+    return np.where(prismatic, 0.0, -PI), np.where(prismatic, 1.0, PI)
+
+
+def _ibes(name: str, rows, source: str, types: tuple[str, ...] | None = None) -> Robot:
+    """Build an I-BES arm from rows ``(theta_offset, d, a, alpha)`` in metres."""
+    rows = np.asarray(rows, dtype=float)
+    types = types or ("revolute",) * len(rows)
+    lower, upper = _ibes_limits(types)
+    return Robot(
+        name=name,
+        theta=rows[:, 0],
+        d=rows[:, 1],
+        a=rows[:, 2],
+        alpha=rows[:, 3],
+        lower=lower,
+        upper=upper,
+        joint_types=types,
+        unit="m",
+        source=source,
+    )
+
+
+def eosma7() -> Robot:
+    """7-DOF arm of the EOSMA paper, Table 1 (standard DH, cm).
+
+    The table prints lengths as l1 = 0.5 ... "(m)", but the paper's own FK check
+    (Simulation section: (45, 0, 45, 0, 45, 0, 0) deg -> (-24.748737,
+    100.961941, 50.0)) and every target are in cm, so lengths are 50, 20, ... cm.
+    """
+    return Robot(
+        name="eosma7",
+        a=[0.0, 20.0, 25.0, 30.0, 20.0, 20.0, 10.0],
+        alpha=[-PI / 2, PI / 2, -PI / 2, PI / 2, -PI / 2, 0.0, 0.0],
+        d=[50.0, 0.0, 0.0, 0.0, 0.0, 0.0, 5.0],
+        theta=np.zeros(7),
+        lower=np.array([-PI, -PI / 2, -PI / 2, -PI / 2, -PI / 2, -PI / 2, -PI / 6]),
+        upper=np.array([PI, PI / 6, 2 * PI / 3, PI / 2, PI / 2, PI / 2, PI / 2]),
+        unit="cm",
+        source="EOSMA paper (Yin et al. 2022, Sci. Rep.), Table 1; lengths in cm",
+    )
+
+
+def rokbani5() -> Robot:
+    """3D-printed 5-DOF educational arm of the MO-m-PSO paper, Table 1 (cm).
+
+    alpha1 = alpha3 = alpha4 = +90 deg as printed; the fourth row is printed
+    "5" but is joint 4. Limits [0, 180], [0, 170], [0, 135], [0, 180], [0, 180] deg.
+    """
+    return Robot(
+        name="rokbani5",
+        a=[1.374, 12.0, 0.0, 0.0, 9.887],
+        alpha=[PI / 2, 0.0, PI / 2, PI / 2, 0.0],
+        d=[0.0, 0.0, 0.0, 11.965, 0.0],
+        theta=np.zeros(5),
+        lower=np.zeros(5),
+        upper=np.array([180.0, 170.0, 135.0, 180.0, 180.0]) * DEG,
+        unit="cm",
+        source="MO-m-PSO paper (Rokbani et al. 2022, Appl. Sci. 12:7091), Table 1",
+    )
+
+
+def planar2() -> Robot:
+    """I-BES Table 2: 2-DOF planar arm, a = 0.35, 0.30 m."""
+    return _ibes("planar2", [(0, 0, 0.35, 0), (0, 0, 0.30, 0)], "I-BES paper (2024), Table 2")
+
+
+def anthropomorphic3() -> Robot:
+    """I-BES Table 3: 3-DOF anthropomorphic arm (alpha1 = +pi/2 as printed)."""
+    return _ibes(
+        "anthropomorphic3",
+        [(0, 0.35, 0, PI / 2), (0, 0, 0.30, 0), (0, 0, 0.25, 0)],
+        "I-BES paper (2024), Table 3",
+    )
+
+
+def scara4() -> Robot:
+    """I-BES Table 4: SCARA, joint 3 prismatic (rows as in reference-facts.md)."""
+    return _ibes(
+        "scara4",
+        [(0, 0.8, 0.15, 0), (0, 0, 0.40, PI), (0, 0, 0, 0), (0, 0.2, 0, 0)],
+        "I-BES paper (2024), Table 4",
+        types=("revolute", "revolute", "prismatic", "revolute"),
+    )
+
+
+def youbot5() -> Robot:
+    """I-BES Table 5: KUKA youBot arm; twist signs from ARTE's youBot model."""
+    return _ibes(
+        "youbot5",
+        [
+            (0, 0.147, 0.033, PI / 2),
+            (0, 0, 0.155, 0),
+            (0, 0, 0.135, 0),
+            (0, 0, 0, -PI / 2),
+            (0, 0.218, 0, 0),
+        ],
+        "I-BES paper (2024), Table 5; alpha signs (+pi/2, -pi/2) from ARTE "
+        "(A. Gil, robots/KUKA/YouBot/parameters.m)",
+    )
+
+
+def puma560() -> Robot:
+    """I-BES Table 6: Puma 560; twist signs from Corke's standard-DH Puma 560."""
+    return _ibes(
+        "puma560",
+        [
+            (0, 0, 0, PI / 2),
+            (0, 0, 0.431, 0),
+            (0, 0.150, 0.020, -PI / 2),
+            (0, 0.432, 0, PI / 2),
+            (0, 0, 0, -PI / 2),
+            (0, 0, 0, 0),
+        ],
+        "I-BES paper (2024), Table 6; alpha signs from Corke, Robotics Toolbox "
+        "mdl_puma560 (pi/2, 0, -pi/2, pi/2, -pi/2, 0)",
+    )
+
+
+def sawyer7() -> Robot:
+    """I-BES Table 7: Rethink Sawyer; twist signs from Corke's DH Sawyer model."""
+    return _ibes(
+        "sawyer7",
+        [
+            (0, 0.3170, 0.081, -PI / 2),
+            (0, 0.1925, 0, -PI / 2),
+            (0, 0.4000, 0, -PI / 2),
+            (0, 0.1685, 0, -PI / 2),
+            (0, 0.4000, 0, -PI / 2),
+            (0, 0.1363, 0, -PI / 2),
+            (0, 0.1338, 0, 0),
+        ],
+        "I-BES paper (2024), Table 7; alpha signs (-pi/2 x6, 0) from Corke, "
+        "roboticstoolbox-python models/DH/Sawyer.py (after Layeghi 2017)",
+    )
+
+
+def irb2600() -> Robot:
+    """ABB IRB-2600-12/1.65 of the MChOA paper, Table 1: modified DH, mm.
+
+    Joint 2 carries the printed offset theta2 + 90 deg; limits in degrees
+    [-180, 180], [-95, 150], [-180, 75], [-400, 400], [-120, 120], [-400, 400].
+    """
+    return Robot(
+        name="irb2600",
+        a=[0.0, 150.0, -700.0, -115.0, 0.0, 0.0],
+        alpha=np.array([0.0, -90.0, 0.0, 90.0, -90.0, 90.0]) * DEG,
+        d=[445.0, 0.0, 0.0, 795.0, 0.0, 85.0],
+        theta=np.array([0.0, 90.0, 0.0, 0.0, 0.0, 0.0]) * DEG,
+        lower=np.array([-180.0, -95.0, -180.0, -400.0, -120.0, -400.0]) * DEG,
+        upper=np.array([180.0, 150.0, 75.0, 400.0, 120.0, 400.0]) * DEG,
+        convention="modified",
+        unit="mm",
+        source="MChOA paper (IRB-2600-12/1.65), Table 1, modified DH",
+    )
+
+
+_CATALOG: dict[str, Callable[[], Robot]] = {
+    "eosma7": eosma7,
+    "rokbani5": rokbani5,
+    "planar2": planar2,
+    "anthropomorphic3": anthropomorphic3,
+    "scara4": scara4,
+    "youbot5": youbot5,
+    "puma560": puma560,
+    "sawyer7": sawyer7,
+    "irb2600": irb2600,
+}
+
+
+def available_robots() -> list[str]:
+    """Names accepted by :func:`get_robot`."""
+    return list(_CATALOG)
+
+
+def get_robot(name: str) -> Robot:
+    """The catalog robot called ``name``.
+
+    Raises:
+        UnknownNameError: listing the valid names.
+    """
+    try:
+        return _CATALOG[name]()
+    except (KeyError, TypeError):
+        raise UnknownNameError("robot", name, _CATALOG) from None

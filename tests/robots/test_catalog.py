@@ -1,0 +1,47 @@
+"""The robot catalog: names, errors, and the papers' targets being reachable."""
+
+import numpy as np
+import pytest
+from scipy.optimize import least_squares
+
+from moik.exceptions import MoikError, UnknownNameError
+from moik.robots import available_robots, get_robot
+
+EXPECTED = {"eosma7": (7, "cm"), "rokbani5": (5, "cm"), "planar2": (2, "m"),
+            "anthropomorphic3": (3, "m"), "scara4": (4, "m"), "youbot5": (5, "m"),
+            "puma560": (6, "m"), "sawyer7": (7, "m"), "irb2600": (6, "mm")}
+
+
+def test_catalog_names_dof_units():
+    assert set(available_robots()) == set(EXPECTED)
+    for name, (dof, unit) in EXPECTED.items():
+        robot = get_robot(name)
+        assert (robot.dof, robot.unit) == (dof, unit)
+
+
+def test_unknown_robot_lists_valid_names():
+    with pytest.raises(UnknownNameError, match=r"unknown robot 'ur5'; expected one of: .*eosma7"):
+        get_robot("ur5")
+    with pytest.raises(MoikError):
+        get_robot(None)
+
+
+# I-BES paper Section 5.1.1: desired positions (m) of the six simulated arms.
+IBES_TARGETS = {"planar2": (0.35, 0.35, 0.0), "anthropomorphic3": (0.30, 0.20, 0.35),
+                "scara4": (0.40, 0.20, 0.10), "youbot5": (0.40, 0.20, 0.10),
+                "puma560": (0.40, 0.20, 0.50), "sawyer7": (0.80, 0.20, 0.60)}
+
+
+@pytest.mark.parametrize("name", list(IBES_TARGETS))
+def test_ibes_targets_reachable(name):
+    """With the sign choices documented in the catalog, each I-BES target is reachable."""
+    robot = get_robot(name)
+    p = np.array(IBES_TARGETS[name])
+    rng = np.random.default_rng(0)
+    best = np.inf
+    for _ in range(10):
+        res = least_squares(lambda q: robot.fk_position(q[None])[0] - p,
+                            robot.random_q(1, rng=rng)[0], bounds=(robot.lower, robot.upper),
+                            xtol=1e-15, ftol=1e-15, gtol=1e-15)
+        best = min(best, np.linalg.norm(res.fun))
+    assert best < 1e-8

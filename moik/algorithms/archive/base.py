@@ -1,0 +1,243 @@
+"""Shared mechanics of the external archives: validation, Pareto filter, merge.
+
+An external archive keeps the non-dominated solutions found so far as two
+arrays, ``X`` (m, n_var) and ``F`` (m, n_obj). Every archive merges new
+solutions the same way (EOSMA paper, Yin et al. 2022, Sci. Rep. 12, 9421,
+https://doi.org/10.1038/s41598-022-13516-3, archive steps (1)-(2) before
+Eq. 19):
+
+1. stack the current members and the new solutions (members first);
+2. keep the solutions no other solution dominates, with ordinary Pareto
+   dominance (Eq. 11): ``a`` dominates ``b`` when ``a <= b`` in every objective
+   and ``a < b`` in at least one;
+3. drop exact duplicate objective rows, keeping the first occurrence (so a
+   member already in the archive keeps its ``X``).
+
+What differs between archives is only how an overfull archive is truncated and
+how leaders are drawn; subclasses implement ``_truncate`` and ``leaders``.
+
+Pairwise dominance is vectorized as (m, m) comparisons, one per objective. For two
+objectives a sort-based O(m log m) test gives the same mask; it is used
+automatically because the archive update runs every generation.
+"""
+
+from __future__ import annotations
+
+import abc
+
+import numpy as np
+
+from moik.exceptions import NonFiniteError, ParameterError, ShapeError
+
+
+def as_finite_2d(name: str, value: object, n_cols: int | None = None) -> np.ndarray:
+    """Return ``value`` as a finite float array of shape (rows, n_cols).
+
+    Args:
+        name: Name used in error messages (``"X"``, ``"F"``).
+        value: Array-like input.
+        n_cols: Required number of columns, or ``None`` for any positive number.
+
+    Raises:
+        ShapeError: If the array is not 2-D or has the wrong number of columns.
+        NonFiniteError: If it holds NaN or infinite values.
+    """
+    arr = np.asarray(value, dtype=float)
+    if arr.ndim != 2:
+        raise ShapeError(f"{name} must be a 2-D array (rows, columns); got shape {arr.shape}")
+    if n_cols is not None and arr.shape[1] != n_cols:
+        raise ShapeError(f"{name} must have {n_cols} columns; got shape {arr.shape}")
+    if arr.shape[1] == 0:
+        raise ShapeError(f"{name} must have at least one column; got shape {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        bad = np.argwhere(~np.isfinite(arr))[0]
+        raise NonFiniteError(
+            f"{name} must hold finite values only; got {arr[tuple(bad)]} at row {bad[0]}, "
+            f"column {bad[1]}"
+        )
+    return arr
+
+
+def check_count(name: str, value: object, minimum: int) -> int:
+    """Return ``value`` as an int, checking it is an integer >= ``minimum``.
+
+    Raises:
+        ParameterError: If ``value`` is not an integer or is below ``minimum``.
+    """
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+        raise ParameterError(f"{name} must be an integer >= {minimum}; got {value!r}")
+    if value < minimum:
+        raise ParameterError(f"{name} must be an integer >= {minimum}; got {value}")
+    return int(value)
+
+
+def check_positive(name: str, value: object, *, allow_zero: bool = False) -> float:
+    """Return ``value`` as a float, checking it is finite and > 0 (or >= 0).
+
+    Raises:
+        ParameterError: If ``value`` is not a finite real number in range.
+    """
+    bound = ">= 0" if allow_zero else "> 0"
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+        raise ParameterError(f"{name} must be a finite number {bound}; got {value!r}")
+    if not np.isfinite(value) or value < 0 or (value == 0 and not allow_zero):
+        raise ParameterError(f"{name} must be a finite number {bound}; got {value}")
+    return float(value)
+
+
+def nondominated_mask(F: np.ndarray) -> np.ndarray:
+    """Mask of the rows of ``F`` that no other row dominates (Eq. 11, minimization).
+
+    Exact duplicates do not dominate each other, so all copies of a
+    non-dominated row are kept; see :func:`first_unique_mask`.
+
+    Args:
+        F: Objective values, shape (m, n_obj).
+
+    Returns:
+        Boolean array of shape (m,).
+    """
+    if F.shape[0] <= 1:
+        return np.ones(F.shape[0], dtype=bool)
+    if F.shape[1] == 2:
+        return _nondominated_mask_2d(F)
+    m = F.shape[0]
+    leq = np.ones((m, m), dtype=bool)  # leq[j, i]: F_j <= F_i in every objective
+    lt = np.zeros((m, m), dtype=bool)  # lt[j, i]: F_j < F_i in some objective
+    for k in range(F.shape[1]):  # loop over objectives only
+        col = F[:, k]
+        leq &= col[:, None] <= col[None, :]
+        lt |= col[:, None] < col[None, :]
+    return ~np.any(leq & lt, axis=0)
+
+
+def _nondominated_mask_2d(F: np.ndarray) -> np.ndarray:
+    """Two-objective :func:`nondominated_mask` by lexicographic sort, O(m log m).
+
+    After sorting by (f1, f2), row i is dominated exactly when a row with a
+    smaller f1 has f2 <= f2_i, or a row with the same f1 has f2 < f2_i.
+    """
+    order = np.lexsort((F[:, 1], F[:, 0]))
+    f1, f2 = F[order, 0], F[order, 1]
+    new_group = np.empty(f1.size, dtype=bool)
+    new_group[0] = True
+    new_group[1:] = f1[1:] != f1[:-1]
+    group = np.cumsum(new_group) - 1
+    group_min = f2[new_group]  # the first row of a group has its smallest f2
+    before = np.empty_like(group_min)
+    before[0] = np.inf
+    before[1:] = np.minimum.accumulate(group_min)[:-1]
+    dominated = (before[group] <= f2) | (group_min[group] < f2)
+    mask = np.empty(f1.size, dtype=bool)
+    mask[order] = ~dominated
+    return mask
+
+
+def first_unique_mask(F: np.ndarray) -> np.ndarray:
+    """Mask keeping the first occurrence of every distinct row of ``F``.
+
+    Rows compare with ``==`` (so ``-0.0`` equals ``0.0``).
+    """
+    m = F.shape[0]
+    if m <= 1:
+        return np.ones(m, dtype=bool)
+    order = np.lexsort(F.T[::-1])  # stable: equal rows stay in index order
+    Fs = F[order]
+    repeat = np.zeros(m, dtype=bool)
+    repeat[1:] = np.all(Fs[1:] == Fs[:-1], axis=1)
+    mask = np.empty(m, dtype=bool)
+    mask[order] = ~repeat
+    return mask
+
+
+def roulette(weights: np.ndarray, size: int, rng: np.random.Generator) -> np.ndarray:
+    """Draw ``size`` indices with probability proportional to ``weights``.
+
+    With replacement; ``weights`` must be non-negative with a positive sum.
+    """
+    cdf = np.cumsum(weights)
+    return np.searchsorted(cdf, rng.random(size) * cdf[-1], side="right").clip(max=weights.size - 1)
+
+
+class ArchiveBase(abc.ABC):
+    """Array-based external archive of non-dominated solutions.
+
+    Attributes:
+        capacity: Maximum number of members after :meth:`add`.
+        X: Decision vectors of the members, shape (m, n_var), read-only.
+        F: Objective values of the members, shape (m, n_obj), read-only.
+    """
+
+    def __init__(self, capacity: int):
+        self.capacity = check_count("capacity", capacity, 1)
+        self._X = np.empty((0, 0))
+        self._F = np.empty((0, 0))
+        self._freeze()
+
+    @property
+    def X(self) -> np.ndarray:
+        """Decision vectors of the members, shape (m, n_var)."""
+        return self._X
+
+    @property
+    def F(self) -> np.ndarray:
+        """Objective values of the members, shape (m, n_obj)."""
+        return self._F
+
+    def __len__(self) -> int:
+        return self._F.shape[0]
+
+    def add(self, X: object, F: object, *, rng: np.random.Generator) -> None:
+        """Merge new solutions into the archive and truncate it to ``capacity``.
+
+        Args:
+            X: Decision vectors, shape (k, n_var).
+            F: Their objective values (minimized), shape (k, n_obj).
+            rng: Random generator used for truncation (roulette removal).
+
+        Raises:
+            ShapeError: If the shapes disagree with each other or with the
+                members already stored.
+            NonFiniteError: If ``X`` or ``F`` hold NaN or infinite values.
+        """
+        empty = len(self) == 0 and self._X.shape[1] == 0
+        X = as_finite_2d("X", X, None if empty else self._X.shape[1])
+        F = as_finite_2d("F", F, None if empty else self._F.shape[1])
+        if X.shape[0] != F.shape[0]:
+            raise ShapeError(
+                f"X and F must have the same number of rows; got X {X.shape} and F {F.shape}"
+            )
+        X_all = np.concatenate([self._X, X]) if not empty else X.copy()
+        F_all = np.concatenate([self._F, F]) if not empty else F.copy()
+        keep = nondominated_mask(F_all)
+        X_all, F_all = X_all[keep], F_all[keep]
+        keep = first_unique_mask(F_all)
+        self._X, self._F = X_all[keep], F_all[keep]
+        self._update(rng)
+        self._freeze()
+
+    @abc.abstractmethod
+    def _update(self, rng: np.random.Generator) -> None:
+        """Truncate ``_X``/``_F`` to capacity and refresh derived state."""
+
+    @abc.abstractmethod
+    def leaders(self, k: int, *, rng: np.random.Generator) -> np.ndarray:
+        """Indices (k,) of members drawn as leaders (with replacement)."""
+
+    def _remove(self, drop: np.ndarray) -> None:
+        keep = np.ones(len(self), dtype=bool)
+        keep[drop] = False
+        self._X, self._F = self._X[keep], self._F[keep]
+
+    def _check_leaders(self, k: object) -> int:
+        k = check_count("k", k, 0)
+        if len(self) == 0:
+            raise ShapeError("the archive is empty (0 members); add solutions before leaders()")
+        return k
+
+    def _freeze(self) -> None:
+        self._X.flags.writeable = False
+        self._F.flags.writeable = False
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}(capacity={self.capacity}, members={len(self)})"

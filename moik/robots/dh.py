@@ -66,7 +66,8 @@ def joint_rotations(Q: np.ndarray, theta: np.ndarray) -> np.ndarray:
     return (1.0 - it) / (1.0 + it)
 
 
-def run_steps(steps: tuple, Q: np.ndarray, theta: np.ndarray, joint_ends: tuple = ()):
+def run_steps(steps: tuple, Q: np.ndarray, theta: np.ndarray, joint_ends: tuple = (),
+              axes: list | None = None):
     """Apply compiled motions to a batch of joint vectors ``Q (n, dof)``.
 
     Args:
@@ -75,6 +76,8 @@ def run_steps(steps: tuple, Q: np.ndarray, theta: np.ndarray, joint_ends: tuple 
         theta: Joint angle offsets, added to revolute joint values.
         joint_ends: If given, the state after each of these step indices is
             recorded (for per-joint frames).
+        axes: If a list is given, ``(z, origin)`` of each joint's motion axis in
+            the base frame is appended to it, in joint order (for Jacobians).
 
     Returns:
         ``(xy, z, p, frames)``: x + i*y rotation columns (complex ``(3, n)``),
@@ -96,6 +99,8 @@ def run_steps(steps: tuple, Q: np.ndarray, theta: np.ndarray, joint_ends: tuple 
         kind = step[0]
         if kind == "rz":
             xy *= rot[step[1]]
+            if axes is not None:
+                axes.append((z.copy(), p_xy.real + p_z))
         elif kind == "tx":
             np.multiply(xy, step[1], out=tmp_c)
             p_xy += tmp_c
@@ -120,6 +125,8 @@ def run_steps(steps: tuple, Q: np.ndarray, theta: np.ndarray, joint_ends: tuple 
                 xy.imag = ca * y + sa * z
                 z = ca * z - sa * y
         elif kind == "tz_var":
+            if axes is not None:
+                axes.append((z.copy(), p_xy.real + p_z))
             p_z += (Q[:, step[1]] + step[2]) * z
         else:  # rz_fixed
             xy *= step[1]

@@ -1,0 +1,1 @@
+"""Single-objective algorithms, one module each."""

@@ -1,0 +1,98 @@
+"""Algorithm registry: ``get_algorithm(name, **params)`` and ``available()``.
+
+moik's own algorithms validate their hyperparameters in ``__init__`` (a bad value
+raises :class:`~moik.exceptions.ParameterError` with the valid range). pymoo's
+``de`` and ``ga`` are registered as they are, for comparisons; for every entry an
+unknown keyword raises ``ParameterError`` naming the accepted ones (pymoo's
+classes would otherwise swallow it through ``**kwargs``).
+
+Later issues add entries with :func:`register`, either as
+``register("name", cls)`` or as a class decorator ``@register("name")``.
+"""
+
+from __future__ import annotations
+
+import inspect
+from collections.abc import Callable
+
+from pymoo.algorithms.soo.nonconvex.de import DE
+from pymoo.algorithms.soo.nonconvex.ga import GA
+from pymoo.core.algorithm import Algorithm
+
+from moik.algorithms.soo.eo import EO
+from moik.algorithms.soo.eosma import EOSMA
+from moik.algorithms.soo.mpso import MPSO
+from moik.algorithms.soo.pso import PSO
+from moik.algorithms.soo.sma import SMA
+from moik.exceptions import ParameterError, UnknownNameError
+
+_REGISTRY: dict[str, type[Algorithm]] = {
+    "eosma": EOSMA,
+    "sma": SMA,
+    "eo": EO,
+    "m-pso": MPSO,
+    "pso": PSO,
+    "de": DE,
+    "ga": GA,
+}
+
+
+def register(name: str, cls: type[Algorithm] | None = None) -> Callable | type[Algorithm]:
+    """Register ``cls`` under ``name`` (lower case); usable as a class decorator.
+
+    Raises:
+        ParameterError: If ``name`` is already taken by another class.
+    """
+
+    def add(klass: type[Algorithm]) -> type[Algorithm]:
+        key = name.lower()
+        if key in _REGISTRY and _REGISTRY[key] is not klass:
+            raise ParameterError(f"algorithm name {key!r} is already registered "
+                                 f"to {_REGISTRY[key].__name__}")
+        _REGISTRY[key] = klass
+        return klass
+
+    return add if cls is None else add(cls)
+
+
+def available() -> list[str]:
+    """Names accepted by :func:`get_algorithm`, sorted."""
+    return sorted(_REGISTRY)
+
+
+def accepted_parameters(name: str) -> list[str]:
+    """Keyword names ``get_algorithm(name, ...)`` accepts (class and pymoo options)."""
+    cls = _lookup(name)
+    names: set[str] = set()
+    for klass in (cls, Algorithm):
+        for p in inspect.signature(klass.__init__).parameters.values():
+            if p.kind in (p.KEYWORD_ONLY, p.POSITIONAL_OR_KEYWORD) and p.name != "self":
+                names.add(p.name)
+    return sorted(names)
+
+
+def get_algorithm(name: str, **params) -> Algorithm:
+    """Build the algorithm registered as ``name`` with hyperparameters ``params``.
+
+    Raises:
+        UnknownNameError: If ``name`` is not registered (lists the valid names).
+        ParameterError: For an unknown keyword or a value outside its range.
+    """
+    cls = _lookup(name)
+    valid = accepted_parameters(name)
+    unknown = sorted(set(params) - set(valid))
+    if unknown:
+        raise ParameterError(f"unknown parameter(s) {', '.join(unknown)} for algorithm "
+                             f"{name!r}; accepted: {', '.join(valid)}")
+    pop_size = params.get("pop_size", 1)
+    if cls in (DE, GA) and (isinstance(pop_size, bool) or not isinstance(pop_size, int)
+                            or pop_size < 1):
+        raise ParameterError(f"pop_size must be a positive integer, got {pop_size!r}")
+    return cls(**params)
+
+
+def _lookup(name: str) -> type[Algorithm]:
+    key = name.lower() if isinstance(name, str) else name
+    if key not in _REGISTRY:
+        raise UnknownNameError("algorithm", name, _REGISTRY)
+    return _REGISTRY[key]

@@ -31,7 +31,7 @@ def pose_and_jacobian(robot: Robot, q) -> tuple[np.ndarray, np.ndarray]:
     single = Q.ndim == 1
     Q2 = Q[None] if single else Q
     axes: list = []
-    xy, z, p, _ = run_steps(robot._steps, Q2, robot.theta, axes=axes)
+    xy, z, p, _ = run_steps(robot._steps, Q2, robot._offsets, axes=axes)
     zs = np.stack([a[0] for a in axes], axis=-1)  # (3, n, dof)
     origins = np.stack([a[1] for a in axes], axis=-1)
     prismatic = robot.is_prismatic

@@ -20,6 +20,12 @@ import numpy as np
 from moik.exceptions import LimitsError, NonFiniteError, ParameterError, ShapeError
 from moik.robots import dh
 from moik.robots.dh import assemble, compile_steps, run_steps
+from moik.robots.transforms import (
+    compile_general,
+    dh_to_origins,
+    fk_general_reference,
+    lock_joints,
+)
 
 Convention = Literal["standard", "modified"]
 UNITS = ("m", "cm", "mm")
@@ -33,9 +39,14 @@ def _as_vector(name: str, values, dof: int) -> np.ndarray:
     return arr
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class Robot:
-    """A serial chain of revolute/prismatic joints given by DH rows.
+    """A serial chain of revolute/prismatic joints.
+
+    Given either by DH rows (``a``, ``alpha``, ``d``, ``theta``) or, for URDF
+    chains and chains with locked joints, by ``origins``: the constant
+    transforms ``F_0 .. F_n`` of ``F_0 M_1(q_1) F_1 ... M_n(q_n) F_n`` where
+    ``M_j`` is ``Rz(q_j)`` or ``Tz(q_j)`` (see :mod:`moik.robots.transforms`).
 
     Args:
         name: Short name (catalog key).
@@ -44,36 +55,49 @@ class Robot:
         d: Link offsets; for a prismatic joint the constant part added to q.
         theta: Joint angle offsets in radians (e.g. ``pi/2`` for "theta2 + 90
             deg"); for a prismatic joint the fixed joint angle.
+        origins: ``(dof + 1, 4, 4)`` fixed transforms, instead of DH rows.
         lower: Lower joint limits (rad for revolute, ``unit`` for prismatic).
         upper: Upper joint limits.
         joint_types: ``"revolute"`` or ``"prismatic"`` per joint; default all revolute.
         convention: ``"standard"`` or ``"modified"`` (Craig) DH.
-        unit: Length unit of a, d and of FK positions: "m", "cm" or "mm".
-        source: Where the parameters come from (paper + table).
+        unit: Length unit of lengths and of FK positions: "m", "cm" or "mm".
+        source: Where the parameters come from (paper + table, or file).
     """
 
     name: str
-    a: np.ndarray
-    alpha: np.ndarray
-    d: np.ndarray
-    theta: np.ndarray
     lower: np.ndarray
     upper: np.ndarray
+    a: np.ndarray | None = None
+    alpha: np.ndarray | None = None
+    d: np.ndarray | None = None
+    theta: np.ndarray | None = None
+    origins: np.ndarray | None = None
     joint_types: tuple[str, ...] = ()
     convention: Convention = "standard"
     unit: str = "m"
     source: str = ""
     _steps: tuple = field(init=False, repr=False)
     _joint_ends: tuple = field(init=False, repr=False)
+    _offsets: np.ndarray = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
-        a = np.asarray(self.a, dtype=float)
-        if a.ndim != 1 or a.size == 0:
-            raise ShapeError(f"DH column a must be a non-empty 1-D array, got shape {a.shape}")
-        dof = a.size
-        cols = {"a": a}
-        for key in ("alpha", "d", "theta", "lower", "upper"):
+        lower = np.asarray(self.lower, dtype=float)
+        if lower.ndim != 1 or lower.size == 0:
+            raise ShapeError(f"lower limits must be a non-empty 1-D array, got {lower.shape}")
+        dof = lower.size
+        dh_given = [k for k in ("a", "alpha", "d", "theta") if getattr(self, k) is not None]
+        if self.origins is None and len(dh_given) != 4:
+            raise ParameterError("a robot needs DH rows (a, alpha, d, theta) or origins")
+        if self.origins is not None and dh_given:
+            raise ParameterError(f"give DH rows or origins, not both (got origins and {dh_given})")
+        cols = {"lower": lower, "upper": _as_vector("upper", self.upper, dof)}
+        for key in dh_given:
             cols[key] = _as_vector(key, getattr(self, key), dof)
+        if self.origins is not None:
+            origins = np.asarray(self.origins, dtype=float)
+            if origins.shape != (dof + 1, 4, 4):
+                raise ShapeError(f"origins must have shape ({dof + 1}, 4, 4), got {origins.shape}")
+            cols["origins"] = origins
         for key, arr in cols.items():
             if not np.all(np.isfinite(arr)):
                 raise NonFiniteError(f"robot {self.name!r}: {key} must be finite, got {arr}")
@@ -97,22 +121,28 @@ class Robot:
                 f"robot {self.name!r}: lower limit > upper limit for joint(s) "
                 f"{(bad + 1).tolist()} (lower={cols['lower'][bad]}, upper={cols['upper'][bad]})"
             )
-        steps, ends = compile_steps(
-            cols["a"],
-            cols["alpha"],
-            cols["d"],
-            cols["theta"],
-            [t == "prismatic" for t in types],
-            self.convention,
-        )
+        prismatic = [t == "prismatic" for t in types]
+        if self.origins is None:
+            steps, ends = compile_steps(self.a, self.alpha, self.d, self.theta, prismatic,
+                                        self.convention)
+            offsets = self.theta
+        else:
+            steps, ends = compile_general(self.origins, prismatic)
+            offsets = np.zeros(dof)
         object.__setattr__(self, "_steps", steps)
         object.__setattr__(self, "_joint_ends", ends)
+        object.__setattr__(self, "_offsets", offsets)
 
     # ------------------------------------------------------------------ properties
     @property
     def dof(self) -> int:
         """Number of joints."""
-        return self.a.size
+        return self.lower.size
+
+    @property
+    def is_dh(self) -> bool:
+        """Whether the robot is given by DH rows (else by origins)."""
+        return self.origins is None
 
     @property
     def is_prismatic(self) -> np.ndarray:
@@ -127,12 +157,35 @@ class Robot:
     @property
     def reach(self) -> float:
         """Upper bound on the distance from the base to the end effector."""
-        d_max = np.where(
-            self.is_prismatic,
-            np.maximum(abs(self.d + self.lower), abs(self.d + self.upper)),
-            abs(self.d),
-        )
-        return float(np.sum(np.abs(self.a)) + np.sum(d_max))
+        stroke = np.where(self.is_prismatic, np.maximum(abs(self.lower), abs(self.upper)), 0.0)
+        links = np.linalg.norm(self.chain_origins()[:, :3, 3], axis=1)
+        return float(np.sum(links) + np.sum(stroke))
+
+    def chain_origins(self) -> np.ndarray:
+        """The fixed transforms ``F_0 .. F_n`` (converted from DH if needed)."""
+        if self.origins is not None:
+            return np.array(self.origins)
+        return dh_to_origins(self.a, self.alpha, self.d, self.theta, self.is_prismatic,
+                             self.convention)
+
+    def with_locked_joints(self, locked: dict[int, float]) -> Robot:
+        """The robot with joints ``{index: value}`` fixed (0-based indices).
+
+        Example: the I-BES Table 9 Puma 560 position problem is
+        ``get_robot("puma560").with_locked_joints({3: 0.0, 4: 0.0, 5: 0.0})``.
+        """
+        bad = [j for j in locked if not (isinstance(j, int | np.integer) and 0 <= j < self.dof)]
+        if bad:
+            raise ParameterError(f"locked joint indices must be in 0..{self.dof - 1}, got {bad}")
+        if len(locked) >= self.dof:
+            raise ParameterError("at least one joint must stay free")
+        origins, free = lock_joints(self.chain_origins(), self.is_prismatic,
+                                    {int(j): float(v) for j, v in locked.items()})
+        desc = ", ".join(f"q{j + 1}={v:g}" for j, v in sorted(locked.items()))
+        return Robot(name=f"{self.name}[{desc}]", origins=origins, lower=self.lower[free],
+                     upper=self.upper[free],
+                     joint_types=tuple(self.joint_types[j] for j in free), unit=self.unit,
+                     source=f"{self.source}; joints locked: {desc}")
 
     # ------------------------------------------------------------------ FK
     def check_q(self, q, name: str = "q") -> np.ndarray:
@@ -158,7 +211,7 @@ class Robot:
         Cheaper than :meth:`fk` when the homogeneous matrix is not needed.
         ``q`` must be 2-D ``(n, dof)``; no validation (hot path).
         """
-        xy, z, p, _ = run_steps(self._steps, q, self.theta)
+        xy, z, p, _ = run_steps(self._steps, q, self._offsets)
         R = np.empty((q.shape[0], 3, 3))
         R[:, :, 0] = xy.real.T
         R[:, :, 1] = xy.imag.T
@@ -167,7 +220,7 @@ class Robot:
 
     def fk_position(self, q) -> np.ndarray:
         """End-effector positions ``(n, 3)`` of a 2-D batch (hot path, no validation)."""
-        return run_steps(self._steps, q, self.theta)[2].T
+        return run_steps(self._steps, q, self._offsets)[2].T
 
     def fk(self, q) -> np.ndarray:
         """End-effector pose(s).
@@ -181,7 +234,7 @@ class Robot:
         Q = self.check_q(q)
         single = Q.ndim == 1
         Q2 = Q[None] if single else Q
-        T = assemble(*run_steps(self._steps, Q2, self.theta)[:3])
+        T = assemble(*run_steps(self._steps, Q2, self._offsets)[:3])
         return T[0] if single else T
 
     def frames(self, q) -> np.ndarray:
@@ -196,7 +249,7 @@ class Robot:
         Q2 = Q[None] if single else Q
         out = np.empty((Q2.shape[0], self.dof + 1, 4, 4))
         out[:, 0] = np.eye(4)
-        states = run_steps(self._steps, Q2, self.theta, self._joint_ends)[3]
+        states = run_steps(self._steps, Q2, self._offsets, self._joint_ends)[3]
         for j, state in enumerate(states):
             out[:, j + 1] = assemble(*state)
         return out[0] if single else out
@@ -211,19 +264,17 @@ class Robot:
         return np.all((self.lower - tol <= Q) & (self.upper + tol >= Q), axis=1)
 
     def __repr__(self) -> str:
-        return f"Robot({self.name!r}, dof={self.dof}, {self.convention} DH, unit={self.unit!r})"
+        kind = f"{self.convention} DH" if self.is_dh else "general chain"
+        return f"Robot({self.name!r}, dof={self.dof}, {kind}, unit={self.unit!r})"
 
 
 def fk_reference(robot: Robot, q) -> np.ndarray:
     """FK of ``robot`` by the straightforward per-joint 4x4 product (tests, benchmarks)."""
     Q = robot.check_q(q)
-    T = dh.fk_reference(
-        robot.a,
-        robot.alpha,
-        robot.d,
-        robot.theta,
-        robot.is_prismatic,
-        robot.convention,
-        np.atleast_2d(Q),
-    )
+    Q2 = np.atleast_2d(Q)
+    if robot.is_dh:
+        T = dh.fk_reference(robot.a, robot.alpha, robot.d, robot.theta, robot.is_prismatic,
+                            robot.convention, Q2)
+    else:
+        T = fk_general_reference(robot.origins, robot.is_prismatic, Q2)
     return T if Q.ndim == 2 else T[0]

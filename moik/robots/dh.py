@@ -101,7 +101,7 @@ def run_steps(steps: tuple, Q: np.ndarray, theta: np.ndarray, joint_ends: tuple 
             xy *= rot[step[1]]
             if axes is not None:
                 axes.append((z.copy(), p_xy.real + p_z))
-        elif kind == "tx":
+        elif kind == "tx":  # p += a * Re(xy); a complex factor -i*y gives p += y * Im(xy)
             np.multiply(xy, step[1], out=tmp_c)
             p_xy += tmp_c
         elif kind == "tz":

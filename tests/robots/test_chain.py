@@ -146,3 +146,39 @@ def test_robot_is_frozen():
         robot.name = "other"
     with pytest.raises(ValueError):
         robot.a[0] = 1.0
+
+
+@pytest.mark.parametrize("name", ["puma560", "scara4", "irb2600"])
+def test_locked_joints_equal_full_robot(name):
+    robot = get_robot(name)
+    locked = {1: 0.3, robot.dof - 1: -0.2} if name != "scara4" else {2: 0.4}
+    sub = robot.with_locked_joints(locked)
+    free = [j for j in range(robot.dof) if j not in locked]
+    assert sub.dof == len(free) and not sub.is_dh
+    Qs = sub.random_q(30, rng=np.random.default_rng(4))
+    Q = np.zeros((30, robot.dof))
+    Q[:, free] = Qs
+    for j, v in locked.items():
+        Q[:, j] = v
+    np.testing.assert_allclose(sub.fk(Qs), robot.fk(Q), atol=1e-12 * robot.reach)
+    np.testing.assert_allclose(fk_reference(sub, Qs), robot.fk(Q), atol=1e-12 * robot.reach)
+
+
+def test_general_chain_from_dh_origins():
+    robot = get_robot("irb2600")
+    general = Robot(name="g", origins=robot.chain_origins(), lower=robot.lower,
+                    upper=robot.upper, unit="mm")
+    Q = robot.random_q(30, rng=np.random.default_rng(5))
+    np.testing.assert_allclose(general.fk(Q), robot.fk(Q), atol=1e-9)
+    assert general.reach == pytest.approx(robot.reach)
+
+
+def test_bad_locked_joints():
+    robot = get_robot("puma560")
+    with pytest.raises(ParameterError, match=r"locked joint indices must be in 0..5, got \[6\]"):
+        robot.with_locked_joints({6: 0.0})
+    with pytest.raises(ParameterError, match="at least one joint must stay free"):
+        robot.with_locked_joints({j: 0.0 for j in range(6)})
+    with pytest.raises(ParameterError, match="DH rows or origins, not both"):
+        Robot(name="x", origins=np.broadcast_to(np.eye(4), (3, 4, 4)), a=[0, 0],
+              alpha=[0, 0], d=[0, 0], theta=[0, 0], lower=[0, 0], upper=[1, 1])

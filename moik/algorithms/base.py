@@ -14,10 +14,8 @@ unconstrained problems). Two drivers run it: ``next()`` (used by ``minimize``)
 evaluates with ``problem.evaluate`` directly; ``ask()/tell()`` hand the same
 candidates out as ``Population`` objects. Both give bit-identical runs.
 
-Constraints are handled feasibility-first (Deb's rules): a feasible solution
-beats an infeasible one, two infeasible ones compare by total violation ``CV``
-(``G`` clipped at zero plus ``|H|`` beyond pymoo's 1e-4), two feasible ones by
-``f``. An infeasible best is reported by pymoo's ``Result`` as no solution.
+Constraints are handled feasibility-first (mechanics.py); an infeasible best
+is reported by pymoo's ``Result`` as no solution (``res.X is None``).
 
 ``n_eval`` terminations are honoured exactly: when a batch would overrun the
 budget only its first rows are evaluated and the others get ``F = CV = inf``
@@ -37,89 +35,16 @@ from pymoo.termination.default import DefaultTermination
 from pymoo.util.display.column import Column
 from pymoo.util.display.output import Output
 
+from moik.algorithms.mechanics import (
+    best_index,
+    clip_to_bounds,
+    constraint_violation,
+    is_better,
+    uniform_population,
+)
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError
 
 Step = Generator[np.ndarray, tuple, None]
-
-
-def uniform_population(n: int, xl: np.ndarray, xu: np.ndarray, *, rng: np.random.Generator):
-    """Return ``n`` points drawn uniformly in the box ``[xl, xu]``, shape (n, dim)."""
-    return xl + rng.random((n, xl.size)) * (xu - xl)
-
-
-def clip_to_bounds(X: np.ndarray, xl: np.ndarray, xu: np.ndarray) -> np.ndarray:
-    """Return ``X`` with every coordinate clipped into ``[xl, xu]``."""
-    return np.minimum(np.maximum(X, xl), xu)
-
-
-def midpoint_repair(X_new: np.ndarray, X_old: np.ndarray, xl: np.ndarray, xu: np.ndarray):
-    """EOSMA Eq. 17: a coordinate beyond a bound moves halfway from its old value to it."""
-    hi, lo = X_new > xu, X_new < xl
-    if not (hi.any() or lo.any()):
-        return X_new
-    X = np.where(hi, (X_old + xu) / 2.0, X_new)
-    return np.where(lo, (X_old + xl) / 2.0, X)
-
-
-def constraint_violation(G: np.ndarray | None, H: np.ndarray | None, eq_tol: float = 1e-4):
-    """Total violation per row (pymoo's default: sum of G+ and of |H| beyond ``eq_tol``)."""
-    cv = 0.0
-    if G is not None and G.size:
-        cv = cv + np.maximum(G, 0.0).sum(axis=1)
-    if H is not None and H.size:
-        cv = cv + np.maximum(np.abs(H) - eq_tol, 0.0).sum(axis=1)
-    return np.asarray(cv, dtype=float)
-
-
-def is_better(f1, cv1, f2, cv2):
-    """Feasibility-first strict comparison; ``cv1 is None`` means unconstrained."""
-    if cv1 is None:
-        return f1 < f2
-    return (cv1 < cv2) | ((cv1 == cv2) & (f1 < f2))
-
-
-def greedy_memory(X, F, CV, PX, PF, PCV):
-    """EOSMA Eq. 18: keep a new point in the memory only if strictly better.
-
-    Returns:
-        The updated memory ``(PX, PF, PCV)`` as new arrays.
-    """
-    better = is_better(F, CV, PF, PCV)
-    PX = np.where(better[:, None], X, PX)
-    PCV = None if CV is None else np.where(better, CV, PCV)
-    return PX, np.where(better, F, PF), PCV
-
-
-def ranking_fitness(F: np.ndarray, CV: np.ndarray | None) -> np.ndarray:
-    """A scalar with the feasibility-first order: F if feasible, else worst feasible F + CV."""
-    if CV is None:
-        return F
-    feas = CV <= 0.0
-    worst = F[feas].max() if feas.any() else 0.0
-    return np.where(feas, F, worst + CV)
-
-
-def best_index(F: np.ndarray, CV: np.ndarray | None) -> int:
-    """Index of the feasibility-first best row."""
-    if CV is None:
-        return int(np.argmin(F))
-    feas = CV <= 0.0
-    if feas.any():
-        idx = np.flatnonzero(feas)
-        return int(idx[np.argmin(F[idx])])
-    return int(np.argmin(CV))
-
-
-def check_param(name: str, value, lo: float, hi: float, *, lo_open: bool = False,
-                hi_open: bool = False) -> float:
-    """Return ``value`` as float if it lies in the range, else raise ParameterError."""
-    ok = isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool)
-    v = float(value) if ok else np.nan
-    ok = ok and (lo < v if lo_open else lo <= v) and (v < hi if hi_open else v <= hi)
-    if not ok:
-        rng = f"{'(' if lo_open else '['}{lo}, {hi}{')' if hi_open else ']'}"
-        raise ParameterError(f"{name} must be a number in {rng}, got {value!r}")
-    return v
 
 
 def _find_limit(termination, attr: str) -> float:
@@ -132,15 +57,11 @@ def _find_limit(termination, attr: str) -> float:
     return limit
 
 
-def _best_f(algorithm):
-    return algorithm.best_f
+def _is_int(value) -> bool:
+    return isinstance(value, (int, np.integer)) and not isinstance(value, bool)
 
 
-def _best_cv(algorithm):
-    return algorithm.best_cv
-
-
-def _avg_f(algorithm):
+def _avg_f(algorithm) -> float | None:
     F = algorithm.F[np.isfinite(algorithm.F)]
     return float(F.mean()) if F.size else None
 
@@ -150,8 +71,8 @@ class ArrayOutput(Output):
 
     def initialize(self, algorithm) -> None:
         if algorithm.problem.has_constraints():
-            self.columns.append(Column("cv_best", func=_best_cv))
-        self.columns += [Column("f_avg", func=_avg_f), Column("f_best", func=_best_f)]
+            self.columns.append(Column("cv_best", func=lambda a: a.best_cv))
+        self.columns += [Column("f_avg", func=_avg_f), Column("f_best", func=lambda a: a.best_f)]
 
 
 class ArrayAlgorithm(Algorithm):
@@ -178,25 +99,14 @@ class ArrayAlgorithm(Algorithm):
 
     min_pop_size = 2
 
-    def __init__(
-        self,
-        *,
-        pop_size: int = 100,
-        X0: np.ndarray | None = None,
-        max_iter: int | None = None,
-        **kwargs,
-    ):
+    def __init__(self, *, pop_size: int = 100, X0: np.ndarray | None = None,
+                 max_iter: int | None = None, **kwargs):
         kwargs.setdefault("output", ArrayOutput())
         super().__init__(**kwargs)
-        if (
-            isinstance(pop_size, bool)
-            or not isinstance(pop_size, (int, np.integer))
-            or pop_size < self.min_pop_size
-        ):
-            raise ParameterError(
-                f"pop_size must be an integer >= {self.min_pop_size}, got {pop_size!r}"
-            )
-        if max_iter is not None and (not isinstance(max_iter, (int, np.integer)) or max_iter < 1):
+        if not _is_int(pop_size) or pop_size < self.min_pop_size:
+            raise ParameterError(f"pop_size must be an integer >= {self.min_pop_size}, "
+                                 f"got {pop_size!r}")
+        if max_iter is not None and (not _is_int(max_iter) or max_iter < 1):
             raise ParameterError(f"max_iter must be a positive integer or None, got {max_iter!r}")
         self.pop_size, self.X0, self.max_iter = int(pop_size), X0, max_iter
         self.X = self.F = self.CV = None
@@ -240,9 +150,8 @@ class ArrayAlgorithm(Algorithm):
     # ---- pymoo hooks ----------------------------------------------------------------------
     def _setup(self, problem, **kwargs) -> None:
         if problem.n_obj != 1:
-            raise ParameterError(
-                f"{type(self).__name__} is single-objective; the problem has n_obj={problem.n_obj}"
-            )
+            raise ParameterError(f"{type(self).__name__} is single-objective; the problem has "
+                                 f"n_obj={problem.n_obj}")
         xl, xu = problem.bounds()
         if xl is None or xu is None or not (np.all(np.isfinite(xl)) and np.all(np.isfinite(xu))):
             raise ParameterError(f"{type(self).__name__} needs finite bounds xl, xu")
@@ -263,10 +172,8 @@ class ArrayAlgorithm(Algorithm):
         if self.X0 is not None:
             X0 = np.asarray(self.X0, dtype=float)
             if X0.ndim != 2 or X0.shape[1] != n_var or not 1 <= len(X0) <= self.pop_size:
-                raise ShapeError(
-                    f"X0 must have shape (k, {n_var}) with 1 <= k <= pop_size="
-                    f"{self.pop_size}, got {X0.shape}"
-                )
+                raise ShapeError(f"X0 must have shape (k, {n_var}) with 1 <= k <= pop_size="
+                                 f"{self.pop_size}, got {X0.shape}")
             if not np.all(np.isfinite(X0)):
                 raise NonFiniteError("X0 holds NaN or infinite values")
             if np.any(clip_to_bounds(X0, self.xl, self.xu) != X0):
@@ -348,28 +255,32 @@ class ArrayAlgorithm(Algorithm):
     def _evaluate(self, X: np.ndarray):
         """Evaluate candidates with the vectorized problem, counting n_eval exactly."""
         n = len(X)
-        k = self._budget_left(n)
-        if k == 0:
-            F, G, H = np.empty(0), None, None
-            CV = np.empty(0) if self._constrained else None
-        else:
+        k = n if self._max_evals == np.inf else self._budget_left(n)
+        F, CV, G, H = np.empty(0), (np.empty(0) if self._constrained else None), None, None
+        if k:
             out = self.problem.evaluate(X if k == n else X[:k], return_as_dictionary=True)
             self.evaluator.n_eval += k
-            F, G, H = out["F"][:, 0], out.get("G"), out.get("H")
-            CV = constraint_violation(G, H) if self._constrained else None
-        F, CV = self._pad(n, F, CV)
+            F = out["F"][:, 0]
+            if self._constrained:
+                G, H = out.get("G"), out.get("H")
+                CV = constraint_violation(G, H)
+        if k < n:
+            F, CV = self._pad(n, F, CV)
         self._receive(X, F, CV, G, H)
         return F, CV
 
     def _receive(self, X, F, CV, G, H) -> None:
         """Update the best so far with an evaluated batch."""
+        if CV is None:  # unconstrained fast path
+            i = F.argmin()
+            if F[i] < self.best_f or self.best_x is None:
+                self.best_x, self.best_f, self._opt_stale = X[i].copy(), float(F[i]), True
+            return
         i = best_index(F, CV)
-        cv_i = None if CV is None else CV[i]
-        if self.best_x is None or is_better(F[i], cv_i, self.best_f, self.best_cv):
-            self.best_x, self.best_f, self.best_cv = X[i].copy(), float(F[i]), cv_i
-            self._best_gh = {
-                k: np.array(v[i]) for k, v in (("G", G), ("H", H)) if v is not None and i < len(v)
-            }
+        if self.best_x is None or is_better(F[i], CV[i], self.best_f, self.best_cv):
+            self.best_x, self.best_f, self.best_cv = X[i].copy(), float(F[i]), float(CV[i])
+            self._best_gh = {k: np.array(v[i]) for k, v in (("G", G), ("H", H))
+                             if v is not None and i < len(v)}
             self._opt_stale = True
 
     # ---- subclass interface ---------------------------------------------------------------

@@ -31,9 +31,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from moik.algorithms.base import (
-    ArrayAlgorithm,
-    Step,
+from moik.algorithms.base import ArrayAlgorithm, Step
+from moik.algorithms.mechanics import (
     check_param,
     clip_to_bounds,
     greedy_memory,
@@ -56,7 +55,7 @@ def update_pool(PX, PF, PCV, X, F, CV, k: int = 4):
 
 def with_mean(PX: np.ndarray) -> np.ndarray:
     """Eq. 7: append the mean of the pool members (Ceq_ave) as a last row."""
-    return np.concatenate([PX, PX.mean(axis=0, keepdims=True)])
+    return np.concatenate([PX, PX.sum(axis=0, keepdims=True) / len(PX)])
 
 
 def eo_schedule(t: int, T: int, a2: float) -> float:

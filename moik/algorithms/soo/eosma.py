@@ -39,9 +39,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from moik.algorithms.base import (
-    ArrayAlgorithm,
-    Step,
+from moik.algorithms.base import ArrayAlgorithm, Step
+from moik.algorithms.mechanics import (
     check_param,
     greedy_memory,
     midpoint_repair,

@@ -31,9 +31,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from moik.algorithms.base import (
-    ArrayAlgorithm,
-    Step,
+from moik.algorithms.base import ArrayAlgorithm, Step
+from moik.algorithms.mechanics import (
     best_index,
     clip_to_bounds,
     greedy_memory,
@@ -94,11 +93,11 @@ class MPSO(ArrayAlgorithm):
 
     def _generation(self) -> Step:
         if self.switch == "mean-position":
-            f_mean, cv_mean = yield self.pbest_X.mean(axis=0, keepdims=True)
+            f_mean, cv_mean = yield self.pbest_X.sum(axis=0, keepdims=True) / self.pop_size
             self.classic = is_better(f_mean, cv_mean, self.F, self.CV)  # f(x_i) > f(xmean)
         else:
-            cv_mean = None if self.CV is None else self.pbest_CV.mean()
-            self.classic = is_better(self.pbest_F.mean(), cv_mean, self.F, self.CV)
+            cv_mean = None if self.CV is None else self.pbest_CV.sum() / self.pop_size
+            self.classic = is_better(self.pbest_F.sum() / self.pop_size, cv_mean, self.F, self.CV)
         g = self.pbest_X[best_index(self.pbest_F, self.pbest_CV)]
         V = mpso_velocity(self.V, self.X, self.pbest_X, g, self.classic, w=self.w, c1=self.c1,
                           c2=self.c2, rng=self.random_state)

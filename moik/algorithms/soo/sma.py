@@ -36,9 +36,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from moik.algorithms.base import (
-    ArrayAlgorithm,
-    Step,
+from moik.algorithms.base import ArrayAlgorithm, Step
+from moik.algorithms.mechanics import (
     check_param,
     clip_to_bounds,
     ranking_fitness,

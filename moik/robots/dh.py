@@ -128,8 +128,13 @@ def run_steps(steps: tuple, Q: np.ndarray, theta: np.ndarray, joint_ends: tuple 
             if axes is not None:
                 axes.append((z.copy(), p_xy.real + p_z))
             p_z += (Q[:, step[1]] + step[2]) * z
-        else:  # rz_fixed
+        elif kind == "rz_fixed":
             xy *= step[1]
+        else:  # rot: right-multiply by a constant 3x3 rotation (columns c_xy, c_z)
+            _, c_xy, c_z = step
+            x, y = xy.real.copy(), xy.imag.copy()
+            xy = x * c_xy[0] + y * c_xy[1] + z * c_xy[2]
+            z = x * c_z[0] + y * c_z[1] + z * c_z[2]
         if k in joint_ends:
             frames.append((xy.copy(), z.copy(), p_xy.real + p_z))
     return xy, z, p_xy.real + p_z, frames

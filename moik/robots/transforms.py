@@ -5,9 +5,10 @@ Any serial chain of 1-DOF joints can be written as
 rigid transform and ``M_j`` is ``Rz(q_j)`` (revolute) or ``Tz(q_j)``
 (prismatic). URDF chains, DH chains and chains with locked joints all take this
 form. :func:`fixed_steps` decomposes a constant transform into the elementary
-motions of the FK kernel (:mod:`moik.robots.dh`): ``Tx Ty Tz`` then a ZXZ
-rotation ``Rz Rx Rz``, each skipped when it is the identity, with exact
-cos/sin at multiples of pi/2, so axis-aligned URDF origins cost almost nothing.
+motions of the FK kernel (:mod:`moik.robots.dh`): ``Tx Ty Tz`` then the
+rotation, as one ``Rz`` or ``Rx``, as an exact ZXZ product for axis-aligned
+rotations, or else as one general 3x3 step; identities are skipped, so
+axis-aligned URDF origins cost almost nothing.
 """
 
 from __future__ import annotations
@@ -68,13 +69,18 @@ def fixed_steps(F: np.ndarray) -> list[tuple]:
     R = F[:3, :3]
     if np.array_equal(R, np.eye(3)):
         return steps
-    with warnings.catch_warnings():  # gimbal lock (pure Rz) is handled exactly below
-        warnings.simplefilter("ignore", UserWarning)
-        phi, theta, psi = Rotation.from_matrix(R).as_euler("ZXZ")
-    for step in (_rz_step(phi), _rx_step(theta), _rz_step(psi)):
-        if step is not None:
-            steps.append(step)
-    return steps
+    if R[2, 2] == 1.0 and not R[2, :2].any() and not R[:2, 2].any():  # pure Rz
+        steps.append(_rz_step(float(np.arctan2(R[1, 0], R[0, 0]))))
+    elif R[0, 0] == 1.0 and not R[0, 1:].any() and not R[1:, 0].any():  # pure Rx
+        steps.append(_rx_step(float(np.arctan2(R[2, 1], R[1, 1]))))
+    elif np.all(np.isin(R, (-1.0, 0.0, 1.0))):  # signed permutation: exact ZXZ angles
+        with warnings.catch_warnings():  # gimbal lock cases are exact here
+            warnings.simplefilter("ignore", UserWarning)
+            phi, theta, psi = Rotation.from_matrix(R).as_euler("ZXZ")
+        steps.extend(s for s in (_rz_step(phi), _rx_step(theta), _rz_step(psi)) if s is not None)
+    else:  # general rotation: one 3x3 step (Euler angles lose accuracy near gimbal lock)
+        steps.append(("rot", R[:, 0] + 1j * R[:, 1], R[:, 2].copy()))
+    return [s for s in steps if s is not None]
 
 
 def _rx_step(angle: float) -> tuple | None:

@@ -182,3 +182,24 @@ def test_bad_locked_joints():
     with pytest.raises(ParameterError, match="DH rows or origins, not both"):
         Robot(name="x", origins=np.broadcast_to(np.eye(4), (3, 4, 4)), a=[0, 0],
               alpha=[0, 0], d=[0, 0], theta=[0, 0], lower=[0, 0], upper=[1, 1])
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(0, 2**32 - 1), st.sampled_from([0.0, 1e-9, np.pi / 2, np.pi / 2 - 2e-9]))
+def test_fixed_transform_steps_equal_matrix(seed, near):
+    """Any constant transform, including ones a hair off axis-aligned (as in real
+    URDFs), compiles to kernel steps that reproduce it."""
+    from scipy.spatial.transform import Rotation
+
+    from moik.robots.dh import assemble, run_steps
+    from moik.robots.transforms import fixed_steps
+
+    rng = np.random.default_rng(seed)
+    rotations = [Rotation.random(random_state=seed).as_matrix(),
+                 Rotation.from_euler("xyz", [near, 0, 0]).as_matrix(),
+                 Rotation.from_euler("zyx", [near, near, 0]).as_matrix()]
+    for R in rotations:
+        F = np.eye(4)
+        F[:3, :3], F[:3, 3] = R, rng.normal(size=3)
+        T = assemble(*run_steps(tuple(fixed_steps(F)), np.zeros((1, 0)), np.zeros(0))[:3])[0]
+        np.testing.assert_allclose(T, F, atol=1e-15)

@@ -1,0 +1,216 @@
+"""Load a serial chain from a URDF file into a :class:`~moik.robots.chain.Robot`.
+
+Parsed with the standard library (``xml.etree``): URDF parsers on PyPI pull in
+mesh libraries (trimesh, lxml) that kinematics does not need, and meshes are
+never read here.
+
+Rules:
+
+* The chain runs from ``base_link`` (default: the root link) to ``tip_link``.
+  Without a tip, the chain follows the only child; where it branches, branches
+  without movable joints are ignored (e.g. UR5's ``ee_link``/``tool0``: the
+  chain ends at the branching link), and two branches with movable joints are
+  an error that lists the candidate tips.
+* ``revolute`` and ``prismatic`` joints read their ``<limit>``; ``continuous``
+  joints get ``[-pi, pi]`` (one full turn covers every orientation);
+  ``fixed`` joints are folded into the constant transforms. ``floating`` and
+  ``planar`` joints are rejected. ``mimic`` tags are ignored (each joint is free).
+* ``<origin xyz rpy>`` (fixed-axis roll-pitch-yaw, ``R = Rz(y) Ry(p) Rx(r)``)
+  and ``<axis xyz>`` (any unit vector; default x as the URDF spec says) are
+  honoured. Lengths are metres.
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import numpy as np
+from scipy.spatial.transform import Rotation
+
+from moik.exceptions import MoikError, UnknownNameError
+from moik.robots.chain import Robot
+from moik.robots.transforms import rot_x, translation
+
+
+class URDFError(MoikError, ValueError):
+    """A URDF file is malformed or does not describe the requested chain."""
+
+
+def _floats(text: str | None, default, what: str) -> np.ndarray:
+    if text is None:
+        return np.array(default, dtype=float)
+    try:
+        vals = np.array([float(v) for v in text.split()])
+    except ValueError:
+        raise URDFError(f"{what} must be numbers, got {text!r}") from None
+    if vals.shape != (3,) or not np.all(np.isfinite(vals)):
+        raise URDFError(f"{what} must be 3 finite numbers, got {text!r}")
+    return vals
+
+
+def _origin(joint: ET.Element, name: str) -> np.ndarray:
+    el = joint.find("origin")
+    xyz = _floats(None if el is None else el.get("xyz"), (0, 0, 0), f"joint {name!r} origin xyz")
+    rpy = _floats(None if el is None else el.get("rpy"), (0, 0, 0), f"joint {name!r} origin rpy")
+    T = translation(*xyz)
+    if np.any(rpy != 0):
+        T[:3, :3] = Rotation.from_euler("xyz", rpy).as_matrix()
+    return T
+
+
+def _axis_frame(axis: np.ndarray) -> np.ndarray:
+    """A rotation ``C`` (4x4) with ``C @ z = axis``, exact for +-x, +-y, +-z."""
+    exact = {(0, 0, 1): np.eye(4), (0, 0, -1): rot_x(np.pi), (0, 1, 0): rot_x(-np.pi / 2),
+             (0, -1, 0): rot_x(np.pi / 2)}
+    key = tuple(int(v) for v in axis) if np.all(axis == np.round(axis)) else None
+    if key in exact:
+        return exact[key]
+    C = np.eye(4)
+    with np.errstate(all="ignore"):
+        rot, _ = Rotation.align_vectors([axis], [[0.0, 0.0, 1.0]])
+    C[:3, :3] = rot.as_matrix()
+    return C
+
+
+def _parse(path: Path) -> tuple[dict, dict]:
+    try:
+        root = ET.parse(path).getroot()
+    except (ET.ParseError, OSError) as exc:
+        raise URDFError(f"cannot read URDF {str(path)!r}: {exc}") from None
+    if root.tag != "robot":
+        raise URDFError(f"{str(path)!r} is not a URDF file: root element <{root.tag}>")
+    links = {el.get("name") for el in root.findall("link")}
+    joints = {}
+    for el in root.findall("joint"):
+        name = el.get("name")
+        parent, child = el.find("parent"), el.find("child")
+        if parent is None or child is None:
+            raise URDFError(f"joint {name!r} needs <parent> and <child>")
+        joints[name] = el
+    return links, joints
+
+
+def _children(joints: dict) -> dict[str, list[ET.Element]]:
+    out: dict[str, list[ET.Element]] = {}
+    for el in joints.values():
+        out.setdefault(el.find("parent").get("link"), []).append(el)
+    return out
+
+
+def _has_movable(link: str, children: dict) -> bool:
+    stack = [link]
+    while stack:
+        for el in children.get(stack.pop(), []):
+            if el.get("type") != "fixed":
+                return True
+            stack.append(el.find("child").get("link"))
+    return False
+
+
+def _child(el: ET.Element) -> str:
+    return el.find("child").get("link")
+
+
+def _leaves(link: str, children: dict) -> list[str]:
+    kids = children.get(link, [])
+    if not kids:
+        return [link]
+    return [leaf for el in kids for leaf in _leaves(el.find("child").get("link"), children)]
+
+
+def _chain_joints(links, joints, base: str, tip: str | None) -> list[ET.Element]:
+    children = _children(joints)
+    if tip is not None:  # walk up from the tip
+        parent_of = {el.find("child").get("link"): el for el in joints.values()}
+        chain, link = [], tip
+        while link != base:
+            if link not in parent_of:
+                raise URDFError(f"link {tip!r} is not below base link {base!r}")
+            chain.append(parent_of[link])
+            link = parent_of[link].find("parent").get("link")
+        return chain[::-1]
+    chain, link = [], base
+    while children.get(link):
+        movable = [el for el in children[link]
+                   if el.get("type") != "fixed" or _has_movable(_child(el), children)]
+        if len(children[link]) == 1:
+            nxt = children[link][0]
+        elif len(movable) == 1:
+            nxt = movable[0]
+        elif not movable:
+            break
+        else:
+            leaves = sorted(leaf for el in movable
+                            for leaf in _leaves(el.find("child").get("link"), children))
+            raise URDFError(f"the chain branches at link {link!r}; pass tip_link= one of {leaves}")
+        chain.append(nxt)
+        link = nxt.find("child").get("link")
+    return chain
+
+
+def load_urdf(path, base_link: str | None = None, tip_link: str | None = None,
+              name: str | None = None) -> Robot:
+    """A :class:`Robot` for the serial chain ``base_link -> tip_link`` of a URDF.
+
+    Args:
+        path: URDF file.
+        base_link: First link (default: the root link of the file).
+        tip_link: Last link (default: follow the chain as the module doc says).
+        name: Robot name (default: the URDF's robot name).
+
+    Raises:
+        URDFError: malformed file, unsupported joint, branching chain without tip.
+        UnknownNameError: a link name not in the file (lists the links).
+    """
+    path = Path(path)
+    links, joints = _parse(path)
+    for given in (base_link, tip_link):
+        if given is not None and given not in links:
+            raise UnknownNameError("link", given, links)
+    if base_link is None:
+        childs = {el.find("child").get("link") for el in joints.values()}
+        roots = sorted(links - childs)
+        if len(roots) != 1:
+            raise URDFError(f"expected one root link, found {roots}; pass base_link=")
+        base_link = roots[0]
+    chain = _chain_joints(links, joints, base_link, tip_link)
+    origins, lower, upper, types = [np.eye(4)], [], [], []
+    for el in chain:
+        jname, jtype = el.get("name"), el.get("type")
+        T = origins[-1] @ _origin(el, jname)
+        if jtype == "fixed":
+            origins[-1] = T
+            continue
+        if jtype not in ("revolute", "continuous", "prismatic"):
+            raise URDFError(f"joint {jname!r} has unsupported type {jtype!r}")
+        axis_el = el.find("axis")
+        axis = _floats(None if axis_el is None else axis_el.get("xyz"), (1, 0, 0),
+                       f"joint {jname!r} axis")
+        if np.linalg.norm(axis) == 0:
+            raise URDFError(f"joint {jname!r} axis must be non-zero")
+        C = _axis_frame(axis / np.linalg.norm(axis))
+        origins[-1] = T @ C
+        origins.append(C.T.copy())
+        lo, hi = _limits(el, jname, jtype)
+        lower.append(lo)
+        upper.append(hi)
+        types.append("prismatic" if jtype == "prismatic" else "revolute")
+    if not types:
+        raise URDFError(f"no movable joint between {base_link!r} and {tip_link!r}")
+    tip = chain[-1].find("child").get("link")
+    return Robot(name=name or ET.parse(path).getroot().get("name", path.stem),
+                 origins=np.array(origins), lower=lower, upper=upper, joint_types=tuple(types),
+                 unit="m", source=f"URDF {path.name}: {base_link} -> {tip}")
+
+
+def _limits(el: ET.Element, name: str, jtype: str) -> tuple[float, float]:
+    if jtype == "continuous":
+        return -np.pi, np.pi
+    lim = el.find("limit")
+    if lim is None or lim.get("lower") is None or lim.get("upper") is None:
+        raise URDFError(f"joint {name!r} ({jtype}) needs <limit lower= upper=>")
+    try:
+        return float(lim.get("lower")), float(lim.get("upper"))
+    except ValueError:
+        raise URDFError(f"joint {name!r} limits must be numbers") from None

@@ -19,7 +19,8 @@ def test_eosma7_reference_pose():
 
 
 def test_rokbani5_reference_position():
-    """MO-m-PSO paper Section 4.1 / Eq. 16: (30,60,45,60,60) deg -> (25.1441, 9.5735, 18.0927) cm."""
+    """MO-m-PSO paper Section 4.1 / Eq. 16:
+    (30,60,45,60,60) deg -> (25.1441, 9.5735, 18.0927) cm."""
     T = get_robot("rokbani5").fk(np.array([30, 60, 45, 60, 60]) * DEG)
     np.testing.assert_allclose(T[:3, 3], [25.1441, 9.5735, 18.0927], atol=5e-5)
 

@@ -37,6 +37,12 @@ _REGISTRY: dict[str, type[Algorithm]] = {
 }
 
 
+# Keywords a class forwards through **kwargs to a collaborator (pymoo's DE -> Variant).
+_FORWARDED: dict[type, tuple[str, ...]] = {
+    DE: ("CR", "F", "jitter", "prob_mut", "control", "crossover", "selection", "n_diffs"),
+}
+
+
 def register(name: str, cls: type[Algorithm] | None = None) -> Callable | type[Algorithm]:
     """Register ``cls`` under ``name`` (lower case); usable as a class decorator.
 
@@ -68,7 +74,7 @@ def accepted_parameters(name: str) -> list[str]:
         for p in inspect.signature(klass.__init__).parameters.values():
             if p.kind in (p.KEYWORD_ONLY, p.POSITIONAL_OR_KEYWORD) and p.name != "self":
                 names.add(p.name)
-    return sorted(names)
+    return sorted(names | set(_FORWARDED.get(cls, ())))
 
 
 def get_algorithm(name: str, **params) -> Algorithm:

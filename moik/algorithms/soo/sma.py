@@ -34,6 +34,8 @@ Deviations:
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from moik.algorithms.base import ArrayAlgorithm, Step
@@ -63,7 +65,7 @@ def sma_weights(S: np.ndarray, d: int, *, rng: np.random.Generator) -> np.ndarra
 def sma_schedule(t: int, T: int) -> tuple[float, float]:
     """Eq. 3: ``a = atanh(1 - t/T)`` and ``b = 1 - t/T`` (t/T capped at 1)."""
     s = min(t / T, 1.0)
-    return float(np.arctanh(1.0 - s)), 1.0 - s
+    return math.atanh(1.0 - s), 1.0 - s
 
 
 def sma_update(X, W, x_best, S, f_best: float, a: float, b: float, *, z: float,

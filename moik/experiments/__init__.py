@@ -1,0 +1,1 @@
+"""Experiment helpers: the papers' solving protocol, trial runners and result I/O."""

@@ -1,0 +1,73 @@
+"""Hand-computed checks of the shared mechanics (moik.algorithms.mechanics)."""
+
+import numpy as np
+import pytest
+
+from moik.algorithms.mechanics import (
+    best_index,
+    check_param,
+    clip_to_bounds,
+    constraint_violation,
+    greedy_memory,
+    is_better,
+    midpoint_repair,
+    ranking_fitness,
+    uniform_population,
+)
+from moik.exceptions import ParameterError
+
+XL, XU = np.array([0.0, -1.0]), np.array([1.0, 1.0])
+
+
+def test_midpoint_repair_eq17():
+    X_old = np.array([[0.5, 0.0], [0.2, 0.4]])
+    X_new = np.array([[1.5, -3.0], [0.3, 0.9]])
+    out = midpoint_repair(X_new, X_old, XL, XU)
+    # (0.5 + 1)/2 = 0.75 above; (0 + -1)/2 = -0.5 below; the second row is inside
+    np.testing.assert_array_equal(out, [[0.75, -0.5], [0.3, 0.9]])
+    assert midpoint_repair(X_old, X_new, XL, XU) is X_old  # nothing out: unchanged
+
+
+def test_clip_and_uniform_population_stay_in_bounds():
+    np.testing.assert_array_equal(clip_to_bounds(np.array([[2.0, -2.0]]), XL, XU), [[1.0, -1.0]])
+    X = uniform_population(50, XL, XU, rng=np.random.default_rng(0))
+    assert X.shape == (50, 2) and np.all((X >= XL) & (X <= XU))
+
+
+def test_greedy_memory_eq18_keeps_strictly_better():
+    PX, PF = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]]), np.array([1.0, 1.0, 1.0])
+    X, F = np.array([[9.0, 9.0], [8.0, 8.0], [7.0, 7.0]]), np.array([0.5, 1.0, 2.0])
+    MX, MF, MCV = greedy_memory(X, F, None, PX, PF, None)
+    np.testing.assert_array_equal(MX, [[9.0, 9.0], [1.0, 1.0], [2.0, 2.0]])  # tie keeps old
+    np.testing.assert_array_equal(MF, [0.5, 1.0, 1.0])
+    assert MCV is None
+    assert PF[0] == 1.0  # pure: the inputs are untouched
+
+
+def test_feasibility_first_comparisons():
+    F, CV = np.array([0.0, 5.0, 3.0, 1.0]), np.array([2.0, 0.0, 0.0, 0.5])
+    assert best_index(F, CV) == 2  # best feasible, although row 0 has lower f
+    assert best_index(F, None) == 0
+    assert best_index(F, np.array([2.0, 1.0, 3.0, 0.5])) == 3  # none feasible: least CV
+    np.testing.assert_array_equal(is_better(F, CV, 4.0, 0.0), [False, False, True, False])
+    # ranking: feasible keep f, infeasible get worst feasible f (5) + CV
+    np.testing.assert_array_equal(ranking_fitness(F, CV), [7.0, 5.0, 3.0, 5.5])
+
+
+def test_constraint_violation_matches_pymoo_default():
+    G = np.array([[-1.0, 0.5], [0.0, 0.0]])
+    H = np.array([[1e-5], [0.1]])
+    np.testing.assert_allclose(constraint_violation(G, H), [0.5, 0.1 - 1e-4])
+    np.testing.assert_array_equal(constraint_violation(G, None), [0.5, 0.0])
+
+
+@pytest.mark.parametrize("value", [-0.1, 1.1, "0.5", None, True, np.nan])
+def test_check_param_rejects_with_range(value):
+    with pytest.raises(ParameterError, match=r"z must be a number in \[0.0, 1.0\]"):
+        check_param("z", value, 0.0, 1.0)
+
+
+def test_check_param_open_bounds():
+    assert check_param("V", 1, 0.0, np.inf, lo_open=True, hi_open=True) == 1.0
+    with pytest.raises(ParameterError, match=r"\(0.0, inf\)"):
+        check_param("V", 0.0, 0.0, np.inf, lo_open=True, hi_open=True)

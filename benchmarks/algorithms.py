@@ -164,9 +164,87 @@ def section_a(T: int, repeats: int) -> None:
               f"{setup * 1e3:15.2f}")
 
 
+def section_b(n_targets: int) -> None:
+    print(f"\n(b) seconds per IK solve, EOSMA on eosma7, {n_targets} random reachable targets, "
+          "one run each (no re-runs)")
+    try:
+        from moik.problems import PoseIK, PositionIK, random_reachable_targets
+        from moik.robots import get_robot
+    except ImportError as exc:  # robots/problems not installed in this checkout
+        print(f"    skipped: {exc}")
+        return
+    robot = get_robot("eosma7")
+    targets = random_reachable_targets(robot, n_targets, seed=2022)
+    print(f"{'scenario':<34}{'s/solve':>9}{'paper s':>9}{'eval ms':>9}{'f<1e-6':>8}"
+          f"{'median f':>11}")
+    for number, T, paper, make in [
+        (1, 500, 0.0567, lambda t: PositionIK(robot, t.position)),
+        (2, 1000, 0.3608, lambda t: PoseIK(robot, t, weights=(0.5, 0.5),
+                                           orientation="eosma-euler")),
+    ]:
+        times, errors = [], []
+        for i, target in enumerate(targets):
+            problem = make(target)
+            t0 = time.perf_counter()
+            res = minimize(problem, EOSMA.scenario(number), ("n_gen", T), seed=i)
+            times.append(time.perf_counter() - t0)
+            errors.append(res.F[0])
+        X = robot.random_q(EOSMA.scenario(number).pop_size, rng=np.random.default_rng(0))
+        t_eval = best_time(lambda r, p=problem, X=X: p.evaluate(X), 200) * 1e3
+        label = f"{number} ({'position' if number == 1 else 'pose, Eq. 26'}, T={T})"
+        print(f"{label:<34}{np.mean(times):9.4f}{paper:9.4f}{t_eval:9.3f}"
+              f"{np.mean(np.array(errors) < 1e-6):8.0%}{np.median(errors):11.2e}")
+
+
+def _mealpy_run(name: str, f, lb, ub, epochs: int, seed: int) -> float:
+    import mealpy
+
+    model = {"EO": lambda: mealpy.EO.OriginalEO(epoch=epochs, pop_size=N),
+             "SMA": lambda: mealpy.SMA.OriginalSMA(epoch=epochs, pop_size=N, p_t=0.03),
+             "PSO": lambda: mealpy.PSO.OriginalPSO(epoch=epochs, pop_size=N, c1=1.493,
+                                                   c2=1.493, w=0.8)}[name]()
+    problem = {"obj_func": f, "bounds": mealpy.FloatVar(lb=lb, ub=ub), "minmax": "min",
+               "log_to": None}
+    t0 = time.perf_counter()
+    model.solve(problem, seed=seed)
+    return time.perf_counter() - t0
+
+
+def section_c(epochs: int) -> None:
+    print(f"\n(c) moik vs mealpy 3.0.3, N={N}, {epochs} iterations, one run each")
+    try:
+        import mealpy  # noqa: F401
+    except ImportError:
+        print("    skipped: mealpy is not installed; pip install mealpy==3.0.3 (extra 'bench')")
+        return
+    problems = [("sphere 7-D", Sphere())]
+    try:
+        from moik.problems import PositionIK, random_reachable_targets
+        from moik.robots import get_robot
+
+        robot = get_robot("eosma7")
+        problems.append(("eosma7 position IK",
+                         PositionIK(robot, random_reachable_targets(robot, 1, seed=5)[0].position)))
+    except ImportError as exc:
+        print(f"    IK problem skipped: {exc}")
+    print(f"{'problem':<20}{'algorithm':<10}{'moik s':>9}{'mealpy s':>10}{'speed-up':>10}")
+    for label, problem in problems:
+        def f(x, p=problem):
+            return float(p.evaluate(np.asarray(x)[None])[0, 0])
+
+        for name, algo in [("EO", EO), ("SMA", SMA), ("PSO", PSO)]:
+            t0 = time.perf_counter()
+            minimize(problem, algo(pop_size=N), ("n_gen", epochs), seed=1)
+            t_moik = time.perf_counter() - t0
+            t_mealpy = _mealpy_run(name, f, problem.xl, problem.xu, epochs, seed=1)
+            print(f"{label:<20}{name:<10}{t_moik:9.3f}{t_mealpy:10.2f}{t_mealpy / t_moik:9.0f}x")
+
+
 def main() -> None:
     quick = "--quick" in sys.argv
     section_a(T=300 if quick else 1000, repeats=3 if quick else 7)
+    section_b(n_targets=5 if quick else 20)
+    section_c(epochs=100 if quick else 1000)
 
 
 if __name__ == "__main__":

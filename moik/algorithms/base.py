@@ -1,7 +1,6 @@
 """ArrayAlgorithm: a pymoo ``Algorithm`` whose state lives in numpy arrays.
 
-pymoo builds ``Population``/``Individual`` objects every generation, which costs
-25-40x the update rule of a swarm algorithm at N=100, dim=7 (docs: design.md).
+pymoo's ``Population`` objects cost 25-40x a swarm update rule (design.md), so
 ``ArrayAlgorithm`` keeps the population, its objective values and every
 per-algorithm array (memory, velocities, pool) as numpy arrays and builds pymoo
 objects lazily: ``algorithm.pop`` and ``algorithm.opt`` are properties that
@@ -79,7 +78,7 @@ class ArrayAlgorithm(Algorithm):
     """Base of moik's single-objective population algorithms (array state).
 
     Public attributes for callbacks (all numpy, read them, do not mutate):
-    ``X``/``F``/``CV`` (last evaluated candidates, their objective and violation;
+    ``X``/``F``/``CV`` (current population as each algorithm documents it, and violation;
     ``CV`` is None without constraints), ``best_x``/``best_f``/``best_cv``
     (best so far), ``convergence`` (best f per generation, 1-D), ``t`` (current
     iteration of the paper's schedule) and ``max_iter`` (its length T), plus

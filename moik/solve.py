@@ -1,0 +1,246 @@
+"""``solve_ik``: the practical IK solver (global search + exact local polish).
+
+The memetic design of BioIK: a registered metaheuristic (EOSMA by default)
+searches the joint space with a small population for a few generations; the
+best distinct candidates are then refined with bounded least squares and the
+analytic Jacobian (:mod:`moik.kinematics.polish`). Rounds repeat with fresh
+derived seeds until enough distinct solutions are found or the budget is spent.
+
+Honesty rules: the returned errors are recomputed with the reference FK (never
+taken from an optimizer); ``q`` is always within the joint limits; a target is
+called ``"unreachable"`` when the best of at least five local refinements
+from distinct starts stopped at a stationary point above tolerance (the
+solver's best evidence, not a proof), and then the
+Pareto front of (position error, orientation error) from a multi-objective
+algorithm (MOEOSMA) is returned with its compromise closest to the utopia point.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+from pymoo.optimize import minimize
+
+from moik.algorithms import get_algorithm
+from moik.exceptions import ParameterError
+from moik.kinematics.polish import polish as polish_q
+from moik.kinematics.polish import pose_errors
+from moik.metrics.compromise import closest_to_utopia
+from moik.problems.ik import BiObjectiveIK, PoseIK, PositionIK
+from moik.problems.targets import Target, as_target, check_unit_range
+from moik.robots.chain import Robot
+
+STATUSES = ("solved", "unreachable", "not-converged")
+MIN_REFINEMENTS_FOR_UNREACHABLE = 5
+
+
+@dataclass(frozen=True)
+class IKResult:
+    """Outcome of :func:`solve_ik`.
+
+    Attributes:
+        q: Joint vector (always within the limits): the solution, or the best
+            compromise when not solved.
+        position_error: ``||p(q) - p_target||`` in the robot's unit, recomputed by FK.
+        orientation_error: Geodesic angle (rad) between ``R(q)`` and the target
+            rotation, recomputed by FK (0 for position-only targets).
+        success: Both errors within tolerance.
+        status: ``"solved"``, ``"unreachable"`` or ``"not-converged"``.
+        n_eval: Forward-kinematics evaluations (search + polish + front).
+        time: Wall time in seconds.
+        solutions: Distinct solutions found (``(k, dof)``), nearest to
+            ``q_current`` first when it was given.
+        front: Pareto front ``(m, 2)`` of (position, orientation) errors when
+            unreachable (``None`` otherwise), with ``front_q`` its joint vectors.
+    """
+
+    q: np.ndarray
+    position_error: float
+    orientation_error: float
+    success: bool
+    status: str
+    n_eval: int
+    time: float
+    solutions: np.ndarray
+    front: np.ndarray | None = None
+    front_q: np.ndarray | None = field(default=None, repr=False)
+
+
+def _tolerances(tol, robot: Robot) -> tuple[float, float]:
+    if np.ndim(tol) == 0:
+        tol_pos, tol_ori = float(tol) * robot.reach, float(tol)
+    elif np.shape(tol) == (2,):
+        tol_pos, tol_ori = (float(v) for v in tol)
+    else:
+        raise ParameterError(f"tol must be a number or (position, orientation), got {tol!r}")
+    if not (tol_pos > 0 and tol_ori > 0 and np.isfinite(tol_pos) and np.isfinite(tol_ori)):
+        raise ParameterError(f"tolerances must be positive and finite, got {tol!r}")
+    return tol_pos, tol_ori
+
+
+def _search_problem(robot: Robot, target: Target, orientation: str):
+    if target.rotation is None:
+        return PositionIK(robot, target)
+    return PoseIK(robot, target, weights=(1.0 / robot.reach, 1.0), orientation=orientation)
+
+
+def _population(algorithm, res) -> tuple[np.ndarray, np.ndarray]:
+    """Final candidates (X, F) of a run, for ArrayAlgorithms and pymoo's own."""
+    X, F = getattr(algorithm, "X", None), getattr(algorithm, "F", None)
+    if isinstance(X, np.ndarray) and isinstance(F, np.ndarray):
+        return X, F.reshape(len(X), -1)[:, 0]
+    return res.pop.get("X"), res.pop.get("F")[:, 0]
+
+
+def joint_distance(robot: Robot, q: np.ndarray, others: np.ndarray) -> np.ndarray:
+    """Joint-space distances from ``q`` to each row of ``others``.
+
+    Revolute differences are wrapped to ``[-pi, pi]``: angles 2*pi apart are
+    the same arm configuration (though not the same motion).
+    """
+    diff = np.atleast_2d(others) - q
+    wrapped = (diff + np.pi) % (2 * np.pi) - np.pi
+    return np.linalg.norm(np.where(robot.is_prismatic, diff, wrapped), axis=1)
+
+
+def _distinct(robot: Robot, q: np.ndarray, others: list[np.ndarray], threshold: float) -> bool:
+    return not others or bool(np.all(joint_distance(robot, q, np.array(others)) > threshold))
+
+
+class _Session:
+    """Bookkeeping of one solve: budget, found solutions, failures."""
+
+    def __init__(self, robot, target, tol_pos, tol_ori, distinct):
+        self.robot, self.target = robot, target
+        self.tol_pos, self.tol_ori, self.distinct = tol_pos, tol_ori, distinct
+        self.n_eval = 0
+        self.found: list[np.ndarray] = []
+        self.best: tuple[float, np.ndarray, bool] | None = None  # (error, q, stationary)
+        self.n_refined = 0
+
+    def refine(self, q0: np.ndarray, do_polish: bool) -> None:
+        if do_polish:
+            out = polish_q(self.robot, self.target, q0, length=self.robot.reach,
+                           stop_position=1e-3 * self.tol_pos,
+                           stop_orientation=1e-3 * self.tol_ori)
+            self.n_eval += out.n_eval
+            q, stationary = out.q, out.stationary
+        else:
+            q, stationary = np.clip(q0, self.robot.lower, self.robot.upper), False
+        self.n_refined += 1
+        pos, ori = (float(v[0]) for v in pose_errors(self.robot, self.target, q))
+        err = pos / self.robot.reach + ori
+        if self.best is None or err < self.best[0]:
+            self.best = (err, q, stationary)
+        if pos <= self.tol_pos and ori <= self.tol_ori and _distinct(self.robot, q, self.found,
+                                                                   self.distinct):
+            self.found.append(q)
+
+
+def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = "geodesic",
+             polish: bool = True, n_solutions: int = 1, q_current=None, seed=0,
+             tol=1e-9, max_evals: int = 20_000, pop_size: int | None = None,
+             generations: int = 15,
+             candidates_per_round: int = 3, distinct: float = 0.1,
+             patience: int = 10, front_method: str = "moeosma",
+             front_evals: int = 10_000) -> IKResult:
+    """Solve IK for one target.
+
+    Args:
+        robot: The arm.
+        target: 3-vector position, 4x4 pose, ``(position, rotation)`` or Target.
+        method: Registered single-objective algorithm for the global search.
+        orientation: Orientation metric of the search objective and of the
+            front (reported errors are always geodesic).
+        polish: Refine candidates with least squares (else search only).
+        n_solutions: Number of distinct solutions wanted.
+        q_current: Current configuration: refined first, and the solution
+            nearest to it is returned (EOSMA Eq. 31 idea).
+        seed: Seed (int or ``numpy.random.SeedSequence``) of every random
+            choice: the same seed gives the same result bit for bit.
+        tol: Tolerance: a number ``t`` means position <= ``t * robot.reach`` and
+            orientation <= ``t`` rad; or a pair (position in robot unit, rad).
+        max_evals: FK evaluation budget of search and polish.
+        pop_size: Search population size (default 20, or 40 when several
+            solutions are wanted: a wider population lands in more branches).
+        generations: Search generations per round.
+        candidates_per_round: Distinct candidates polished per round.
+        distinct: Joint-space distance above which two solutions are distinct.
+        patience: Stop after this many rounds without a new solution.
+        front_method: Multi-objective algorithm for the front of unreachable poses.
+        front_evals: Evaluation budget of that front.
+    """
+    t0 = time.perf_counter()
+    target = as_target(target)
+    check_unit_range(target, robot)
+    tol_pos, tol_ori = _tolerances(tol, robot)
+    if pop_size is None:
+        pop_size = 20 if n_solutions == 1 else 40
+    for name, value, low in (("n_solutions", n_solutions, 1), ("max_evals", max_evals, 1),
+                             ("pop_size", pop_size, 2), ("generations", generations, 1),
+                             ("candidates_per_round", candidates_per_round, 1),
+                             ("patience", patience, 1)):
+        if int(value) != value or value < low:
+            raise ParameterError(f"{name} must be an integer >= {low}, got {value!r}")
+    if not distinct > 0:
+        raise ParameterError(f"distinct must be > 0, got {distinct!r}")
+    session = _Session(robot, target, tol_pos, tol_ori, distinct)
+    if q_current is not None:
+        q_current = robot.check_q(q_current, "q_current")
+        session.refine(q_current, polish)
+    problem = _search_problem(robot, target, orientation)
+    seeds = seed if isinstance(seed, np.random.SeedSequence) else np.random.SeedSequence(seed)
+    idle_rounds = 0
+    while (len(session.found) < n_solutions and session.n_eval < max_evals
+           and idle_rounds < patience):
+        n_found = len(session.found)
+        algorithm = get_algorithm(method, pop_size=pop_size)
+        run_seed = int(seeds.spawn(1)[0].generate_state(1)[0])
+        res = minimize(problem, algorithm, ("n_gen", generations), seed=run_seed,
+                       copy_algorithm=False)
+        session.n_eval += algorithm.evaluator.n_eval
+        X, F = _population(algorithm, res)
+        picked: list[np.ndarray] = []
+        for i in np.argsort(F, kind="stable"):
+            if len(picked) == candidates_per_round:
+                break
+            if _distinct(robot, X[i], picked + session.found, distinct):
+                picked.append(X[i])
+        for q0 in picked:
+            session.refine(q0, polish)
+            if len(session.found) >= n_solutions:
+                break
+        idle_rounds = 0 if len(session.found) > n_found else idle_rounds + 1
+    return _result(session, robot, target, orientation, q_current, seeds, t0, front_method,
+                   front_evals)
+
+
+def _result(session, robot, target, orientation, q_current, seeds, t0, front_method,
+            front_evals) -> IKResult:
+    front = front_q = None
+    if session.found:
+        sols = np.array(session.found)
+        if q_current is not None:
+            sols = sols[np.argsort(np.linalg.norm(sols - q_current, axis=1), kind="stable")]
+        q, status = sols[0], "solved"
+    else:
+        sols = np.empty((0, robot.dof))
+        _, q, stationary = session.best
+        # the best of several refinements stopped at a stationary point above tolerance
+        unreachable = stationary and session.n_refined >= MIN_REFINEMENTS_FOR_UNREACHABLE
+        status = "unreachable" if unreachable else "not-converged"
+        if status == "unreachable" and target.rotation is not None:
+            problem = BiObjectiveIK(robot, target, orientation=orientation)
+            algorithm = get_algorithm(front_method)
+            run_seed = int(seeds.spawn(1)[0].generate_state(1)[0])
+            res = minimize(problem, algorithm, ("n_eval", front_evals), seed=run_seed,
+                           copy_algorithm=False)
+            session.n_eval += algorithm.evaluator.n_eval
+            front, front_q = np.atleast_2d(res.F), np.atleast_2d(res.X)
+            q = np.clip(front_q[closest_to_utopia(front)], robot.lower, robot.upper)
+    pos, ori = (float(v[0]) for v in pose_errors(robot, target, q))
+    return IKResult(q=q, position_error=pos, orientation_error=ori, success=status == "solved",
+                    status=status, n_eval=session.n_eval, time=time.perf_counter() - t0,
+                    solutions=sols, front=front, front_q=front_q)

@@ -1,0 +1,97 @@
+"""solve_ik: exact, within limits, deterministic, several branches, honest failures."""
+
+import numpy as np
+import pytest
+
+from moik.exceptions import ParameterError, UnknownNameError
+from moik.problems import Target, random_reachable_targets
+from moik.robots import get_robot
+from moik.solve import joint_distance, solve_ik
+
+
+@pytest.mark.parametrize("name", ["eosma7", "sawyer7", "irb2600"])
+def test_reachable_poses_are_solved_exactly(name):
+    robot = get_robot(name)
+    for i, target in enumerate(random_reachable_targets(robot, 4, seed=1)):
+        res = solve_ik(robot, target.pose, seed=i)
+        assert res.status == "solved" and res.success
+        assert res.position_error <= 1e-9 * robot.reach
+        assert res.orientation_error <= 1e-9
+        assert robot.within_limits(res.q)[0]
+        # errors are the FK truth, not the optimizer's word
+        T = robot.fk(res.q)
+        assert np.linalg.norm(T[:3, 3] - target.position) == pytest.approx(
+            res.position_error, abs=1e-12 * robot.reach)
+
+
+def test_position_only_target():
+    robot = get_robot("rokbani5")
+    res = solve_ik(robot, [25.1441, 9.5735, 18.0927], seed=3)  # MO-m-PSO Section 4.1 target
+    assert res.success and res.orientation_error == 0.0
+    assert res.position_error <= 1e-9 * robot.reach
+
+
+def test_same_seed_same_result_bit_for_bit():
+    robot = get_robot("eosma7")
+    target = random_reachable_targets(robot, 1, seed=9)[0]
+    a = solve_ik(robot, target.pose, seed=42)
+    b = solve_ik(robot, target.pose, seed=42)
+    np.testing.assert_array_equal(a.q, b.q)
+    assert a.n_eval == b.n_eval
+
+
+# I-BES paper Section 5.1.3: the five wrist-centre targets (m) of the Puma 560
+# comparison with the geometric method (Kalra et al.); each has 4 branches.
+IBES_TABLE9_TARGETS = [(0.60, 0.15, 0.20), (0.50, 0.24, 0.23), (0.54, 0.21, 0.26),
+                       (0.18, -0.40, 0.40), (-0.18, 0.40, -0.20)]
+
+
+@pytest.mark.parametrize("position", IBES_TABLE9_TARGETS)
+def test_puma_wrist_centre_has_four_branches(position):
+    robot = get_robot("puma560").with_locked_joints({3: 0.0, 4: 0.0, 5: 0.0})
+    res = solve_ik(robot, np.array(position), n_solutions=4, seed=0)
+    assert res.solutions.shape == (4, 3)
+    for q in res.solutions:
+        assert np.linalg.norm(robot.fk(q)[:3, 3] - position) <= 1e-9 * robot.reach
+    for i in range(4):  # pairwise distinct configurations
+        others = np.delete(res.solutions, i, axis=0)
+        assert np.all(joint_distance(robot, res.solutions[i], others) > 0.1)
+
+
+def test_q_current_prefers_nearest_solution():
+    robot = get_robot("puma560").with_locked_joints({3: 0.0, 4: 0.0, 5: 0.0})
+    position = np.array(IBES_TABLE9_TARGETS[1])
+    branches = solve_ik(robot, position, n_solutions=4, seed=0).solutions
+    current = branches[2] + 0.05
+    res = solve_ik(robot, position, n_solutions=4, seed=0, q_current=current)
+    assert res.q == pytest.approx(branches[2], abs=1e-6)
+
+
+def test_unreachable_position_is_reported_not_solved():
+    robot = get_robot("eosma7")
+    res = solve_ik(robot, [0.0, 0.0, 300.0], seed=0)  # reach is 176 cm
+    assert res.status == "unreachable" and not res.success
+    assert robot.within_limits(res.q)[0]
+    assert res.position_error > 100.0
+    assert res.front is None
+
+
+def test_unreachable_pose_returns_front():
+    """EOSMA paper P1 = (-25, 100, 50) cm with the identity orientation cannot be
+    reached (reference-facts.md: checked by multi-start least squares)."""
+    robot = get_robot("eosma7")
+    res = solve_ik(robot, Target([-25.0, 100.0, 50.0], np.eye(3)), seed=0, front_evals=4000)
+    assert res.status == "unreachable" and not res.success
+    assert res.front is not None and len(res.front) >= 2
+    assert np.all(robot.within_limits(res.front_q))
+    assert robot.within_limits(res.q)[0]
+
+
+def test_bad_input():
+    robot = get_robot("eosma7")
+    with pytest.raises(ParameterError, match="tol must be a number or"):
+        solve_ik(robot, [10.0, 0.0, 50.0], tol=(1, 2, 3))
+    with pytest.raises(ParameterError, match="n_solutions must be an integer >= 1"):
+        solve_ik(robot, [10.0, 0.0, 50.0], n_solutions=0)
+    with pytest.raises(UnknownNameError, match="unknown algorithm 'nope'"):
+        solve_ik(robot, [10.0, 0.0, 50.0], method="nope")

@@ -1,7 +1,30 @@
-"""moik: multi-objective inverse kinematics of robot arms with metaheuristics, on pymoo."""
+"""moik: multi-objective inverse kinematics of robot arms with metaheuristics, on pymoo.
 
+Public API: :func:`get_robot` (the papers' arms), :func:`load_urdf`,
+:func:`solve_ik` and :func:`solve_path` (the practical solver), the IK problems
+in :mod:`moik.problems` and the algorithms in :mod:`moik.algorithms`.
+"""
+
+from moik import algorithms, problems
 from moik.exceptions import MoikError
+from moik.path import PathResult, solve_path
+from moik.robots import Robot, available_robots, get_robot
+from moik.robots.urdf import load_urdf
+from moik.solve import IKResult, solve_ik
 
 __version__ = "0.1.0"
 
-__all__ = ["MoikError", "__version__"]
+__all__ = [
+    "IKResult",
+    "MoikError",
+    "PathResult",
+    "Robot",
+    "__version__",
+    "algorithms",
+    "available_robots",
+    "get_robot",
+    "load_urdf",
+    "problems",
+    "solve_ik",
+    "solve_path",
+]

@@ -2,7 +2,9 @@
 
 Subcommands:
     moik robots                      list the robot catalog
+    moik algorithms                  list the registered algorithms
     moik fk ROBOT q1 ... qn [--deg]  print the end-effector pose
+    moik solve ROBOT --target x y z [--euler a b c [--deg]] ...   solve IK
 """
 
 from __future__ import annotations
@@ -53,6 +55,51 @@ def _cmd_fk(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_algorithms(args: argparse.Namespace) -> int:
+    from moik.algorithms import available
+
+    for name in available():
+        print(name)
+    return 0
+
+
+def _cmd_solve(args: argparse.Namespace) -> int:
+    from moik.problems.targets import Target
+    from moik.solve import solve_ik
+
+    robot = get_robot(args.robot)
+    if args.euler is None:
+        target = Target(args.target)
+    else:
+        target = Target.from_euler(args.target, args.euler, convention=args.convention,
+                                   degrees=args.deg)
+    res = solve_ik(robot, target, method=args.algorithm, seed=args.seed,
+                   n_solutions=args.n_solutions)
+    kind = "pose" if target.has_orientation else "position"
+    print(f"robot {robot.name}: {kind} target {np.round(target.position, 6).tolist()} "
+          f"{robot.unit}")
+    print(f"status: {res.status}  ({res.n_eval} FK evaluations, {res.time * 1e3:.1f} ms)")
+    q_deg = np.where(robot.is_prismatic, res.q, np.degrees(res.q))
+    print("q: " + " ".join(f"{v:.6f}" for v in q_deg) + "  (deg; prismatic in "
+          f"{robot.unit})")
+    print(f"position error: {res.position_error:.3e} {robot.unit}")
+    if target.has_orientation:
+        print(f"orientation error: {res.orientation_error:.3e} rad (geodesic)")
+    for k, q in enumerate(res.solutions[1:], start=2):
+        print(f"solution {k}: " + " ".join(f"{v:.6f}" for v in np.degrees(q)))
+    if res.front is not None:
+        print(f"Pareto front of (position, orientation) errors: {len(res.front)} points; "
+              "q above is the compromise closest to the utopia point")
+    if args.plot:
+        from moik.plotting import plot_robot
+
+        stem = args.plot.rsplit(".", 1)[0]
+        plot_robot(robot, res.solutions if len(res.solutions) else res.q,
+                   target=target.position, save=stem)
+        print(f"plot written to {stem}.png and {stem}.pdf")
+    return 0 if res.success else 1
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of the ``moik`` command."""
     parser = argparse.ArgumentParser(prog="moik", description=__doc__.splitlines()[0])
@@ -64,6 +111,22 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("q", nargs="+", type=float, help="joint values (rad, or deg with --deg)")
     p.add_argument("--deg", action="store_true", help="revolute joint values in degrees")
     p.set_defaults(func=_cmd_fk)
+    p = sub.add_parser("algorithms", help="list the registered algorithms")
+    p.set_defaults(func=_cmd_algorithms)
+    p = sub.add_parser("solve", help="solve inverse kinematics for one target")
+    p.add_argument("robot", help="catalog name (see `moik robots`)")
+    p.add_argument("--target", nargs=3, type=float, required=True, metavar=("X", "Y", "Z"),
+                   help="target position in the robot's length unit")
+    p.add_argument("--euler", nargs=3, type=float, metavar=("A", "B", "C"),
+                   help="target orientation as Euler angles (alpha, beta, gamma)")
+    p.add_argument("--convention", default="zyx-euler", choices=["zyx-euler", "eosma-euler"],
+                   help="Euler convention (default zyx-euler: Rz(a) Ry(b) Rx(c))")
+    p.add_argument("--deg", action="store_true", help="Euler angles in degrees")
+    p.add_argument("--algorithm", default="eosma", help="search algorithm (default eosma)")
+    p.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
+    p.add_argument("--n-solutions", type=int, default=1, help="distinct solutions wanted")
+    p.add_argument("--plot", metavar="FILE", help="save a 3-D drawing (FILE.png and .pdf)")
+    p.set_defaults(func=_cmd_solve)
     return parser
 
 

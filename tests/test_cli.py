@@ -21,3 +21,26 @@ def test_fk_errors_are_reported(capsys):
     assert "needs 7 joint values, got 2" in capsys.readouterr().err
     assert main(["fk", "nope", "1"]) == 2
     assert "unknown robot 'nope'" in capsys.readouterr().err
+
+
+def test_solve_reachable_pose(capsys, tmp_path):
+    """The README's main command: the pose of (45,0,45,0,45,0,0) deg (ZYX angles
+    printed by `moik fk`) is solved exactly, with three distinct solutions."""
+    plot = tmp_path / "sol.png"
+    args = ["solve", "eosma7", "--target", "-24.748737", "100.961941", "50", "--euler", "135",
+            "0", "-90", "--deg", "--n-solutions", "3", "--plot", str(plot)]
+    assert main(args) == 0
+    out = capsys.readouterr().out
+    assert "status: solved" in out and "solution 3:" in out
+    assert (tmp_path / "sol.png").exists() and (tmp_path / "sol.pdf").exists()
+
+
+def test_solve_errors_are_one_line(capsys):
+    assert main(["solve", "eosma7", "--target", "0", "0", "9000"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("moik: error:") and "expected a position in cm" in err
+
+
+def test_algorithms_lists_registry(capsys):
+    assert main(["algorithms"]) == 0
+    assert "eosma" in capsys.readouterr().out.split()

@@ -34,6 +34,7 @@ from moik.robots.chain import Robot
 
 STATUSES = ("solved", "unreachable", "not-converged")
 MIN_REFINEMENTS_FOR_UNREACHABLE = 5
+QUICK_NFEV = 12  # a good start converges in ~5-10 evaluations; a bad one is dropped early
 
 
 @dataclass(frozen=True)
@@ -86,12 +87,12 @@ def _search_problem(robot: Robot, target: Target, orientation: str):
     return PoseIK(robot, target, weights=(1.0 / robot.reach, 1.0), orientation=orientation)
 
 
-def _population(algorithm, res) -> tuple[np.ndarray, np.ndarray]:
-    """Final candidates (X, F) of a run, for ArrayAlgorithms and pymoo's own."""
+def _population(algorithm) -> tuple[np.ndarray, np.ndarray]:
+    """Current candidates (X, F) of a run, for ArrayAlgorithms and pymoo's own."""
     X, F = getattr(algorithm, "X", None), getattr(algorithm, "F", None)
     if isinstance(X, np.ndarray) and isinstance(F, np.ndarray):
         return X, F.reshape(len(X), -1)[:, 0]
-    return res.pop.get("X"), res.pop.get("F")[:, 0]
+    return algorithm.pop.get("X"), algorithm.pop.get("F")[:, 0]
 
 
 def joint_distance(robot: Robot, q: np.ndarray, others: np.ndarray) -> np.ndarray:
@@ -120,9 +121,10 @@ class _Session:
         self.best: tuple[float, np.ndarray, bool] | None = None  # (error, q, stationary)
         self.n_refined = 0
 
-    def refine(self, q0: np.ndarray, do_polish: bool) -> None:
+    def refine(self, q0: np.ndarray, do_polish: bool, max_nfev: int = 60) -> None:
         if do_polish:
             out = polish_q(self.robot, self.target, q0, length=self.robot.reach,
+                           max_nfev=max_nfev,
                            stop_position=1e-3 * self.tol_pos,
                            stop_orientation=1e-3 * self.tol_ori)
             self.n_eval += out.n_eval
@@ -196,25 +198,38 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     while (len(session.found) < n_solutions and session.n_eval < max_evals
            and idle_rounds < patience):
         n_found = len(session.found)
-        algorithm = get_algorithm(method, pop_size=pop_size)
-        run_seed = int(seeds.spawn(1)[0].generate_state(1)[0])
-        res = minimize(problem, algorithm, ("n_gen", generations), seed=run_seed,
-                       copy_algorithm=False)
-        session.n_eval += algorithm.evaluator.n_eval
-        X, F = _population(algorithm, res)
-        picked: list[np.ndarray] = []
-        for i in np.argsort(F, kind="stable"):
-            if len(picked) == candidates_per_round:
-                break
-            if _distinct(robot, X[i], picked + session.found, distinct):
-                picked.append(X[i])
-        for q0 in picked:
-            session.refine(q0, polish)
-            if len(session.found) >= n_solutions:
-                break
+        _search_round(session, problem, method, pop_size, generations, candidates_per_round,
+                      int(seeds.spawn(1)[0].generate_state(1)[0]), n_solutions, polish)
         idle_rounds = 0 if len(session.found) > n_found else idle_rounds + 1
     return _result(session, robot, target, orientation, q_current, seeds, t0, front_method,
                    front_evals)
+
+
+def _search_round(session: _Session, problem, method: str, pop_size: int, generations: int,
+                  candidates: int, run_seed: int, n_solutions: int, do_polish: bool) -> None:
+    """One search run; the best candidate of the initial population is polished
+    at once (early stop when that already solves the target), the best
+    ``candidates`` distinct ones after the last generation."""
+    algorithm = get_algorithm(method, pop_size=pop_size)
+    algorithm.setup(problem, termination=("n_gen", generations), seed=run_seed)
+    robot, gen = session.robot, 0
+    while algorithm.has_next() and len(session.found) < n_solutions:
+        algorithm.next()
+        gen += 1
+        if gen not in (1, generations):
+            continue
+        X, F = _population(algorithm)
+        picked: list[np.ndarray] = []
+        for i in np.argsort(F, kind="stable"):
+            if len(picked) == (1 if gen == 1 else candidates):
+                break
+            if _distinct(robot, X[i], picked + session.found, session.distinct):
+                picked.append(X[i])
+        for q0 in picked:  # a quick try after gen 1; a full refinement at the end
+            session.refine(q0, do_polish, max_nfev=QUICK_NFEV if gen == 1 else 60)
+            if len(session.found) >= n_solutions:
+                break
+    session.n_eval += algorithm.evaluator.n_eval
 
 
 def _result(session, robot, target, orientation, q_current, seeds, t0, front_method,

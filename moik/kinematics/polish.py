@@ -47,16 +47,6 @@ class PolishResult:
     stationary: bool
 
 
-def pose_residual(robot: Robot, target: Target, length: float, q: np.ndarray) -> np.ndarray:
-    """Residual vector of ``q`` (see module docstring)."""
-    R, p = robot.fk_parts(q[None])
-    r_pos = (p[0] - target.position) / length
-    if target.rotation is None:
-        return r_pos
-    r_rot = Rotation.from_matrix(R[0] @ target.rotation.T).as_rotvec()
-    return np.concatenate([r_pos, r_rot])
-
-
 def inverse_left_jacobian_so3(phi: np.ndarray) -> np.ndarray:
     """``J_l^{-1}(phi)``: maps a world-frame angular velocity to d log(R)/dt.
 
@@ -75,6 +65,48 @@ def inverse_left_jacobian_so3(phi: np.ndarray) -> np.ndarray:
     return np.eye(3) - 0.5 * K + coef * (K @ K)
 
 
+class ResidualModel:
+    """Residual and Jacobian of a target, sharing one FK pass per point.
+
+    ``least_squares`` asks for the residual and then the Jacobian at the same
+    point; both come from one call of :func:`pose_and_jacobian`, cached.
+    """
+
+    def __init__(self, robot: Robot, target: Target, length: float):
+        self.robot, self.target, self.length = robot, target, length
+        self.n_fk = 0
+        self._q: np.ndarray | None = None
+
+    def _update(self, q: np.ndarray) -> None:
+        if self._q is not None and np.array_equal(q, self._q):
+            return
+        T, J = pose_and_jacobian(self.robot, q)
+        self.n_fk += 1
+        self._q = np.array(q, dtype=float)
+        r_pos = (T[:3, 3] - self.target.position) / self.length
+        if self.target.rotation is None:
+            self._r, self._J = r_pos, J[:3] / self.length
+            return
+        r_rot = Rotation.from_matrix(T[:3, :3] @ self.target.rotation.T).as_rotvec()
+        self._r = np.concatenate([r_pos, r_rot])
+        self._J = np.vstack([J[:3] / self.length, inverse_left_jacobian_so3(r_rot) @ J[3:]])
+
+    def residual(self, q: np.ndarray) -> np.ndarray:
+        """``[(p - p_t) / L, rotvec(R R_t^T)]`` (position rows only without rotation)."""
+        self._update(q)
+        return self._r
+
+    def jacobian(self, q: np.ndarray) -> np.ndarray:
+        """Exact Jacobian of :meth:`residual`: ``[J_v / L; J_l^{-1}(r) J_w]``."""
+        self._update(q)
+        return self._J
+
+
+def pose_residual(robot: Robot, target: Target, length: float, q: np.ndarray) -> np.ndarray:
+    """Residual vector of ``q`` (see module docstring)."""
+    return ResidualModel(robot, target, length).residual(q)
+
+
 def pose_residual_jacobian(robot: Robot, target: Target, length: float,
                            q: np.ndarray) -> np.ndarray:
     """Jacobian of :func:`pose_residual` (``(3 or 6, dof)``), exact.
@@ -82,11 +114,7 @@ def pose_residual_jacobian(robot: Robot, target: Target, length: float,
     The orientation rows are ``J_l^{-1}(r) J_w``: ``d log(R R_t^T)`` under a
     world-frame rotation ``dR = [w] R``.
     """
-    T, J = pose_and_jacobian(robot, q)
-    if target.rotation is None:
-        return J[:3] / length
-    r_rot = Rotation.from_matrix(T[:3, :3] @ target.rotation.T).as_rotvec()
-    return np.vstack([J[:3] / length, inverse_left_jacobian_so3(r_rot) @ J[3:]])
+    return ResidualModel(robot, target, length).jacobian(q)
 
 
 def _stopper(target: Target, length: float, stop_position: float, stop_orientation: float):
@@ -121,38 +149,29 @@ def polish(robot: Robot, target: Target, q0: np.ndarray, *, length: float,
     span = robot.upper - robot.lower
     margin = np.minimum(1e-10 * np.maximum(span, 1.0), 0.25 * span)
     x0 = np.clip(q0, robot.lower + margin, robot.upper - margin)
-    fixed = span == 0
-    if fixed.any():  # least_squares needs lower < upper; freeze those joints
-        return _polish_with_fixed(robot, target, x0, fixed, length, max_nfev, callback)
-    sol = least_squares(
-        lambda q: pose_residual(robot, target, length, q), x0,
-        jac=lambda q: pose_residual_jacobian(robot, target, length, q),
-        bounds=(robot.lower, robot.upper), method="dogbox", xtol=1e-12, ftol=1e-10, gtol=1e-10,
-        max_nfev=max_nfev, callback=callback)
-    return _result(robot, sol)
+    free = span > 0  # least_squares needs lower < upper: freeze equal-limit joints
+    model = ResidualModel(robot, target, length)
 
-
-def _result(robot: Robot, sol, q=None) -> PolishResult:
-    q = np.clip(sol.x if q is None else q, robot.lower, robot.upper)
-    # status -2: stopped by the callback (within tolerance): a stationary success
-    stationary = sol.status in CONVERGED_STATUS or sol.status == -2
-    return PolishResult(q, float(sol.cost), int(sol.nfev + (sol.njev or 0)), stationary)
-
-
-def _polish_with_fixed(robot, target, x0, fixed, length, max_nfev, callback) -> PolishResult:
-    free = ~fixed
-
-    def full(qf):
+    def full(qf: np.ndarray) -> np.ndarray:
+        if free.all():
+            return qf
         q = x0.copy()
         q[free] = qf
         return q
 
     sol = least_squares(
-        lambda qf: pose_residual(robot, target, length, full(qf)), x0[free],
-        jac=lambda qf: pose_residual_jacobian(robot, target, length, full(qf))[:, free],
-        bounds=(robot.lower[free], robot.upper[free]), method="dogbox", xtol=1e-12, ftol=1e-10,
-        gtol=1e-10, max_nfev=max_nfev, callback=callback)
-    return _result(robot, sol, full(sol.x))
+        lambda qf: model.residual(full(qf)), x0[free],
+        jac=lambda qf: model.jacobian(full(qf))[:, free],
+        bounds=(robot.lower[free], robot.upper[free]), method="dogbox", xtol=1e-12,
+        ftol=1e-10, gtol=1e-10, max_nfev=max_nfev, callback=callback)
+    return _result(robot, sol, full(sol.x), model.n_fk)
+
+
+def _result(robot: Robot, sol, q: np.ndarray, n_fk: int) -> PolishResult:
+    q = np.clip(q, robot.lower, robot.upper)
+    # status -2: stopped by the callback (within tolerance): a stationary success
+    stationary = sol.status in CONVERGED_STATUS or sol.status == -2
+    return PolishResult(q, float(sol.cost), n_fk, stationary)
 
 
 def pose_errors(robot: Robot, target: Target, Q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

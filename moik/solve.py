@@ -8,9 +8,10 @@ derived seeds until enough distinct solutions are found or the budget is spent.
 
 Honesty rules: the returned errors are recomputed with the reference FK (never
 taken from an optimizer); ``q`` is always within the joint limits; a target is
-called ``"unreachable"`` when the best of at least five local refinements
-from distinct starts stopped at a stationary point above tolerance (the
-solver's best evidence, not a proof), and then the
+called ``"unreachable"`` when no solution was found and either at least five
+local refinements from distinct starts stopped at stationary points above
+tolerance, or three of them agree (within 0.1 %) on a minimal error far above
+tolerance (the solver's best evidence, not a proof); then the
 Pareto front of (position error, orientation error) from a multi-objective
 algorithm (MOEOSMA) is returned with its compromise closest to the utopia point.
 """
@@ -33,7 +34,7 @@ from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.chain import Robot
 
 STATUSES = ("solved", "unreachable", "not-converged")
-MIN_REFINEMENTS_FOR_UNREACHABLE = 5
+MIN_STATIONARY_FOR_UNREACHABLE = 5
 QUICK_NFEV = 12  # a good start converges in ~5-10 evaluations; a bad one is dropped early
 
 
@@ -118,8 +119,19 @@ class _Session:
         self.tol_pos, self.tol_ori, self.distinct = tol_pos, tol_ori, distinct
         self.n_eval = 0
         self.found: list[np.ndarray] = []
-        self.best: tuple[float, np.ndarray, bool] | None = None  # (error, q, stationary)
-        self.n_refined = 0
+        self.best: tuple[float, np.ndarray] | None = None  # (scaled error, q)
+        self.n_stationary = 0  # refinements that ended at a stationary point
+        self.errors: list[float] = []  # scaled errors of full refinements
+
+    def unreachable_evidence(self) -> bool:
+        """Several refinements from distinct starts stopped at stationary points
+        above tolerance, or several agree on the same minimal error (within
+        0.1 %), which is far above tolerance."""
+        if self.n_stationary >= MIN_STATIONARY_FOR_UNREACHABLE:
+            return True
+        errs = np.sort(self.errors)
+        tol = self.tol_pos / self.robot.reach + self.tol_ori
+        return bool(errs.size >= 3 and errs[0] > 1e3 * tol and errs[2] <= errs[0] * 1.001)
 
     def refine(self, q0: np.ndarray, do_polish: bool, max_nfev: int = 60) -> None:
         if do_polish:
@@ -131,11 +143,14 @@ class _Session:
             q, stationary = out.q, out.stationary
         else:
             q, stationary = np.clip(q0, self.robot.lower, self.robot.upper), False
-        self.n_refined += 1
+        self.n_stationary += int(stationary)
+        full = max_nfev > QUICK_NFEV
         pos, ori = (float(v[0]) for v in pose_errors(self.robot, self.target, q))
         err = pos / self.robot.reach + ori
+        if full:
+            self.errors.append(err)
         if self.best is None or err < self.best[0]:
-            self.best = (err, q, stationary)
+            self.best = (err, q)
         if pos <= self.tol_pos and ori <= self.tol_ori and _distinct(self.robot, q, self.found,
                                                                    self.distinct):
             self.found.append(q)
@@ -242,9 +257,8 @@ def _result(session, robot, target, orientation, q_current, seeds, t0, front_met
         q, status = sols[0], "solved"
     else:
         sols = np.empty((0, robot.dof))
-        _, q, stationary = session.best
-        # the best of several refinements stopped at a stationary point above tolerance
-        unreachable = stationary and session.n_refined >= MIN_REFINEMENTS_FOR_UNREACHABLE
+        q = session.best[1]
+        unreachable = session.unreachable_evidence()
         status = "unreachable" if unreachable else "not-converged"
         if status == "unreachable" and target.rotation is not None:
             problem = BiObjectiveIK(robot, target, orientation=orientation)

@@ -1,6 +1,9 @@
-"""Optimization algorithms: array-state single-objective metaheuristics and a registry."""
+"""Optimization algorithms: array-state single- and multi-objective metaheuristics, a registry."""
 
 from moik.algorithms.base import ArrayAlgorithm
+from moik.algorithms.moo.base import MOArrayAlgorithm
+from moik.algorithms.moo.moeosma import MOEOSMA
+from moik.algorithms.moo.mompso import MOMPSO
 from moik.algorithms.registry import available, get_algorithm, register
 from moik.algorithms.soo.eo import EO
 from moik.algorithms.soo.eosma import EOSMA
@@ -8,5 +11,5 @@ from moik.algorithms.soo.mpso import MPSO
 from moik.algorithms.soo.pso import PSO
 from moik.algorithms.soo.sma import SMA
 
-__all__ = ["EO", "EOSMA", "MPSO", "PSO", "SMA", "ArrayAlgorithm", "available", "get_algorithm",
-           "register"]
+__all__ = ["EO", "EOSMA", "MOEOSMA", "MOMPSO", "MPSO", "PSO", "SMA", "ArrayAlgorithm",
+           "MOArrayAlgorithm", "available", "get_algorithm", "register"]

@@ -15,10 +15,16 @@ from __future__ import annotations
 import inspect
 from collections.abc import Callable
 
+from pymoo.algorithms.moo.mopso_cd import MOPSO_CD
+from pymoo.algorithms.moo.nsga2 import NSGA2
+from pymoo.algorithms.moo.sms import SMSEMOA
 from pymoo.algorithms.soo.nonconvex.de import DE
 from pymoo.algorithms.soo.nonconvex.ga import GA
 from pymoo.core.algorithm import Algorithm
 
+from moik.algorithms.moo.moeosma import MOEOSMA
+from moik.algorithms.moo.mompso import MOMPSO
+from moik.algorithms.moo.pymoo_moo import MOEAD
 from moik.algorithms.soo.eo import EO
 from moik.algorithms.soo.eosma import EOSMA
 from moik.algorithms.soo.mpso import MPSO
@@ -34,6 +40,13 @@ _REGISTRY: dict[str, type[Algorithm]] = {
     "pso": PSO,
     "de": DE,
     "ga": GA,
+    # multi-objective (issue 4): moik's array-state algorithms, then pymoo's for comparisons
+    "moeosma": MOEOSMA,
+    "mo-m-pso": MOMPSO,
+    "nsga2": NSGA2,
+    "moead": MOEAD,
+    "sms-emoa": SMSEMOA,
+    "mopso-cd": MOPSO_CD,
 }
 
 

@@ -30,19 +30,22 @@ from moik.exceptions import NonFiniteError, ShapeError, UnknownNameError
 
 
 def _atan_ratio(num: np.ndarray, den: np.ndarray) -> np.ndarray:
-    """``atan(num/den)`` as MATLAB's ``atan`` of the quotient, with ``0/0 -> 0``."""
-    with np.errstate(divide="ignore", invalid="ignore"):
-        out = np.arctan(num / den)
-    return np.where((num == 0.0) & (den == 0.0), 0.0, out)
+    """``atan(num/den)`` as MATLAB's ``atan`` of the quotient, with ``0/0 -> 0``.
+
+    Computed as ``atan2(num * s, den * s)`` with ``s = copysign(1, den)``: the
+    same value in ``[-pi/2, pi/2]`` without a division (``x/0 -> +-pi/2``).
+    """
+    sign = np.copysign(1.0, den)
+    return np.arctan2(num * sign, den * sign)
 
 
 def eosma_euler(R: np.ndarray) -> np.ndarray:
     """EOSMA Eq. 26 Euler angles ``(alpha, beta, gamma)`` of ``R (..., 3, 3)``."""
-    n, s, a = R[..., :, 0], R[..., :, 1], R[..., :, 2]
-    alpha = _atan_ratio(-a[..., 1], a[..., 2])
-    beta = _atan_ratio(a[..., 0], np.sqrt(n[..., 0] ** 2 + s[..., 0] ** 2))
-    gamma = _atan_ratio(-s[..., 0], n[..., 0])
-    return np.stack([alpha, beta, gamma], axis=-1)
+    out = np.empty(R.shape[:-2] + (3,))
+    out[..., 0] = _atan_ratio(-R[..., 1, 2], R[..., 2, 2])
+    out[..., 1] = _atan_ratio(R[..., 0, 2], np.hypot(R[..., 0, 0], R[..., 0, 1]))
+    out[..., 2] = _atan_ratio(-R[..., 0, 1], R[..., 0, 0])
+    return out
 
 
 def zyx_euler(R: np.ndarray) -> np.ndarray:

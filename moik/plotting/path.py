@@ -1,0 +1,135 @@
+"""Path tracking: desired against reached points with per-point errors
+(MO-m-PSO Fig. 7, the 50-point circle)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from moik.exceptions import ShapeError
+from moik.plotting._common import (
+    LOG_FLOOR,
+    as_array,
+    check_floor,
+    floored,
+    save_figure,
+    unit_suffix,
+)
+
+
+def plot_path_tracking(
+    desired,
+    reached,
+    *,
+    orientation_errors=None,
+    Q=None,
+    unit: str | None = "cm",
+    log: bool = False,
+    floor: float = LOG_FLOOR,
+    title: str = "Path tracking",
+    save: str | None = None,
+):
+    """Desired and reached paths in 3-D, with the error at every point.
+
+    Reproduces MO-m-PSO Fig. 7: (a) the input trajectory (red) and the tracked
+    one (black), (b) the joint angles returned at each point (when ``Q`` is
+    given), plus the relative error at each point the text describes. The
+    position error is the Euclidean distance between desired and reached point.
+
+    Args:
+        desired: ``(n, 3)`` target points in ``unit``.
+        reached: ``(n, 3)`` end-effector positions (FK of the solutions).
+        orientation_errors: Optional ``(n,)`` orientation errors in rad, drawn in
+            their own panel.
+        Q: Optional ``(n, dof)`` joint solutions per point, drawn in their own
+            panel (rad).
+        unit: Length unit for the labels.
+        log: Log y axis on the error panels; errors below ``floor`` (exact
+            hits) are drawn at ``floor`` and the label says so.
+        floor: Smallest error shown on log axes.
+        title: Figure title.
+        save: Path stem; writes ``save.png`` and ``save.pdf``.
+
+    Returns:
+        The Figure. ``fig.axes[0]`` is the 3-D view (lines: desired, reached);
+        ``fig.axes[1]`` the position error per point (one line of ``n``
+        points); then the orientation-error panel and the joint-angle panel
+        (``dof`` lines) when their data are given.
+
+    Raises:
+        ShapeError: ``desired``/``reached`` not ``(n, 3)`` of equal ``n``, or an
+            optional array with another number of points.
+    """
+    import matplotlib.pyplot as plt
+
+    D = as_array(desired, "desired points", shape=(None, 3))
+    R = as_array(reached, "reached points", shape=(None, 3))
+    if R.shape != D.shape:
+        raise ShapeError(f"reached points {R.shape} must match desired points {D.shape}")
+    npts = D.shape[0]
+    ori = None
+    if orientation_errors is not None:
+        ori = as_array(orientation_errors, "orientation_errors", ndim=1)
+        if ori.shape[0] != npts:
+            raise ShapeError(f"orientation_errors has {ori.shape[0]} values for {npts} points")
+    joints = None
+    if Q is not None:
+        joints = as_array(Q, "Q", ndim=2)
+        if joints.shape[0] != npts:
+            raise ShapeError(f"Q has {joints.shape[0]} rows for {npts} points")
+    pos_err = np.linalg.norm(R - D, axis=1)
+    note = ""
+    if log:
+        floor = check_floor(floor)
+        pos_err = floored(pos_err, floor, "position errors")
+        if ori is not None:
+            ori = floored(ori, floor, "orientation_errors")
+        note = f" [< {floor:g} shown at {floor:g}]"
+
+    n_right = 1 + (ori is not None) + (joints is not None)
+    fig = plt.figure(figsize=(11.0, 3.2 * max(n_right, 2)))
+    grid = fig.add_gridspec(n_right, 2)
+    ax3 = fig.add_subplot(grid[:, 0], projection="3d")
+    ax3.plot(D[:, 0], D[:, 1], D[:, 2], "r-o", markersize=3, label="desired")
+    ax3.plot(R[:, 0], R[:, 1], R[:, 2], "k--x", markersize=3, label="reached")
+    sfx = unit_suffix(unit)
+    ax3.set_xlabel(f"x{sfx}")
+    ax3.set_ylabel(f"y{sfx}")
+    ax3.set_zlabel(f"z{sfx}")
+    ax3.set_aspect("equal")
+    ax3.set_title("(a) desired and reached path")
+    ax3.legend(loc="upper left", fontsize="small")
+
+    idx = np.arange(1, npts + 1)
+    row = 0
+    ax = fig.add_subplot(grid[row, 1])
+    ax.plot(idx, pos_err, "b.-", label=f"mean {pos_err.mean():.3g} {unit or ''}".rstrip())
+    ax.set_ylabel(f"position error{sfx}{note}")
+    ax.set_title("position error per point")
+    panels = [ax]
+    if ori is not None:
+        row += 1
+        ax = fig.add_subplot(grid[row, 1], sharex=panels[0])
+        ax.plot(idx, ori, "g.-", label=f"mean {ori.mean():.3g} rad")
+        ax.set_ylabel(f"orientation error (rad){note}")
+        ax.set_title("orientation error per point")
+        panels.append(ax)
+    for ax in panels:
+        if log:
+            ax.set_yscale("log")
+        ax.legend(fontsize="small")
+    if joints is not None:
+        row += 1
+        ax = fig.add_subplot(grid[row, 1], sharex=panels[0])
+        for j in range(joints.shape[1]):
+            ax.plot(idx, joints[:, j], ".-", markersize=3, label=f"q{j + 1}")
+        ax.set_ylabel("joint angle (rad)")
+        ax.set_title("(b) joint angles per point")
+        ax.legend(fontsize="small", ncol=2)
+        panels.append(ax)
+    for ax in panels:
+        ax.grid(True, alpha=0.3)
+    panels[-1].set_xlabel("path point index")
+    fig.suptitle(f"{title} ({npts} points)")
+    fig.tight_layout()
+    save_figure(fig, save)
+    return fig

@@ -5,11 +5,18 @@ from moik.algorithms.moo.base import MOArrayAlgorithm
 from moik.algorithms.moo.moeosma import MOEOSMA
 from moik.algorithms.moo.mompso import MOMPSO
 from moik.algorithms.registry import available, get_algorithm, register
+from moik.algorithms.soo.code import CODE
 from moik.algorithms.soo.eo import EO
 from moik.algorithms.soo.eosma import EOSMA
+from moik.algorithms.soo.hho import HHO
+from moik.algorithms.soo.igwo import IGWO
 from moik.algorithms.soo.mpso import MPSO
+from moik.algorithms.soo.mtde import MTDE
 from moik.algorithms.soo.pso import PSO
+from moik.algorithms.soo.psogsa import PSOGSA
+from moik.algorithms.soo.sass import SASS
 from moik.algorithms.soo.sma import SMA
 
 __all__ = ["EO", "EOSMA", "MOEOSMA", "MOMPSO", "MPSO", "PSO", "SMA", "ArrayAlgorithm",
+           "CODE", "HHO", "IGWO", "MTDE", "PSOGSA", "SASS",
            "MOArrayAlgorithm", "available", "get_algorithm", "register"]

@@ -25,10 +25,16 @@ from pymoo.core.algorithm import Algorithm
 from moik.algorithms.moo.moeosma import MOEOSMA
 from moik.algorithms.moo.mompso import MOMPSO
 from moik.algorithms.moo.pymoo_moo import MOEAD
+from moik.algorithms.soo.code import CODE
 from moik.algorithms.soo.eo import EO
 from moik.algorithms.soo.eosma import EOSMA
+from moik.algorithms.soo.hho import HHO
+from moik.algorithms.soo.igwo import IGWO
 from moik.algorithms.soo.mpso import MPSO
+from moik.algorithms.soo.mtde import MTDE
 from moik.algorithms.soo.pso import PSO
+from moik.algorithms.soo.psogsa import PSOGSA
+from moik.algorithms.soo.sass import SASS
 from moik.algorithms.soo.sma import SMA
 from moik.exceptions import ParameterError, UnknownNameError
 
@@ -39,6 +45,12 @@ _REGISTRY: dict[str, type[Algorithm]] = {
     "m-pso": MPSO,
     "pso": PSO,
     "de": DE,
+    "hho": HHO,
+    "igwo": IGWO,
+    "psogsa": PSOGSA,
+    "code": CODE,
+    "mtde": MTDE,
+    "sass": SASS,
     "ga": GA,
     # multi-objective (issue 4): moik's array-state algorithms, then pymoo's for comparisons
     "moeosma": MOEOSMA,

@@ -12,7 +12,9 @@ from moik.algorithms.registry import accepted_parameters
 from moik.exceptions import ParameterError, UnknownNameError
 
 NAMES = ["de", "eo", "eosma", "ga", "m-pso", "pso", "sma"]
+NAMES += ["hho", "igwo", "psogsa", "code", "mtde", "sass"]  # issue 7, second half
 OURS = ["eo", "eosma", "m-pso", "pso", "sma"]
+OURS += ["hho", "igwo", "code", "mtde", "sass"]  # PSOGSA: Rastrigin ~17
 
 
 class Sphere(Problem):
@@ -30,7 +32,8 @@ def test_available_names():
 
 
 def test_unknown_name_lists_valid_names():
-    with pytest.raises(UnknownNameError, match="unknown algorithm 'nsga9'; expected one of: de, "):
+    with pytest.raises(UnknownNameError,
+                       match="unknown algorithm 'nsga9'; expected one of: (code, )?de, "):
         get_algorithm("nsga9")
 
 

@@ -2,8 +2,14 @@
 
 from moik.algorithms.base import ArrayAlgorithm
 from moik.algorithms.moo.base import MOArrayAlgorithm
+from moik.algorithms.moo.mo_csa import MOCSA
+from moik.algorithms.moo.mo_jaya import MOJAYA
+from moik.algorithms.moo.mo_pso import MOClassicPSO
 from moik.algorithms.moo.moeosma import MOEOSMA
+from moik.algorithms.moo.mompa import MOMPA
 from moik.algorithms.moo.mompso import MOMPSO
+from moik.algorithms.moo.mopso import MOPSO
+from moik.algorithms.moo.mosma import MOSMA
 from moik.algorithms.registry import available, get_algorithm, register
 from moik.algorithms.soo.code import CODE
 from moik.algorithms.soo.eo import EO
@@ -19,4 +25,5 @@ from moik.algorithms.soo.sma import SMA
 
 __all__ = ["EO", "EOSMA", "MOEOSMA", "MOMPSO", "MPSO", "PSO", "SMA", "ArrayAlgorithm",
            "CODE", "HHO", "IGWO", "MTDE", "PSOGSA", "SASS",
-           "MOArrayAlgorithm", "available", "get_algorithm", "register"]
+           "MOArrayAlgorithm", "available", "get_algorithm", "register",
+           "MOCSA", "MOJAYA", "MOClassicPSO", "MOMPA", "MOPSO", "MOSMA"]

@@ -22,8 +22,14 @@ from pymoo.algorithms.soo.nonconvex.de import DE
 from pymoo.algorithms.soo.nonconvex.ga import GA
 from pymoo.core.algorithm import Algorithm
 
+from moik.algorithms.moo.mo_csa import MOCSA
+from moik.algorithms.moo.mo_jaya import MOJAYA
+from moik.algorithms.moo.mo_pso import MOClassicPSO
 from moik.algorithms.moo.moeosma import MOEOSMA
+from moik.algorithms.moo.mompa import MOMPA
 from moik.algorithms.moo.mompso import MOMPSO
+from moik.algorithms.moo.mopso import MOPSO
+from moik.algorithms.moo.mosma import MOSMA
 from moik.algorithms.moo.pymoo_moo import MOEAD
 from moik.algorithms.soo.code import CODE
 from moik.algorithms.soo.eo import EO
@@ -55,6 +61,12 @@ _REGISTRY: dict[str, type[Algorithm]] = {
     # multi-objective (issue 4): moik's array-state algorithms, then pymoo's for comparisons
     "moeosma": MOEOSMA,
     "mo-m-pso": MOMPSO,
+    "mosma": MOSMA,
+    "mopso": MOPSO,
+    "mompa": MOMPA,
+    "mo-pso": MOClassicPSO,
+    "mo-jaya": MOJAYA,
+    "mo-csa": MOCSA,
     "nsga2": NSGA2,
     "moead": MOEAD,
     "sms-emoa": SMSEMOA,

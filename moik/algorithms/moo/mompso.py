@@ -8,7 +8,8 @@ DOI 10.3390/app12147091, Section 2.2 (Eqs. 6-8), Algorithm 2:
   a single objective": M swarms of ``pop_size`` particles each (the paper: "the
   same number of particles, similar m-PSO parameters, and the same maximum
   iterations number"); swarm k runs m-PSO (Eqs. 3-5,
-  :mod:`moik.algorithms.soo.mpso`) on objective k alone;
+  :mod:`moik.algorithms.soo.mpso`) on objective k alone (shared swarm
+  mechanics in :mod:`moik.algorithms.moo.swarms`);
 - "then a Pareto-based approach is used to find a compromise solution by
   sorting the closest particle to the utopia point of the Pareto front" (Eq. 8):
   every evaluated particle of every swarm is offered to one shared
@@ -37,30 +38,21 @@ from __future__ import annotations
 
 import numpy as np
 
-from moik.algorithms.mechanics import clip_to_bounds, greedy_memory
-from moik.algorithms.moo.base import MOArrayAlgorithm, Step
+from moik.algorithms.mechanics import clip_to_bounds
+from moik.algorithms.moo.base import Step
+from moik.algorithms.moo.swarms import ObjectiveSwarms, own_objective, swarm_best
 from moik.algorithms.soo.mpso import SWITCHES, mpso_velocity
 from moik.algorithms.soo.pso import check_pso_params, clamp_velocity
 from moik.exceptions import ParameterError
 
-
-def own_objective(F: np.ndarray, swarm: np.ndarray) -> np.ndarray:
-    """Each particle's fitness on the objective of its swarm: ``F[i, swarm[i]]``."""
-    return F[np.arange(len(F)), swarm]
+__all__ = ["MOMPSO", "own_objective", "swarm_best"]
 
 
-def swarm_best(P: np.ndarray, S: np.ndarray, n_swarms: int) -> np.ndarray:
-    """Global best position of every swarm, repeated per particle, shape (M * N, d)."""
-    N = len(S) // n_swarms
-    best = S.reshape(n_swarms, N).argmin(axis=1) + N * np.arange(n_swarms)
-    return np.repeat(P[best], N, axis=0)
-
-
-class MOMPSO(MOArrayAlgorithm):
+class MOMPSO(ObjectiveSwarms):
     """MO-m-PSO (Rokbani et al. 2022) with array state; ``res.X``/``res.F`` = the archive.
 
     Extra public arrays (rows of swarm k are ``k N .. (k + 1) N - 1``): ``V``,
-    ``pbest_X``/``pbest_S`` (personal bests on the swarm's objective), ``S``
+    ``pbest_X``/``pbest_F``/``pbest_S`` (personal bests on the swarm's objective), ``S``
     (current fitness on the swarm's objective), ``swarm`` (objective index of
     each row), ``classic`` (particles that moved classically last iteration).
     ``compromise()`` returns the archive member closest to the utopia point.
@@ -87,20 +79,14 @@ class MOMPSO(MOArrayAlgorithm):
             raise ParameterError(f"switch must be one of {', '.join(SWITCHES)}; got {switch!r}")
         self.switch = switch
 
-    def _n_initial(self) -> int:
-        return self.problem.n_obj * self.pop_size
-
     def _evals_per_iteration(self) -> float:
         extra = 1.0 if self.switch == "mean-position" else 0.0
         return self.problem.n_obj * (self.pop_size + extra)
 
     def _initialize_state(self) -> None:
-        M = self.problem.n_obj
-        self.swarm = np.repeat(np.arange(M), self.pop_size)
-        self.S = own_objective(self.F, self.swarm)
+        super()._initialize_state()
         self.V = np.zeros_like(self.X)
         self.vmax = None if self.vmax_rate is None else self.vmax_rate * (self.xu - self.xl)
-        self.pbest_X, self.pbest_S = self.X, self.S
         self.classic = np.ones(len(self.X), dtype=bool)
 
     def _generation(self) -> Step:
@@ -117,7 +103,4 @@ class MOMPSO(MOArrayAlgorithm):
                           c2=self.c2, rng=self.random_state)  # Eqs. 3-4
         self.V = clamp_velocity(V, self.vmax)
         X = clip_to_bounds(self.X + self.V, self.xl, self.xu)  # Eq. 5
-        F = yield X
-        self.X, self.F, self.S = X, F, own_objective(F, self.swarm)
-        self.pbest_X, self.pbest_S, _ = greedy_memory(X, self.S, None, self.pbest_X,
-                                                      self.pbest_S, None)
+        self._remember(X, (yield X))

@@ -5,11 +5,16 @@ from moik.algorithms.moo.base import MOArrayAlgorithm
 from moik.algorithms.moo.mo_csa import MOCSA
 from moik.algorithms.moo.mo_jaya import MOJAYA
 from moik.algorithms.moo.mo_pso import MOClassicPSO
+from moik.algorithms.moo.moalo import MOALO
+from moik.algorithms.moo.moda import MODA
 from moik.algorithms.moo.moeosma import MOEOSMA
+from moik.algorithms.moo.mogwo import MOGWO
 from moik.algorithms.moo.mompa import MOMPA
 from moik.algorithms.moo.mompso import MOMPSO
+from moik.algorithms.moo.momvo import MOMVO
 from moik.algorithms.moo.mopso import MOPSO
 from moik.algorithms.moo.mosma import MOSMA
+from moik.algorithms.moo.mssa import MSSA
 from moik.algorithms.registry import available, get_algorithm, register
 from moik.algorithms.soo.code import CODE
 from moik.algorithms.soo.eo import EO
@@ -26,4 +31,5 @@ from moik.algorithms.soo.sma import SMA
 __all__ = ["EO", "EOSMA", "MOEOSMA", "MOMPSO", "MPSO", "PSO", "SMA", "ArrayAlgorithm",
            "CODE", "HHO", "IGWO", "MTDE", "PSOGSA", "SASS",
            "MOArrayAlgorithm", "available", "get_algorithm", "register",
+           "MOALO", "MODA", "MOGWO", "MOMVO", "MSSA",
            "MOCSA", "MOJAYA", "MOClassicPSO", "MOMPA", "MOPSO", "MOSMA"]

@@ -25,11 +25,16 @@ from pymoo.core.algorithm import Algorithm
 from moik.algorithms.moo.mo_csa import MOCSA
 from moik.algorithms.moo.mo_jaya import MOJAYA
 from moik.algorithms.moo.mo_pso import MOClassicPSO
+from moik.algorithms.moo.moalo import MOALO
+from moik.algorithms.moo.moda import MODA
 from moik.algorithms.moo.moeosma import MOEOSMA
+from moik.algorithms.moo.mogwo import MOGWO
 from moik.algorithms.moo.mompa import MOMPA
 from moik.algorithms.moo.mompso import MOMPSO
+from moik.algorithms.moo.momvo import MOMVO
 from moik.algorithms.moo.mopso import MOPSO
 from moik.algorithms.moo.mosma import MOSMA
+from moik.algorithms.moo.mssa import MSSA
 from moik.algorithms.moo.pymoo_moo import MOEAD
 from moik.algorithms.soo.code import CODE
 from moik.algorithms.soo.eo import EO
@@ -61,6 +66,12 @@ _REGISTRY: dict[str, type[Algorithm]] = {
     # multi-objective (issue 4): moik's array-state algorithms, then pymoo's for comparisons
     "moeosma": MOEOSMA,
     "mo-m-pso": MOMPSO,
+    # Mirjalili baselines of the EOSMA paper, Table 4
+    "mssa": MSSA,
+    "moalo": MOALO,
+    "moda": MODA,
+    "momvo": MOMVO,
+    "mogwo": MOGWO,
     "mosma": MOSMA,
     "mopso": MOPSO,
     "mompa": MOMPA,

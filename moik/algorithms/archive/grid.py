@@ -28,11 +28,14 @@ Rules (``M`` objectives):
 
 Decisions and deviations:
 
-- Selection pressures ``exp(-beta n)`` / ``exp(gamma n)`` follow the reference
-  MATLAB implementations that the EOSMA paper's parameter names come from
-  (Yarpiz MOPSO by M. K. Heris, and Mirjalili's MOGWO code). The 2004 paper
-  states the leader fitness as ``10 / n_c`` and replaces members of the most
-  crowded cell; ``beta``/``gamma`` generalize both.
+- Selection pressures follow the reference MATLAB implementations that the
+  EOSMA paper's parameter names come from: ``pressure="exp"`` weighs cells by
+  ``exp(-beta n)`` / ``exp(gamma n)`` (Yarpiz MOPSO by M. K. Heris, the MOPSO
+  preset); ``pressure="power"`` by ``n**(-beta)`` / ``n**gamma`` (Mirjalili's
+  MOGWO code, SelectLeader.m and DeleteFromRep.m, the MOGWO preset; the MOGWO
+  paper's ``P_i = c / N_i`` is ``beta = 1``). The 2004 paper states the leader
+  fitness as ``10 / n_c`` and replaces members of the most crowded cell;
+  ``beta``/``gamma`` generalize both.
 - The reference codes add a -inf and a +inf interval at the ends; members never
   fall there (the grid spans their inflated range), so they are omitted. When
   all members share one objective value the range is zero and every member is
@@ -51,6 +54,9 @@ from __future__ import annotations
 import numpy as np
 
 from moik.algorithms.archive.base import ArchiveBase, check_count, check_positive, roulette
+from moik.exceptions import ParameterError
+
+PRESSURES = ("exp", "power")
 
 
 def grid_bounds(F: np.ndarray, inflation: float) -> tuple[np.ndarray, np.ndarray]:
@@ -103,6 +109,8 @@ class GridArchive(ArchiveBase):
             (MOPSO 2, MOGWO 4).
         gamma: Deletion selection pressure; larger favours crowded cells more
             (2 in both).
+        pressure: ``"exp"`` (weights ``exp(-beta n)``, ``exp(gamma n)``; MOPSO)
+            or ``"power"`` (``n**-beta``, ``n**gamma``; MOGWO).
 
     Attributes:
         lower: Lower grid bounds, shape (M,).
@@ -121,8 +129,13 @@ class GridArchive(ArchiveBase):
         inflation: float = 0.1,
         beta: float = 2.0,
         gamma: float = 2.0,
+        pressure: str = "exp",
     ):
         super().__init__(capacity)
+        if pressure not in PRESSURES:
+            raise ParameterError(f"pressure must be one of {', '.join(PRESSURES)}; "
+                                 f"got {pressure!r}")
+        self.pressure = pressure
         self.n_grid = check_count("n_grid", n_grid, 1)
         self.inflation = check_positive("inflation", inflation, allow_zero=True)
         self.beta = check_positive("beta", beta)
@@ -136,8 +149,14 @@ class GridArchive(ArchiveBase):
 
     @classmethod
     def mogwo(cls, capacity: int) -> GridArchive:
-        """MOGWO preset (Mirjalili 2016; EOSMA Table 4): 10 grids, 0.1, beta 4, gamma 2."""
-        return cls(capacity, n_grid=10, inflation=0.1, beta=4.0, gamma=2.0)
+        """MOGWO preset (Mirjalili 2016; EOSMA Table 4): 10 grids, 0.1, beta 4, gamma 2, power."""
+        return cls(capacity, n_grid=10, inflation=0.1, beta=4.0, gamma=2.0, pressure="power")
+
+    def leader_weights(self, counts: np.ndarray) -> np.ndarray:
+        """Leader roulette weights of cells holding ``counts >= 1`` members (emptier: heavier)."""
+        if self.pressure == "power":
+            return counts.astype(float) ** -self.beta
+        return np.exp(-self.beta * (counts - counts.min()))
 
     def _set_grid(self) -> None:
         """Build the grid over the current members and locate them in it."""
@@ -169,7 +188,9 @@ class GridArchive(ArchiveBase):
             for e in range(excess):
                 occupied = counts > 0
                 weights = np.zeros(counts.size)
-                weights[occupied] = np.exp(self.gamma * (counts[occupied] - counts.max()))
+                n_occ = counts[occupied]
+                weights[occupied] = (n_occ.astype(float) / n_occ.max()) ** self.gamma if (
+                    self.pressure == "power") else np.exp(self.gamma * (n_occ - n_occ.max()))
                 cdf = np.cumsum(weights)
                 cell = min(
                     int(np.searchsorted(cdf, u[e, 0] * cdf[-1], side="right")), counts.size - 1
@@ -196,7 +217,7 @@ class GridArchive(ArchiveBase):
         """
         k = self._check_leaders(k)
         counts = self.cell_counts
-        cell = roulette(np.exp(-self.beta * (counts - counts.min())), k, rng)
+        cell = roulette(self.leader_weights(counts), k, rng)
         order = np.argsort(self.cells, kind="stable")
         starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
         offset = np.minimum((rng.random(k) * counts[cell]).astype(np.int64), counts[cell] - 1)
@@ -206,5 +227,6 @@ class GridArchive(ArchiveBase):
         return (
             f"GridArchive(capacity={self.capacity}, n_grid={self.n_grid}, "
             f"inflation={self.inflation}, beta={self.beta}, gamma={self.gamma}, "
+            f"pressure={self.pressure!r}, "
             f"members={len(self)})"
         )

@@ -13,6 +13,8 @@ from moik.exceptions import ParameterError, UnknownNameError
 
 NAMES = ["de", "eo", "eosma", "ga", "m-pso", "pso", "sma"]
 NAMES += ["hho", "igwo", "psogsa", "code", "mtde", "sass"]  # issue 7, second half
+NAMES += ["bes", "ibes", "fa", "mtsa", "cpso-at", "choa", "cchoa", "oichoa", "ochoa",
+          "wchoa", "mchoa", "ssa", "csa", "jaya"]  # issue 8
 OURS = ["eo", "eosma", "m-pso", "pso", "sma"]
 OURS += ["hho", "igwo", "code", "mtde", "sass"]  # PSOGSA: Rastrigin ~17
 
@@ -33,7 +35,7 @@ def test_available_names():
 
 def test_unknown_name_lists_valid_names():
     with pytest.raises(UnknownNameError,
-                       match="unknown algorithm 'nsga9'; expected one of: (code, )?de, "):
+                       match="unknown algorithm 'nsga9'; expected one of: (bes, )?.*de, "):
         get_algorithm("nsga9")
 
 

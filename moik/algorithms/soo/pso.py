@@ -79,6 +79,16 @@ class PSO(ArrayAlgorithm):
         super().__init__(pop_size=pop_size, X0=X0, **kwargs)
         self.w, self.c1, self.c2, self.vmax_rate = check_pso_params(w, c1, c2, vmax_rate)
 
+    @classmethod
+    def ibes(cls, **kwargs) -> PSO:
+        """The PSO preset of the I-BES paper's comparisons (its Table 1).
+
+        c1 = c2 = 1.4, w = 0.9, N = 150; the velocity limit ``v = 0.5 x`` is read as
+        half the box width (``vmax_rate=0.5``). ``kwargs`` override any of them.
+        """
+        params = {"w": 0.9, "c1": 1.4, "c2": 1.4, "vmax_rate": 0.5, "pop_size": 150}
+        return cls(**{**params, **kwargs})
+
     def _initialize_state(self) -> None:
         self.V = np.zeros_like(self.X)
         self.vmax = None if self.vmax_rate is None else self.vmax_rate * (self.xu - self.xl)

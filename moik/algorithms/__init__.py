@@ -16,20 +16,30 @@ from moik.algorithms.moo.mopso import MOPSO
 from moik.algorithms.moo.mosma import MOSMA
 from moik.algorithms.moo.mssa import MSSA
 from moik.algorithms.registry import available, get_algorithm, register
+from moik.algorithms.soo.bes import BES, IBES
+from moik.algorithms.soo.choa import CChOA, ChOA, MChOA, OChOA, OIChOA, WChOA
 from moik.algorithms.soo.code import CODE
+from moik.algorithms.soo.cpso_at import CPSOAT
+from moik.algorithms.soo.csa import CSA
 from moik.algorithms.soo.eo import EO
 from moik.algorithms.soo.eosma import EOSMA
+from moik.algorithms.soo.fa import FA
 from moik.algorithms.soo.hho import HHO
 from moik.algorithms.soo.igwo import IGWO
+from moik.algorithms.soo.jaya import JAYA
 from moik.algorithms.soo.mpso import MPSO
 from moik.algorithms.soo.mtde import MTDE
+from moik.algorithms.soo.mtsa import MTSA
 from moik.algorithms.soo.pso import PSO
 from moik.algorithms.soo.psogsa import PSOGSA
 from moik.algorithms.soo.sass import SASS
 from moik.algorithms.soo.sma import SMA
+from moik.algorithms.soo.ssa import SSA
 
 __all__ = ["EO", "EOSMA", "MOEOSMA", "MOMPSO", "MPSO", "PSO", "SMA", "ArrayAlgorithm",
            "CODE", "HHO", "IGWO", "MTDE", "PSOGSA", "SASS",
            "MOArrayAlgorithm", "available", "get_algorithm", "register",
            "MOALO", "MODA", "MOGWO", "MOMVO", "MSSA",
-           "MOCSA", "MOJAYA", "MOClassicPSO", "MOMPA", "MOPSO", "MOSMA"]
+           "MOCSA", "MOJAYA", "MOClassicPSO", "MOMPA", "MOPSO", "MOSMA",
+           "BES", "CPSOAT", "CSA", "FA", "IBES", "JAYA", "MTSA", "SSA",
+           "CChOA", "ChOA", "MChOA", "OChOA", "OIChOA", "WChOA"]

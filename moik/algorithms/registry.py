@@ -36,17 +36,25 @@ from moik.algorithms.moo.mopso import MOPSO
 from moik.algorithms.moo.mosma import MOSMA
 from moik.algorithms.moo.mssa import MSSA
 from moik.algorithms.moo.pymoo_moo import MOEAD
+from moik.algorithms.soo.bes import BES, IBES
+from moik.algorithms.soo.choa import CChOA, ChOA, MChOA, OChOA, OIChOA, WChOA
 from moik.algorithms.soo.code import CODE
+from moik.algorithms.soo.cpso_at import CPSOAT
+from moik.algorithms.soo.csa import CSA
 from moik.algorithms.soo.eo import EO
 from moik.algorithms.soo.eosma import EOSMA
+from moik.algorithms.soo.fa import FA
 from moik.algorithms.soo.hho import HHO
 from moik.algorithms.soo.igwo import IGWO
+from moik.algorithms.soo.jaya import JAYA
 from moik.algorithms.soo.mpso import MPSO
 from moik.algorithms.soo.mtde import MTDE
+from moik.algorithms.soo.mtsa import MTSA
 from moik.algorithms.soo.pso import PSO
 from moik.algorithms.soo.psogsa import PSOGSA
 from moik.algorithms.soo.sass import SASS
 from moik.algorithms.soo.sma import SMA
+from moik.algorithms.soo.ssa import SSA
 from moik.exceptions import ParameterError, UnknownNameError
 
 _REGISTRY: dict[str, type[Algorithm]] = {
@@ -63,6 +71,21 @@ _REGISTRY: dict[str, type[Algorithm]] = {
     "mtde": MTDE,
     "sass": SASS,
     "ga": GA,
+    # I-BES and MChOA papers and their comparisons (issue 8)
+    "bes": BES,
+    "ibes": IBES,
+    "fa": FA,
+    "mtsa": MTSA,
+    "cpso-at": CPSOAT,
+    "choa": ChOA,
+    "cchoa": CChOA,
+    "oichoa": OIChOA,
+    "ochoa": OChOA,
+    "wchoa": WChOA,
+    "mchoa": MChOA,
+    "ssa": SSA,
+    "csa": CSA,
+    "jaya": JAYA,
     # multi-objective (issue 4): moik's array-state algorithms, then pymoo's for comparisons
     "moeosma": MOEOSMA,
     "mo-m-pso": MOMPSO,

@@ -27,12 +27,26 @@ fires, the Eq. 16 positions (line 7 of the next iteration). So N evaluations
 per iteration with q=0 and 2N with q=1; N (1 + q) on average.
 
 Deviations and readings:
-- The equilibrium pool is the 4 best solutions evaluated so far plus their mean
-  (Eq. 7's wording), refreshed after every evaluation, not only at line 8.
+- The equilibrium pool is the 4 best *distinct* solutions evaluated so far plus
+  their mean (Eq. 7's wording), refreshed after every evaluation, not only at
+  line 8. Exact duplicates (the SMA operator returns gBest itself once the
+  weights are all 1) are kept once: the authors' code admits a pool member
+  only with a strictly different fitness, and a pool of four copies of gBest
+  makes ``Ceq_ave`` meaningless. (Their code fills the pool by a cascade of
+  ``if/elseif`` tests that does not shift members down; the true 4 best are
+  used here, as the text says.)
+- Eq. 17 moves a coordinate halfway to the bound from the agent's location
+  before the update, which is its personal best (the paper's IK section:
+  "the location of the search agents ... i.e. pBest_i"; the authors' code
+  repairs against the greedy memory ``Xold``). An earlier version of this
+  module used the last evaluated position instead.
 - ``pBest_A``/``pBest_B`` and ``R1..R3`` are drawn per agent (whole vectors, as
   the text says); SF is drawn per agent.
 - W uses ``log10`` and ``eps`` as the SMA code (Eq. 4 prints ``log``).
 - Constrained problems: comparisons are feasibility-first (see base.py).
+
+Reproducing Tables 5 and 7 on the 7-DOF arm: tests/algorithms/test_eosma_ik.py
+(Table 7 is reproduced with Table 1's lengths in metres, not in cm).
 """
 
 from __future__ import annotations
@@ -46,7 +60,7 @@ from moik.algorithms.mechanics import (
     midpoint_repair,
     ranking_fitness,
 )
-from moik.algorithms.soo.eo import concentration_update, eo_schedule, update_pool, with_mean
+from moik.algorithms.soo.eo import concentration_update, eo_schedule, with_mean
 from moik.algorithms.soo.sma import sma_schedule, sma_weights
 from moik.exceptions import ParameterError
 
@@ -74,6 +88,35 @@ def eosma_update(P, g_best, pool, W, t1: float, a: float, *, z: float, a1: float
     return np.where(use_eo[:, None], X_eo, X_sma)
 
 
+def update_distinct_pool(PX, PF, PCV, X, F, CV, k: int = 4):
+    """Eq. 7: the ``k`` best distinct rows of the old pool and a new evaluated batch.
+
+    Rows are ranked by the feasibility-first fitness (stable); a row equal to
+    a better-ranked one is dropped. Equal rows have equal fitness, so rows are
+    compared only when the ``4 k`` best hold a tie (else nothing to drop), and
+    all rows only when the ``4 k`` best hold fewer than ``k`` distinct points.
+
+    Returns:
+        ``(PX, PF, PCV)`` with at most ``k`` rows, best first.
+    """
+    X_all, F_all = np.concatenate([PX, X]), np.concatenate([PF, F])
+    CV_all = None if CV is None else np.concatenate([PCV, CV])
+    S = ranking_fitness(F_all, CV_all)
+    order = np.argsort(S, kind="stable")
+    for m in (4 * k, len(order)):
+        top = order[:m]
+        St = S[top]
+        if not np.any(St[1:] == St[:-1]):
+            break
+        Xs = X_all[top]
+        same = (Xs[:, None, :] == Xs[None, :, :]).all(axis=2) & (St[:, None] == St[None, :])
+        top = top[~np.tril(same, -1).any(axis=1)]
+        if len(top) >= k or m >= len(order):
+            break
+    top = top[:k]
+    return X_all[top], F_all[top], (None if CV is None else CV_all[top])
+
+
 def random_difference_mutation(P: np.ndarray, *, rng: np.random.Generator) -> np.ndarray:
     """Eq. 16: ``pBest_R1 + SF (pBest_R2 - pBest_R3)`` with ``SF ~ U[0.3, 0.6]``."""
     n = len(P)
@@ -86,7 +129,7 @@ class EOSMA(ArrayAlgorithm):
     """EOSMA (Yin et al. 2022) with array state.
 
     Extra public arrays: ``pbest_X``/``pbest_F``/``pbest_CV`` (personal bests),
-    ``pool_X``/``pool_F`` (4 best so far). ``X``/``F`` are the last evaluated
+    ``pool_X``/``pool_F`` (4 best distinct so far). ``X``/``F`` are the last evaluated
     positions.
 
     Args:
@@ -128,7 +171,7 @@ class EOSMA(ArrayAlgorithm):
     def _initialize_state(self) -> None:
         self.pbest_X, self.pbest_F, self.pbest_CV = self.X, self.F, self.CV
         empty, cv0 = np.empty((0, self.problem.n_var)), (None if self.CV is None else np.empty(0))
-        self.pool_X, self.pool_F, self.pool_CV = update_pool(
+        self.pool_X, self.pool_F, self.pool_CV = update_distinct_pool(
             empty, np.empty(0), cv0, self.X, self.F, self.CV)
 
     def _remember(self, X, F, CV) -> None:
@@ -136,7 +179,7 @@ class EOSMA(ArrayAlgorithm):
         self.X, self.F, self.CV = X, F, CV
         self.pbest_X, self.pbest_F, self.pbest_CV = greedy_memory(
             X, F, CV, self.pbest_X, self.pbest_F, self.pbest_CV)
-        self.pool_X, self.pool_F, self.pool_CV = update_pool(
+        self.pool_X, self.pool_F, self.pool_CV = update_distinct_pool(
             self.pool_X, self.pool_F, self.pool_CV, X, F, CV)
 
     def _population_arrays(self):
@@ -149,11 +192,11 @@ class EOSMA(ArrayAlgorithm):
         W = sma_weights(ranking_fitness(self.pbest_F, self.pbest_CV), self.problem.n_var, rng=rng)
         X = eosma_update(self.pbest_X, self.best_x, with_mean(self.pool_X), W, t1, a, z=self.z,
                          a1=self.a1, GP=self.GP, V=self.V, rng=rng)
-        X = midpoint_repair(X, self.X, self.xl, self.xu)  # Eq. 17
+        X = midpoint_repair(X, self.pbest_X, self.xl, self.xu)  # Eq. 17
         F, CV = yield X
         self._remember(X, F, CV)
         if rng.random() < self.q:  # Algorithm 1, line 22
-            X = midpoint_repair(random_difference_mutation(self.pbest_X, rng=rng), self.X,
-                                self.xl, self.xu)
+            X = midpoint_repair(random_difference_mutation(self.pbest_X, rng=rng),
+                                self.pbest_X, self.xl, self.xu)
             F, CV = yield X
             self._remember(X, F, CV)

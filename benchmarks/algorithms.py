@@ -171,13 +171,6 @@ def section_a(T: int, repeats: int) -> None:
               f"{setup * 1e3:15.2f}")
 
 
-def _eosma7_metres(robot):
-    """The catalog arm (cm) with Table 1's lengths as printed, in metres."""
-    from dataclasses import replace
-
-    return replace(robot, name="eosma7-m", a=robot.a / 100.0, d=robot.d / 100.0, unit="m")
-
-
 def section_b(n_targets: int) -> None:
     print(f"\n(b) seconds per IK solve, EOSMA on eosma7, {n_targets} random reachable targets; "
           "'s/run': one run; 's/solve': the paper's protocol (re-run until f < 1e-6, at most "
@@ -190,7 +183,7 @@ def section_b(n_targets: int) -> None:
         print(f"    skipped: {exc}")
         return
     cm = get_robot("eosma7")
-    m = _eosma7_metres(cm)
+    m = get_robot("eosma7-m")  # Table 1 as printed (m): the unit of Tables 5 and 7
     print(f"{'scenario':<30}{'s/run':>8}{'s/solve':>9}{'paper s':>9}{'goal s':>8}{'eval ms':>9}"
           f"{'1 run ok':>9}{'solved':>8}{'worst f':>10}")
     for label, number, robot, T, paper, goal, make in [

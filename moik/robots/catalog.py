@@ -71,6 +71,22 @@ def eosma7() -> Robot:
     )
 
 
+def eosma7_m() -> Robot:
+    """The EOSMA 7-DOF arm in metres, as Table 1 prints it (l1 = 0.5 m ...).
+
+    For reproducing the paper's Tables 5 and 7: their errors are in metres
+    (Table 7's worst 5.55e-17 is one rounding step of a quantity of size 1; in
+    cm one rounding step of a 50 cm coordinate is already ~7e-15), and Eq. 28
+    adds that length error to an angle error in radians, so the unit decides
+    the balance of the two terms. The multi-objective Table 8 and the
+    Simulation section use cm (:func:`eosma7`).
+    """
+    robot = eosma7()
+    return Robot(name="eosma7-m", a=robot.a / 100.0, alpha=robot.alpha, d=robot.d / 100.0,
+                 theta=robot.theta, lower=robot.lower, upper=robot.upper, unit="m",
+                 source="EOSMA paper (Yin et al. 2022, Sci. Rep.), Table 1 as printed (m)")
+
+
 def rokbani5() -> Robot:
     """3D-printed 5-DOF educational arm of the MO-m-PSO paper, Table 1 (cm).
 
@@ -187,6 +203,7 @@ def irb2600() -> Robot:
 
 _CATALOG: dict[str, Callable[[], Robot]] = {
     "eosma7": eosma7,
+    "eosma7-m": eosma7_m,
     "rokbani5": rokbani5,
     "planar2": planar2,
     "anthropomorphic3": anthropomorphic3,

@@ -7,7 +7,7 @@ from scipy.optimize import least_squares
 from moik.exceptions import MoikError, UnknownNameError
 from moik.robots import available_robots, get_robot
 
-EXPECTED = {"eosma7": (7, "cm"), "rokbani5": (5, "cm"), "planar2": (2, "m"),
+EXPECTED = {"eosma7": (7, "cm"), "eosma7-m": (7, "m"), "rokbani5": (5, "cm"), "planar2": (2, "m"),
             "anthropomorphic3": (3, "m"), "scara4": (4, "m"), "youbot5": (5, "m"),
             "puma560": (6, "m"), "sawyer7": (7, "m"), "irb2600": (6, "mm")}
 
@@ -45,3 +45,10 @@ def test_ibes_targets_reachable(name):
                             xtol=1e-15, ftol=1e-15, gtol=1e-15)
         best = min(best, np.linalg.norm(res.fun))
     assert best < 1e-8
+
+
+def test_eosma7_m_is_eosma7_in_metres():
+    q = get_robot("eosma7").random_q(20, rng=np.random.default_rng(0))
+    T_cm, T_m = get_robot("eosma7").fk(q), get_robot("eosma7-m").fk(q)
+    np.testing.assert_allclose(T_m[:, :3, 3] * 100.0, T_cm[:, :3, 3], atol=1e-12)
+    np.testing.assert_allclose(T_m[:, :3, :3], T_cm[:, :3, :3], atol=1e-15)

@@ -5,6 +5,9 @@ Subcommands:
     moik algorithms                  list the registered algorithms
     moik fk ROBOT q1 ... qn [--deg]  print the end-effector pose
     moik solve ROBOT --target x y z [--euler a b c [--deg]] ...   solve IK
+    moik experiment list             list the papers' experiments
+    moik experiment run NAME [--quick] [--workers N] [--resume] [--out DIR] [--dask-scheduler A]
+    moik report DIR                  Markdown report of a results folder
 """
 
 from __future__ import annotations
@@ -127,6 +130,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--n-solutions", type=int, default=1, help="distinct solutions wanted")
     p.add_argument("--plot", metavar="FILE", help="save a 3-D drawing (FILE.png and .pdf)")
     p.set_defaults(func=_cmd_solve)
+    from moik.experiments.commands import add_subcommands
+
+    add_subcommands(sub)
     return parser
 
 

@@ -47,3 +47,11 @@ class ParameterError(MoikError, ValueError):
 
 class TargetError(MoikError, ValueError):
     """A target pose or position is malformed or in the wrong unit range."""
+
+
+class ConfigError(MoikError, ValueError):
+    """An experiment configuration is malformed (names the file, the key and the problem)."""
+
+
+class ResultsError(MoikError, OSError):
+    """A results folder cannot be used as asked (exists without --resume, other config...)."""

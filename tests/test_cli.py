@@ -44,3 +44,25 @@ def test_solve_errors_are_one_line(capsys):
 def test_algorithms_lists_registry(capsys):
     assert main(["algorithms"]) == 0
     assert "eosma" in capsys.readouterr().out.split()
+
+
+def test_experiment_list(capsys):
+    assert main(["experiment", "list"]) == 0
+    out = capsys.readouterr().out
+    for name in ("eosma-table5", "eosma-table8", "mpso-circle", "mpso-table5"):
+        assert name in out
+
+
+def test_experiment_errors_are_one_line(capsys, tmp_path):
+    assert main(["experiment", "run", "nope"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("moik: error: unknown experiment 'nope'") and err.count("\n") == 1
+    assert main(["report", str(tmp_path)]) == 2
+    assert "holds no moik results" in capsys.readouterr().err
+    args = ["experiment", "run", "mpso-single", "--quick", "--workers", "1", "--no-progress",
+            "--out", str(tmp_path / "r")]
+    assert main(args) == 0
+    assert main(args) == 2
+    assert "pass --resume" in capsys.readouterr().err
+    assert main(args + ["--resume"]) == 0
+    assert "0 trial(s) (0 failed), 3 already finished" in capsys.readouterr().out

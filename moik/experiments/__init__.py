@@ -1,1 +1,28 @@
-"""Experiment helpers: the papers' solving protocol, trial runners and result I/O."""
+"""Experiments that regenerate the papers' tables and figures.
+
+Configs (one file per table/figure in ``experiments/``) are validated into
+:class:`ExperimentConfig`; :func:`run_experiment` runs their trials (serially,
+in a process pool or on Dask) and stores each as it finishes in a
+:class:`ResultStore`; :func:`write_report` writes the Markdown report.
+:func:`solve_until_success` is the EOSMA paper's re-solve protocol.
+"""
+
+from moik.experiments.config import ExperimentConfig, load_config
+from moik.experiments.protocol import ProtocolResult, solve_until_success
+from moik.experiments.registry import available_experiments, get_experiment
+from moik.experiments.report import write_report
+from moik.experiments.runner import RunSummary, run_experiment
+from moik.experiments.store import ResultStore
+
+__all__ = [
+    "ExperimentConfig",
+    "ProtocolResult",
+    "ResultStore",
+    "RunSummary",
+    "available_experiments",
+    "get_experiment",
+    "load_config",
+    "run_experiment",
+    "solve_until_success",
+    "write_report",
+]

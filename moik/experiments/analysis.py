@@ -1,0 +1,274 @@
+"""Tables computed from a results folder, with the paper's numbers side by side.
+
+One function per analysis name of :data:`moik.experiments.config.ANALYSES`;
+each returns :class:`Table` objects that :mod:`moik.experiments.report` prints
+as Markdown. Paper rows come from the config's ``paper`` dict (keys
+``summary``, ``hv``, ``joint_motion``, ``compromise``, ``signed_rank``) and are
+marked with its ``citation``. Only trials with ``status="ok"`` enter a table;
+failed ones are counted in a note.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from moik.experiments.store import ResultStore
+from moik.metrics import (
+    friedman_ranks,
+    hypervolume,
+    ranksum_pvalues,
+    reference_point,
+    signed_rank,
+    success_rate,
+    summarize,
+)
+
+
+@dataclass
+class Table:
+    """A titled table of formatted cells."""
+
+    title: str
+    header: list[str]
+    rows: list[list[str]]
+    notes: list[str] = field(default_factory=list)
+
+
+def fmt(value, digits: int = 4) -> str:
+    """A number as the report prints it (``-`` for missing)."""
+    if value is None or (isinstance(value, float) and np.isnan(value)):
+        return "-"
+    if isinstance(value, (int, np.integer)) and not isinstance(value, bool):
+        return str(value)
+    if isinstance(value, (float, np.floating)):
+        return f"{value:.{digits}g}"
+    return str(value)
+
+
+class Results:
+    """The records of a results folder grouped for analysis."""
+
+    def __init__(self, store: ResultStore):
+        self.store = store
+        self.meta = store.meta
+        self.config = store.meta["config"]
+        self.paper = self.config.get("paper", {})
+        self.citation = "paper"
+        cite = self.paper.get("citation")
+        self.paper_note = f"paper rows: {cite}" if cite else None
+        records = store.records()
+        self.ok = [r for r in records if r.get("status") == "ok"]
+        self.failed = [r for r in records if r.get("status") != "ok"]
+        labels = self.meta.get("algorithms") or [a.get("label", a["name"])
+                                                 for a in self.config["algorithms"]]
+        self.labels = [lab for lab in labels if any(r["algorithm"] == lab for r in self.ok)]
+        self.by_label: dict[str, list[dict]] = defaultdict(list)
+        for r in sorted(self.ok, key=lambda r: (r["target"], r["run"])):
+            self.by_label[r["algorithm"]].append(r)
+
+    def values(self, label: str, key: str) -> np.ndarray:
+        """``key`` of every ok record of ``label`` (missing/None as inf), target-major order."""
+        return np.array([np.inf if r.get(key) is None else r[key] for r in self.by_label[label]],
+                        dtype=float)
+
+    def notes(self) -> list[str]:
+        """Counts of finished and failed trials."""
+        n_planned = len(self.meta.get("trials", []))
+        out = [f"{len(self.ok)} of {n_planned} planned trials finished"]
+        if self.failed:
+            out.append(f"{len(self.failed)} trials failed (status error), e.g. "
+                       f"{self.failed[0]['trial']}: {self.failed[0].get('error')}")
+        return out
+
+
+def _paper(res: Results, key: str) -> dict:
+    return res.paper.get(key, {})
+
+
+def summary_table(res: Results) -> list[Table]:
+    """Worst/mean/best/std/median/time/success per algorithm (EOSMA Tables 5, 7)."""
+    thr = res.config.get("success_threshold", 1e-6)
+    protocol = res.config.get("protocol") is not None
+    header = ["algorithm", "source", "worst", "mean", "best", "std", "median", "time (s)",
+              f"success (f < {thr:g})"] + (["runs per target"] if protocol else [])
+    rows, paper = [], _paper(res, "summary")
+    for label in res.labels:
+        f = np.nan_to_num(res.values(label, "best_f"), posinf=np.finfo(float).max)
+        s = summarize(f, res.values(label, "time"))
+        row = [label, "moik", fmt(s.worst), fmt(s.mean), fmt(s.best), fmt(s.std), fmt(s.median),
+               fmt(s.time), f"{100 * success_rate(f, thr):.0f}%"]
+        if protocol:
+            row.append(fmt(float(np.mean(res.values(label, "attempts")))))
+        rows.append(row)
+        if label in paper:
+            p = paper[label]
+            rows.append([label, res.citation] + [fmt(p.get(k)) for k in
+                         ("worst", "mean", "best", "std", "median", "time")] + ["-"]
+                        + (["-"] if protocol else []))
+    n_values = {len(res.by_label[lab]) for lab in res.labels}
+    return [Table("Final objective value over all targets and runs", header, rows,
+                  [f"values per algorithm: {', '.join(map(str, sorted(n_values)))}"])]
+
+
+def ranksum_table(res: Results) -> list[Table]:
+    """Wilcoxon rank-sum p-values of the proposed algorithm vs each (EOSMA Figs. 11, 16)."""
+    proposed = res.config["proposed"]
+    if proposed not in res.labels or len(res.labels) < 2:
+        return []
+    samples = {lab: np.nan_to_num(res.values(lab, "best_f"), posinf=np.finfo(float).max)
+               for lab in res.labels}
+    p = ranksum_pvalues(samples, proposed)
+    rows = []
+    for lab, pv in p.items():
+        a, b = np.median(samples[proposed]), np.median(samples[lab])
+        verdict = "=" if pv >= 0.05 or a == b else (proposed if a < b else lab)
+        rows.append([f"{proposed} vs {lab}", fmt(pv, 3), verdict])
+    return [Table(f"Wilcoxon rank-sum test of {proposed} vs each algorithm (two-sided)",
+                  ["pair", "p-value", "better (alpha 0.05, by median)"], rows)]
+
+
+def front_hv(res: Results) -> dict[tuple[str, int], dict[str, np.ndarray]]:
+    """HV of every (target, algorithm) run: ``{(target_name, ti): {label: hv per run}}``."""
+    out = {}
+    targets = res.meta["targets"]
+    for ti, target in enumerate(targets):
+        fronts = {lab: [(r["run"], res.store.load_arrays(r["trial"]).get("front_F"))
+                        for r in res.by_label[lab] if r["target"] == ti] for lab in res.labels}
+        if target.get("hv_ref_point") is not None:
+            ref = np.asarray(target["hv_ref_point"], dtype=float)
+        else:
+            ref = reference_point([F for runs in fronts.values() for _, F in runs
+                                   if F is not None])
+        out[(target["name"], ti)] = {lab: np.array([hypervolume(F, ref) for _, F in sorted(
+            runs, key=lambda x: x[0]) if F is not None]) for lab, runs in fronts.items()}
+        out[(target["name"], ti)]["__ref__"] = ref
+    return out
+
+
+def friedman_hv_table(res: Results) -> list[Table]:
+    """HV mean/std, Friedman mean rank and time per target (EOSMA Table 8)."""
+    tables, paper = [], _paper(res, "hv")
+    for (name, ti), hv in front_hv(res).items():
+        ref = hv.pop("__ref__")
+        labels = [lab for lab in res.labels if hv[lab].size]
+        n_common = min((hv[lab].size for lab in labels), default=0)
+        fr = friedman_ranks({lab: hv[lab][:n_common] for lab in labels},
+                            higher_is_better=True) if len(labels) >= 2 and n_common else None
+        rows = []
+        for lab in labels:
+            times = [r["time"] for r in res.by_label[lab] if r["target"] == ti]
+            sizes = [r["n_front"] for r in res.by_label[lab] if r["target"] == ti]
+            rank = (f"{fr.mean_ranks[lab]:.2f} ({fr.order[lab]})" if fr else "-")
+            rows.append([lab, "moik", fmt(float(hv[lab].mean()), 6),
+                         fmt(float(np.std(hv[lab], ddof=1)) if hv[lab].size > 1 else 0.0, 3),
+                         rank, fmt(float(np.mean(times))), fmt(float(np.mean(sizes)))])
+            p = paper.get(name, {}).get(lab)
+            if p:
+                rows.append([lab, res.citation, fmt(p.get("mean"), 6), fmt(p.get("std"), 3),
+                             f"{p['fr']:.2f} ({p.get('rank', '-')})" if "fr" in p else "-",
+                             fmt(p.get("time")),
+                             "-"])
+        notes = [f"reference point {np.round(ref, 6).tolist()}; runs per algorithm: {n_common}"]
+        if fr is not None and np.isfinite(fr.p_value):
+            notes.append(f"Friedman test p-value: {fr.p_value:.3g}")
+        tables.append(Table(f"Hypervolume at {name}", ["algorithm", "source", "HV mean", "HV std",
+                                                       "Friedman rank", "time (s)",
+                                                       "front size"], rows, notes))
+    return tables
+
+
+def joint_motion_table(res: Results) -> list[Table]:
+    """Best solution per algorithm, its joint angles and distance (EOSMA Table 9)."""
+    q0 = res.config["problem"].get("q_start_deg")
+    paper = _paper(res, "joint_motion")
+    rows, dof = [], len(q0) if q0 else 0
+    for lab in res.labels:
+        recs = [r for r in res.by_label[lab] if r.get("best_x") is not None]
+        if not recs:
+            continue
+        best = min(recs, key=lambda r: r["best_f"])
+        q = np.degrees(best["best_x"])
+        dist = [r["joint_distance_deg"] for r in recs]
+        rows.append([lab, "moik"] + [f"{v:.6f}" for v in q] + [
+            fmt(best.get("joint_distance_deg"), 7), fmt(best["best_f"], 3),
+            f"{np.mean(dist):.4g} +- {np.std(dist):.2g}"])
+        p = paper.get(lab)
+        if p:
+            rows.append([lab, res.citation] + [f"{v:g}" for v in p["q_deg"]]
+                        + [fmt(p.get("distance"), 7), "-", "-"])
+    header = (["algorithm", "source"] + [f"q{i + 1} (deg)" for i in range(dof)]
+              + ["distance (deg)", "objective", "distance over runs (mean +- std)"])
+    return [Table(f"Best solution from the start {q0} deg (lowest objective over runs)",
+                  header, rows)]
+
+
+def compromise_table(res: Results) -> list[Table]:
+    """Position/orientation errors of the selected solutions (MO-m-PSO Tables 2-4)."""
+    paper = _paper(res, "compromise")
+    rows = []
+    for lab in res.labels:
+        for key, name in (("position_error", "position"), ("orientation_error", "orientation")):
+            v = res.values(lab, key)
+            if not np.all(np.isfinite(v)):
+                continue
+            s = summarize(v)
+            rows.append([lab, name, "moik", fmt(s.best), fmt(s.worst), fmt(s.mean), fmt(s.std),
+                         fmt(s.median)])
+            p = paper.get(lab, {}).get(name)
+            if p:
+                rows.append([lab, name, res.citation] + [fmt(p.get(k)) for k in
+                                                         ("best", "worst", "mean", "std",
+                                                          "median")])
+    return [Table("Errors of the selected solution (compromise closest to the utopia point)",
+                  ["algorithm", "error", "source", "best", "worst", "mean", "std", "median"],
+                  rows, ["orientation error in the metric of the problem "
+                         f"({res.config['problem'].get('orientation')}), rad"])]
+
+
+def signed_rank_table(res: Results) -> list[Table]:
+    """Wilcoxon signed-rank R+, R-, p of the proposed algorithm vs each (MO-m-PSO Table 5)."""
+    proposed = res.config["proposed"]
+    key = "best_f" if res.config["problem"]["kind"] != "bi-objective" else "position_error"
+    paper = _paper(res, "signed_rank")
+    rows = []
+    if proposed not in res.labels:
+        return []
+    base = {(r["target"], r["run"]): r[key] for r in res.by_label[proposed]}
+    for lab in res.labels:
+        if lab == proposed:
+            continue
+        other = {(r["target"], r["run"]): r[key] for r in res.by_label[lab]}
+        pairs = sorted(set(base) & set(other))
+        if not pairs:
+            continue
+        t = signed_rank([base[k] for k in pairs], [other[k] for k in pairs])
+        rows.append([proposed, lab, "moik", fmt(t.r_plus), fmt(t.r_minus), fmt(t.p_value, 3),
+                     t.better(proposed, lab), str(len(pairs))])
+        p = paper.get(lab)
+        if p:
+            rows.append([proposed, lab, res.citation, fmt(p.get("r_plus")),
+                         fmt(p.get("r_minus")), fmt(p.get("p"), 3), p.get("best", "-"), "-"])
+    return [Table(f"Wilcoxon signed-rank test, paired by (target, run), on {key}",
+                  ["data 1", "data 2", "source", "R+", "R-", "p", "best", "pairs"], rows,
+                  ["R+: rank sum where data 1 has the larger error"])]
+
+
+ANALYSIS_FUNCTIONS = {"summary": summary_table, "ranksum": ranksum_table,
+                      "friedman-hv": friedman_hv_table, "joint-motion": joint_motion_table,
+                      "compromise": compromise_table, "signed-rank": signed_rank_table}
+
+
+def analyze(store: ResultStore) -> tuple[Results, list[Table]]:
+    """All tables the experiment's config asks for."""
+    res = Results(store)
+    tables: list[Table] = []
+    if res.ok:
+        for name in res.config.get("analyses", ["summary"]):
+            tables += ANALYSIS_FUNCTIONS[name](res)
+    for table in tables:
+        if res.paper_note and any("paper" in row for row in table.rows):
+            table.notes.append(res.paper_note)
+    return res, tables

@@ -1,0 +1,108 @@
+"""The ``moik experiment list|run`` and ``moik report`` subcommands."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from moik.exceptions import MoikError
+
+
+def cmd_list(args: argparse.Namespace) -> int:
+    """Print every experiment with its trial counts (full / quick) and title."""
+    from moik.experiments.registry import experiment_files, get_experiment
+    from moik.experiments.targets import build_targets
+
+    files = experiment_files()
+    if not files:
+        print("no experiments found (see MOIK_EXPERIMENTS_PATH)")
+        return 0
+    print(f"{'name':<16}{'trials':>8}{'quick':>7}  title")
+    for name in files:
+        try:
+            cfg = get_experiment(name)
+            counts = [len(c.algorithms) * len(build_targets(c)) * c["runs"]
+                      for c in (cfg, cfg.quick())]
+            print(f"{name:<16}{counts[0]:>8}{counts[1]:>7}  {cfg['title']}")
+        except MoikError as exc:
+            print(f"{name:<16}{'-':>8}{'-':>7}  INVALID: {exc}")
+    return 0
+
+
+def cmd_run(args: argparse.Namespace) -> int:
+    """Run one experiment; Ctrl-C keeps the stored trials and says how to resume."""
+    from moik.experiments.registry import get_experiment
+    from moik.experiments.runner import default_out, run_experiment
+
+    config = get_experiment(args.name)
+    out = args.out or default_out(config.quick() if args.quick else config)
+    try:
+        summary = run_experiment(config, out=out, quick=args.quick, workers=args.workers,
+                                 resume=args.resume, dask_scheduler=args.dask_scheduler,
+                                 progress=not args.no_progress, limit=args.limit)
+    except KeyboardInterrupt:
+        print(f"\nmoik: interrupted; finished trials are stored in {out}; continue with "
+              f"`moik experiment run {args.name}{' --quick' if args.quick else ''} --out {out} "
+              "--resume`", file=sys.stderr)
+        return 130
+    print(f"{config.name}: ran {summary.ran} trial(s) ({summary.failed} failed), "
+          f"{summary.skipped} already finished, {summary.total} in all, "
+          f"{summary.wall_time:.1f} s; results in {summary.folder}")
+    left = summary.total - summary.skipped - summary.ran + summary.failed
+    if left:
+        print(f"{left} trial(s) not finished: rerun with --resume to run them")
+    print(f"report: moik report {summary.folder}")
+    return 0 if summary.failed == 0 else 1
+
+
+def cmd_report(args: argparse.Namespace) -> int:
+    """Write the Markdown report of a results folder."""
+    from moik.experiments.report import write_report
+
+    path = write_report(args.folder, figures=not args.no_figures, output=args.output)
+    print(f"report written to {path}")
+    return 0
+
+
+def _positive_int(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
+    return value
+
+
+def add_subcommands(sub) -> None:
+    """Register ``experiment`` and ``report`` on the ``moik`` subparsers."""
+    p = sub.add_parser("experiment", help="list or run the papers' experiments",
+                       description="List or run the experiments that regenerate the papers' "
+                                   "tables and figures.")
+    esub = p.add_subparsers(dest="experiment_command", required=True)
+    q = esub.add_parser("list", help="list the experiments (trials full / quick size)")
+    q.set_defaults(func=cmd_list)
+    q = esub.add_parser("run", help="run an experiment; results are stored trial by trial",
+                        description="Run an experiment. Each finished trial is stored at once; "
+                                    "Ctrl-C loses only the trials in flight; --resume continues.")
+    q.add_argument("name", help="experiment name (see `moik experiment list`) or config file")
+    q.add_argument("--quick", action="store_true", help="the seconds-long smoke-test size")
+    q.add_argument("--workers", type=_positive_int, default=None,
+                   help="worker processes (default: the number of cores; 1 = serial)")
+    q.add_argument("--resume", action="store_true",
+                   help="continue the results in --out, skipping finished trials")
+    q.add_argument("--out", metavar="DIR",
+                   help="results folder (default results/NAME or results/NAME-quick)")
+    q.add_argument("--dask-scheduler", metavar="ADDRESS",
+                   help="run on a Dask distributed scheduler (needs moik[dask])")
+    q.add_argument("--limit", type=_positive_int, default=None,
+                   help="run at most this many pending trials, then stop")
+    q.add_argument("--no-progress", action="store_true", help="no progress bar")
+    q.set_defaults(func=cmd_run)
+    p = sub.add_parser("report", help="write a Markdown report of a results folder",
+                       description="Write DIR/report.md: tables beside the paper's numbers, "
+                                   "and figures. DIR is a results folder or a folder of them.")
+    p.add_argument("folder", metavar="DIR", help="results folder (or a folder of them)")
+    p.add_argument("--no-figures", action="store_true", help="tables only")
+    p.add_argument("--output", metavar="FILE", help="report file (default DIR/report.md)")
+    p.set_defaults(func=cmd_report)

@@ -1,0 +1,144 @@
+"""Running trials: serially, in a process pool, or on a Dask distributed cluster.
+
+Every executor is an iterator over ``(record, arrays)`` pairs in completion
+order; the runner stores each pair as soon as it arrives. Workers never touch
+the results folder (remote Dask workers need no shared file system).
+
+- ``serial``: in this process.
+- ``pool``: ``multiprocessing.Pool(workers)`` with ``imap_unordered`` (chunks
+  of one trial); workers ignore SIGINT, so Ctrl-C reaches only the parent, which
+  terminates the pool: the trials in flight are lost, the stored ones are not.
+- ``dask``: ``distributed.Client(address)``; ``client.map(run_trial, specs)``
+  and ``distributed.as_completed``; on interrupt the futures are cancelled.
+  Needs the optional extra ``moik[dask]`` and moik installed on the workers.
+
+:class:`Progress` is a tqdm bar when tqdm is installed, else a plain line on
+stderr at most every two seconds: trials done/total, failures, ETA.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import signal
+import sys
+import time
+from collections.abc import Iterator, Sequence
+
+from moik.exceptions import ParameterError
+from moik.experiments.trials import TrialSpec, run_trial
+
+
+def run_serial(specs: Sequence[TrialSpec]) -> Iterator[tuple[dict, dict]]:
+    """Run the trials one after another in this process."""
+    for spec in specs:
+        yield run_trial(spec)
+
+
+def _ignore_sigint() -> None:
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+def run_pool(specs: Sequence[TrialSpec], workers: int) -> Iterator[tuple[dict, dict]]:
+    """Run the trials in ``workers`` processes (``fork`` where available)."""
+    method = "fork" if "fork" in multiprocessing.get_all_start_methods() else None
+    ctx = multiprocessing.get_context(method)
+    pool = ctx.Pool(processes=workers, initializer=_ignore_sigint)
+    try:
+        yield from pool.imap_unordered(run_trial, specs, chunksize=1)
+        pool.close()
+    except BaseException:
+        pool.terminate()
+        raise
+    finally:
+        pool.join()
+
+
+def run_dask(specs: Sequence[TrialSpec], address: str, *,
+             timeout: float = 20.0) -> Iterator[tuple[dict, dict]]:
+    """Run the trials on the Dask scheduler at ``address`` (connecting for ``timeout`` s).
+
+    Raises:
+        ParameterError: If ``dask.distributed`` is not installed or the scheduler
+            cannot be reached.
+    """
+    try:
+        from distributed import Client, as_completed
+    except ImportError:
+        raise ParameterError("--dask-scheduler needs dask.distributed: "
+                             "pip install 'moik[dask]'") from None
+    try:
+        client = Client(address, timeout=timeout)
+    except (OSError, TimeoutError, ValueError) as exc:
+        raise ParameterError(f"cannot connect to the Dask scheduler {address!r}: {exc}") from None
+    futures = []
+    try:
+        futures = client.map(run_trial, list(specs), pure=False)
+        for future in as_completed(futures):
+            yield future.result()
+    finally:
+        if futures:
+            client.cancel(futures)
+        client.close()
+
+
+def execute(specs: Sequence[TrialSpec], *, workers: int = 1,
+            dask_scheduler: str | None = None) -> Iterator[tuple[dict, dict]]:
+    """Pick the executor: Dask if an address is given, a pool if ``workers > 1``, else serial."""
+    if dask_scheduler:
+        return run_dask(specs, dask_scheduler)
+    if workers > 1 and len(specs) > 1:
+        return run_pool(specs, min(workers, len(specs)))
+    return run_serial(specs)
+
+
+class Progress:
+    """Trials done/total, failures and ETA (tqdm if installed, else a plain stderr line).
+
+    Args:
+        total: Trials to run in this session.
+        done: Trials already finished before (resume), shown in the description.
+        label: Shown before the counts.
+        enabled: False silences it.
+    """
+
+    def __init__(self, *, total: int, done: int = 0, label: str = "", enabled: bool = True):
+        self.total, self.count, self.failures = total, 0, 0
+        self.label = f"{label} (+{done} resumed)" if done else label
+        self.enabled = enabled
+        self._t0 = self._last = time.monotonic()
+        self._bar = None
+        if enabled:
+            try:
+                from tqdm import tqdm
+            except ImportError:
+                tqdm = None
+            if tqdm is not None:
+                self._bar = tqdm(total=total, desc=self.label, unit="trial", file=sys.stderr)
+
+    def update(self, ok: bool) -> None:
+        """Count one finished trial (``ok`` False counts a failure)."""
+        self.count += 1
+        self.failures += not ok
+        if not self.enabled:
+            return
+        if self._bar is not None:
+            self._bar.set_postfix(failures=self.failures, refresh=False)
+            self._bar.update(1)
+            return
+        now = time.monotonic()
+        if now - self._last >= 2.0 or self.count == self.total:
+            self._last = now
+            print(self.line(now), file=sys.stderr, flush=True)
+
+    def line(self, now: float | None = None) -> str:
+        """The fallback progress line."""
+        elapsed = (time.monotonic() if now is None else now) - self._t0
+        rate = elapsed / self.count if self.count else 0.0
+        eta = rate * (self.total - self.count)
+        return (f"{self.label}: {self.count}/{self.total} trials, {self.failures} failed, "
+                f"elapsed {elapsed:.0f} s, ETA {eta:.0f} s")
+
+    def close(self) -> None:
+        """Finish the bar."""
+        if self._bar is not None:
+            self._bar.close()

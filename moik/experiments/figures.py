@@ -1,0 +1,138 @@
+"""The papers' figures drawn from a results folder with :mod:`moik.plotting`.
+
+Which figures an experiment gets follows its analyses: random-target summaries
+get the targets (EOSMA Figs. 7, 12), mean convergence (Figs. 8, 13), solve
+times (Figs. 9, 14) and error boxes (Figs. 10, 15); ``ranksum`` the p-value bars
+(Figs. 11, 16); ``friedman-hv`` the fronts at each pose (Figs. 17-18);
+``joint-motion`` the quintic motion (Fig. 20); ``compromise`` the tracked
+circle (MO-m-PSO Fig. 7) or the front with its compromise (Fig. 5a);
+``signed-rank`` convergence and errors (MO-m-PSO Fig. 8). Files go to
+``OUT/figures/NAME.png`` and ``.pdf``. A figure that cannot be drawn is skipped
+with a note; drawing never fails the report.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+
+from moik.exceptions import MoikError
+from moik.experiments.analysis import Results
+
+
+def _curves(res: Results, labels) -> dict[str, np.ndarray]:
+    out = {}
+    for lab in labels:
+        runs = [res.store.load_arrays(r["trial"]).get("convergence") for r in res.by_label[lab]]
+        runs = [c for c in runs if c is not None and c.size]
+        if runs:
+            n = min(c.size for c in runs)
+            out[lab] = np.array([c[:n] for c in runs])
+    return out
+
+
+def _per_target(res: Results, lab: str, key: str) -> np.ndarray:
+    n_t = len(res.meta["targets"])
+    vals = [[r[key] for r in res.by_label[lab] if r["target"] == t] for t in range(n_t)]
+    return np.array([np.mean(v) if v else np.nan for v in vals])
+
+
+def _plans(res: Results) -> list[tuple[str, str, Callable]]:
+    """(file stem, caption, draw(save_stem)) of every figure that applies."""
+    import moik.plotting as mp
+    from moik.robots import get_robot
+
+    cfg, labels, plans = res.config, res.labels, []
+    robot = get_robot(cfg["robot"])
+    unit = robot.unit
+    analyses = cfg.get("analyses", [])
+    targets = res.meta["targets"]
+    pos = np.array([t["position"] for t in targets])
+    rot = (np.array([t["rotation"] for t in targets])
+           if all(t["rotation"] is not None for t in targets) else None)
+    if ("summary" in analyses or "signed-rank" in analyses) and len(targets) > 1:
+        plans.append(("targets", "Targets in the workspace", lambda s: mp.plot_targets(
+            pos, rot, unit=unit, save=s)))
+    if "summary" in analyses or "signed-rank" in analyses:
+        curves = _curves(res, labels)
+        if curves:
+            plans.append(("convergence", "Mean convergence curves", lambda s: mp.plot_convergence(
+                curves, ylabel="mean best objective", save=s)))
+        errors = {lab: np.nan_to_num(res.values(lab, "best_f"), posinf=1e300) for lab in labels}
+        plans.append(("errors", "Final objective values", lambda s: mp.plot_error_boxes(
+            errors, ylabel="final objective value", save=s)))
+    if "summary" in analyses and len(targets) > 1:
+        times = {lab: _per_target(res, lab, "time") for lab in labels}
+        plans.append(("times", "Solve time per target", lambda s: mp.plot_solve_times(
+            times, save=s)))
+    if "ranksum" in analyses:
+        from moik.metrics import ranksum_pvalues
+
+        samples = {lab: np.nan_to_num(res.values(lab, "best_f"), posinf=1e300) for lab in labels}
+        if cfg["proposed"] in samples and len(samples) > 1:
+            pv = ranksum_pvalues(samples, cfg["proposed"])
+            plans.append(("wilcoxon", "Wilcoxon rank-sum p-values", lambda s: mp.plot_wilcoxon(
+                pv, proposed=cfg["proposed"], save=s)))
+    mo = cfg["problem"]["kind"] == "bi-objective"
+    if mo and ("friedman-hv" in analyses or len(targets) == 1):
+        for ti, t in enumerate(targets):
+            fronts = {}
+            for lab in labels:
+                recs = [r for r in res.by_label[lab] if r["target"] == ti]
+                if recs:
+                    fronts[lab] = res.store.load_arrays(recs[0]["trial"])["front_F"]
+            comp = None
+            if len(fronts) == 1:
+                r0 = [r for r in res.by_label[labels[0]] if r["target"] == ti][0]
+                comp = [r0["position_error"], r0["orientation_error"]]
+            if fronts:
+                plans.append((f"front-{ti}", f"Pareto fronts at {t['name']} (first run)",
+                              lambda s, f=fronts, c=comp, n=t["name"]: mp.plot_pareto_fronts(
+                                  f, compromise=c, xlabel=f"position error ({unit})",
+                                  title=f"PF at {n}", save=s)))
+    if "joint-motion" in analyses and labels:
+        best = {lab: min(res.by_label[lab], key=lambda r: r["best_f"])["best_x"]
+                for lab in labels}
+        q0 = np.radians(cfg["problem"]["q_start_deg"])
+        first, others = labels[0], {lab: best[lab] for lab in labels[1:]}
+        plans.append(("motion", "Motion from the start to the solutions", lambda s:
+                      mp.plot_motion(robot, q0, best[first], label=first, others=others or None,
+                                     target=pos[0], save=s)))
+    if "compromise" in analyses and cfg["targets"]["kind"] == "circle" and labels:
+        lab = labels[0]
+        recs = {r["target"]: r for r in res.by_label[lab] if r["run"] == 0}
+        if len(recs) == len(targets):
+            Q = np.array([recs[t]["best_x"] for t in range(len(targets))])
+            ori = np.array([recs[t]["orientation_error"] for t in range(len(targets))])
+            plans.append(("path", f"Circle tracked by {lab}", lambda s: mp.plot_path_tracking(
+                pos, robot.fk_position(Q), orientation_errors=ori, Q=Q, unit=unit, log=True,
+                save=s)))
+    return plans
+
+
+def make_figures(res: Results, folder: Path) -> tuple[list[tuple[str, Path]], list[str]]:
+    """Draw the figures into ``folder``; returns ``[(caption, png path)]`` and notes."""
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        plans = _plans(res)
+    except (ImportError, AttributeError) as exc:
+        return [], [f"figures skipped: moik.plotting is not available ({exc})"]
+    except MoikError as exc:
+        return [], [f"figures skipped: {exc}"]
+    folder.mkdir(parents=True, exist_ok=True)
+    made, notes = [], []
+    for stem, caption, draw in plans:
+        try:
+            draw(str(folder / stem))
+            made.append((caption, folder / f"{stem}.png"))
+        except (MoikError, ValueError, KeyError, IndexError) as exc:
+            notes.append(f"figure {stem!r} skipped: {exc}")
+        finally:
+            plt.close("all")
+    return made, notes

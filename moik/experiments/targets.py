@@ -1,0 +1,197 @@
+"""The problem and target parts of an experiment configuration: checks and builders.
+
+Problem kinds map to :mod:`moik.problems` classes: ``"position"`` ->
+:class:`~moik.problems.PositionIK`, ``"pose"`` -> :class:`~moik.problems.PoseIK`,
+``"bi-objective"`` -> :class:`~moik.problems.BiObjectiveIK`. Joint values in
+configs are degrees (``q_start_deg``, ``fk_q_deg``); lengths are in the robot's unit.
+
+``free_gamma`` (MO-m-PSO Section 4.4: "alpha = 0, beta = 0, gamma is free") drops
+the gamma term of the Eq. 14 orientation error (``zyx-euler`` only): the error is
+``(|alpha - alpha_t| + |beta - beta_t|) / 3``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from moik.exceptions import ConfigError, MoikError
+
+PROBLEM_KINDS = ("position", "pose", "bi-objective")
+TARGET_KINDS = ("random", "fixed", "circle")
+_PROBLEM_KEYS = {"kind", "orientation", "weights", "displacement_weight", "q_start_deg",
+                 "free_gamma"}
+_TARGET_KEYS = {
+    "random": {"kind", "n", "seed", "with_orientation"},
+    "fixed": {"kind", "points"},
+    "circle": {"kind", "center", "radius", "n_points", "euler_deg", "convention"},
+}
+_POINT_KEYS = {"name", "position", "fk_q_deg", "euler_deg", "convention", "hv_ref_point"}
+
+
+def _vec(where: str, value: Any, n: int) -> list[float]:
+    from moik.experiments.config import check_float
+
+    if not isinstance(value, (list, tuple)) or len(value) != n:
+        raise ConfigError(f"{where} must be a list of {n} numbers, got {value!r}")
+    return [check_float(f"{where}[{i}]", v) for i, v in enumerate(value)]
+
+
+def check_problem(where: str, spec: Any, robot_name: str) -> dict:
+    """Validate the ``problem`` dict; returns it with defaults filled in."""
+    from moik.experiments.config import check_float, check_keys
+    from moik.kinematics.orientation import available_metrics
+    from moik.robots import get_robot
+
+    p = check_keys(where, spec, _PROBLEM_KEYS, ("kind",))
+    if p["kind"] not in PROBLEM_KINDS:
+        raise ConfigError(f"{where}.kind must be one of {', '.join(PROBLEM_KINDS)}, "
+                          f"got {p['kind']!r}")
+    p.setdefault("orientation", "geodesic")
+    if p["orientation"] not in available_metrics():
+        raise ConfigError(f"{where}.orientation: unknown metric {p['orientation']!r}; expected "
+                          f"one of: {', '.join(available_metrics())}")
+    if "weights" in p:
+        _vec(f"{where}.weights", p["weights"], 2)
+    w = check_float(f"{where}.displacement_weight", p.get("displacement_weight", 0.0))
+    robot = get_robot(robot_name)
+    if w < 0:
+        raise ConfigError(f"{where}.displacement_weight must be >= 0, got {w}")
+    if w > 0 and "q_start_deg" not in p:
+        raise ConfigError(f"{where}: displacement_weight > 0 needs q_start_deg")
+    if "q_start_deg" in p:
+        _vec(f"{where}.q_start_deg", p["q_start_deg"], robot.dof)
+    if p.get("free_gamma", False) and (p["kind"] != "bi-objective"
+                                       or p["orientation"] != "zyx-euler"):
+        raise ConfigError(f"{where}.free_gamma needs kind 'bi-objective' and orientation "
+                          "'zyx-euler'")
+    return p
+
+
+def check_targets(where: str, spec: Any, problem: Mapping) -> None:
+    """Validate the ``targets`` dict (orientation required unless ``position`` problems)."""
+    from moik.experiments.config import check_float, check_int, check_keys
+
+    kind = spec.get("kind") if isinstance(spec, Mapping) else None
+    if kind not in TARGET_KINDS:
+        raise ConfigError(f"{where}.kind must be one of {', '.join(TARGET_KINDS)}, got {kind!r}")
+    t = check_keys(where, spec, _TARGET_KEYS[kind], ("kind",))
+    oriented = problem["kind"] != "position"
+    if kind == "random":
+        check_int(f"{where}.n", t.get("n"), 1)
+        check_int(f"{where}.seed", t.get("seed"), 0)
+        if oriented and not t.get("with_orientation", True):
+            raise ConfigError(f"{where}: problem kind {problem['kind']!r} needs "
+                              "with_orientation true")
+    elif kind == "circle":
+        _vec(f"{where}.center", t.get("center"), 3)
+        check_float(f"{where}.radius", t.get("radius"), positive=True)
+        check_int(f"{where}.n_points", t.get("n_points"), 2)
+        if oriented or "euler_deg" in t:
+            _vec(f"{where}.euler_deg", t.get("euler_deg"), 3)
+    else:
+        points = t.get("points")
+        if not isinstance(points, list) or not points:
+            raise ConfigError(f"{where}.points must be a non-empty list")
+        for i, raw in enumerate(points):
+            w = f"{where}.points[{i}]"
+            pt = check_keys(w, raw, _POINT_KEYS, ("name",))
+            if ("position" in pt) == ("fk_q_deg" in pt):
+                raise ConfigError(f"{w}: give exactly one of position and fk_q_deg")
+            if "position" in pt:
+                _vec(f"{w}.position", pt["position"], 3)
+                if oriented and "euler_deg" not in pt:
+                    raise ConfigError(f"{w}: problem kind {problem['kind']!r} needs euler_deg")
+            if "euler_deg" in pt:
+                _vec(f"{w}.euler_deg", pt["euler_deg"], 3)
+            if "hv_ref_point" in pt:
+                _vec(f"{w}.hv_ref_point", pt["hv_ref_point"], 2)
+
+
+@dataclass(frozen=True)
+class NamedTarget:
+    """A target of an experiment with its display name and optional HV reference point."""
+
+    name: str
+    position: list[float]
+    rotation: list[list[float]] | None
+    hv_ref_point: list[float] | None = None
+
+    def as_dict(self) -> dict:
+        """JSON-ready form (floats round-trip exactly through ``json``)."""
+        return {"name": self.name, "position": self.position, "rotation": self.rotation,
+                "hv_ref_point": self.hv_ref_point}
+
+
+def _rotation(spec: Mapping, default_convention: str = "zyx-euler") -> np.ndarray:
+    from moik.problems.targets import Target
+
+    t = Target.from_euler([0.0, 0.0, 0.0], spec["euler_deg"],
+                          convention=spec.get("convention", default_convention), degrees=True)
+    return t.rotation
+
+
+def build_targets(config) -> list[NamedTarget]:
+    """The targets of ``config`` (random ones drawn from their own seed)."""
+    from moik.problems.targets import circle_path, random_reachable_targets
+    from moik.robots import get_robot
+
+    robot = get_robot(config["robot"])
+    spec = config["targets"]
+    try:
+        if spec["kind"] == "random":
+            ts = random_reachable_targets(robot, spec["n"], seed=spec["seed"],
+                                          with_orientation=spec.get("with_orientation", True))
+            return [NamedTarget(f"T{i + 1}", t.position.tolist(),
+                                None if t.rotation is None else t.rotation.tolist())
+                    for i, t in enumerate(ts)]
+        if spec["kind"] == "circle":
+            rot = _rotation(spec) if "euler_deg" in spec else None
+            ts = circle_path(spec["center"], spec["radius"], spec["n_points"], rotation=rot)
+            return [NamedTarget(f"C{i + 1}", t.position.tolist(),
+                                None if rot is None else rot.tolist()) for i, t in enumerate(ts)]
+        out = []
+        for pt in spec["points"]:
+            if "fk_q_deg" in pt:
+                T = robot.fk(np.radians(pt["fk_q_deg"]))
+                pos, rot = T[:3, 3], T[:3, :3]
+            else:
+                pos, rot = np.asarray(pt["position"], dtype=float), None
+            if "euler_deg" in pt:
+                rot = _rotation(pt)
+            out.append(NamedTarget(pt["name"], [float(v) for v in pos],
+                                   None if rot is None else rot.tolist(), pt.get("hv_ref_point")))
+        return out
+    except MoikError as exc:
+        raise ConfigError(f"{config.path or config.name}: targets: {exc}") from None
+
+
+def _free_gamma_error(R: np.ndarray, angles_t: np.ndarray) -> np.ndarray:
+    """MO-m-PSO Eq. 14 without the gamma term (gamma free, Section 4.4)."""
+    from moik.kinematics.orientation import zyx_euler
+
+    d = np.abs(zyx_euler(R) - angles_t)
+    return (d[..., 0] + d[..., 1]) / 3.0
+
+
+def build_problem(robot, problem: Mapping, target: NamedTarget):
+    """The pymoo problem of one trial."""
+    from moik.problems import BiObjectiveIK, PoseIK, PositionIK, Target
+
+    tgt = Target(target.position, None if target.rotation is None else np.array(target.rotation))
+    common = {"displacement_weight": float(problem.get("displacement_weight", 0.0))}
+    if "q_start_deg" in problem:
+        common["q_start"] = np.radians(problem["q_start_deg"])
+    kind = problem["kind"]
+    if kind == "position":
+        return PositionIK(robot, tgt, **common)
+    if kind == "pose":
+        return PoseIK(robot, tgt, weights=tuple(problem.get("weights", (0.5, 0.5))),
+                      orientation=problem["orientation"], **common)
+    out = BiObjectiveIK(robot, tgt, orientation=problem["orientation"], **common)
+    if problem.get("free_gamma", False):
+        out._orientation_error = _free_gamma_error
+    return out

@@ -1,0 +1,87 @@
+"""Experiment configs: validation messages, quick overrides, the registry."""
+
+import pytest
+
+from moik.exceptions import ConfigError, UnknownNameError
+from moik.experiments.config import ExperimentConfig, load_config, merge
+from moik.experiments.registry import ENV_VAR, available_experiments, get_experiment
+
+PAPER_EXPERIMENTS = ["eosma-table5", "eosma-table7", "eosma-table8", "eosma-table9",
+                     "mpso-single", "mpso-table2", "mpso-table3", "mpso-circle", "mpso-table5"]
+
+
+def test_all_paper_experiments_are_listed_and_valid():
+    assert set(PAPER_EXPERIMENTS) <= set(available_experiments())
+    for name in PAPER_EXPERIMENTS:
+        cfg = get_experiment(name)
+        assert cfg.name == name and cfg.quick().is_quick
+
+
+@pytest.mark.parametrize("change, match", [
+    ({"robot": "nope"}, "robot: unknown robot 'nope'"),
+    ({"runs": 0}, "runs must be an integer >= 1, got 0"),
+    ({"n_gen": 2.5}, "n_gen must be an integer >= 1"),
+    ({"colour": 1}, "unknown key\\(s\\) colour"),
+    ({"algorithms": [{"name": "nope"}]}, "algorithms\\[0\\].name: unknown algorithm 'nope'"),
+    ({"algorithms": [{"name": "eosma", "params": {"zz": 1}}]}, "params: unknown key"),
+    ({"algorithms": [{"name": "eosma", "params": {"q": 7.0}}]}, "params: .*q"),
+    ({"algorithms": [{"name": "nsga2"}]}, "'nsga2' is multi-objective"),
+    ({"problem": {"kind": "torque"}}, "problem.kind must be one of"),
+    ({"targets": {"kind": "random", "n": 0, "seed": 1}}, "targets.n must be an integer >= 1"),
+    ({"analyses": ["magic"]}, "analyses must be a list of"),
+    ({"proposed": "sma"}, "proposed 'sma' is not an algorithm label"),
+    ({"protocol": {"threshold": -1, "max_failures": 2}}, "protocol.threshold must be"),
+    ({"algorithms": [{"name": "eosma"}, {"name": "eosma"}]}, "label must be a unique"),
+])
+def test_bad_configs_raise_clear_errors(tiny, change, match):
+    tiny.update(change)
+    with pytest.raises(ConfigError, match=match):
+        ExperimentConfig.from_dict(tiny)
+
+
+def test_missing_keys_and_orientation_requirements(tiny):
+    del tiny["seed"]
+    with pytest.raises(ConfigError, match="missing key\\(s\\) seed"):
+        ExperimentConfig.from_dict(tiny)
+    tiny["seed"] = 1
+    tiny["problem"] = {"kind": "pose"}
+    tiny["robot"] = "eosma7"
+    with pytest.raises(ConfigError, match="needs with_orientation true"):
+        ExperimentConfig.from_dict(tiny)
+
+
+def test_optional_algorithms_are_left_out_when_not_registered(tiny):
+    tiny["algorithms"].append({"name": "not-yet-written", "optional": True})
+    cfg = ExperimentConfig.from_dict(tiny)
+    assert cfg.labels == ["eosma", "pso"] and cfg.skipped == ("not-yet-written",)
+
+
+def test_quick_overrides_merge_deeply(tiny_config):
+    q = tiny_config.quick()
+    assert q["runs"] == 1 and q["targets"]["n"] == 2 and q.is_quick
+    assert q.fingerprint() != tiny_config.fingerprint()
+    assert merge({"a": {"b": 1, "c": 2}}, {"a": {"b": 5}}) == {"a": {"b": 5, "c": 2}}
+
+
+def test_load_config_file_errors(tmp_path):
+    with pytest.raises(ConfigError, match="does not exist"):
+        load_config(tmp_path / "none.py")
+    bad = tmp_path / "bad_one.py"
+    bad.write_text("X = 1\n")
+    with pytest.raises(ConfigError, match="must define a dict named EXPERIMENT"):
+        load_config(bad)
+    bad.write_text("EXPERIMENT = {'name': \n")
+    with pytest.raises(ConfigError, match="cannot be executed: SyntaxError"):
+        load_config(bad)
+
+
+def test_dropping_a_file_adds_an_experiment(tmp_path, monkeypatch, tiny):
+    (tmp_path / "tiny_test.py").write_text(f"EXPERIMENT = {tiny!r}\n")
+    monkeypatch.setenv(ENV_VAR, str(tmp_path))
+    assert "tiny-test" in available_experiments()
+    assert get_experiment("tiny-test").labels == ["eosma", "pso"]
+    (tmp_path / "other_name.py").write_text(f"EXPERIMENT = {tiny!r}\n")
+    with pytest.raises(ConfigError, match="must match the file name"):
+        get_experiment("other-name")
+    with pytest.raises(UnknownNameError, match="unknown experiment 'zzz'; expected one of"):
+        get_experiment("zzz")

@@ -1,0 +1,29 @@
+"""Quick-size runs of the papers' experiments, end to end, and their report."""
+
+import json
+
+from moik.cli import main
+from moik.experiments.store import ResultStore
+
+
+def test_quick_runs_and_report(tmp_path, capsys):
+    out = tmp_path / "results"
+    for name in ("mpso-table5", "eosma-table8"):
+        assert main(["experiment", "run", name, "--quick", "--workers", "1", "--no-progress",
+                     "--out", str(out / name)]) == 0
+    out_text = capsys.readouterr().out
+    assert "mpso-table5: ran " in out_text and "(0 failed), 0 already finished" in out_text
+    t8 = ResultStore.open(out / "eosma-table8")
+    recs = t8.records()
+    assert all(r["status"] == "ok" and "hv" in r for r in recs)
+    assert t8.load_arrays(recs[0]["trial"])["front_F"].shape[1] == 2
+    assert main(["report", str(out)]) == 0
+    report = (out / "report.md").read_text()
+    assert "## eosma-table8" in report and "## mpso-table5" in report
+    assert "#### Hypervolume at P1" in report and "[2.088567, 2.466816]" in report
+    assert "| moeosma | paper | 5.07631 | 0.0201 | 1.40 (1) |" in report
+    assert "| m-pso | pso | paper | 0 | 465 |" in report
+    assert "![Pareto fronts at P1 (first run)](eosma-table8/figures/front-0.png)" in report
+    assert (out / "eosma-table8" / "figures" / "front-0.png").exists()
+    meta = json.loads((out / "mpso-table5" / "meta.json").read_text())
+    assert meta["quick"] is True and meta["algorithms"][:2] == ["m-pso", "pso"]

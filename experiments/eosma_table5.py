@@ -7,6 +7,7 @@ re-solve protocol); Wilcoxon rank-sum of EOSMA vs each algorithm (Fig. 11).
 EOSMA uses the scenario 1 preset q=0, a1=1. Baselines marked optional are
 included when registered (issue 7 adds the paper's baselines); their
 parameters are their classes' defaults, which follow Table 3.
+The arm is ``eosma7-m`` (Table 1 in metres): the table's errors are in metres.
 """
 
 _BASELINES = ["mrfo", "mpa", "pfa", "fpa", "gbo", "tlbo", "hho", "igwo", "psogsa", "code",
@@ -16,7 +17,7 @@ EXPERIMENT = {
     "name": "eosma-table5",
     "title": "EOSMA scenario 1: position only, 100 random reachable targets",
     "source": "Yin et al. 2022 (EOSMA), Table 5, Figs. 7-11",
-    "robot": "eosma7",
+    "robot": "eosma7-m",
     "problem": {"kind": "position"},
     "targets": {"kind": "random", "n": 100, "seed": 5, "with_orientation": False},
     "algorithms": [
@@ -37,7 +38,7 @@ EXPERIMENT = {
     "analyses": ["summary", "ranksum"],
     "proposed": "eosma",
     "paper": {
-        "citation": "EOSMA paper, Table 5 (position error, cm; MATLAB on an i7-9700)",
+        "citation": "EOSMA paper, Table 5 (position error, m; MATLAB on an i7-9700)",
         "summary": {
             "eosma": {"worst": 7.85e-16, "mean": 2.64e-17, "best": 0.0, "std": 9.93e-17,
                       "time": 0.0567},

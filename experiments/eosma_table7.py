@@ -5,6 +5,8 @@ Table 7 and Figs. 12-16. Objective Eq. 28, w1 = w2 = 0.5, with the Eq. 26
 Euler angles and the Eq. 30 L2 angle error (``eosma-euler``); N=100, T=1000;
 the same re-solve protocol as scenario 1 (threshold 1e-6, at most 10 runs).
 EOSMA uses the scenario 2 preset q=1, a1=2 (its defaults).
+The arm is ``eosma7-m`` (Table 1 in metres): Eq. 28 adds metres to radians,
+as the paper's Table 7 does.
 """
 
 _BASELINES = ["mrfo", "mpa", "pfa", "fpa", "gbo", "tlbo", "hho", "igwo", "psogsa", "code",
@@ -14,7 +16,7 @@ EXPERIMENT = {
     "name": "eosma-table7",
     "title": "EOSMA scenario 2: position and posture, 100 random reachable poses",
     "source": "Yin et al. 2022 (EOSMA), Table 7, Figs. 12-16",
-    "robot": "eosma7",
+    "robot": "eosma7-m",
     "problem": {"kind": "pose", "orientation": "eosma-euler", "weights": [0.5, 0.5]},
     "targets": {"kind": "random", "n": 100, "seed": 7, "with_orientation": True},
     "algorithms": [

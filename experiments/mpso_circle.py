@@ -3,7 +3,7 @@
 Rokbani et al., Appl. Sci. 12, 7091 (2022), DOI 10.3390/app12147091: Table 4
 and Fig. 7. Circle of Eqs. 17-18 in the plane x = 15 cm, centre (15, 0, 12) cm,
 radius 8 cm, 50 points; orientation alpha = beta = 0, gamma free: the Eq. 14
-error without its gamma term (``free_gamma``). Each point is solved
+error without its gamma term (metric ``zyx-euler-free-gamma``). Each point is solved
 independently by MO-m-PSO with the Section 4.3 settings (100 agents, 500
 iterations; the section gives none), keeping the compromise closest to the
 utopia point.
@@ -14,7 +14,7 @@ EXPERIMENT = {
     "title": "MO-m-PSO, 50-point circle path, centre (15, 0, 12) cm, radius 8 cm",
     "source": "Rokbani et al. 2022 (MO-m-PSO), Section 4.4, Table 4, Fig. 7",
     "robot": "rokbani5",
-    "problem": {"kind": "bi-objective", "orientation": "zyx-euler", "free_gamma": True},
+    "problem": {"kind": "bi-objective", "orientation": "zyx-euler-free-gamma"},
     "targets": {"kind": "circle", "center": [15, 0, 12], "radius": 8, "n_points": 50,
                 "euler_deg": [0, 0, 0], "convention": "zyx-euler"},
     "algorithms": [{"name": "mo-m-pso", "params": {"w": 0.8, "c1": 1.493, "c2": 1.493}}],

@@ -13,6 +13,7 @@ Subcommands:
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 
 import numpy as np
@@ -144,6 +145,9 @@ def main(argv: list[str] | None = None) -> int:
     except MoikError as exc:
         print(f"moik: error: {exc}", file=sys.stderr)
         return 2
+    except BrokenPipeError:  # e.g. `moik experiment list | head`: stop quietly
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -7,8 +7,8 @@ An experiment is one Python file in an experiments folder that defines a dict
   ``-``), ``title``, ``source`` (paper, table and figures reproduced);
 - ``robot``: catalog name;
 - ``problem``: ``{"kind": "position" | "pose" | "bi-objective", "orientation":
-  metric, "weights": [w1, w2], "displacement_weight": w, "q_start_deg": [...],
-  "free_gamma": bool}`` (see :mod:`moik.experiments.targets`);
+  metric, "weights": [w1, w2], "displacement_weight": w, "q_start_deg": [...]}``
+  (see :mod:`moik.experiments.targets`);
 - ``targets``: ``{"kind": "random", "n", "seed", "with_orientation"}``,
   ``{"kind": "fixed", "points": [{"name", "position" or "fk_q_deg",
   "euler_deg", "convention", "hv_ref_point"}]}`` or ``{"kind": "circle",

@@ -5,9 +5,8 @@ Problem kinds map to :mod:`moik.problems` classes: ``"position"`` ->
 ``"bi-objective"`` -> :class:`~moik.problems.BiObjectiveIK`. Joint values in
 configs are degrees (``q_start_deg``, ``fk_q_deg``); lengths are in the robot's unit.
 
-``free_gamma`` (MO-m-PSO Section 4.4: "alpha = 0, beta = 0, gamma is free") drops
-the gamma term of the Eq. 14 orientation error (``zyx-euler`` only): the error is
-``(|alpha - alpha_t| + |beta - beta_t|) / 3``.
+MO-m-PSO Section 4.4 ("alpha = 0, beta = 0, gamma is free") uses the named metric
+``"zyx-euler-free-gamma"`` of :mod:`moik.kinematics.orientation`.
 """
 
 from __future__ import annotations
@@ -22,8 +21,7 @@ from moik.exceptions import ConfigError, MoikError
 
 PROBLEM_KINDS = ("position", "pose", "bi-objective")
 TARGET_KINDS = ("random", "fixed", "circle")
-_PROBLEM_KEYS = {"kind", "orientation", "weights", "displacement_weight", "q_start_deg",
-                 "free_gamma"}
+_PROBLEM_KEYS = {"kind", "orientation", "weights", "displacement_weight", "q_start_deg"}
 _TARGET_KEYS = {
     "random": {"kind", "n", "seed", "with_orientation"},
     "fixed": {"kind", "points"},
@@ -64,10 +62,6 @@ def check_problem(where: str, spec: Any, robot_name: str) -> dict:
         raise ConfigError(f"{where}: displacement_weight > 0 needs q_start_deg")
     if "q_start_deg" in p:
         _vec(f"{where}.q_start_deg", p["q_start_deg"], robot.dof)
-    if p.get("free_gamma", False) and (p["kind"] != "bi-objective"
-                                       or p["orientation"] != "zyx-euler"):
-        raise ConfigError(f"{where}.free_gamma needs kind 'bi-objective' and orientation "
-                          "'zyx-euler'")
     return p
 
 
@@ -169,14 +163,6 @@ def build_targets(config) -> list[NamedTarget]:
         raise ConfigError(f"{config.path or config.name}: targets: {exc}") from None
 
 
-def _free_gamma_error(R: np.ndarray, angles_t: np.ndarray) -> np.ndarray:
-    """MO-m-PSO Eq. 14 without the gamma term (gamma free, Section 4.4)."""
-    from moik.kinematics.orientation import zyx_euler
-
-    d = np.abs(zyx_euler(R) - angles_t)
-    return (d[..., 0] + d[..., 1]) / 3.0
-
-
 def build_problem(robot, problem: Mapping, target: NamedTarget):
     """The pymoo problem of one trial."""
     from moik.problems import BiObjectiveIK, PoseIK, PositionIK, Target
@@ -191,7 +177,4 @@ def build_problem(robot, problem: Mapping, target: NamedTarget):
     if kind == "pose":
         return PoseIK(robot, tgt, weights=tuple(problem.get("weights", (0.5, 0.5))),
                       orientation=problem["orientation"], **common)
-    out = BiObjectiveIK(robot, tgt, orientation=problem["orientation"], **common)
-    if problem.get("free_gamma", False):
-        out._orientation_error = _free_gamma_error
-    return out
+    return BiObjectiveIK(robot, tgt, orientation=problem["orientation"], **common)

@@ -14,6 +14,8 @@ Metrics (name -> error between rotation batches ``R (n, 3, 3)`` and one target
   (radians). The paper's Eq. 11 prints ``r13`` where its own Eq. 16 example
   (beta = -30 deg from r31 = 0.5) needs ``r31``; we use the standard ``r31``.
   Angle differences are not wrapped, as in the paper.
+* ``"zyx-euler-free-gamma"``: Eq. 14 without its gamma term (MO-m-PSO Section
+  4.4, the circle path with gamma free).
 * ``"frobenius"``: ``||R - R_t||_F``, MChOA paper Eq. 6.
 * ``"geodesic"``: the rotation angle of ``R_t^T R`` in ``[0, pi]`` (radians),
   the default for users: no wrap-around, no gimbal lock, a true metric.
@@ -81,6 +83,14 @@ def euler_error_mae(R: np.ndarray, angles_t: np.ndarray) -> np.ndarray:
     return np.mean(np.abs(zyx_euler(R) - angles_t), axis=-1)
 
 
+def euler_error_mae_free_gamma(R: np.ndarray, angles_t: np.ndarray) -> np.ndarray:
+    """MO-m-PSO Eq. 14 with gamma free (Section 4.4, the circle path:
+    "alpha = beta = 0, gamma free"): the gamma term is dropped, the divisor
+    stays 3 so values compare with Eq. 14."""
+    d = np.abs(zyx_euler(R) - angles_t)
+    return (d[..., 0] + d[..., 1]) / 3.0
+
+
 def frobenius_error(R: np.ndarray, R_t: np.ndarray) -> np.ndarray:
     """MChOA Eq. 6: Frobenius norm ``||R - R_t||_F``."""
     return np.sqrt(np.sum((R - R_t) ** 2, axis=(-2, -1)))
@@ -106,6 +116,7 @@ def geodesic_error(R: np.ndarray, R_t: np.ndarray) -> np.ndarray:
 _METRICS: dict[str, tuple[Callable, Callable]] = {
     "eosma-euler": (eosma_euler, euler_error_l2),
     "zyx-euler": (zyx_euler, euler_error_mae),
+    "zyx-euler-free-gamma": (zyx_euler, euler_error_mae_free_gamma),
     "frobenius": (lambda R: R, frobenius_error),
     "geodesic": (lambda R: R, geodesic_error),
 }

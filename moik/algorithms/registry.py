@@ -2,7 +2,8 @@
 
 moik's own algorithms validate their hyperparameters in ``__init__`` (a bad value
 raises :class:`~moik.exceptions.ParameterError` with the valid range). pymoo's
-``de`` and ``ga`` are registered as they are, for comparisons; for every entry an
+DE (as ``pymoo-de``; ``de`` is moik's array-state DE/rand/1/bin) and ``ga`` are
+registered as they are, for comparisons; for every entry an
 unknown keyword raises ``ParameterError`` naming the accepted ones (pymoo's
 classes would otherwise swallow it through ``**kwargs``).
 
@@ -18,7 +19,7 @@ from collections.abc import Callable
 from pymoo.algorithms.moo.mopso_cd import MOPSO_CD
 from pymoo.algorithms.moo.nsga2 import NSGA2
 from pymoo.algorithms.moo.sms import SMSEMOA
-from pymoo.algorithms.soo.nonconvex.de import DE
+from pymoo.algorithms.soo.nonconvex.de import DE as PymooDE  # noqa: N811
 from pymoo.algorithms.soo.nonconvex.ga import GA
 from pymoo.core.algorithm import Algorithm
 
@@ -41,20 +42,27 @@ from moik.algorithms.soo.choa import CChOA, ChOA, MChOA, OChOA, OIChOA, WChOA
 from moik.algorithms.soo.code import CODE
 from moik.algorithms.soo.cpso_at import CPSOAT
 from moik.algorithms.soo.csa import CSA
+from moik.algorithms.soo.de import DE
 from moik.algorithms.soo.eo import EO
 from moik.algorithms.soo.eosma import EOSMA
 from moik.algorithms.soo.fa import FA
+from moik.algorithms.soo.fpa import FPA
+from moik.algorithms.soo.gbo import GBO
 from moik.algorithms.soo.hho import HHO
 from moik.algorithms.soo.igwo import IGWO
 from moik.algorithms.soo.jaya import JAYA
+from moik.algorithms.soo.mpa import MPA
 from moik.algorithms.soo.mpso import MPSO
+from moik.algorithms.soo.mrfo import MRFO
 from moik.algorithms.soo.mtde import MTDE
 from moik.algorithms.soo.mtsa import MTSA
+from moik.algorithms.soo.pfa import PFA
 from moik.algorithms.soo.pso import PSO
 from moik.algorithms.soo.psogsa import PSOGSA
 from moik.algorithms.soo.sass import SASS
 from moik.algorithms.soo.sma import SMA
 from moik.algorithms.soo.ssa import SSA
+from moik.algorithms.soo.tlbo import TLBO
 from moik.exceptions import ParameterError, UnknownNameError
 
 _REGISTRY: dict[str, type[Algorithm]] = {
@@ -64,6 +72,14 @@ _REGISTRY: dict[str, type[Algorithm]] = {
     "m-pso": MPSO,
     "pso": PSO,
     "de": DE,
+    "pymoo-de": PymooDE,
+    # EOSMA paper baselines (issue 7)
+    "mrfo": MRFO,
+    "mpa": MPA,
+    "pfa": PFA,
+    "fpa": FPA,
+    "gbo": GBO,
+    "tlbo": TLBO,
     "hho": HHO,
     "igwo": IGWO,
     "psogsa": PSOGSA,
@@ -110,7 +126,7 @@ _REGISTRY: dict[str, type[Algorithm]] = {
 
 # Keywords a class forwards through **kwargs to a collaborator (pymoo's DE -> Variant).
 _FORWARDED: dict[type, tuple[str, ...]] = {
-    DE: ("CR", "F", "jitter", "prob_mut", "control", "crossover", "selection", "n_diffs"),
+    PymooDE: ("CR", "F", "jitter", "prob_mut", "control", "crossover", "selection", "n_diffs"),
 }
 
 
@@ -162,7 +178,7 @@ def get_algorithm(name: str, **params) -> Algorithm:
         raise ParameterError(f"unknown parameter(s) {', '.join(unknown)} for algorithm "
                              f"{name!r}; accepted: {', '.join(valid)}")
     pop_size = params.get("pop_size", 1)
-    if cls in (DE, GA) and (isinstance(pop_size, bool) or not isinstance(pop_size, int)
+    if cls in (PymooDE, GA) and (isinstance(pop_size, bool) or not isinstance(pop_size, int)
                             or pop_size < 1):
         raise ParameterError(f"pop_size must be a positive integer, got {pop_size!r}")
     return cls(**params)

@@ -11,7 +11,8 @@ from moik.algorithms import EOSMA, available, get_algorithm, register, registry
 from moik.algorithms.registry import accepted_parameters
 from moik.exceptions import ParameterError, UnknownNameError
 
-NAMES = ["de", "eo", "eosma", "ga", "m-pso", "pso", "sma"]
+NAMES = ["de", "eo", "eosma", "ga", "m-pso", "pso", "pymoo-de", "sma"]
+NAMES += ["mrfo", "mpa", "pfa", "fpa", "gbo", "tlbo"]  # issue 7, first half
 NAMES += ["hho", "igwo", "psogsa", "code", "mtde", "sass"]  # issue 7, second half
 NAMES += ["bes", "ibes", "fa", "mtsa", "cpso-at", "choa", "cchoa", "oichoa", "ochoa",
           "wchoa", "mchoa", "ssa", "csa", "jaya"]  # issue 8
@@ -43,7 +44,7 @@ def test_unknown_keyword_names_accepted_ones():
     with pytest.raises(ParameterError, match=r"unknown parameter\(s\) zz .*accepted: .*a1"):
         get_algorithm("eosma", zz=1)
     with pytest.raises(ParameterError, match=r"unknown parameter\(s\) bogus .*accepted: .*CR"):
-        get_algorithm("de", bogus=1)
+        get_algorithm("pymoo-de", bogus=1)
     assert {"pop_size", "q", "z", "seed", "verbose"} <= set(accepted_parameters("eosma"))
 
 
@@ -59,7 +60,8 @@ def test_unknown_keyword_names_accepted_ones():
     ("m-pso", {"switch": "median"}, r"switch must be one of mean-position, mean-fitness"),
     ("pso", {"vmax_rate": 0}, r"vmax_rate must be a number in \(0.0, 1.0\]"),
     ("pso", {"pop_size": 1}, r"pop_size must be an integer >= 2"),
-    ("de", {"pop_size": 0}, r"pop_size must be a positive integer"),
+    ("pymoo-de", {"pop_size": 0}, r"pop_size must be a positive integer"),
+    ("de", {"pop_size": 3}, r"pop_size must be an integer >= 4"),
 ])
 def test_bad_values_raise_parameter_error(name, params, message):
     with pytest.raises(ParameterError, match=message):

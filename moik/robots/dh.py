@@ -84,12 +84,11 @@ def run_steps(steps: tuple, Q: np.ndarray, theta: np.ndarray, joint_ends: tuple 
         z column ``(3, n)``, position ``(3, n)`` and the recorded states.
     """
     n = Q.shape[0]
-    rot = joint_rotations(Q, theta) if any(s[0] == "rz" for s in steps) else None
-    xy = np.zeros((3, n), dtype=complex)
-    xy[0] = 1.0
-    xy[1] = 1.0j
-    z = np.zeros((3, n))
-    z[2] = 1.0
+    rot = joint_rotations(Q, theta)
+    xy = np.empty((3, n), dtype=complex)
+    xy[:] = ((1.0,), (1.0j,), (0.0,))
+    z = np.empty((3, n))
+    z[:] = ((0.0,), (0.0,), (1.0,))
     p_xy = np.zeros((3, n), dtype=complex)  # Tx contributions (real part)
     p_z = np.zeros((3, n))  # Tz contributions
     tmp_c = np.empty((3, n), dtype=complex)
@@ -143,12 +142,12 @@ def run_steps(steps: tuple, Q: np.ndarray, theta: np.ndarray, joint_ends: tuple 
 def assemble(xy: np.ndarray, z: np.ndarray, p: np.ndarray) -> np.ndarray:
     """Homogeneous transforms ``(n, 4, 4)`` from kernel state."""
     n = p.shape[1]
-    T = np.zeros((n, 4, 4))
+    T = np.empty((n, 4, 4))
     T[:, :3, 0] = xy.real.T
     T[:, :3, 1] = xy.imag.T
     T[:, :3, 2] = z.T
     T[:, :3, 3] = p.T
-    T[:, 3, 3] = 1.0
+    T[:, 3] = (0.0, 0.0, 0.0, 1.0)
     return T
 
 

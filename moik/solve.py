@@ -8,12 +8,14 @@ derived seeds until enough distinct solutions are found or the budget is spent.
 
 Honesty rules: the returned errors are recomputed with the reference FK (never
 taken from an optimizer); ``q`` is always within the joint limits; a target is
-called ``"unreachable"`` when no solution was found and either at least five
-local refinements from distinct starts stopped at stationary points above
-tolerance, or three of them agree (within 0.1 %) on a minimal error far above
-tolerance (the solver's best evidence, not a proof); then the
-Pareto front of (position error, orientation error) from a multi-objective
-algorithm (MOEOSMA) is returned with its compromise closest to the utopia point.
+called ``"unreachable"`` when two independent global searches found nothing
+within tolerance: the single-objective rounds ran until ``patience`` rounds
+brought no progress (not until the budget ran out) and a multi-objective run
+(MOEOSMA) whose best member was refined as well; and the best error is more
+than 1000 tolerances away. It is the solver's verdict, not a proof; a near
+miss, or a search cut short by ``max_evals``, is ``"not-converged"``. The
+Pareto front of (position error, orientation error) is returned with its
+compromise, closest to the utopia point, as ``q``.
 """
 
 from __future__ import annotations
@@ -34,7 +36,8 @@ from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.chain import Robot
 
 STATUSES = ("solved", "unreachable", "not-converged")
-MIN_STATIONARY_FOR_UNREACHABLE = 5
+UNREACHABLE_FACTOR = 1e3  # best error beyond this many tolerances after a full search
+FINAL_NFEV = 300  # extended refinement of the best candidate before giving up
 QUICK_NFEV = 12  # a good start converges in ~5-10 evaluations; a bad one is dropped early
 
 
@@ -54,8 +57,9 @@ class IKResult:
         time: Wall time in seconds.
         solutions: Distinct solutions found (``(k, dof)``), nearest to
             ``q_current`` first when it was given.
-        front: Pareto front ``(m, 2)`` of (position, orientation) errors when
-            unreachable (``None`` otherwise), with ``front_q`` its joint vectors.
+        front: Pareto front ``(m, 2)`` of (position, orientation) errors (the
+            ``orientation`` metric) when a pose was not solved (``None``
+            otherwise), with ``front_q`` its joint vectors.
     """
 
     q: np.ndarray
@@ -120,18 +124,6 @@ class _Session:
         self.n_eval = 0
         self.found: list[np.ndarray] = []
         self.best: tuple[float, np.ndarray] | None = None  # (scaled error, q)
-        self.n_stationary = 0  # refinements that ended at a stationary point
-        self.errors: list[float] = []  # scaled errors of full refinements
-
-    def unreachable_evidence(self) -> bool:
-        """Several refinements from distinct starts stopped at stationary points
-        above tolerance, or several agree on the same minimal error (within
-        0.1 %), which is far above tolerance."""
-        if self.n_stationary >= MIN_STATIONARY_FOR_UNREACHABLE:
-            return True
-        errs = np.sort(self.errors)
-        tol = self.tol_pos / self.robot.reach + self.tol_ori
-        return bool(errs.size >= 3 and errs[0] > 1e3 * tol and errs[2] <= errs[0] * 1.001)
 
     def refine(self, q0: np.ndarray, do_polish: bool, max_nfev: int = 60) -> None:
         if do_polish:
@@ -140,15 +132,11 @@ class _Session:
                            stop_position=1e-3 * self.tol_pos,
                            stop_orientation=1e-3 * self.tol_ori)
             self.n_eval += out.n_eval
-            q, stationary = out.q, out.stationary
+            q = out.q
         else:
-            q, stationary = np.clip(q0, self.robot.lower, self.robot.upper), False
-        self.n_stationary += int(stationary)
-        full = max_nfev > QUICK_NFEV
+            q = np.clip(q0, self.robot.lower, self.robot.upper)
         pos, ori = (float(v[0]) for v in pose_errors(self.robot, self.target, q))
         err = pos / self.robot.reach + ori
-        if full:
-            self.errors.append(err)
         if self.best is None or err < self.best[0]:
             self.best = (err, q)
         if pos <= self.tol_pos and ori <= self.tol_ori and _distinct(self.robot, q, self.found,
@@ -158,10 +146,10 @@ class _Session:
 
 def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = "geodesic",
              polish: bool = True, n_solutions: int = 1, q_current=None, seed=0,
-             tol=1e-9, max_evals: int = 20_000, pop_size: int | None = None,
+             tol=1e-9, max_evals: int = 50_000, pop_size: int | None = None,
              generations: int = 15,
              candidates_per_round: int = 3, distinct: float = 0.1,
-             patience: int = 10, front_method: str = "moeosma",
+             patience: int = 30, front_method: str = "moeosma",
              front_evals: int = 10_000) -> IKResult:
     """Solve IK for one target.
 
@@ -185,7 +173,7 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
         generations: Search generations per round.
         candidates_per_round: Distinct candidates polished per round.
         distinct: Joint-space distance above which two solutions are distinct.
-        patience: Stop after this many rounds without a new solution.
+        patience: Stop after this many search rounds without a new solution.
         front_method: Multi-objective algorithm for the front of unreachable poses.
         front_evals: Evaluation budget of that front.
     """
@@ -216,8 +204,13 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
         _search_round(session, problem, method, pop_size, generations, candidates_per_round,
                       int(seeds.spawn(1)[0].generate_state(1)[0]), n_solutions, polish)
         idle_rounds = 0 if len(session.found) > n_found else idle_rounds + 1
-    return _result(session, robot, target, orientation, q_current, seeds, t0, front_method,
-                   front_evals)
+    searched_out = idle_rounds >= patience  # ended for lack of progress, not for budget
+    if not session.found and polish:  # a near miss may only need more iterations
+        session.refine(session.best[1], polish, max_nfev=FINAL_NFEV)
+    front = front_q = None
+    if not session.found and target.rotation is not None:
+        front, front_q = _front(session, orientation, seeds, front_method, front_evals, polish)
+    return _result(session, q_current, t0, searched_out, front, front_q)
 
 
 def _search_round(session: _Session, problem, method: str, pop_size: int, generations: int,
@@ -247,27 +240,39 @@ def _search_round(session: _Session, problem, method: str, pop_size: int, genera
     session.n_eval += algorithm.evaluator.n_eval
 
 
-def _result(session, robot, target, orientation, q_current, seeds, t0, front_method,
-            front_evals) -> IKResult:
-    front = front_q = None
+def _front(session: _Session, orientation: str, seeds, front_method: str, front_evals: int,
+           do_polish: bool) -> tuple[np.ndarray, np.ndarray]:
+    """Pareto front of (position, orientation) errors; its member with the
+    smallest combined error is refined too (a second, independent global search:
+    if it reaches the pose after all, the target is solved)."""
+    robot, target = session.robot, session.target
+    problem = BiObjectiveIK(robot, target, orientation=orientation)
+    algorithm = get_algorithm(front_method)
+    run_seed = int(seeds.spawn(1)[0].generate_state(1)[0])
+    res = minimize(problem, algorithm, ("n_eval", front_evals), seed=run_seed,
+                   copy_algorithm=False)
+    session.n_eval += algorithm.evaluator.n_eval
+    front, front_q = np.atleast_2d(res.F), np.atleast_2d(res.X)
+    best = int(np.argmin(front[:, 0] / robot.reach + front[:, 1]))
+    session.refine(front_q[best], do_polish, max_nfev=FINAL_NFEV)
+    return front, front_q
+
+
+def _result(session: _Session, q_current, t0: float, searched_out: bool, front, front_q
+            ) -> IKResult:
+    robot, target = session.robot, session.target
     if session.found:
         sols = np.array(session.found)
         if q_current is not None:
             sols = sols[np.argsort(np.linalg.norm(sols - q_current, axis=1), kind="stable")]
-        q, status = sols[0], "solved"
+        q, status, front, front_q = sols[0], "solved", None, None
     else:
         sols = np.empty((0, robot.dof))
+        tol = session.tol_pos / robot.reach + session.tol_ori
+        far = session.best[0] > UNREACHABLE_FACTOR * tol
+        status = "unreachable" if searched_out and far else "not-converged"
         q = session.best[1]
-        unreachable = session.unreachable_evidence()
-        status = "unreachable" if unreachable else "not-converged"
-        if status == "unreachable" and target.rotation is not None:
-            problem = BiObjectiveIK(robot, target, orientation=orientation)
-            algorithm = get_algorithm(front_method)
-            run_seed = int(seeds.spawn(1)[0].generate_state(1)[0])
-            res = minimize(problem, algorithm, ("n_eval", front_evals), seed=run_seed,
-                           copy_algorithm=False)
-            session.n_eval += algorithm.evaluator.n_eval
-            front, front_q = np.atleast_2d(res.F), np.atleast_2d(res.X)
+        if status == "unreachable" and front is not None:
             q = np.clip(front_q[closest_to_utopia(front)], robot.lower, robot.upper)
     pos, ori = (float(v[0]) for v in pose_errors(robot, target, q))
     return IKResult(q=q, position_error=pos, orientation_error=ori, success=status == "solved",

@@ -10,6 +10,8 @@ single ``<``. Randomness only through the ``rng`` keyword (no default).
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from moik.exceptions import ParameterError
@@ -93,3 +95,21 @@ def check_param(name: str, value, lo: float, hi: float, *, lo_open: bool = False
         rng = f"{'(' if lo_open else '['}{lo}, {hi}{')' if hi_open else ']'}"
         raise ParameterError(f"{name} must be a number in {rng}, got {value!r}")
     return v
+
+
+def mantegna_sigma(beta: float) -> float:
+    """Scale ``sigma_u`` of the numerator in Mantegna's Levy-stable step
+    (Mantegna 1994): ``(G(1+b) sin(pi b/2) / (G((1+b)/2) b 2^((b-1)/2)))^(1/b)``."""
+    num = math.gamma(1.0 + beta) * math.sin(math.pi * beta / 2.0)
+    den = math.gamma((1.0 + beta) / 2.0) * beta * 2.0 ** ((beta - 1.0) / 2.0)
+    return (num / den) ** (1.0 / beta)
+
+
+def mantegna_levy(shape: tuple[int, ...], beta: float, *,
+                  rng: np.random.Generator) -> np.ndarray:
+    """Symmetric Levy-stable steps ``sigma u / |v|^(1/beta)`` (u, v standard normal,
+    drawn in that order), unscaled: FPA, MPA, HHO, MODA and I-BES multiply by
+    their own factor (0.01 or 0.05)."""
+    u = rng.standard_normal(shape) * mantegna_sigma(beta)
+    v = rng.standard_normal(shape)
+    return u / np.abs(v) ** (1.0 / beta)

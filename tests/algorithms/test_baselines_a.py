@@ -14,8 +14,9 @@ from pymoo.optimize import minimize
 
 import moik
 from moik.algorithms import DE, FPA, GBO, MPA, MRFO, PFA, TLBO, get_algorithm
+from moik.algorithms.mechanics import mantegna_levy, mantegna_sigma
 from moik.algorithms.soo.de import binomial_crossover, distinct_partners, rand_1_mutation
-from moik.algorithms.soo.fpa import mantegna_levy, mantegna_sigma, pollinate
+from moik.algorithms.soo.fpa import pollinate
 from moik.algorithms.soo.gbo import gbo_alpha, gbo_update, gradient_search_rule
 from moik.algorithms.soo.mpa import fads_effect, mpa_cf, mpa_phase, predator_move
 from moik.algorithms.soo.mrfo import chain_and_cyclone, somersault

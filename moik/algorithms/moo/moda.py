@@ -44,22 +44,17 @@ Deviations and readings:
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from moik.algorithms.archive import ArchiveBase, CrowdingArchive
 from moik.algorithms.archive.base import roulette
-from moik.algorithms.mechanics import check_param, clip_to_bounds
+from moik.algorithms.mechanics import check_param, clip_to_bounds, mantegna_levy
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step
 
 
 def levy(shape: tuple[int, ...], *, rng: np.random.Generator, beta: float = 1.5) -> np.ndarray:
     """Eqs. 3.8-3.9: Mantegna Levy steps times 0.01 (MODA.m's Levy.m)."""
-    sigma = (math.gamma(1 + beta) * math.sin(math.pi * beta / 2)
-             / (math.gamma((1 + beta) / 2) * beta * 2 ** ((beta - 1) / 2))) ** (1 / beta)
-    r1, r2 = rng.standard_normal(shape) * sigma, rng.standard_normal(shape)
-    return 0.01 * r1 / np.abs(r2) ** (1 / beta)
+    return 0.01 * mantegna_levy(shape, beta, rng=rng)
 
 
 def swarm_weights(t: int, T: int, w_start: float, w_end: float) -> tuple[float, float]:

@@ -46,12 +46,16 @@ Readings and deviations:
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from moik.algorithms.base import ArrayAlgorithm, Step
-from moik.algorithms.mechanics import check_param, clip_to_bounds, greedy_memory
+from moik.algorithms.mechanics import (
+    check_param,
+    clip_to_bounds,
+    greedy_memory,
+    mantegna_levy,
+    mantegna_sigma,
+)
 from moik.exceptions import ParameterError
 
 BOUND_HANDLING = ("clip", "random")
@@ -77,18 +81,12 @@ def spiral_search(X, x_mean, *, a: float, R: float, rng: np.random.Generator) ->
     return X[:-1] + n1[:, None] * (X[:-1] - X[1:]) + m1[:, None] * (X[:-1] - x_mean)
 
 
-def levy_sigma(beta: float) -> float:
-    """Eq. 10: scale sigma of the Levy step numerator."""
-    num = math.gamma(1.0 + beta) * math.sin(math.pi * beta / 2.0)
-    den = math.gamma((1.0 + beta) / 2.0) * beta * 2.0 ** ((beta - 1.0) / 2.0)
-    return (num / den) ** (1.0 / beta)
+levy_sigma = mantegna_sigma  # Eq. 10
 
 
 def levy_step(shape: tuple[int, ...], beta: float, *, rng: np.random.Generator) -> np.ndarray:
     """Eq. 9: ``L = 0.01 sigma u / |v|^(1/beta)``, u and v standard normal."""
-    u = rng.standard_normal(shape)
-    v = rng.standard_normal(shape)
-    return 0.01 * levy_sigma(beta) * u / np.abs(v) ** (1.0 / beta)
+    return 0.01 * mantegna_levy(shape, beta, rng=rng)
 
 
 def levy_search(X, x_best, *, beta: float, rng: np.random.Generator) -> np.ndarray:

@@ -16,7 +16,7 @@ Levy steps are drawn with Mantegna's algorithm (as in Yang's published code):
 ``step = u / |v|^(1/beta)``, ``u ~ N(0, sigma_u^2)``, ``v ~ N(0, 1)``,
 ``sigma_u = (Gamma(1+beta) sin(pi beta/2) / (Gamma((1+beta)/2) beta 2^((beta-1)/2)))^(1/beta)``,
 scaled by 0.01 (``L = 0.01 step`` in Yang's code; the paper gives no scale).
-:func:`mantegna_levy` is shared with MPA.
+:func:`~moik.algorithms.mechanics.mantegna_levy` is shared with MPA, HHO, MODA, I-BES.
 
 Defaults (EOSMA paper, Table 3): p=0.2; beta=1.5. Evaluations: N per iteration.
 Out-of-range coordinates are clipped to the bounds (Yang's ``simplebounds``).
@@ -40,27 +40,15 @@ Deviations and readings:
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from moik.algorithms.base import ArrayAlgorithm, Step
-from moik.algorithms.mechanics import check_param, clip_to_bounds, greedy_memory
-
-
-def mantegna_sigma(beta: float) -> float:
-    """Scale ``sigma_u`` of the numerator normal in Mantegna's Levy algorithm."""
-    num = math.gamma(1.0 + beta) * math.sin(math.pi * beta / 2.0)
-    den = math.gamma((1.0 + beta) / 2.0) * beta * 2.0 ** ((beta - 1.0) / 2.0)
-    return (num / den) ** (1.0 / beta)
-
-
-def mantegna_levy(shape: tuple[int, ...], beta: float, *,
-                  rng: np.random.Generator) -> np.ndarray:
-    """Eq. 2 via Mantegna: symmetric Levy-stable steps ``u / |v|^(1/beta)`` of ``shape``."""
-    u = rng.standard_normal(shape) * mantegna_sigma(beta)
-    v = rng.standard_normal(shape)
-    return u / np.abs(v) ** (1.0 / beta)
+from moik.algorithms.mechanics import (
+    check_param,
+    clip_to_bounds,
+    greedy_memory,
+    mantegna_levy,
+)
 
 
 def pollinate(X, g, *, p: float, beta: float, levy_scale: float,

@@ -49,18 +49,14 @@ import math
 import numpy as np
 
 from moik.algorithms.base import ArrayAlgorithm, Step
-from moik.algorithms.mechanics import check_param, clip_to_bounds, is_better
+from moik.algorithms.mechanics import check_param, clip_to_bounds, is_better, mantegna_levy
 
 RAPID_DIVE_SHARE = 0.5 * (0.5 + 0.5 * math.log(2.0))
 
 
 def levy_flight(shape, beta: float, *, rng: np.random.Generator) -> np.ndarray:
-    """Eq. 9: Mantegna's Levy step ``0.01 u sigma / |v|^(1/beta)``."""
-    sigma = (math.gamma(1 + beta) * math.sin(math.pi * beta / 2)
-             / (math.gamma((1 + beta) / 2) * beta * 2 ** ((beta - 1) / 2))) ** (1 / beta)
-    u = rng.standard_normal(shape) * sigma
-    v = rng.standard_normal(shape)
-    return 0.01 * u / np.abs(v) ** (1 / beta)
+    """Eq. 9: Mantegna's Levy step times 0.01."""
+    return 0.01 * mantegna_levy(shape, beta, rng=rng)
 
 
 def hho_moves(X, rabbit, E, r, *, xl, xu, rng: np.random.Generator):

@@ -19,7 +19,7 @@ nature-inspired metaheuristic", Expert Systems with Applications 152, 113377
   rate FADs, else ``Prey + (FADs (1 - r) + r) (Prey_r1 - Prey_r2)``.
 
 ``R_B`` is standard normal, ``R_L`` is ``0.05`` times a Mantegna Levy step with
-exponent 1.5 (the authors' code; :func:`moik.algorithms.soo.fpa.mantegna_levy`),
+exponent 1.5 (the authors' code; :func:`moik.algorithms.mechanics.mantegna_levy`),
 ``R`` uniform per coordinate.
 
 Defaults (EOSMA paper, Table 3): P=0.5, FADs=0.2. Evaluations: **2N per
@@ -45,8 +45,12 @@ from __future__ import annotations
 import numpy as np
 
 from moik.algorithms.base import ArrayAlgorithm, Step
-from moik.algorithms.mechanics import check_param, clip_to_bounds, greedy_memory
-from moik.algorithms.soo.fpa import mantegna_levy
+from moik.algorithms.mechanics import (
+    check_param,
+    clip_to_bounds,
+    greedy_memory,
+    mantegna_levy,
+)
 
 
 def mpa_phase(t: int, T: int) -> int:

@@ -10,9 +10,10 @@ from moik.algorithms import MODA, MOGWO, MOMVO, get_algorithm
 from moik.algorithms.archive import GridArchive, nondominated_mask
 from moik.algorithms.moo.moalo import shrink_ratio, walk_around, walk_at
 from moik.algorithms.moo.moda import dragonfly_step, swarm_weights
-from moik.algorithms.moo.mogwo import distinct_grid_leaders, gwo_move
+from moik.algorithms.moo.mogwo import distinct_grid_leaders
 from moik.algorithms.moo.momvo import mvo_roulette, mvo_schedule, tunnels
 from moik.algorithms.moo.mssa import salp_chain, ssa_c1
+from moik.algorithms.soo.igwo import gwo_move
 from moik.exceptions import ParameterError
 from moik.metrics import hypervolume
 from moik.problems import BiObjectiveIK, random_reachable_targets

@@ -9,7 +9,6 @@ from pymoo.problems import get_problem
 from moik.algorithms import MOCSA, MOJAYA, MOMPA, MOPSO, MOSMA, MOClassicPSO, get_algorithm
 from moik.algorithms.archive import CrowdingArchive, GridArchive, nondominated_mask
 from moik.algorithms.moo.mo_csa import crow_move, inside_box
-from moik.algorithms.moo.mo_jaya import jaya_move
 from moik.algorithms.moo.mompa import top_predator
 from moik.algorithms.moo.mopso import (
     mopso_mutation,
@@ -19,6 +18,7 @@ from moik.algorithms.moo.mopso import (
 )
 from moik.algorithms.moo.mosma import elitist_order
 from moik.algorithms.moo.swarms import swarm_extreme, swarm_partners
+from moik.algorithms.soo.jaya import jaya_update as jaya_move
 from moik.exceptions import ParameterError
 from moik.metrics import hypervolume
 from moik.problems import BiObjectiveIK, random_reachable_targets

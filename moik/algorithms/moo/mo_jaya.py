@@ -43,22 +43,7 @@ import numpy as np
 from moik.algorithms.mechanics import clip_to_bounds
 from moik.algorithms.moo.base import Step
 from moik.algorithms.moo.swarms import ObjectiveSwarms, swarm_extreme
-
-
-def jaya_move(X: np.ndarray, best: np.ndarray, worst: np.ndarray, *,
-              rng: np.random.Generator) -> np.ndarray:
-    """JAYA Eq. 1: toward the best and away from the worst candidate (not yet bounded).
-
-    Args:
-        X: Candidates, shape (n, d).
-        best: Best candidate per row, shape (n, d) or (d,).
-        worst: Worst candidate per row, shape (n, d) or (d,).
-        rng: Random generator (r1, r2 drawn per coordinate).
-    """
-    r1 = rng.random(X.shape)
-    r2 = rng.random(X.shape)
-    absX = np.abs(X)
-    return X + r1 * (best - absX) - r2 * (worst - absX)
+from moik.algorithms.soo.jaya import jaya_update
 
 
 class MOJAYA(ObjectiveSwarms):
@@ -82,6 +67,6 @@ class MOJAYA(ObjectiveSwarms):
         M = self.problem.n_obj
         best = swarm_extreme(self.pbest_X, self.pbest_S, M)
         worst = swarm_extreme(self.pbest_X, self.pbest_S, M, worst=True)
-        X = jaya_move(self.pbest_X, best, worst, rng=self.random_state)  # Eq. 1
+        X = jaya_update(self.pbest_X, best, worst, rng=self.random_state)  # Eq. 1
         X = clip_to_bounds(X, self.xl, self.xu)
         self._remember(X, (yield X))  # greedy acceptance

@@ -39,6 +39,7 @@ import numpy as np
 from moik.algorithms.archive import ArchiveBase, GridArchive
 from moik.algorithms.mechanics import clip_to_bounds
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step
+from moik.algorithms.soo.igwo import gwo_move
 
 
 def distinct_grid_leaders(archive: GridArchive, n: int, *, rng: np.random.Generator
@@ -70,24 +71,6 @@ def distinct_grid_leaders(archive: GridArchive, n: int, *, rng: np.random.Genera
             r = r + (q <= r)
         out[:, k] = order[starts[cell] + r]
     return out
-
-
-def gwo_move(X: np.ndarray, leaders: tuple[np.ndarray, ...], a: float, *,
-             rng: np.random.Generator) -> np.ndarray:
-    """Eqs. 3.1-3.11: mean of the leader-guided positions of every wolf.
-
-    Args:
-        X: Wolves (n, d).
-        leaders: Leader positions, each (n, d) or (d,).
-        a: Coefficient ``a`` of Eq. 3.3.
-        rng: Random generator (``A`` then ``C`` per leader, each (n, d)).
-    """
-    out = np.zeros_like(X)
-    for leader in leaders:
-        A = 2.0 * a * rng.random(X.shape) - a  # Eq. 3.3
-        C = 2.0 * rng.random(X.shape)  # Eq. 3.4
-        out += leader - A * np.abs(C * leader - X)  # Eqs. 3.1, 3.8-3.10
-    return out / len(leaders)  # Eq. 3.11
 
 
 class MOGWO(MOArrayAlgorithm):

@@ -47,14 +47,15 @@ from moik.algorithms.mechanics import (
 
 
 def gwo_move(X, leaders, a: float, *, rng: np.random.Generator) -> np.ndarray:
-    """GWO hunting: mean of the three leader-guided positions of every wolf."""
-    n, d = X.shape
-    out = np.zeros((n, d))
+    """GWO hunting (Mirjalili et al. 2014, Eqs. 3.1-3.7): mean of the
+    leader-guided positions of every wolf; leaders each (n, d) or (d,); ``A``
+    then ``C`` drawn per leader, each (n, d). Shared with MOGWO."""
+    out = np.zeros_like(X)
     for leader in leaders:
-        A = 2.0 * a * rng.random((n, d)) - a
-        C = 2.0 * rng.random((n, d))
-        out += leader - A * np.abs(C * leader - X)
-    return out / 3.0
+        A = 2.0 * a * rng.random(X.shape) - a  # Eq. 3.3
+        C = 2.0 * rng.random(X.shape)  # Eq. 3.4
+        out += leader - A * np.abs(C * leader - X)  # Eqs. 3.1, 3.5-3.6
+    return out / len(leaders)  # Eq. 3.7
 
 
 def dimension_learning(X, X_gwo, *, rng: np.random.Generator) -> np.ndarray:

@@ -148,6 +148,17 @@ def register(name: str, cls: type[Algorithm] | None = None) -> Callable | type[A
     return add if cls is None else add(cls)
 
 
+_PYMOO_MULTI_OBJECTIVE = (NSGA2, MOEAD, SMSEMOA, MOPSO_CD)
+
+
+def is_multi_objective(name: str) -> bool:
+    """Whether the algorithm registered as ``name`` solves multi-objective problems."""
+    from moik.algorithms.moo.base import MOArrayAlgorithm
+
+    cls = _lookup(name)
+    return issubclass(cls, (MOArrayAlgorithm, *_PYMOO_MULTI_OBJECTIVE))
+
+
 def available() -> list[str]:
     """Names accepted by :func:`get_algorithm`, sorted."""
     return sorted(_REGISTRY)

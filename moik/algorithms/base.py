@@ -29,35 +29,22 @@ from collections.abc import Generator
 import numpy as np
 from pymoo.core.algorithm import Algorithm
 from pymoo.core.population import Population
-from pymoo.core.termination import TerminateIfAny
-from pymoo.termination.default import DefaultTermination
 from pymoo.util.display.column import Column
 from pymoo.util.display.output import Output
 
-from moik.algorithms.mechanics import (
-    best_index,
-    clip_to_bounds,
-    constraint_violation,
-    is_better,
-    uniform_population,
+from moik.algorithms.driver import (
+    LazyPopulations,
+    budget_left,
+    check_sizes,
+    find_limit,
+    finite_bounds,
+    initial_population,
+    schedule_length,
 )
-from moik.exceptions import NonFiniteError, ParameterError, ShapeError
+from moik.algorithms.mechanics import best_index, constraint_violation, is_better
+from moik.exceptions import ParameterError
 
 Step = Generator[np.ndarray, tuple, None]
-
-
-def _find_limit(termination, attr: str) -> float:
-    """Smallest ``attr`` (n_max_gen / n_max_evals) among any-of termination criteria."""
-    limit = getattr(termination, attr, None)
-    limit = np.inf if limit is None else float(limit)
-    if isinstance(termination, (TerminateIfAny, DefaultTermination)):
-        for sub in termination.criteria:
-            limit = min(limit, _find_limit(sub, attr))
-    return limit
-
-
-def _is_int(value) -> bool:
-    return isinstance(value, (int, np.integer)) and not isinstance(value, bool)
 
 
 def _avg_f(algorithm) -> float | None:
@@ -74,7 +61,7 @@ class ArrayOutput(Output):
         self.columns += [Column("f_avg", func=_avg_f), Column("f_best", func=lambda a: a.best_f)]
 
 
-class ArrayAlgorithm(Algorithm):
+class ArrayAlgorithm(LazyPopulations, Algorithm):
     """Base of moik's single-objective population algorithms (array state).
 
     Public attributes for callbacks (all numpy, read them, do not mutate):
@@ -102,44 +89,24 @@ class ArrayAlgorithm(Algorithm):
                  max_iter: int | None = None, **kwargs):
         kwargs.setdefault("output", ArrayOutput())
         super().__init__(**kwargs)
-        if not _is_int(pop_size) or pop_size < self.min_pop_size:
-            raise ParameterError(f"pop_size must be an integer >= {self.min_pop_size}, "
-                                 f"got {pop_size!r}")
-        if max_iter is not None and (not _is_int(max_iter) or max_iter < 1):
-            raise ParameterError(f"max_iter must be a positive integer or None, got {max_iter!r}")
+        check_sizes(pop_size, self.min_pop_size, max_iter)
         self.pop_size, self.X0, self.max_iter = int(pop_size), X0, max_iter
         self.X = self.F = self.CV = None
         self.best_x, self.best_f, self.best_cv = None, np.inf, None
         self.t = 0
 
-    # ---- lazily built pymoo objects -------------------------------------------------------
-    @property
-    def pop(self) -> Population | None:
-        if self.__dict__.get("_pop_stale"):
-            X, F, CV = self._population_arrays()
-            cv = np.zeros(len(F)) if CV is None else CV
-            self._pop = Population.new("X", X, "F", F[:, None], "CV", cv[:, None])
-            self._pop_stale = False
-        return self.__dict__.get("_pop")
+    # ---- lazily built pymoo objects (LazyPopulations) -------------------------------------
+    def _build_pop(self) -> Population:
+        X, F, CV = self._population_arrays()
+        cv = np.zeros(len(F)) if CV is None else CV
+        return Population.new("X", X, "F", F[:, None], "CV", cv[:, None])
 
-    @pop.setter
-    def pop(self, value) -> None:
-        self._pop, self._pop_stale = value, False
-
-    @property
-    def opt(self) -> Population | None:
-        if self.__dict__.get("_opt_stale"):
-            cv = 0.0 if self.best_cv is None else self.best_cv
-            args = ["X", self.best_x[None], "F", np.array([[self.best_f]]), "CV", np.array([[cv]])]
-            for key, val in self._best_gh.items():
-                args += [key, val[None]]
-            self._opt = Population.new(*args)
-            self._opt_stale = False
-        return self.__dict__.get("_opt")
-
-    @opt.setter
-    def opt(self, value) -> None:
-        self._opt, self._opt_stale = value, False
+    def _build_opt(self) -> Population:
+        cv = 0.0 if self.best_cv is None else self.best_cv
+        args = ["X", self.best_x[None], "F", np.array([[self.best_f]]), "CV", np.array([[cv]])]
+        for key, val in self._best_gh.items():
+            args += [key, val[None]]
+        return Population.new(*args)
 
     @property
     def convergence(self) -> np.ndarray:
@@ -151,34 +118,15 @@ class ArrayAlgorithm(Algorithm):
         if problem.n_obj != 1:
             raise ParameterError(f"{type(self).__name__} is single-objective; the problem has "
                                  f"n_obj={problem.n_obj}")
-        xl, xu = problem.bounds()
-        if xl is None or xu is None or not (np.all(np.isfinite(xl)) and np.all(np.isfinite(xu))):
-            raise ParameterError(f"{type(self).__name__} needs finite bounds xl, xu")
-        self.xl, self.xu = np.asarray(xl, float), np.asarray(xu, float)
+        self.xl, self.xu = finite_bounds(problem, type(self).__name__)
         self._constrained = bool(problem.has_constraints())
-        self._max_evals = _find_limit(self.termination, "n_max_evals")
-        if self.max_iter is None:
-            per_gen = self._evals_per_iteration()
-            n_gen = _find_limit(self.termination, "n_max_gen")
-            by_eval = (self._max_evals - self.pop_size) / per_gen + 1
-            limit = min(n_gen, np.ceil(by_eval))
-            self.max_iter = int(limit) if np.isfinite(limit) else 1000
-        self.max_iter = max(int(self.max_iter), 1)
+        self._max_evals = find_limit(self.termination, "n_max_evals")
+        self.max_iter = schedule_length(self.termination, self.max_iter, self.pop_size,
+                                        self._evals_per_iteration())
 
     def _initialize_infill(self) -> Population:
-        n_var = self.problem.n_var
-        X = uniform_population(self.pop_size, self.xl, self.xu, rng=self.random_state)
-        if self.X0 is not None:
-            X0 = np.asarray(self.X0, dtype=float)
-            if X0.ndim != 2 or X0.shape[1] != n_var or not 1 <= len(X0) <= self.pop_size:
-                raise ShapeError(f"X0 must have shape (k, {n_var}) with 1 <= k <= pop_size="
-                                 f"{self.pop_size}, got {X0.shape}")
-            if not np.all(np.isfinite(X0)):
-                raise NonFiniteError("X0 holds NaN or infinite values")
-            if np.any(clip_to_bounds(X0, self.xl, self.xu) != X0):
-                raise ParameterError("X0 has points outside the problem bounds [xl, xu]")
-            X[: len(X0)] = X0
-        return Population.new("X", X)
+        return initial_population(self.pop_size, self.xl, self.xu, self.X0,
+                                  rng=self.random_state)
 
     def _initialize_advance(self, infills=None, **kwargs) -> None:
         self._convergence, self._best_gh, self._step = [], {}, None
@@ -210,7 +158,8 @@ class ArrayAlgorithm(Algorithm):
             self._step = self._generation()
             self._pending = next(self._step)
         n = len(self._pending)
-        return Population.new("X", self._pending[: max(0, min(n, self._budget_left(n)))])
+        return Population.new("X", self._pending[: budget_left(self._max_evals,
+                                                              self.evaluator.n_eval, n)])
 
     def _advance(self, infills=None, **kwargs) -> bool:
         F, CV, G, H = self._values_of(infills)
@@ -232,10 +181,6 @@ class ArrayAlgorithm(Algorithm):
         super()._post_advance()
 
     # ---- evaluation -----------------------------------------------------------------------
-    def _budget_left(self, n: int) -> int:
-        left = self._max_evals - self.evaluator.n_eval
-        return n if left >= n else int(max(left, 0))
-
     def _pad(self, n: int, F: np.ndarray, CV: np.ndarray | None):
         """Give rows left unevaluated by the budget F = CV = inf."""
         k = len(F)
@@ -254,7 +199,7 @@ class ArrayAlgorithm(Algorithm):
     def _evaluate(self, X: np.ndarray):
         """Evaluate candidates with the vectorized problem, counting n_eval exactly."""
         n = len(X)
-        k = n if self._max_evals == np.inf else self._budget_left(n)
+        k = budget_left(self._max_evals, self.evaluator.n_eval, n)
         F, CV, G, H = np.empty(0), (np.empty(0) if self._constrained else None), None, None
         if k:
             out = self.problem.evaluate(X if k == n else X[:k], return_as_dictionary=True)

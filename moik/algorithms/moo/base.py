@@ -34,9 +34,17 @@ from pymoo.util.display.column import Column
 from pymoo.util.display.output import Output
 
 from moik.algorithms.archive import ArchiveBase, CrowdingArchive
-from moik.algorithms.base import _find_limit, _is_int
-from moik.algorithms.mechanics import clip_to_bounds, uniform_population
-from moik.exceptions import NonFiniteError, ParameterError, ShapeError
+from moik.algorithms.driver import (
+    LazyPopulations,
+    budget_left,
+    check_sizes,
+    find_limit,
+    finite_bounds,
+    initial_population,
+    is_int,
+    schedule_length,
+)
+from moik.exceptions import ParameterError, ShapeError
 from moik.metrics import closest_to_utopia
 
 Step = Generator[np.ndarray, np.ndarray, None]
@@ -70,7 +78,7 @@ class MOArrayOutput(Output):
                                        func=lambda a, k=k: float(a.pareto_archive.F[:, k].min())))
 
 
-class MOArrayAlgorithm(Algorithm):
+class MOArrayAlgorithm(LazyPopulations, Algorithm):
     """Base of moik's multi-objective population algorithms (array state, external archive).
 
     Public attributes for callbacks (numpy; read, do not mutate): ``X``/``F``
@@ -94,45 +102,24 @@ class MOArrayAlgorithm(Algorithm):
                  X0: np.ndarray | None = None, max_iter: int | None = None, **kwargs):
         kwargs.setdefault("output", MOArrayOutput())
         super().__init__(**kwargs)
-        if not _is_int(pop_size) or pop_size < self.min_pop_size:
-            raise ParameterError(f"pop_size must be an integer >= {self.min_pop_size}, "
-                                 f"got {pop_size!r}")
-        if archive_size is not None and (not _is_int(archive_size) or archive_size < 1):
+        check_sizes(pop_size, self.min_pop_size, max_iter)
+        if archive_size is not None and (not is_int(archive_size) or archive_size < 1):
             raise ParameterError(f"archive_size must be an integer >= 1 or None, "
                                  f"got {archive_size!r}")
-        if max_iter is not None and (not _is_int(max_iter) or max_iter < 1):
-            raise ParameterError(f"max_iter must be a positive integer or None, got {max_iter!r}")
         self.pop_size, self.X0, self.max_iter = int(pop_size), X0, max_iter
         self.archive_size = int(pop_size if archive_size is None else archive_size)
         self.X = self.F = self.pareto_archive = None
         self.t = 0
 
-    # ---- lazily built pymoo objects -------------------------------------------------------
-    @property
-    def pop(self) -> Population | None:
-        if self.__dict__.get("_pop_stale"):
-            X, F = self._population_arrays()
-            self._pop = Population.new("X", X, "F", F, "CV", np.zeros((len(F), 1)))
-            self._pop_stale = False
-        return self.__dict__.get("_pop")
+    # ---- lazily built pymoo objects (LazyPopulations) -------------------------------------
+    def _build_pop(self) -> Population:
+        X, F = self._population_arrays()
+        return Population.new("X", X, "F", F, "CV", np.zeros((len(F), 1)))
 
-    @pop.setter
-    def pop(self, value) -> None:
-        self._pop, self._pop_stale = value, False
-
-    @property
-    def opt(self) -> Population | None:
-        """The archive members as a ``Population`` (built when read)."""
-        if self.__dict__.get("_opt_stale"):
-            A = self.pareto_archive
-            self._opt = Population.new("X", A.X.copy(), "F", A.F.copy(),
-                                       "CV", np.zeros((len(A), 1)))
-            self._opt_stale = False
-        return self.__dict__.get("_opt")
-
-    @opt.setter
-    def opt(self, value) -> None:
-        self._opt, self._opt_stale = value, False
+    def _build_opt(self) -> Population:
+        """The archive members as a ``Population``."""
+        A = self.pareto_archive
+        return Population.new("X", A.X.copy(), "F", A.F.copy(), "CV", np.zeros((len(A), 1)))
 
     def compromise(self) -> tuple[np.ndarray, np.ndarray]:
         """The archive member closest to the utopia point (MO-m-PSO Eq. 8), as ``(x, f)``.
@@ -155,32 +142,14 @@ class MOArrayAlgorithm(Algorithm):
             raise ParameterError(f"{name} handles unconstrained problems only; the problem has "
                                  f"n_ieq_constr={problem.n_ieq_constr}, "
                                  f"n_eq_constr={problem.n_eq_constr}")
-        xl, xu = problem.bounds()
-        if xl is None or xu is None or not (np.all(np.isfinite(xl)) and np.all(np.isfinite(xu))):
-            raise ParameterError(f"{name} needs finite bounds xl, xu")
-        self.xl, self.xu = np.asarray(xl, float), np.asarray(xu, float)
-        self._max_evals = _find_limit(self.termination, "n_max_evals")
-        if self.max_iter is None:
-            n_gen = _find_limit(self.termination, "n_max_gen")
-            by_eval = (self._max_evals - self._n_initial()) / self._evals_per_iteration() + 1
-            limit = min(n_gen, np.ceil(by_eval))
-            self.max_iter = int(limit) if np.isfinite(limit) else 1000
-        self.max_iter = max(int(self.max_iter), 1)
+        self.xl, self.xu = finite_bounds(problem, name)
+        self._max_evals = find_limit(self.termination, "n_max_evals")
+        self.max_iter = schedule_length(self.termination, self.max_iter, self._n_initial(),
+                                        self._evals_per_iteration())
 
     def _initialize_infill(self) -> Population:
-        n, n_var = self._n_initial(), self.problem.n_var
-        X = uniform_population(n, self.xl, self.xu, rng=self.random_state)
-        if self.X0 is not None:
-            X0 = np.asarray(self.X0, dtype=float)
-            if X0.ndim != 2 or X0.shape[1] != n_var or not 1 <= len(X0) <= n:
-                raise ShapeError(f"X0 must have shape (k, {n_var}) with 1 <= k <= {n}, "
-                                 f"got {X0.shape}")
-            if not np.all(np.isfinite(X0)):
-                raise NonFiniteError("X0 holds NaN or infinite values")
-            if np.any(clip_to_bounds(X0, self.xl, self.xu) != X0):
-                raise ParameterError("X0 has points outside the problem bounds [xl, xu]")
-            X[: len(X0)] = X0
-        return Population.new("X", X)
+        return initial_population(self._n_initial(), self.xl, self.xu, self.X0,
+                                  rng=self.random_state)
 
     def _initialize_advance(self, infills=None, **kwargs) -> None:
         self._step = self._pending = None
@@ -215,7 +184,8 @@ class MOArrayAlgorithm(Algorithm):
             self._step = self._generation()
             self._pending = next(self._step)
         n = len(self._pending)
-        return Population.new("X", self._pending[: self._budget_left(n)])
+        return Population.new("X", self._pending[: budget_left(self._max_evals,
+                                                              self.evaluator.n_eval, n)])
 
     def _advance(self, infills=None, **kwargs) -> bool:
         F = infills.get("F").astype(float) if len(infills) else np.empty((0, self.problem.n_obj))
@@ -236,10 +206,6 @@ class MOArrayAlgorithm(Algorithm):
         super()._post_advance()
 
     # ---- evaluation -----------------------------------------------------------------------
-    def _budget_left(self, n: int) -> int:
-        left = self._max_evals - self.evaluator.n_eval
-        return n if left >= n else int(max(left, 0))
-
     def _pad(self, n: int, F: np.ndarray) -> np.ndarray:
         """Rows left unevaluated by the budget get ``F = inf``."""
         if len(F) == n:
@@ -249,7 +215,7 @@ class MOArrayAlgorithm(Algorithm):
     def _evaluate(self, X: np.ndarray) -> np.ndarray:
         """Evaluate a batch (vectorized), count n_eval exactly, offer it to the archive."""
         n = len(X)
-        k = n if self._max_evals == np.inf else self._budget_left(n)
+        k = budget_left(self._max_evals, self.evaluator.n_eval, n)
         if k == 0:
             return self._pad(n, np.empty((0, self.problem.n_obj)))
         F = self.problem.evaluate(X if k == n else X[:k], return_as_dictionary=True)["F"]

@@ -16,7 +16,7 @@ import numpy as np
 from pymoo.algorithms.moo import moead
 from pymoo.util.ref_dirs import get_reference_directions
 
-from moik.algorithms.base import _is_int
+from moik.algorithms.driver import is_int
 from moik.exceptions import ParameterError
 
 
@@ -44,7 +44,7 @@ class MOEAD(moead.MOEAD):
     """
 
     def __init__(self, *, ref_dirs: np.ndarray | None = None, pop_size: int = 100, **kwargs):
-        if not _is_int(pop_size) or pop_size < 2:
+        if not is_int(pop_size) or pop_size < 2:
             raise ParameterError(f"pop_size must be an integer >= 2, got {pop_size!r}")
         self._default_dirs = ref_dirs is None
         self._n_dirs = int(pop_size)

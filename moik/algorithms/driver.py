@@ -1,0 +1,120 @@
+"""Mechanics shared by the single- and multi-objective array-state bases.
+
+Both :class:`moik.algorithms.base.ArrayAlgorithm` and
+:class:`moik.algorithms.moo.base.MOArrayAlgorithm` validate the same
+constructor arguments, need finite bounds, infer the schedule length T from the
+termination, build the initial population the same way (uniform, optionally
+seeded with ``X0``), count the evaluation budget the same way and build pymoo
+``Population`` objects only when read (:class:`LazyPopulations`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from pymoo.core.population import Population
+from pymoo.core.termination import TerminateIfAny
+from pymoo.termination.default import DefaultTermination
+
+from moik.algorithms.mechanics import clip_to_bounds, uniform_population
+from moik.exceptions import NonFiniteError, ParameterError, ShapeError
+
+
+def find_limit(termination, attr: str) -> float:
+    """Smallest ``attr`` (n_max_gen / n_max_evals) among any-of termination criteria."""
+    limit = getattr(termination, attr, None)
+    limit = np.inf if limit is None else float(limit)
+    if isinstance(termination, (TerminateIfAny, DefaultTermination)):
+        for sub in termination.criteria:
+            limit = min(limit, find_limit(sub, attr))
+    return limit
+
+
+def is_int(value) -> bool:
+    """An integer that is not a bool."""
+    return isinstance(value, (int, np.integer)) and not isinstance(value, bool)
+
+
+def check_sizes(pop_size, min_pop_size: int, max_iter) -> None:
+    """Validate ``pop_size`` (>= ``min_pop_size``) and ``max_iter`` (positive or None)."""
+    if not is_int(pop_size) or pop_size < min_pop_size:
+        raise ParameterError(f"pop_size must be an integer >= {min_pop_size}, got {pop_size!r}")
+    if max_iter is not None and (not is_int(max_iter) or max_iter < 1):
+        raise ParameterError(f"max_iter must be a positive integer or None, got {max_iter!r}")
+
+
+def finite_bounds(problem, name: str) -> tuple[np.ndarray, np.ndarray]:
+    """The problem's ``(xl, xu)`` as float arrays; both must be finite."""
+    xl, xu = problem.bounds()
+    if xl is None or xu is None or not (np.all(np.isfinite(xl)) and np.all(np.isfinite(xu))):
+        raise ParameterError(f"{name} needs finite bounds xl, xu")
+    return np.asarray(xl, float), np.asarray(xu, float)
+
+
+def schedule_length(termination, max_iter, n_initial: int, per_iteration: float) -> int:
+    """T: ``max_iter`` if given, else from an ``n_gen`` or ``n_eval`` termination
+    (the smaller), else 1000."""
+    if max_iter is None:
+        n_gen = find_limit(termination, "n_max_gen")
+        by_eval = (find_limit(termination, "n_max_evals") - n_initial) / per_iteration + 1
+        limit = min(n_gen, np.ceil(by_eval))
+        max_iter = int(limit) if np.isfinite(limit) else 1000
+    return max(int(max_iter), 1)
+
+
+def initial_population(n: int, xl: np.ndarray, xu: np.ndarray, X0, *,
+                       rng: np.random.Generator) -> Population:
+    """Uniform initial points; the first rows replaced by ``X0`` if given (validated)."""
+    X = uniform_population(n, xl, xu, rng=rng)
+    if X0 is not None:
+        X0 = np.asarray(X0, dtype=float)
+        n_var = len(xl)
+        if X0.ndim != 2 or X0.shape[1] != n_var or not 1 <= len(X0) <= n:
+            raise ShapeError(f"X0 must have shape (k, {n_var}) with 1 <= k <= {n}, "
+                             f"got {X0.shape}")
+        if not np.all(np.isfinite(X0)):
+            raise NonFiniteError("X0 holds NaN or infinite values")
+        if np.any(clip_to_bounds(X0, xl, xu) != X0):
+            raise ParameterError("X0 has points outside the problem bounds [xl, xu]")
+        X[: len(X0)] = X0
+    return Population.new("X", X)
+
+
+def budget_left(max_evals: float, n_eval: int, n: int) -> int:
+    """How many of ``n`` candidates the evaluation budget still allows."""
+    left = max_evals - n_eval
+    return n if left >= n else int(max(left, 0))
+
+
+class LazyPopulations:
+    """``pop`` and ``opt`` as properties built from arrays only when read.
+
+    Mixed into the array-state bases (before pymoo's ``Algorithm``): a base
+    marks them stale (``_pop_stale``/``_opt_stale``) and implements
+    ``_build_pop()``/``_build_opt()``; pymoo's own assignments go to the setters.
+    """
+
+    def _build_pop(self) -> Population:
+        raise NotImplementedError
+
+    def _build_opt(self) -> Population:
+        raise NotImplementedError
+
+    @property
+    def pop(self) -> Population | None:
+        if self.__dict__.get("_pop_stale"):
+            self._pop, self._pop_stale = self._build_pop(), False
+        return self.__dict__.get("_pop")
+
+    @pop.setter
+    def pop(self, value) -> None:
+        self._pop, self._pop_stale = value, False
+
+    @property
+    def opt(self) -> Population | None:
+        if self.__dict__.get("_opt_stale"):
+            self._opt, self._opt_stale = self._build_opt(), False
+        return self.__dict__.get("_opt")
+
+    @opt.setter
+    def opt(self, value) -> None:
+        self._opt, self._opt_stale = value, False

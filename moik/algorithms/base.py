@@ -33,7 +33,7 @@ from pymoo.util.display.column import Column
 from pymoo.util.display.output import Output
 
 from moik.algorithms.driver import (
-    LazyPopulations,
+    ArrayStateMixin,
     budget_left,
     check_sizes,
     find_limit,
@@ -61,7 +61,7 @@ class ArrayOutput(Output):
         self.columns += [Column("f_avg", func=_avg_f), Column("f_best", func=lambda a: a.best_f)]
 
 
-class ArrayAlgorithm(LazyPopulations, Algorithm):
+class ArrayAlgorithm(ArrayStateMixin, Algorithm):
     """Base of moik's single-objective population algorithms (array state).
 
     Public attributes for callbacks (all numpy, read them, do not mutate):
@@ -95,7 +95,7 @@ class ArrayAlgorithm(LazyPopulations, Algorithm):
         self.best_x, self.best_f, self.best_cv = None, np.inf, None
         self.t = 0
 
-    # ---- lazily built pymoo objects (LazyPopulations) -------------------------------------
+    # ---- lazily built pymoo objects (ArrayStateMixin) -------------------------------------
     def _build_pop(self) -> Population:
         X, F, CV = self._population_arrays()
         cv = np.zeros(len(F)) if CV is None else CV
@@ -152,15 +152,6 @@ class ArrayAlgorithm(LazyPopulations, Algorithm):
         if self.termination.has_terminated():
             self.finalize()
 
-    def _infill(self) -> Population:
-        if self._step is None:
-            self.t = self.n_iter - 1
-            self._step = self._generation()
-            self._pending = next(self._step)
-        n = len(self._pending)
-        return Population.new("X", self._pending[: budget_left(self._max_evals,
-                                                              self.evaluator.n_eval, n)])
-
     def _advance(self, infills=None, **kwargs) -> bool:
         F, CV, G, H = self._values_of(infills)
         F, CV = self._pad(len(self._pending), F, CV)
@@ -171,9 +162,6 @@ class ArrayAlgorithm(LazyPopulations, Algorithm):
         except StopIteration:
             self._step = self._pending = None
             return True
-
-    def _set_optimum(self) -> None:
-        """Nothing to do: ``opt`` is built lazily from ``best_x`` when read."""
 
     def _post_advance(self) -> None:
         self._convergence.append(self.best_f)

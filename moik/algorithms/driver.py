@@ -5,7 +5,7 @@ Both :class:`moik.algorithms.base.ArrayAlgorithm` and
 constructor arguments, need finite bounds, infer the schedule length T from the
 termination, build the initial population the same way (uniform, optionally
 seeded with ``X0``), count the evaluation budget the same way and build pymoo
-``Population`` objects only when read (:class:`LazyPopulations`).
+``Population`` objects only when read (:class:`ArrayStateMixin`).
 """
 
 from __future__ import annotations
@@ -85,13 +85,28 @@ def budget_left(max_evals: float, n_eval: int, n: int) -> int:
     return n if left >= n else int(max(left, 0))
 
 
-class LazyPopulations:
-    """``pop`` and ``opt`` as properties built from arrays only when read.
+class ArrayStateMixin:
+    """What both array-state bases share on pymoo's side.
 
-    Mixed into the array-state bases (before pymoo's ``Algorithm``): a base
-    marks them stale (``_pop_stale``/``_opt_stale``) and implements
-    ``_build_pop()``/``_build_opt()``; pymoo's own assignments go to the setters.
+    Mixed in before pymoo's ``Algorithm``. ``pop`` and ``opt`` are properties
+    built from arrays only when read: a base marks them stale
+    (``_pop_stale``/``_opt_stale``) and implements ``_build_pop()``/
+    ``_build_opt()``; pymoo's own assignments go to the setters. ``_infill``
+    hands out the pending candidates of the ``_generation()`` generator for
+    ``ask()`` (cut to the evaluation budget); ``_set_optimum`` does nothing
+    because ``opt`` is built lazily.
     """
+
+    def _infill(self) -> Population:
+        if self._step is None:
+            self.t = self.n_iter - 1
+            self._step = self._generation()
+            self._pending = next(self._step)
+        n = budget_left(self._max_evals, self.evaluator.n_eval, len(self._pending))
+        return Population.new("X", self._pending[:n])
+
+    def _set_optimum(self) -> None:
+        """Nothing to do: ``opt`` is built when read."""
 
     def _build_pop(self) -> Population:
         raise NotImplementedError

@@ -35,7 +35,7 @@ from pymoo.util.display.output import Output
 
 from moik.algorithms.archive import ArchiveBase, CrowdingArchive
 from moik.algorithms.driver import (
-    LazyPopulations,
+    ArrayStateMixin,
     budget_left,
     check_sizes,
     find_limit,
@@ -78,7 +78,7 @@ class MOArrayOutput(Output):
                                        func=lambda a, k=k: float(a.pareto_archive.F[:, k].min())))
 
 
-class MOArrayAlgorithm(LazyPopulations, Algorithm):
+class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
     """Base of moik's multi-objective population algorithms (array state, external archive).
 
     Public attributes for callbacks (numpy; read, do not mutate): ``X``/``F``
@@ -111,7 +111,7 @@ class MOArrayAlgorithm(LazyPopulations, Algorithm):
         self.X = self.F = self.pareto_archive = None
         self.t = 0
 
-    # ---- lazily built pymoo objects (LazyPopulations) -------------------------------------
+    # ---- lazily built pymoo objects (ArrayStateMixin) -------------------------------------
     def _build_pop(self) -> Population:
         X, F = self._population_arrays()
         return Population.new("X", X, "F", F, "CV", np.zeros((len(F), 1)))
@@ -178,15 +178,6 @@ class MOArrayAlgorithm(LazyPopulations, Algorithm):
         if self.termination.has_terminated():
             self.finalize()
 
-    def _infill(self) -> Population:
-        if self._step is None:
-            self.t = self.n_iter - 1
-            self._step = self._generation()
-            self._pending = next(self._step)
-        n = len(self._pending)
-        return Population.new("X", self._pending[: budget_left(self._max_evals,
-                                                              self.evaluator.n_eval, n)])
-
     def _advance(self, infills=None, **kwargs) -> bool:
         F = infills.get("F").astype(float) if len(infills) else np.empty((0, self.problem.n_obj))
         self._receive(self._pending[: len(F)], F)
@@ -197,9 +188,6 @@ class MOArrayAlgorithm(LazyPopulations, Algorithm):
             self._step = self._pending = None
             self._flush()
             return True
-
-    def _set_optimum(self) -> None:
-        """Nothing to do: ``opt`` is built lazily from the archive when read."""
 
     def _post_advance(self) -> None:
         self._pop_stale = True

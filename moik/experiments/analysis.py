@@ -263,11 +263,13 @@ ANALYSIS_FUNCTIONS = {"summary": summary_table, "ranksum": ranksum_table,
 
 def analyze(store: ResultStore) -> tuple[Results, list[Table]]:
     """All tables the experiment's config asks for."""
+    from moik.experiments.per_target import FUNCTIONS
+
     res = Results(store)
     tables: list[Table] = []
     if res.ok:
         for name in res.config.get("analyses", ["summary"]):
-            tables += ANALYSIS_FUNCTIONS[name](res)
+            tables += {**ANALYSIS_FUNCTIONS, **FUNCTIONS}[name](res)
     for table in tables:
         if res.paper_note and any("paper" in row for row in table.rows):
             table.notes.append(res.paper_note)

@@ -7,8 +7,10 @@ An experiment is one Python file in an experiments folder that defines a dict
   ``-``), ``title``, ``source`` (paper, table and figures reproduced);
 - ``robot``: catalog name;
 - ``problem``: ``{"kind": "position" | "pose" | "bi-objective", "orientation":
-  metric, "weights": [w1, w2], "displacement_weight": w, "q_start_deg": [...]}``
-  (see :mod:`moik.experiments.targets`);
+  metric, "weights": [w1, w2], "displacement_weight": w, "q_start_deg": [...],
+  "locked_joints_deg": [...]}`` (see :mod:`moik.experiments.targets`), or
+  ``{"kind": "benchmark", "names": [...]}`` with no robot and no targets (see
+  :mod:`moik.experiments.benchmark`; ``requires`` lists its optional extras);
 - ``targets``: ``{"kind": "random", "n", "seed", "with_orientation"}``,
   ``{"kind": "fixed", "points": [{"name", "position" or "fk_q_deg",
   "euler_deg", "convention", "hv_ref_point"}]}`` or ``{"kind": "circle",
@@ -44,14 +46,15 @@ from typing import Any
 from moik.exceptions import ConfigError, MoikError
 from moik.experiments.targets import check_problem, check_targets
 
-ANALYSES = ("summary", "ranksum", "friedman-hv", "joint-motion", "compromise", "signed-rank")
+ANALYSES = ("summary", "ranksum", "friedman-hv", "joint-motion", "compromise", "signed-rank",
+            "per-target", "per-target-ranksum", "branches")
 """Report tables an experiment can ask for (see :mod:`moik.experiments.analysis`)."""
 
 _TOP_KEYS = {"name", "title", "source", "robot", "problem", "targets", "algorithms", "pop_size",
              "archive_size", "n_gen", "runs", "seed", "protocol", "analyses", "proposed",
-             "success_threshold", "paper", "quick"}
-_REQUIRED = ("name", "title", "source", "robot", "problem", "targets", "algorithms", "pop_size",
-             "n_gen", "runs", "seed")
+             "success_threshold", "paper", "quick", "requires"}
+_REQUIRED = ("name", "title", "source", "problem", "algorithms", "pop_size", "n_gen", "runs",
+             "seed")
 _NAME = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
 
 
@@ -186,9 +189,15 @@ class ExperimentConfig:
         for key in ("title", "source"):
             if not isinstance(cfg[key], str) or not cfg[key]:
                 raise ConfigError(f"{where}: {key} must be a non-empty string")
+        from moik.experiments.benchmark import check_benchmark_experiment, is_benchmark
         from moik.robots import available_robots
 
-        if cfg["robot"] not in available_robots():
+        if is_benchmark(cfg["problem"]):
+            cfg["problem"] = check_benchmark_experiment(where, cfg)
+        elif "robot" not in cfg or "targets" not in cfg or "requires" in cfg:
+            raise ConfigError(f"{where}: an IK experiment needs 'robot' and 'targets' (and takes "
+                              "no 'requires')")
+        elif cfg["robot"] not in available_robots():
             raise ConfigError(f"{where}: robot: unknown robot {cfg['robot']!r}; expected one of: "
                               f"{', '.join(available_robots())}")
         check_int(f"{where}: pop_size", cfg["pop_size"], 1)
@@ -197,8 +206,10 @@ class ExperimentConfig:
         check_int(f"{where}: n_gen", cfg["n_gen"], 1)
         check_int(f"{where}: runs", cfg["runs"], 1)
         check_int(f"{where}: seed", cfg["seed"], 0)
-        problem = cfg["problem"] = check_problem(f"{where}: problem", cfg["problem"], cfg["robot"])
-        check_targets(f"{where}: targets", cfg["targets"], problem)
+        if not is_benchmark(cfg["problem"]):
+            cfg["problem"] = check_problem(f"{where}: problem", cfg["problem"], cfg["robot"])
+            check_targets(f"{where}: targets", cfg["targets"], cfg["problem"])
+        problem = cfg["problem"]
         algorithms, skipped = _algorithms(f"{where}: algorithms", cfg["algorithms"], cfg)
         want_mo = problem["kind"] == "bi-objective"
         for a in algorithms:

@@ -56,10 +56,12 @@ def _section(store: ResultStore, base: Path, *, figures: bool) -> str:
     sess = meta["sessions"]
     lines = [f"## {cfg['name']}: {cfg['title']} ({size})", "",
              f"- source: {cfg['source']}",
-             f"- robot `{cfg['robot']}`, problem `{cfg['problem']['kind']}`"
-             + ("" if cfg["problem"]["kind"] == "position" else
-                f" (orientation `{cfg['problem'].get('orientation')}`)") + ", "
-             f"{len(meta['targets'])} target(s), runs per target {cfg['runs']}, "
+             (f"- benchmark problems {', '.join(t['name'] for t in meta['targets'])}, "
+              if cfg["problem"]["kind"] == "benchmark" else
+              f"- robot `{cfg['robot']}`, problem `{cfg['problem']['kind']}`"
+              + ("" if cfg["problem"]["kind"] == "position" else
+                 f" (orientation `{cfg['problem'].get('orientation')}`)") + ", ")
+             + f"{len(meta['targets'])} target(s), runs per target {cfg['runs']}, "
              f"population {cfg['pop_size']}, generations {cfg['n_gen']}, seed {cfg['seed']}",
              f"- algorithms: {algs}",
              f"- moik {meta['versions']['moik']}, pymoo {meta['versions']['pymoo']}, numpy "
@@ -83,6 +85,8 @@ def _section(store: ResultStore, base: Path, *, figures: bool) -> str:
 def _figures(res: Results, folder: Path):
     if not res.ok:
         return [], ["no finished trials: no figures"]
+    if res.config["problem"]["kind"] == "benchmark":
+        return [], ["benchmark experiments have tables only (the figures draw robots/targets)"]
     from moik.experiments.figures import make_figures
 
     return make_figures(res, folder)

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from moik.exceptions import ParameterError
+from moik.experiments.benchmark import check_requirements
 from moik.experiments.config import ExperimentConfig
 from moik.experiments.executors import Progress, execute
 from moik.experiments.store import ResultStore
@@ -71,6 +72,7 @@ def run_experiment(config: ExperimentConfig, *, out: str | Path | None = None,
 
     Raises:
         ResultsError: If ``out`` holds other results (see :meth:`ResultStore.create`).
+        ConfigError: If an optional extra the experiment ``requires`` is missing.
         ParameterError: For bad ``workers``/``limit`` or an unreachable scheduler.
     """
     t0 = time.perf_counter()
@@ -78,6 +80,7 @@ def run_experiment(config: ExperimentConfig, *, out: str | Path | None = None,
     workers = check_workers(workers)
     if limit is not None and (isinstance(limit, bool) or not isinstance(limit, int) or limit < 0):
         raise ParameterError(f"limit must be an integer >= 0, got {limit!r}")
+    check_requirements(cfg)
     targets = build_targets(cfg)
     specs = build_trials(cfg, targets)
     folder = Path(out) if out is not None else default_out(cfg)

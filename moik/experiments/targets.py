@@ -7,6 +7,11 @@ configs are degrees (``q_start_deg``, ``fk_q_deg``); lengths are in the robot's 
 
 MO-m-PSO Section 4.4 ("alpha = 0, beta = 0, gamma is free") uses the named metric
 ``"zyx-euler-free-gamma"`` of :mod:`moik.kinematics.orientation`.
+
+``locked_joints_deg`` (one entry per joint, ``None`` for a free joint) fixes
+joints with :meth:`~moik.robots.Robot.with_locked_joints` (I-BES Table 9 solves
+the Puma 560 position with joints 4-6 at 0); a fixed target point may name its
+own ``robot`` (I-BES Table 8: one target per arm), else the experiment's is used.
 """
 
 from __future__ import annotations
@@ -21,13 +26,15 @@ from moik.exceptions import ConfigError, MoikError
 
 PROBLEM_KINDS = ("position", "pose", "bi-objective")
 TARGET_KINDS = ("random", "fixed", "circle")
-_PROBLEM_KEYS = {"kind", "orientation", "weights", "displacement_weight", "q_start_deg"}
+_PROBLEM_KEYS = {"kind", "orientation", "weights", "displacement_weight", "q_start_deg",
+                 "locked_joints_deg"}
 _TARGET_KEYS = {
     "random": {"kind", "n", "seed", "with_orientation"},
     "fixed": {"kind", "points"},
     "circle": {"kind", "center", "radius", "n_points", "euler_deg", "convention"},
 }
-_POINT_KEYS = {"name", "position", "fk_q_deg", "euler_deg", "convention", "hv_ref_point"}
+_POINT_KEYS = {"name", "position", "fk_q_deg", "euler_deg", "convention", "hv_ref_point",
+               "robot"}
 
 
 def _vec(where: str, value: Any, n: int) -> list[float]:
@@ -56,6 +63,18 @@ def check_problem(where: str, spec: Any, robot_name: str) -> dict:
         _vec(f"{where}.weights", p["weights"], 2)
     w = check_float(f"{where}.displacement_weight", p.get("displacement_weight", 0.0))
     robot = get_robot(robot_name)
+    if "locked_joints_deg" in p:
+        lj = p["locked_joints_deg"]
+        if not isinstance(lj, list) or len(lj) != robot.dof:
+            raise ConfigError(f"{where}.locked_joints_deg must be a list of {robot.dof} entries "
+                              f"(a number or None per joint), got {lj!r}")
+        for i, v in enumerate(lj):
+            if v is not None:
+                check_float(f"{where}.locked_joints_deg[{i}]", v)
+        try:
+            robot = experiment_robot(robot_name, p)
+        except MoikError as exc:
+            raise ConfigError(f"{where}.locked_joints_deg: {exc}") from None
     if w < 0:
         raise ConfigError(f"{where}.displacement_weight must be >= 0, got {w}")
     if w > 0 and "q_start_deg" not in p:
@@ -93,6 +112,7 @@ def check_targets(where: str, spec: Any, problem: Mapping) -> None:
         for i, raw in enumerate(points):
             w = f"{where}.points[{i}]"
             pt = check_keys(w, raw, _POINT_KEYS, ("name",))
+            _check_point_robot(w, pt)
             if ("position" in pt) == ("fk_q_deg" in pt):
                 raise ConfigError(f"{w}: give exactly one of position and fk_q_deg")
             if "position" in pt:
@@ -105,19 +125,44 @@ def check_targets(where: str, spec: Any, problem: Mapping) -> None:
                 _vec(f"{w}.hv_ref_point", pt["hv_ref_point"], 2)
 
 
+def _check_point_robot(where: str, pt: Mapping) -> None:
+    from moik.robots import available_robots
+
+    if "robot" in pt and pt["robot"] not in available_robots():
+        raise ConfigError(f"{where}.robot: unknown robot {pt['robot']!r}; expected one of: "
+                          f"{', '.join(available_robots())}")
+
+
+def experiment_robot(name: str, problem: Mapping):
+    """The catalog robot ``name`` with the problem's ``locked_joints_deg`` applied."""
+    from moik.robots import get_robot
+
+    robot = get_robot(name)
+    locked = problem.get("locked_joints_deg")
+    if locked:
+        robot = robot.with_locked_joints({i: float(np.radians(v)) for i, v in enumerate(locked)
+                                          if v is not None})
+    return robot
+
+
 @dataclass(frozen=True)
 class NamedTarget:
-    """A target of an experiment with its display name and optional HV reference point."""
+    """A target of an experiment with its display name and optional HV reference point.
+
+    ``robot`` names the arm of this target when it is not the experiment's.
+    """
 
     name: str
     position: list[float]
     rotation: list[list[float]] | None
     hv_ref_point: list[float] | None = None
+    robot: str | None = None
 
     def as_dict(self) -> dict:
         """JSON-ready form (floats round-trip exactly through ``json``)."""
-        return {"name": self.name, "position": self.position, "rotation": self.rotation,
-                "hv_ref_point": self.hv_ref_point}
+        d = {"name": self.name, "position": self.position, "rotation": self.rotation,
+             "hv_ref_point": self.hv_ref_point}
+        return d if self.robot is None else {**d, "robot": self.robot}
 
 
 def _rotation(spec: Mapping, default_convention: str = "zyx-euler") -> np.ndarray:
@@ -128,12 +173,19 @@ def _rotation(spec: Mapping, default_convention: str = "zyx-euler") -> np.ndarra
     return t.rotation
 
 
-def build_targets(config) -> list[NamedTarget]:
-    """The targets of ``config`` (random ones drawn from their own seed)."""
-    from moik.problems.targets import circle_path, random_reachable_targets
-    from moik.robots import get_robot
+def build_targets(config) -> list:
+    """The targets of ``config`` (random ones drawn from their own seed).
 
-    robot = get_robot(config["robot"])
+    For a benchmark experiment, its problems
+    (:func:`moik.experiments.benchmark.build_benchmark_targets`).
+    """
+    from moik.experiments.benchmark import build_benchmark_targets, is_benchmark
+    from moik.problems.targets import circle_path, random_reachable_targets
+
+    if is_benchmark(config["problem"]):
+        return build_benchmark_targets(config)
+
+    robot = experiment_robot(config["robot"], config["problem"])
     spec = config["targets"]
     try:
         if spec["kind"] == "random":
@@ -150,14 +202,16 @@ def build_targets(config) -> list[NamedTarget]:
         out = []
         for pt in spec["points"]:
             if "fk_q_deg" in pt:
-                T = robot.fk(np.radians(pt["fk_q_deg"]))
+                arm = experiment_robot(pt["robot"], config["problem"]) if "robot" in pt else robot
+                T = arm.fk(np.radians(pt["fk_q_deg"]))
                 pos, rot = T[:3, 3], T[:3, :3]
             else:
                 pos, rot = np.asarray(pt["position"], dtype=float), None
             if "euler_deg" in pt:
                 rot = _rotation(pt)
             out.append(NamedTarget(pt["name"], [float(v) for v in pos],
-                                   None if rot is None else rot.tolist(), pt.get("hv_ref_point")))
+                                   None if rot is None else rot.tolist(), pt.get("hv_ref_point"),
+                                   pt.get("robot")))
         return out
     except MoikError as exc:
         raise ConfigError(f"{config.path or config.name}: targets: {exc}") from None

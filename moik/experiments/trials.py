@@ -24,7 +24,7 @@ import numpy as np
 from pymoo.core.callback import Callback
 from pymoo.optimize import minimize
 
-from moik.experiments.targets import NamedTarget, build_problem, build_targets
+from moik.experiments.targets import NamedTarget, build_problem, build_targets, experiment_robot
 
 
 @dataclass(frozen=True)
@@ -83,7 +83,8 @@ def build_trials(config, targets: list[NamedTarget] | None = None) -> list[Trial
                     params=dict(alg.params), target_index=ti, target=target, run=r,
                     entropy=int(child.entropy), spawn_key=tuple(child.spawn_key),
                     seed=int(child.generate_state(1, dtype=np.uint32)[0]),
-                    robot=config["robot"], problem=dict(config["problem"]),
+                    robot=getattr(target, "robot", None) or config["robot"],
+                    problem=dict(config["problem"]),
                     n_gen=config["n_gen"], protocol=config["protocol"]))
     return specs
 
@@ -181,10 +182,11 @@ def run_trial(spec: TrialSpec) -> tuple[dict, dict]:
     ``best_f``/``position_error``/``orientation_error``/``best_x`` (and
     ``attempts``/``solved`` under the protocol, ``joint_distance_deg`` with a
     start configuration) for single-objective problems; the compromise's errors,
-    ``n_front`` and ``hv`` for multi-objective ones. ``arrays`` holds
-    ``convergence`` or ``front_F``/``front_X``, and ``best_x``.
+    ``n_front`` and ``hv`` for multi-objective ones; for benchmark problems
+    see :mod:`moik.experiments.benchmark`. ``arrays`` holds ``convergence`` or
+    ``front_F``/``front_X``, and ``best_x``.
     """
-    from moik.robots import get_robot
+    from moik.experiments.benchmark import is_benchmark, run_benchmark_trial
 
     record = {"trial": spec.trial_id, "algorithm": spec.label, "algorithm_name": spec.algorithm,
               "target": spec.target_index, "target_name": spec.target.name, "run": spec.run,
@@ -192,7 +194,10 @@ def run_trial(spec: TrialSpec) -> tuple[dict, dict]:
               "worker": f"{socket.gethostname()}:{os.getpid()}", "status": "ok"}
     arrays: dict = {}
     try:
-        robot = get_robot(spec.robot)
+        if is_benchmark(spec.problem):
+            run_benchmark_trial(spec, record, arrays, _make_algorithm, _convergence)
+            return record, arrays
+        robot = experiment_robot(spec.robot, spec.problem)
         problem = build_problem(robot, spec.problem, spec.target)
         if problem.n_obj == 1:
             _single_objective(spec, problem, record, arrays)

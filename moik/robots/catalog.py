@@ -163,6 +163,31 @@ def puma560() -> Robot:
     )
 
 
+def puma560_kalra() -> Robot:
+    """The Puma 560 of the geometric solutions in I-BES Table 9 (after Kalra et al.).
+
+    Table 9's geometric joint angles reach its 5 targets with this arm (wrist
+    centre, joints 4-6 at 0) to under 1 mm, not with the Table 6 arm (other
+    lengths and twist signs): a2 = 0.4318, a3 = -0.0203, d3 = 0.1491,
+    d4 = 0.4331 m, alpha1 = -pi/2, alpha3 = +pi/2 (fitted, see
+    ../shared/notes/reference-facts.md). alpha4, alpha5 (-pi/2, +pi/2) do not
+    move the wrist centre; limits [-pi, pi] as in the paper's simulations.
+    """
+    return _ibes(
+        "puma560-kalra",
+        [
+            (0, 0, 0, -PI / 2),
+            (0, 0, 0.4318, 0),
+            (0, 0.1491, -0.0203, PI / 2),
+            (0, 0.4331, 0, -PI / 2),
+            (0, 0, 0, PI / 2),
+            (0, 0, 0, 0),
+        ],
+        "I-BES paper (2024), Table 9 geometric solutions (Kalra et al.); lengths and "
+        "twists fitted to them",
+    )
+
+
 def sawyer7() -> Robot:
     """I-BES Table 7: Rethink Sawyer; twist signs from Corke's DH Sawyer model."""
     return _ibes(
@@ -210,6 +235,7 @@ _CATALOG: dict[str, Callable[[], Robot]] = {
     "scara4": scara4,
     "youbot5": youbot5,
     "puma560": puma560,
+    "puma560-kalra": puma560_kalra,
     "sawyer7": sawyer7,
     "irb2600": irb2600,
 }

@@ -9,7 +9,8 @@ from moik.robots import available_robots, get_robot
 
 EXPECTED = {"eosma7": (7, "cm"), "eosma7-m": (7, "m"), "rokbani5": (5, "cm"), "planar2": (2, "m"),
             "anthropomorphic3": (3, "m"), "scara4": (4, "m"), "youbot5": (5, "m"),
-            "puma560": (6, "m"), "sawyer7": (7, "m"), "irb2600": (6, "mm")}
+            "puma560": (6, "m"), "puma560-kalra": (6, "m"), "sawyer7": (7, "m"),
+            "irb2600": (6, "mm")}
 
 
 def test_catalog_names_dof_units():
@@ -52,3 +53,17 @@ def test_eosma7_m_is_eosma7_in_metres():
     T_cm, T_m = get_robot("eosma7").fk(q), get_robot("eosma7-m").fk(q)
     np.testing.assert_allclose(T_m[:, :3, 3] * 100.0, T_cm[:, :3, 3], atol=1e-12)
     np.testing.assert_allclose(T_m[:, :3, :3], T_cm[:, :3, :3], atol=1e-15)
+
+
+# I-BES Table 9: targets and the geometric solutions (rad) of targets 1 and 4.
+TABLE9 = {(0.60, 0.15, 0.20): [(0, -1.0748, 3.1201), (0, 0.4313, 0.1153),
+                                (-2.6545, -2.0668, 0.1153), (-2.6545, 2.7103, 3.1201)],
+          (0.18, -0.40, 0.40): [(-1.4947, -1.6169, -2.9763), (-1.4947, 0.0769, -0.0716),
+                                 (2.3405, -1.5247, -0.0716), (2.3405, 3.0647, -2.9763)]}
+
+
+def test_puma560_kalra_reaches_table9_targets_with_the_geometric_angles():
+    arm = get_robot("puma560-kalra").with_locked_joints({3: 0.0, 4: 0.0, 5: 0.0})
+    for target, qs in TABLE9.items():
+        err = np.linalg.norm(arm.fk_position(np.array(qs)) - np.array(target), axis=1)
+        assert np.all(err < 1e-3), err  # the table prints 4 decimals

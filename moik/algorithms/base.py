@@ -229,4 +229,4 @@ class ArrayAlgorithm(ArrayStateMixin, Algorithm):
 
     def _generation(self) -> Step:
         """One iteration: yield candidate arrays, receive ``(F, CV)`` for each."""
-        raise NotImplementedError
+        raise NotImplementedError("abstract hook: subclasses implement it")

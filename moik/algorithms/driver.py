@@ -109,10 +109,10 @@ class ArrayStateMixin:
         """Nothing to do: ``opt`` is built when read."""
 
     def _build_pop(self) -> Population:
-        raise NotImplementedError
+        raise NotImplementedError("abstract hook: subclasses implement it")
 
     def _build_opt(self) -> Population:
-        raise NotImplementedError
+        raise NotImplementedError("abstract hook: subclasses implement it")
 
     @property
     def pop(self) -> Population | None:

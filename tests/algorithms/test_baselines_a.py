@@ -23,37 +23,10 @@ from moik.algorithms.soo.mrfo import chain_and_cyclone, somersault
 from moik.algorithms.soo.pfa import follower_move, pathfinder_move
 from moik.algorithms.soo.tlbo import learner_phase, random_partners, teacher_phase
 from moik.exceptions import ParameterError
+from moik.testing import ScriptedRng
 
 NAMES = ["mrfo", "mpa", "pfa", "fpa", "de", "gbo", "tlbo"]
 PER_ITERATION = {"mrfo": 2, "mpa": 2, "pfa": 1, "fpa": 1, "de": 1, "gbo": 1, "tlbo": 2}
-
-
-class ScriptedRng:
-    """Returns the queued values in order from every drawing method, checking shapes."""
-
-    def __init__(self, *values):
-        self.values = [np.asarray(v) for v in values]
-
-    def _next(self, size=None):
-        value = self.values.pop(0)
-        if size is not None:
-            assert value.shape == np.empty(size).shape, (value.shape, size)
-        return value if value.ndim else value.item()
-
-    def random(self, size=None):
-        return self._next(size)
-
-    def integers(self, low, high=None, size=None):
-        return self._next(size)
-
-    def uniform(self, low=0.0, high=1.0, size=None):
-        return self._next(size)
-
-    def standard_normal(self, size=None):
-        return self._next(size)
-
-    def permutation(self, n):
-        return self._next((n,))
 
 
 class Sphere(Problem):

@@ -27,33 +27,9 @@ from moik.algorithms.soo.sass import pair_rotation, planned_size, spherical_step
 from moik.exceptions import ParameterError
 from moik.problems import PositionIK
 from moik.robots import get_robot
+from moik.testing import ScriptedRng
 
 CLASSES = [HHO, IGWO, PSOGSA, CODE, MTDE, SASS]
-
-
-class ScriptedRng:
-    """Hands out queued arrays in order (checking shapes) for every draw method."""
-
-    def __init__(self, *values):
-        self.values = [np.asarray(v) for v in values]
-
-    def _next(self, size=None):
-        value = self.values.pop(0)
-        if size is not None:
-            assert value.shape == np.empty(size).shape, (value.shape, size)
-        return value
-
-    def random(self, size=None):
-        return self._next(size)
-
-    def integers(self, low, high=None, size=None):
-        return self._next(size)
-
-    def standard_normal(self, size=None):
-        return self._next(size)
-
-    def permutation(self, n):
-        return self._next()
 
 
 class Sphere(Problem):

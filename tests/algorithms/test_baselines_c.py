@@ -20,30 +20,9 @@ from moik.algorithms.soo.mtsa import best_seed_per_tree, sow_seeds, tournament_p
 from moik.algorithms.soo.ssa import salp_update, ssa_c1
 from moik.exceptions import ParameterError
 from moik.problems.benchmarks import get_benchmark
+from moik.testing import ScriptedRng
 
 NAMES = ["fa", "mtsa", "cpso-at", "ssa", "csa", "jaya"]
-
-
-class ScriptedRng:
-    """Returns the queued values in order from every drawing method, checking shapes."""
-
-    def __init__(self, *values):
-        self.values = [np.asarray(v) for v in values]
-
-    def _next(self, size=None):
-        value = self.values.pop(0)
-        if size is not None:
-            assert value.shape == np.empty(size).shape, (value.shape, size)
-        return value
-
-    def random(self, size=None):
-        return self._next(size)
-
-    def integers(self, low, high=None, size=None):
-        return self._next(size)
-
-    def uniform(self, low=0.0, high=1.0, size=None):
-        return self._next(size)
 
 
 class Sphere(Problem):

@@ -23,20 +23,9 @@ from moik.algorithms.soo.choa import (
 )
 from moik.exceptions import ParameterError
 from moik.problems.benchmarks import get_benchmark
+from moik.testing import ScriptedRng
 
 NAMES = ["choa", "cchoa", "oichoa", "ochoa", "wchoa", "mchoa"]
-
-
-class ScriptedRng:
-    """Returns the queued values in order, checking shapes."""
-
-    def __init__(self, *values):
-        self.values = [np.asarray(v, dtype=float) for v in values]
-
-    def random(self, size=None):
-        value = self.values.pop(0)
-        assert size is None or value.shape == np.empty(size).shape, (value.shape, size)
-        return value
 
 
 class Sphere(Problem):

@@ -23,28 +23,7 @@ from moik.algorithms.soo.bes import (
 )
 from moik.exceptions import ParameterError
 from moik.problems.benchmarks import get_benchmark
-
-
-class ScriptedRng:
-    """Returns the queued values in order from every drawing method, checking shapes."""
-
-    def __init__(self, *values):
-        self.values = [np.asarray(v, dtype=float) for v in values]
-
-    def _next(self, size=None):
-        value = self.values.pop(0)
-        if size is not None:
-            assert value.shape == np.empty(size).shape, (value.shape, size)
-        return value
-
-    def random(self, size=None):
-        return self._next(size)
-
-    def standard_normal(self, size=None):
-        return self._next(size)
-
-    def uniform(self, low=0.0, high=1.0, size=None):
-        return self._next(size)
+from moik.testing import ScriptedRng
 
 
 class Sphere(Problem):

@@ -13,28 +13,7 @@ from moik.algorithms.soo.eosma import eosma_update, random_difference_mutation
 from moik.algorithms.soo.mpso import mpso_velocity
 from moik.algorithms.soo.pso import clamp_velocity, pso_velocity
 from moik.algorithms.soo.sma import sma_schedule, sma_update, sma_weights
-
-
-class ScriptedRng:
-    """Returns the queued arrays in order from random/integers/uniform, checking shapes."""
-
-    def __init__(self, *values):
-        self.values = [np.asarray(v) for v in values]
-
-    def _next(self, size):
-        value = self.values.pop(0)
-        if size is not None:
-            assert value.shape == np.empty(size).shape, (value.shape, size)
-        return value
-
-    def random(self, size=None):
-        return self._next(size)
-
-    def integers(self, low, high=None, size=None):
-        return self._next(size)
-
-    def uniform(self, low=0.0, high=1.0, size=None):
-        return self._next(size)
+from moik.testing import ScriptedRng
 
 
 def test_eo_concentration_update_eqs_6_8_9():

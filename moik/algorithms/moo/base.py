@@ -251,4 +251,4 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
 
     def _generation(self) -> Step:
         """One iteration: yield candidate arrays, receive ``F`` for each."""
-        raise NotImplementedError
+        raise NotImplementedError("abstract hook: subclasses implement it")

@@ -87,11 +87,6 @@ class MOGWO(MOArrayAlgorithm):
         **kwargs: pymoo ``Algorithm`` options.
     """
 
-    def __init__(self, *, pop_size: int = 100, archive_size: int | None = None,
-                 max_iter: int | None = None, X0: np.ndarray | None = None, **kwargs):
-        super().__init__(pop_size=pop_size, archive_size=archive_size, X0=X0,
-                         max_iter=max_iter, **kwargs)
-
     def _make_archive(self, capacity: int) -> ArchiveBase:
         return GridArchive.mogwo(capacity)
 

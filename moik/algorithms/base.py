@@ -135,23 +135,6 @@ class ArrayAlgorithm(ArrayStateMixin, Algorithm):
         self._receive(self.X, F, CV, G, H)
         self._initialize_state()
 
-    def next(self) -> None:
-        """One generation through the array fast path (pymoo's path for initialization)."""
-        if not self.is_initialized or self._step is not None:
-            return super().next()
-        self.t = self.n_iter - 1
-        step = self._generation()
-        X = next(step)
-        while True:
-            F, CV = self._evaluate(X)
-            try:
-                X = step.send((F, CV))
-            except StopIteration:
-                break
-        self._post_advance()
-        if self.termination.has_terminated():
-            self.finalize()
-
     def _advance(self, infills=None, **kwargs) -> bool:
         F, CV, G, H = self._values_of(infills)
         F, CV = self._pad(len(self._pending), F, CV)

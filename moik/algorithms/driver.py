@@ -93,9 +93,32 @@ class ArrayStateMixin:
     (``_pop_stale``/``_opt_stale``) and implements ``_build_pop()``/
     ``_build_opt()``; pymoo's own assignments go to the setters. ``_infill``
     hands out the pending candidates of the ``_generation()`` generator for
-    ``ask()`` (cut to the evaluation budget); ``_set_optimum`` does nothing
+    ``ask()`` (cut to the evaluation budget), ``next()`` drives the same
+    generator directly; ``_set_optimum`` does nothing
     because ``opt`` is built lazily.
     """
+
+    def next(self) -> None:
+        """One iteration through the array fast path: run ``_generation()``,
+        sending each yielded batch its ``_evaluate`` result (pymoo's own path
+        for initialization and while an ``ask()/tell()`` iteration is open)."""
+        if not self.is_initialized or self._step is not None:
+            return super().next()
+        self.t = self.n_iter - 1
+        step = self._generation()
+        X = next(step)
+        while True:
+            try:
+                X = step.send(self._evaluate(X))
+            except StopIteration:
+                break
+        self._end_iteration()
+        self._post_advance()
+        if self.termination.has_terminated():
+            self.finalize()
+
+    def _end_iteration(self) -> None:
+        """Hook run after an iteration's last batch (the MO base merges its archive)."""
 
     def _infill(self) -> Population:
         if self._step is None:

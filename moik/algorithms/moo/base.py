@@ -161,22 +161,9 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         self.X, self.F = X, F
         self._initialize_state()
 
-    def next(self) -> None:
-        """One iteration through the array fast path (pymoo's path for initialization)."""
-        if not self.is_initialized or self._step is not None:
-            return super().next()
-        self.t = self.n_iter - 1
-        step = self._generation()
-        X = next(step)
-        while True:
-            try:
-                X = step.send(self._evaluate(X))
-            except StopIteration:
-                break
+    def _end_iteration(self) -> None:
+        """Merge the iteration's evaluated rows into the archive."""
         self._flush()
-        self._post_advance()
-        if self.termination.has_terminated():
-            self.finalize()
 
     def _advance(self, infills=None, **kwargs) -> bool:
         F = infills.get("F").astype(float) if len(infills) else np.empty((0, self.problem.n_obj))

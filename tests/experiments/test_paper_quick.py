@@ -32,6 +32,7 @@ def test_report_puts_paper_numbers_beside(quick_results):
     assert "| planar2 | pso | paper | 5.56e-10 | 8.43e-08 | 1.84e-08 | 1.24e-08 |" in report
     assert "| cec2017_F3 | paper | 3.02e-11 + |" in report
     assert "| F1 | mchoa | paper | 0 | 1.45e-16 |" in report
+    assert "| F24 | mchoa | paper | 0.5365 | 5.915 |" in report  # beside moik's own F24
     assert "paper rows: MChOA paper, Table 3" in report
     assert "| T1 | q1 | (0.00000, -1.07480, 3.12010) |" in report
     assert "feasible runs" in report

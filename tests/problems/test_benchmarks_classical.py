@@ -58,8 +58,8 @@ def test_registry_lists_all_23():
 
 
 def test_unknown_name_lists_valid_names():
-    with pytest.raises(UnknownNameError, match="unknown benchmark 'F24'.*F1, F10"):
-        get_benchmark("F24")
+    with pytest.raises(UnknownNameError, match="unknown benchmark 'F25'.*F1, F10"):
+        get_benchmark("F25")
 
 
 def test_bad_keyword_and_dimension():

@@ -7,6 +7,8 @@
   (:mod:`moik.problems.benchmarks.cec2017`).
 * ``spring``, ``pressure_vessel``: the constrained design problems of the
   I-BES paper, Section 5.3 (:mod:`moik.problems.benchmarks.engineering`).
+* ``F24``: the MChOA paper's IRB-2600 pose IK objective (Eq. 6), with the
+  weights and target moik chooses (:mod:`moik.problems.benchmarks.irb2600_ik`).
 
 Every problem exposes its known optimum as ``f_opt`` (and ``pareto_front()``).
 """
@@ -23,6 +25,7 @@ from moik.exceptions import ParameterError, UnknownNameError
 from moik.problems.benchmarks import classical, fixed
 from moik.problems.benchmarks.cec2017 import CEC2017, IBES_FUNCTIONS
 from moik.problems.benchmarks.engineering import PressureVessel, SpringDesign
+from moik.problems.benchmarks.irb2600_ik import IRB2600PoseIK
 
 _CLASSICAL: dict[str, Callable[..., Problem]] = {
     f"F{i}": getattr(classical if i <= 13 else fixed, f"F{i}") for i in range(1, 24)
@@ -32,6 +35,7 @@ _CEC: dict[str, Callable[..., Problem]] = {
 }
 _REGISTRY: dict[str, Callable[..., Problem]] = {
     **_CLASSICAL,
+    "F24": IRB2600PoseIK,
     **_CEC,
     "spring": SpringDesign,
     "pressure_vessel": PressureVessel,
@@ -39,7 +43,7 @@ _REGISTRY: dict[str, Callable[..., Problem]] = {
 
 
 def available_benchmarks() -> list[str]:
-    """Return the registered benchmark names (F1-F23, cec2017_F*, engineering)."""
+    """Return the registered benchmark names (F1-F24, cec2017_F*, engineering)."""
     return list(_REGISTRY)
 
 
@@ -76,6 +80,7 @@ def get_benchmark(name: str, **kwargs: object) -> Problem:
 
 __all__ = [
     "CEC2017",
+    "IRB2600PoseIK",
     "PressureVessel",
     "SpringDesign",
     "available_benchmarks",

@@ -5,6 +5,11 @@ the arm on the same branch); only if that fails, or the step would exceed
 ``max_step``, is the target solved globally with :func:`moik.solve.solve_ik`,
 preferring the solution nearest the previous configuration. The largest joint
 step along the path is reported, so a branch jump cannot pass unnoticed.
+
+Without ``q_start`` the first target's branch is a choice: up to
+``first_branches`` distinct solutions of it are found and the one from which
+warm starts track the path furthest is kept (a branch that runs into a joint
+limit half way would force a jump later).
 """
 
 from __future__ import annotations
@@ -51,7 +56,7 @@ class PathResult:
 
 
 def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = None,
-               seed=0, tol=1e-9, **solve_options) -> PathResult:
+               seed=0, tol=1e-9, first_branches: int = 4, **solve_options) -> PathResult:
     """Solve a sequence of targets keeping the arm on one branch.
 
     Args:
@@ -63,6 +68,8 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
             targets; a warm-started solution beyond it is re-solved globally.
         seed: Base seed; target ``i`` uses ``SeedSequence(seed).spawn`` child ``i``.
         tol: As in :func:`moik.solve.solve_ik`.
+        first_branches: Without ``q_start``: distinct solutions of the first
+            target tried as the path's branch (1: take the first found).
         **solve_options: Passed to :func:`moik.solve.solve_ik` (not ``seed``,
             ``q_current``, ``n_solutions``).
     """
@@ -77,20 +84,25 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
             raise ParameterError(f"solve_path sets {key!r} itself; do not pass it")
     if max_step is not None and not max_step > 0:
         raise ParameterError(f"max_step must be > 0, got {max_step!r}")
+    if isinstance(first_branches, bool) or int(first_branches) != first_branches \
+            or first_branches < 1:
+        raise ParameterError(f"first_branches must be an integer >= 1, got {first_branches!r}")
     tol_pos, tol_ori = _tolerances(tol, robot)
     prev = None if q_start is None else robot.check_q(q_start, "q_start")
     seeds = np.random.SeedSequence(seed).spawn(len(targets))
-    Q, statuses, warm, n_eval = [], [], [], 0
+    Q, statuses, warm_flags, n_eval = [], [], [], 0
+    warm = _WarmStart(robot, tol_pos, tol_ori, max_step)
     for i, target in enumerate(targets):
         q, status, used_warm = None, None, False
         if prev is not None:
-            out = polish(robot, target, prev, length=robot.reach,
-                         stop_position=1e-3 * tol_pos, stop_orientation=1e-3 * tol_ori)
-            n_eval += out.n_eval
-            pos, ori = (float(v[0]) for v in pose_errors(robot, target, out.q))
-            step = float(np.max(np.abs(out.q - prev)))
-            if pos <= tol_pos and ori <= tol_ori and (max_step is None or step <= max_step):
-                q, status, used_warm = out.q, "solved", True
+            q = warm.step(target, prev)
+            status, used_warm = ("solved", True) if q is not None else (None, False)
+        elif first_branches > 1 and len(targets) > 1:
+            first = solve_ik(robot, target, seed=seeds[i], tol=tol, n_solutions=first_branches,
+                             **{"patience": 5, **solve_options})
+            n_eval += first.n_eval
+            if first.success:
+                q, status = warm.furthest(first.solutions, targets[1:]), "solved"
         if q is None:
             res = solve_ik(robot, target, q_current=prev, seed=seeds[i], tol=tol,
                            **solve_options)
@@ -98,16 +110,51 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
             q, status = res.q, res.status
         Q.append(q)
         statuses.append(status)
-        warm.append(used_warm)
+        warm_flags.append(used_warm)
         prev = q
     Q = np.array(Q)
     pos_err, ori_err = pose_errors_all(robot, targets, Q)
     steps = np.max(np.abs(np.diff(Q, axis=0)), axis=1) if len(Q) > 1 else np.zeros(0)
     return PathResult(Q=Q, position_errors=pos_err, orientation_errors=ori_err,
                       success=(pos_err <= tol_pos) & (ori_err <= tol_ori),
-                      statuses=tuple(statuses), warm_started=np.array(warm),
+                      statuses=tuple(statuses), warm_started=np.array(warm_flags),
                       joint_steps=steps, max_joint_step=float(steps.max()) if steps.size else 0.0,
-                      n_eval=n_eval, time=time.perf_counter() - t0)
+                      n_eval=n_eval + warm.n_eval, time=time.perf_counter() - t0)
+
+
+class _WarmStart:
+    """Warm-started refinement from a neighbour's solution, with its FK count."""
+
+    def __init__(self, robot: Robot, tol_pos: float, tol_ori: float, max_step: float | None):
+        self.robot, self.tol_pos, self.tol_ori, self.max_step = robot, tol_pos, tol_ori, max_step
+        self.n_eval = 0
+
+    def step(self, target, prev: np.ndarray) -> np.ndarray | None:
+        """The refined solution of ``target`` from ``prev``, or None if it misses
+        the tolerance or moves a joint by more than ``max_step``."""
+        out = polish(self.robot, target, prev, length=self.robot.reach,
+                     stop_position=1e-3 * self.tol_pos, stop_orientation=1e-3 * self.tol_ori)
+        self.n_eval += out.n_eval
+        pos, ori = (float(v[0]) for v in pose_errors(self.robot, target, out.q))
+        step = float(np.max(np.abs(out.q - prev)))
+        ok = pos <= self.tol_pos and ori <= self.tol_ori
+        return out.q if ok and (self.max_step is None or step <= self.max_step) else None
+
+    def furthest(self, candidates: np.ndarray, rest: list) -> np.ndarray:
+        """The candidate from which warm starts track ``rest`` furthest (first on ties)."""
+        best, best_reach = candidates[0], -1
+        for q0 in candidates:
+            prev, reached = q0, 0
+            for target in rest:
+                prev = self.step(target, prev)
+                if prev is None:
+                    break
+                reached += 1
+            if reached > best_reach:
+                best, best_reach = q0, reached
+            if reached == len(rest):
+                break
+        return best
 
 
 def pose_errors_all(robot: Robot, targets, Q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

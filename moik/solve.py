@@ -1,6 +1,9 @@
 """``solve_ik``: the practical IK solver (global search + exact local polish).
 
-The memetic design of BioIK: a registered metaheuristic (EOSMA by default)
+First a fast attempt: batched Levenberg-Marquardt from ``q_current`` and from
+``starts`` seeded random configurations, all in one numpy pass
+(:mod:`moik.kinematics.batch_lm`); most reachable poses end there. Otherwise,
+the memetic design of BioIK: a registered metaheuristic (EOSMA by default)
 searches the joint space with a small population for a few generations; the
 best distinct candidates are then refined with bounded least squares and the
 analytic Jacobian (:mod:`moik.kinematics.polish`). Rounds repeat with fresh
@@ -28,6 +31,7 @@ from pymoo.optimize import minimize
 
 from moik.algorithms import get_algorithm
 from moik.exceptions import ParameterError
+from moik.kinematics.batch_lm import batch_lm
 from moik.kinematics.polish import polish as polish_q
 from moik.kinematics.polish import pose_errors
 from moik.metrics.compromise import closest_to_utopia
@@ -39,6 +43,7 @@ STATUSES = ("solved", "unreachable", "not-converged")
 UNREACHABLE_FACTOR = 1e3  # best error beyond this many tolerances after a full search
 FINAL_NFEV = 300  # extended refinement of the best candidate before giving up
 QUICK_NFEV = 12  # a good start converges in ~5-10 evaluations; a bad one is dropped early
+BATCH_ITERATIONS = 30  # Levenberg-Marquardt iterations of the first attempt
 
 
 @dataclass(frozen=True)
@@ -135,18 +140,34 @@ class _Session:
             q = out.q
         else:
             q = np.clip(q0, self.robot.lower, self.robot.upper)
-        pos, ori = (float(v[0]) for v in pose_errors(self.robot, self.target, q))
-        err = pos / self.robot.reach + ori
-        if self.best is None or err < self.best[0]:
-            self.best = (err, q)
-        if pos <= self.tol_pos and ori <= self.tol_ori and _distinct(self.robot, q, self.found,
+        self.consider(q[None])
+
+    def local_batch(self, Q0: np.ndarray, stop_after: int | None) -> bool:
+        """Batched Levenberg-Marquardt from the rows of ``Q0``; whether any converged."""
+        out = batch_lm(self.robot, self.target, Q0, length=self.robot.reach,
+                       stop_position=1e-3 * self.tol_pos, stop_orientation=1e-3 * self.tol_ori,
+                       max_iter=BATCH_ITERATIONS, stop_after=stop_after)
+        self.n_eval += out.n_eval
+        err = out.position_error / self.robot.reach + out.orientation_error
+        order = np.argsort(np.where(out.converged, -1.0, err), kind="stable")
+        self.consider(out.Q[order[: max(int(out.converged.sum()), 1)]])
+        return bool(out.converged.any())
+
+    def consider(self, Q: np.ndarray) -> None:
+        """Check candidates with the reference FK; keep the distinct solutions and the best."""
+        pos, ori = pose_errors(self.robot, self.target, Q)
+        for q, p, o in zip(Q, pos, ori, strict=True):
+            err = float(p) / self.robot.reach + float(o)
+            if self.best is None or err < self.best[0]:
+                self.best = (err, q)
+            if p <= self.tol_pos and o <= self.tol_ori and _distinct(self.robot, q, self.found,
                                                                    self.distinct):
-            self.found.append(q)
+                self.found.append(q)
 
 
 def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = "geodesic",
              polish: bool = True, n_solutions: int = 1, q_current=None, seed=0,
-             tol=1e-9, max_evals: int = 50_000, pop_size: int | None = None,
+             tol=1e-9, max_evals: int = 50_000, starts: int = 16, pop_size: int | None = None,
              generations: int = 15,
              candidates_per_round: int = 3, distinct: float = 0.1,
              patience: int = 30, front_method: str = "moeosma",
@@ -168,6 +189,8 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
         tol: Tolerance: a number ``t`` means position <= ``t * robot.reach`` and
             orientation <= ``t`` rad; or a pair (position in robot unit, rad).
         max_evals: FK evaluation budget of search and polish.
+        starts: Random configurations of the first, batched Levenberg-Marquardt
+            attempt (0: go straight to the global search).
         pop_size: Search population size (default 20, or 40 when several
             solutions are wanted: a wider population lands in more branches).
         generations: Search generations per round.
@@ -184,6 +207,7 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     if pop_size is None:
         pop_size = 20 if n_solutions == 1 else 40
     for name, value, low in (("n_solutions", n_solutions, 1), ("max_evals", max_evals, 1),
+                             ("starts", starts, 0),
                              ("pop_size", pop_size, 2), ("generations", generations, 1),
                              ("candidates_per_round", candidates_per_round, 1),
                              ("patience", patience, 1)):
@@ -192,11 +216,15 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     if not distinct > 0:
         raise ParameterError(f"distinct must be > 0, got {distinct!r}")
     session = _Session(robot, target, tol_pos, tol_ori, distinct)
+    seeds = seed if isinstance(seed, np.random.SeedSequence) else np.random.SeedSequence(seed)
     if q_current is not None:
         q_current = robot.check_q(q_current, "q_current")
-        session.refine(q_current, polish)
+        if not (polish and session.local_batch(q_current[None], stop_after=1)):
+            session.refine(q_current, polish)
+    if polish and starts and len(session.found) < n_solutions:
+        Q0 = robot.random_q(starts, rng=np.random.default_rng(seeds.spawn(1)[0]))
+        session.local_batch(Q0, stop_after=1 if n_solutions == 1 else None)
     problem = _search_problem(robot, target, orientation)
-    seeds = seed if isinstance(seed, np.random.SeedSequence) else np.random.SeedSequence(seed)
     idle_rounds = 0
     while (len(session.found) < n_solutions and session.n_eval < max_evals
            and idle_rounds < patience):

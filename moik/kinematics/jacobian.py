@@ -15,6 +15,31 @@ from moik.robots.chain import Robot
 from moik.robots.dh import assemble, run_steps
 
 
+def kernel_jacobian(robot: Robot, Q: np.ndarray) -> tuple[np.ndarray, np.ndarray,
+                                                           np.ndarray, np.ndarray]:
+    """Kernel state and geometric Jacobians of a 2-D batch, without validation.
+
+    Returns:
+        ``(xy, z, p, J)``: the FK kernel's x + i*y rotation columns (complex
+        ``(3, n)``), z column ``(3, n)``, position ``(3, n)`` and the Jacobians
+        ``(n, 6, dof)`` (see :func:`pose_and_jacobian`).
+    """
+    axes: list = []
+    xy, z, p, _ = run_steps(robot._steps, Q, robot._offsets, axes=axes)
+    zs = np.stack([a[0] for a in axes], axis=-1)  # (3, n, dof)
+    arm = p[:, :, None] - np.stack([a[1] for a in axes], axis=-1)
+    J = np.empty((Q.shape[0], 6, robot.dof))
+    J[:, 0] = zs[1] * arm[2] - zs[2] * arm[1]  # z_j x (p - o_j), written out
+    J[:, 1] = zs[2] * arm[0] - zs[0] * arm[2]
+    J[:, 2] = zs[0] * arm[1] - zs[1] * arm[0]
+    J[:, 3:] = zs.transpose(1, 0, 2)
+    prismatic = robot.is_prismatic
+    if prismatic.any():
+        J[:, :3, prismatic] = J[:, 3:, prismatic]
+        J[:, 3:, prismatic] = 0.0
+    return xy, z, p, J
+
+
 def pose_and_jacobian(robot: Robot, q) -> tuple[np.ndarray, np.ndarray]:
     """End-effector pose(s) and geometric Jacobian(s).
 
@@ -29,16 +54,7 @@ def pose_and_jacobian(robot: Robot, q) -> tuple[np.ndarray, np.ndarray]:
     """
     Q = robot.check_q(q)
     single = Q.ndim == 1
-    Q2 = Q[None] if single else Q
-    axes: list = []
-    xy, z, p, _ = run_steps(robot._steps, Q2, robot._offsets, axes=axes)
-    zs = np.stack([a[0] for a in axes], axis=-1)  # (3, n, dof)
-    origins = np.stack([a[1] for a in axes], axis=-1)
-    prismatic = robot.is_prismatic
-    linear = np.cross(zs, p[:, :, None] - origins, axis=0)
-    linear[:, :, prismatic] = zs[:, :, prismatic]
-    angular = np.where(prismatic, 0.0, zs)
-    J = np.concatenate([linear, angular], axis=0).transpose(1, 0, 2)  # (n, 6, dof)
+    xy, z, p, J = kernel_jacobian(robot, Q[None] if single else Q)
     T = assemble(xy, z, p)
     return (T[0], J[0]) if single else (T, J)
 

@@ -13,6 +13,7 @@ The batched FK kernel and the straightforward reference live in
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Literal
 
 import numpy as np
@@ -144,19 +145,21 @@ class Robot:
         """Whether the robot is given by DH rows (else by origins)."""
         return self.origins is None
 
-    @property
+    @cached_property
     def is_prismatic(self) -> np.ndarray:
-        """Boolean mask of prismatic joints, shape ``(dof,)``."""
-        return np.array([t == "prismatic" for t in self.joint_types])
+        """Boolean mask of prismatic joints, shape ``(dof,)`` (read-only, computed once)."""
+        mask = np.array([t == "prismatic" for t in self.joint_types])
+        mask.flags.writeable = False
+        return mask
 
     @property
     def limits(self) -> np.ndarray:
         """Joint limits as a ``(2, dof)`` array ``[lower, upper]``."""
         return np.stack([self.lower, self.upper])
 
-    @property
+    @cached_property
     def reach(self) -> float:
-        """Upper bound on the distance from the base to the end effector."""
+        """Upper bound on the distance from the base to the end effector (computed once)."""
         stroke = np.where(self.is_prismatic, np.maximum(abs(self.lower), abs(self.upper)), 0.0)
         links = np.linalg.norm(self.chain_origins()[:, :3, 3], axis=1)
         return float(np.sum(links) + np.sum(stroke))

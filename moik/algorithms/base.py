@@ -67,7 +67,8 @@ class ArrayAlgorithm(ArrayStateMixin, Algorithm):
     Public attributes for callbacks (all numpy, read them, do not mutate):
     ``X``/``F``/``CV`` (current population as each algorithm documents it, and violation;
     ``CV`` is None without constraints), ``best_x``/``best_f``/``best_cv``
-    (best so far), ``convergence`` (best f per generation, 1-D), ``t`` (current
+    (best so far), ``convergence`` (best f per generation, 1-D), ``best_x_history``
+    (best-so-far x after each generation, ``(generations, n_var)``), ``t`` (current
     iteration of the paper's schedule) and ``max_iter`` (its length T), plus
     the subclass arrays documented on each algorithm.
 
@@ -113,6 +114,11 @@ class ArrayAlgorithm(ArrayStateMixin, Algorithm):
         """Best-so-far f after each generation (generation 1 = initial population)."""
         return np.asarray(self._convergence, dtype=float)
 
+    @property
+    def best_x_history(self) -> np.ndarray:
+        """Best-so-far x after each generation, ``(generations, n_var)`` (EOSMA Fig. 19a)."""
+        return np.array(self._best_x_history, dtype=float).reshape(-1, self.problem.n_var)
+
     # ---- pymoo hooks ----------------------------------------------------------------------
     def _setup(self, problem, **kwargs) -> None:
         if problem.n_obj != 1:
@@ -129,7 +135,7 @@ class ArrayAlgorithm(ArrayStateMixin, Algorithm):
                                   rng=self.random_state)
 
     def _initialize_advance(self, infills=None, **kwargs) -> None:
-        self._convergence, self._best_gh, self._step = [], {}, None
+        self._convergence, self._best_x_history, self._best_gh, self._step = [], [], {}, None
         F, CV, G, H = self._values_of(infills)
         self.X, self.F, self.CV = infills.get("X"), F, CV
         self._receive(self.X, F, CV, G, H)
@@ -148,6 +154,7 @@ class ArrayAlgorithm(ArrayStateMixin, Algorithm):
 
     def _post_advance(self) -> None:
         self._convergence.append(self.best_f)
+        self._best_x_history.append(np.array(self.best_x, dtype=float))
         self._pop_stale = True
         super()._post_advance()
 

@@ -100,6 +100,13 @@ def _plans(res: Results) -> list[tuple[str, str, Callable]]:
         plans.append(("motion", "Motion from the start to the solutions", lambda s:
                       mp.plot_motion(robot, q0, best[first], label=first, others=others or None,
                                      target=pos[0], save=s)))
+        best_run = min(res.by_label[first], key=lambda r: r["best_f"])
+        history = res.store.load_arrays(best_run["trial"]).get("best_x_history")
+        if history is not None and len(history):
+            plans.append(("joint-history", f"Best candidate joint angles of {first} per "
+                          "iteration (its best run)", lambda s, h=history: mp.plot_joint_history(
+                              np.degrees(h), ylabel="joint angle (deg)",
+                              title=f"Best candidate joint angles ({first})", save=s)))
     if "compromise" in analyses and cfg["targets"]["kind"] == "circle" and labels:
         lab = labels[0]
         recs = {r["target"]: r for r in res.by_label[lab] if r["run"] == 0}

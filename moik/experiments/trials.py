@@ -40,6 +40,9 @@ class TrialSpec:
         seed: Integer seed handed to pymoo (first word of the child's state).
         robot: Robot name; ``problem`` the problem dict; ``n_gen`` generations.
         protocol: ``{"threshold", "max_failures"}`` or None.
+        record_history: Store the best-so-far x of every generation as the
+            array ``best_x_history`` (experiments with the ``joint-motion``
+            analysis: EOSMA Fig. 19a).
     """
 
     trial_id: str
@@ -56,6 +59,7 @@ class TrialSpec:
     problem: dict
     n_gen: int
     protocol: dict | None
+    record_history: bool = False
 
     @property
     def seed_sequence(self) -> np.random.SeedSequence:
@@ -85,7 +89,8 @@ def build_trials(config, targets: list[NamedTarget] | None = None) -> list[Trial
                     seed=int(child.generate_state(1, dtype=np.uint32)[0]),
                     robot=getattr(target, "robot", None) or config["robot"],
                     problem=dict(config["problem"]),
-                    n_gen=config["n_gen"], protocol=config["protocol"]))
+                    n_gen=config["n_gen"], protocol=config["protocol"],
+                    record_history="joint-motion" in (config["analyses"] or [])))
     return specs
 
 
@@ -151,6 +156,8 @@ def _single_objective(spec: TrialSpec, problem, record: dict, arrays: dict) -> N
             record["joint_distance_deg"] = float(np.linalg.norm(np.degrees(x - problem.q_start)))
         arrays["best_x"] = x
     arrays["convergence"] = _convergence(res.algorithm)
+    if spec.record_history and hasattr(res.algorithm, "best_x_history"):
+        arrays["best_x_history"] = res.algorithm.best_x_history
 
 
 def _multi_objective(spec: TrialSpec, problem, record: dict, arrays: dict) -> None:

@@ -28,6 +28,8 @@ def test_terminations_and_result(cls):
     problem = Sphere()
     res = minimize(problem, cls(pop_size=20), ("n_gen", 15), seed=3)
     assert res.algorithm.convergence.shape == (15,)
+    assert res.algorithm.best_x_history.shape == (15, 7)
+    np.testing.assert_array_equal(res.algorithm.best_x_history[-1], res.X)
     assert np.all(np.diff(res.algorithm.convergence) <= 0)
     assert res.X.shape == (7,) and res.F.shape == (1,)
     assert res.F[0] == pytest.approx(float((res.X**2).sum()), rel=1e-12)

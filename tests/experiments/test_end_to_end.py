@@ -27,3 +27,19 @@ def test_quick_runs_and_report(tmp_path, capsys):
     assert (out / "eosma-table8" / "figures" / "front-0.png").exists()
     meta = json.loads((out / "mpso-table5" / "meta.json").read_text())
     assert meta["quick"] is True and meta["algorithms"][:2] == ["m-pso", "pso"]
+
+
+def test_joint_motion_experiment_draws_the_joint_history(tmp_path):
+    """EOSMA Fig. 19a: the best candidate's joint angles per iteration."""
+    out = tmp_path / "results"
+    assert main(["experiment", "run", "eosma-table9", "--quick", "--workers", "1",
+                 "--no-progress", "--out", str(out / "eosma-table9")]) == 0
+    store = ResultStore.open(out / "eosma-table9")
+    recs = store.records()
+    history = store.load_arrays(recs[0]["trial"])["best_x_history"]
+    assert history.shape == (20, 7)  # quick size: 20 generations, 7 joints
+    assert history[-1].tolist() == recs[0]["best_x"]
+    assert main(["report", str(out)]) == 0
+    assert (out / "eosma-table9" / "figures" / "joint-history.png").exists()
+    report = (out / "report.md").read_text()
+    assert "Best candidate joint angles of eosma per iteration" in report

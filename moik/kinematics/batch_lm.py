@@ -147,7 +147,8 @@ def batch_lm(robot: Robot, target: Target, Q0: np.ndarray, *, length: float,
         mu = 1e-9 * np.maximum(diag.mean(axis=1), 1e-12)
         A = JtJ + lam[:, None, None] * (diag[:, :, None] * eye + mu[:, None, None] * eye)
         step = np.linalg.solve(A, -g[:, :, None])[:, :, 0]
-        blocked = ((Q <= robot.lower) & (step < 0)) | ((Q >= robot.upper) & (step > 0))
+        blocked = ((np.less_equal(Q, robot.lower) & (step < 0))
+                   | (np.greater_equal(Q, robot.upper) & (step > 0)))
         if blocked.any():  # joints held at a limit: solve for the free ones only
             free = ~blocked
             A = A * free[:, :, None] * free[:, None, :] + blocked[:, :, None] * eye

@@ -7,8 +7,7 @@ from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 from moik import load_urdf
-from moik.kinematics.batch_lm import (_residuals, batch_lm, inverse_left_jacobians,
-                                      rotation_logs)
+from moik.kinematics.batch_lm import _residuals, batch_lm, inverse_left_jacobians, rotation_logs
 from moik.kinematics.polish import ResidualModel, inverse_left_jacobian_so3, pose_errors
 from moik.problems import random_reachable_targets
 from moik.problems.targets import Target

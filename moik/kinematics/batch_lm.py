@@ -62,17 +62,26 @@ def inverse_left_jacobians(phi: np.ndarray) -> np.ndarray:
     ``I - [phi]/2 + c(t) [phi]^2``, ``c = 1/t^2 - (1 + cos t) / (2 t sin t)``,
     ``c -> 1/12`` as ``t -> 0``; the identity within 1e-6 of ``pi``.
     """
-    t = np.linalg.norm(phi, axis=1)
-    K = np.zeros((len(phi), 3, 3))
-    K[:, 0, 1], K[:, 0, 2], K[:, 1, 2] = -phi[:, 2], phi[:, 1], -phi[:, 0]
-    K[:, 1, 0], K[:, 2, 0], K[:, 2, 1] = phi[:, 2], -phi[:, 1], phi[:, 0]
-    small = t < 1e-6
-    ts = np.where(small, 1.0, t)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        c = np.where(small, 1.0 / 12.0, 1.0 / ts**2 - (1.0 + np.cos(ts)) / (2.0 * ts * np.sin(ts)))
-    out = np.eye(3) - 0.5 * K + c[:, None, None] * (K @ K)
-    near_pi = t > np.pi - 1e-6
-    out[near_pi] = np.eye(3)
+    t = np.sqrt(np.einsum("ij,ij->i", phi, phi))
+    small, near_pi = t < 1e-6, t > np.pi - 1e-6
+    ts = np.where(small | near_pi, 1.0, t)
+    c = 1.0 / ts**2 - (1.0 + np.cos(ts)) / (2.0 * ts * np.sin(ts))
+    c[small] = 1.0 / 12.0
+    c[near_pi] = 0.0
+    # [phi]^2 = phi phi^T - t^2 I, so the matrix is (1 - c t^2) I - [phi]/2 + c phi phi^T
+    out = c[:, None, None] * (phi[:, :, None] * phi[:, None, :])
+    diag = 1.0 - c * t**2
+    diag[near_pi] = 1.0
+    out[:, 0, 0] += diag
+    out[:, 1, 1] += diag
+    out[:, 2, 2] += diag
+    half = 0.5 * np.where(near_pi[:, None], 0.0, phi)
+    out[:, 0, 1] += half[:, 2]
+    out[:, 1, 0] -= half[:, 2]
+    out[:, 0, 2] -= half[:, 1]
+    out[:, 2, 0] += half[:, 1]
+    out[:, 1, 2] += half[:, 0]
+    out[:, 2, 1] -= half[:, 0]
     return out
 
 

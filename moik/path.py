@@ -92,17 +92,19 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
     seeds = np.random.SeedSequence(seed).spawn(len(targets))
     Q, statuses, warm_flags, n_eval = [], [], [], 0
     warm = _WarmStart(robot, tol_pos, tol_ori, max_step)
+    tracked: list[np.ndarray] = []  # warm-start solutions already found by the branch choice
     for i, target in enumerate(targets):
         q, status, used_warm = None, None, False
         if prev is not None:
-            q = warm.step(target, prev)
+            q = tracked[i - 1] if i - 1 < len(tracked) else warm.step(target, prev)
             status, used_warm = ("solved", True) if q is not None else (None, False)
         elif first_branches > 1 and len(targets) > 1:
             first = solve_ik(robot, target, seed=seeds[i], tol=tol, n_solutions=first_branches,
                              **{"patience": 5, **solve_options})
             n_eval += first.n_eval
             if first.success:
-                q, status = warm.furthest(first.solutions, targets[1:]), "solved"
+                q, tracked = warm.furthest(first.solutions, targets[1:])
+                status = "solved"
         if q is None:
             res = solve_ik(robot, target, q_current=prev, seed=seeds[i], tol=tol,
                            **solve_options)
@@ -140,21 +142,22 @@ class _WarmStart:
         ok = pos <= self.tol_pos and ori <= self.tol_ori
         return out.q if ok and (self.max_step is None or step <= self.max_step) else None
 
-    def furthest(self, candidates: np.ndarray, rest: list) -> np.ndarray:
-        """The candidate from which warm starts track ``rest`` furthest (first on ties)."""
-        best, best_reach = candidates[0], -1
+    def furthest(self, candidates: np.ndarray, rest: list) -> tuple[np.ndarray, list]:
+        """The candidate from which warm starts track ``rest`` furthest (first on ties),
+        and the solutions those warm starts found."""
+        best, best_track = candidates[0], None
         for q0 in candidates:
-            prev, reached = q0, 0
+            track, prev = [], q0
             for target in rest:
                 prev = self.step(target, prev)
                 if prev is None:
                     break
-                reached += 1
-            if reached > best_reach:
-                best, best_reach = q0, reached
-            if reached == len(rest):
+                track.append(prev)
+            if best_track is None or len(track) > len(best_track):
+                best, best_track = q0, track
+            if len(track) == len(rest):
                 break
-        return best
+        return best, best_track
 
 
 def pose_errors_all(robot: Robot, targets, Q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -78,7 +78,7 @@ def _cmd_solve(args: argparse.Namespace) -> int:
         target = Target.from_euler(args.target, args.euler, convention=args.convention,
                                    degrees=args.deg)
     res = solve_ik(robot, target, method=args.algorithm, seed=args.seed,
-                   n_solutions=args.n_solutions)
+                   n_solutions=args.n_solutions, starts=args.starts)
     kind = "pose" if target.has_orientation else "position"
     print(f"robot {robot.name}: {kind} target {np.round(target.position, 6).tolist()} "
           f"{robot.unit}")
@@ -126,7 +126,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--convention", default="zyx-euler", choices=["zyx-euler", "eosma-euler"],
                    help="Euler convention (default zyx-euler: Rz(a) Ry(b) Rx(c))")
     p.add_argument("--deg", action="store_true", help="Euler angles in degrees")
-    p.add_argument("--algorithm", default="eosma", help="search algorithm (default eosma)")
+    p.add_argument("--algorithm", default="eosma",
+                   help="global search algorithm, used when the local starts fail (default eosma)")
+    p.add_argument("--starts", type=int, default=16,
+                   help="random starts of the batched Levenberg-Marquardt first attempt "
+                        "(default 16; 0: the global search only)")
     p.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
     p.add_argument("--n-solutions", type=int, default=1, help="distinct solutions wanted")
     p.add_argument("--plot", metavar="FILE", help="save a 3-D drawing (FILE.png and .pdf)")

@@ -30,6 +30,7 @@ import numpy as np
 from pymoo.optimize import minimize
 
 from moik.algorithms import get_algorithm
+from moik.algorithms.registry import is_multi_objective
 from moik.exceptions import ParameterError
 from moik.kinematics.batch_lm import batch_lm
 from moik.kinematics.polish import polish as polish_q
@@ -215,6 +216,11 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
             raise ParameterError(f"{name} must be an integer >= {low}, got {value!r}")
     if not distinct > 0:
         raise ParameterError(f"distinct must be > 0, got {distinct!r}")
+    if is_multi_objective(method):  # also raises UnknownNameError for an unknown name
+        raise ParameterError(f"method must be a single-objective algorithm, got {method!r}")
+    if not is_multi_objective(front_method):
+        raise ParameterError(f"front_method must be a multi-objective algorithm, got "
+                             f"{front_method!r}")
     session = _Session(robot, target, tol_pos, tol_ori, distinct)
     seeds = seed if isinstance(seed, np.random.SeedSequence) else np.random.SeedSequence(seed)
     if q_current is not None:

@@ -35,6 +35,15 @@ def test_solve_reachable_pose(capsys, tmp_path):
     assert (tmp_path / "sol.png").exists() and (tmp_path / "sol.pdf").exists()
 
 
+def test_solve_with_the_global_search_only(capsys):
+    args = ["solve", "eosma7", "--target", "-24.748737", "100.961941", "50", "--euler", "135",
+            "0", "-90", "--deg", "--starts", "0"]
+    assert main(args) == 0
+    assert "status: solved" in capsys.readouterr().out
+    assert main(args[:-1] + ["-1"]) == 2
+    assert "starts must be an integer >= 0, got -1" in capsys.readouterr().err
+
+
 def test_solve_errors_are_one_line(capsys):
     assert main(["solve", "eosma7", "--target", "0", "0", "9000"]) == 2
     err = capsys.readouterr().err

@@ -24,6 +24,19 @@ def test_reachable_poses_are_solved_exactly(name):
             res.position_error, abs=1e-12 * robot.reach)
 
 
+def test_local_first_attempt_solves_most_reachable_poses():
+    """The batched Levenberg-Marquardt attempt (16 starts, <= 30 iterations:
+    at most 16 * 31 FK evaluations) ends most solves before any global search;
+    with starts=0 the global search alone still solves them."""
+    robot = get_robot("eosma7")
+    targets = random_reachable_targets(robot, 20, seed=4)
+    local = [solve_ik(robot, t, seed=i) for i, t in enumerate(targets)]
+    assert all(r.success for r in local)
+    assert sum(r.n_eval <= 16 * 31 for r in local) >= 16
+    searched = [solve_ik(robot, t, seed=i, starts=0) for i, t in enumerate(targets[:4])]
+    assert all(r.success for r in searched)
+
+
 def test_position_only_target():
     robot = get_robot("rokbani5")
     res = solve_ik(robot, [25.1441, 9.5735, 18.0927], seed=3)  # MO-m-PSO Section 4.1 target
@@ -93,5 +106,14 @@ def test_bad_input():
         solve_ik(robot, [10.0, 0.0, 50.0], tol=(1, 2, 3))
     with pytest.raises(ParameterError, match="n_solutions must be an integer >= 1"):
         solve_ik(robot, [10.0, 0.0, 50.0], n_solutions=0)
+    reachable = random_reachable_targets(robot, 1, seed=0)[0]  # solved before any search
     with pytest.raises(UnknownNameError, match="unknown algorithm 'nope'"):
-        solve_ik(robot, [10.0, 0.0, 50.0], method="nope")
+        solve_ik(robot, reachable, method="nope")
+    with pytest.raises(UnknownNameError, match="unknown algorithm 'nope'"):
+        solve_ik(robot, reachable, front_method="nope")
+    with pytest.raises(ParameterError, match="method must be a single-objective"):
+        solve_ik(robot, reachable, method="moeosma")
+    with pytest.raises(ParameterError, match="front_method must be a multi-objective"):
+        solve_ik(robot, reachable, front_method="eosma")
+    with pytest.raises(ParameterError, match="starts must be an integer >= 0"):
+        solve_ik(robot, reachable, starts=2.5)

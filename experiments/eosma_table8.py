@@ -3,7 +3,14 @@
 Yin et al., Sci. Rep. 12, 9421 (2022), DOI 10.1038/s41598-022-13516-3:
 Table 8 and Figs. 17-18. Objectives (position error, Eq. 30 Euler error with
 the Eq. 26 angles); P1 = (-25, 100, 50, 0, 0, 0) (unreachable) and
-P2 = (50, -25, 75, 0, 0, 0) (reachable), cm and deg; N=100, T=1000, archive
+P2 = (50, -25, 75, 0, 0, 0) (reachable), printed in cm and deg, computed in
+metres: arm ``eosma7-m``, P1 = (-0.25, 1.00, 0.50) m, P2 = (0.50, -0.25, 0.75) m.
+The paper's HV reference points settle the unit: P1's (2.088567, 2.466816)
+box is nearly filled by the paper's fronts (MOEOSMA HV 5.076 of 5.152), which
+needs position errors of a few hundredths; the P1 front keeps 0.0075-0.14 of
+position error over 0.03-0.91 rad, i.e. HV ~5.0 in metres but ~2.2 in cm
+(the cm reading was measured first: every algorithm at 40-50 % of the paper's
+P1 values). P2 is reachable either way (HV = the whole box). N=100, T=1000, archive
 100, 20 runs; hypervolume with the paper's reference points (text before
 Table 8); Friedman mean ranks over the 20 runs (run j of every algorithm uses
 the same seed). Baselines marked optional come with the baselines issue; the
@@ -17,12 +24,12 @@ EXPERIMENT = {
     "name": "eosma-table8",
     "title": "MOEOSMA vs multi-objective algorithms at poses P1 (unreachable) and P2",
     "source": "Yin et al. 2022 (EOSMA), Table 8, Figs. 17-18",
-    "robot": "eosma7",
+    "robot": "eosma7-m",
     "problem": {"kind": "bi-objective", "orientation": "eosma-euler"},
     "targets": {"kind": "fixed", "points": [
-        {"name": "P1", "position": [-25, 100, 50], "euler_deg": [0, 0, 0],
+        {"name": "P1", "position": [-0.25, 1.00, 0.50], "euler_deg": [0, 0, 0],
          "convention": "eosma-euler", "hv_ref_point": [2.088567, 2.466816]},
-        {"name": "P2", "position": [50, -25, 75], "euler_deg": [0, 0, 0],
+        {"name": "P2", "position": [0.50, -0.25, 0.75], "euler_deg": [0, 0, 0],
          "convention": "eosma-euler", "hv_ref_point": [1.695669, 2.524178]},
     ]},
     "algorithms": [

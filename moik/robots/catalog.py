@@ -74,12 +74,15 @@ def eosma7() -> Robot:
 def eosma7_m() -> Robot:
     """The EOSMA 7-DOF arm in metres, as Table 1 prints it (l1 = 0.5 m ...).
 
-    For reproducing the paper's Tables 5 and 7: their errors are in metres
+    For reproducing the paper's Tables 5, 7, 8 and 9: their errors are in metres
     (Table 7's worst 5.55e-17 is one rounding step of a quantity of size 1; in
     cm one rounding step of a 50 cm coordinate is already ~7e-15), and Eq. 28
     adds that length error to an angle error in radians, so the unit decides
-    the balance of the two terms. The multi-objective Table 8 and the
-    Simulation section use cm (:func:`eosma7`).
+    the balance of the two terms. Table 8's HV reference points fit position
+    errors in metres (P1: HV ~5.0 in metres, ~2.2 in cm; paper 5.08), and
+    Table 9's pose is solved exactly in metres, not in cm. The paper prints
+    positions in cm (e.g. (-24.748737, 100.961941, 50) for the start pose), which
+    is :func:`eosma7`.
     """
     robot = eosma7()
     return Robot(name="eosma7-m", a=robot.a / 100.0, alpha=robot.alpha, d=robot.d / 100.0,

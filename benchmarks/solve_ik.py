@@ -11,7 +11,11 @@ benchmark only) its ``ik_LM`` runs on the same targets, on the same kinematics
 (an ETS built from moik's chain transforms), with its default tolerance and
 with ``tol=1e-14``, from the same seeded start configurations.
 
-Run: python benchmarks/solve_ik.py [--n 1000] [--robots eosma7,puma560,...]
+With ``--search-only`` it also times ``solve_ik(..., starts=0)`` (the
+metaheuristic search and least-squares polish without the batched
+Levenberg-Marquardt first attempt) on the same targets.
+
+Run: python benchmarks/solve_ik.py [--n 1000] [--robots eosma7,puma560,...] [--search-only]
 """
 
 from __future__ import annotations
@@ -46,11 +50,11 @@ def summarize(label: str, rows: list[tuple[bool, bool, float]]) -> str:
             f"p95 {1e3 * np.percentile(times, 95):7.2f} ms")
 
 
-def run_moik(robot, targets) -> list[tuple[bool, bool, float]]:
+def run_moik(robot, targets, **options) -> list[tuple[bool, bool, float]]:
     rows = []
     for i, target in enumerate(targets):
         t0 = time.perf_counter()
-        res = solve_ik(robot, target.pose, seed=i)
+        res = solve_ik(robot, target.pose, seed=i, **options)
         elapsed = time.perf_counter() - t0
         rows.append((*strict(robot, target, res.q), elapsed))
     return rows
@@ -89,6 +93,9 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--n", type=int, default=1000, help="targets per robot")
     parser.add_argument("--robots", default="eosma7,puma560,sawyer7,iiwa14")
+    parser.add_argument("--search-only", action="store_true",
+                        help="also time solve_ik with starts=0 (no local multi-start attempt: "
+                             "the metaheuristic search and least-squares polish alone)")
     args = parser.parse_args()
     try:
         import roboticstoolbox  # noqa: F401
@@ -104,6 +111,11 @@ def main() -> None:
               f"{args.n} random reachable poses")
         moik_rows = run_moik(robot, targets)
         print(summarize("moik solve_ik", moik_rows))
+        if args.search_only:
+            search_rows = run_moik(robot, targets, starts=0)
+            print(summarize("moik starts=0", search_rows))
+            ratio = np.median([r[2] for r in search_rows]) / np.median([r[2] for r in moik_rows])
+            print(f"  median time ratio starts=0 / default: {ratio:.1f}x")
         if have_rtb:
             default = run_rtb(robot, targets, None)
             tight = run_rtb(robot, targets, 1e-14)

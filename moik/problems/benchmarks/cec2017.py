@@ -25,7 +25,12 @@ kept as is, not patched here:
   Rastrigin, 5/100 for HGBat, 1000/100 for Schwefel);
 * composition functions (F21-F30) evaluate every component at ``x - o_1``
   instead of ``x - o_k`` (only the weights use ``o_k``); F27's expanded
-  Schaffer component adds 1 to its argument.
+  Schaffer component adds 1 to its argument;
+* F9 (Levy) scales ``x - o`` by 5.12/100 before the rotation, where
+  ``cec17_func.cpp``'s ``levy_func`` calls ``sr_func`` with 1.0 (5.12/100 is
+  the CEC2022 code's scaling): a 20x narrower landscape, much easier from
+  [-100, 100] (every algorithm of ``ibes-cec2017`` ends near 900-950 here,
+  the I-BES paper reports 5500-21500).
 
 Values at ``o_1`` (the global optimum) are unaffected; the landscapes elsewhere
 differ from the official code, so results are comparable between algorithms

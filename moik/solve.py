@@ -124,9 +124,10 @@ def _distinct(robot: Robot, q: np.ndarray, others: list[np.ndarray], threshold: 
 class _Session:
     """Bookkeeping of one solve: budget, found solutions, failures."""
 
-    def __init__(self, robot, target, tol_pos, tol_ori, distinct):
+    def __init__(self, robot, target, tol_pos, tol_ori, distinct, wanted):
         self.robot, self.target = robot, target
         self.tol_pos, self.tol_ori, self.distinct = tol_pos, tol_ori, distinct
+        self.wanted = wanted  # solutions asked for: no more are kept
         self.n_eval = 0
         self.found: list[np.ndarray] = []
         self.best: tuple[float, np.ndarray] | None = None  # (scaled error, q)
@@ -161,8 +162,8 @@ class _Session:
             err = float(p) / self.robot.reach + float(o)
             if self.best is None or err < self.best[0]:
                 self.best = (err, q)
-            if p <= self.tol_pos and o <= self.tol_ori and _distinct(self.robot, q, self.found,
-                                                                   self.distinct):
+            if (len(self.found) < self.wanted and p <= self.tol_pos and o <= self.tol_ori
+                    and _distinct(self.robot, q, self.found, self.distinct)):
                 self.found.append(q)
 
 
@@ -221,7 +222,7 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     if not is_multi_objective(front_method):
         raise ParameterError(f"front_method must be a multi-objective algorithm, got "
                              f"{front_method!r}")
-    session = _Session(robot, target, tol_pos, tol_ori, distinct)
+    session = _Session(robot, target, tol_pos, tol_ori, distinct, n_solutions)
     seeds = seed if isinstance(seed, np.random.SeedSequence) else np.random.SeedSequence(seed)
     if q_current is not None:
         q_current = robot.check_q(q_current, "q_current")

@@ -31,7 +31,7 @@ def test_solve_reachable_pose(capsys, tmp_path):
             "0", "-90", "--deg", "--n-solutions", "3", "--plot", str(plot)]
     assert main(args) == 0
     out = capsys.readouterr().out
-    assert "status: solved" in out and "solution 3:" in out
+    assert "status: solved" in out and "solution 3:" in out and "solution 4:" not in out
     assert (tmp_path / "sol.png").exists() and (tmp_path / "sol.pdf").exists()
 
 

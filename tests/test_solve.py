@@ -35,6 +35,8 @@ def test_local_first_attempt_solves_most_reachable_poses():
     assert sum(r.n_eval <= 16 * 31 for r in local) >= 16
     searched = [solve_ik(robot, t, seed=i, starts=0) for i, t in enumerate(targets[:4])]
     assert all(r.success for r in searched)
+    several = solve_ik(robot, targets[0], n_solutions=3, seed=0)  # 16 starts converge
+    assert several.solutions.shape == (3, robot.dof)  # no more than asked for
 
 
 def test_position_only_target():

@@ -150,7 +150,7 @@ def batch_lm(robot: Robot, target: Target, Q0: np.ndarray, *, length: float,
     for _ in range(max_iter):
         if not active.any() or (stop_after is not None and done.sum() >= stop_after):
             break
-        JtJ = np.einsum("kmi,kmj->kij", J, J)
+        JtJ = J.transpose(0, 2, 1) @ J
         g = np.einsum("kmi,km->ki", J, r)
         diag = np.einsum("kii->ki", JtJ)
         mu = 1e-9 * np.maximum(diag.mean(axis=1), 1e-12)
@@ -181,7 +181,7 @@ def batch_lm(robot: Robot, target: Target, Q0: np.ndarray, *, length: float,
 
 def _within(r: np.ndarray, length: float, stop_position: float,
             stop_orientation: float) -> np.ndarray:
-    pos_ok = np.linalg.norm(r[:, :3], axis=1) * length <= stop_position
+    pos_ok = np.einsum("ij,ij->i", r[:, :3], r[:, :3]) * length**2 <= stop_position**2
     if r.shape[1] == 3:
         return pos_ok
-    return pos_ok & (np.linalg.norm(r[:, 3:], axis=1) <= stop_orientation)
+    return pos_ok & (np.einsum("ij,ij->i", r[:, 3:], r[:, 3:]) <= stop_orientation**2)

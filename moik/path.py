@@ -23,7 +23,8 @@ from moik.exceptions import ParameterError
 from moik.kinematics.polish import polish, pose_errors
 from moik.problems.targets import as_target, check_unit_range
 from moik.robots.chain import Robot
-from moik.solve import _tolerances, solve_ik
+from moik.solve import solve_ik
+from moik.solve_session import tolerances
 
 
 @dataclass(frozen=True)
@@ -87,7 +88,7 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
     if isinstance(first_branches, bool) or int(first_branches) != first_branches \
             or first_branches < 1:
         raise ParameterError(f"first_branches must be an integer >= 1, got {first_branches!r}")
-    tol_pos, tol_ori = _tolerances(tol, robot)
+    tol_pos, tol_ori = tolerances(tol, robot)
     prev = None if q_start is None else robot.check_q(q_start, "q_start")
     seeds = np.random.SeedSequence(seed).spawn(len(targets))
     Q, statuses, warm_flags, n_eval = [], [], [], 0

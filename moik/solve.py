@@ -32,19 +32,17 @@ from pymoo.optimize import minimize
 from moik.algorithms import get_algorithm
 from moik.algorithms.registry import is_multi_objective
 from moik.exceptions import ParameterError
-from moik.kinematics.batch_lm import batch_lm
-from moik.kinematics.polish import polish as polish_q
 from moik.kinematics.polish import pose_errors
 from moik.metrics.compromise import closest_to_utopia
 from moik.problems.ik import BiObjectiveIK, PoseIK, PositionIK
 from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.chain import Robot
+from moik.solve_session import SolveSession, is_distinct, tolerances
 
 STATUSES = ("solved", "unreachable", "not-converged")
 UNREACHABLE_FACTOR = 1e3  # best error beyond this many tolerances after a full search
 FINAL_NFEV = 300  # extended refinement of the best candidate before giving up
 QUICK_NFEV = 12  # a good start converges in ~5-10 evaluations; a bad one is dropped early
-BATCH_ITERATIONS = 30  # Levenberg-Marquardt iterations of the first attempt
 
 
 @dataclass(frozen=True)
@@ -80,18 +78,6 @@ class IKResult:
     front_q: np.ndarray | None = field(default=None, repr=False)
 
 
-def _tolerances(tol, robot: Robot) -> tuple[float, float]:
-    if np.ndim(tol) == 0:
-        tol_pos, tol_ori = float(tol) * robot.reach, float(tol)
-    elif np.shape(tol) == (2,):
-        tol_pos, tol_ori = (float(v) for v in tol)
-    else:
-        raise ParameterError(f"tol must be a number or (position, orientation), got {tol!r}")
-    if not (tol_pos > 0 and tol_ori > 0 and np.isfinite(tol_pos) and np.isfinite(tol_ori)):
-        raise ParameterError(f"tolerances must be positive and finite, got {tol!r}")
-    return tol_pos, tol_ori
-
-
 def _search_problem(robot: Robot, target: Target, orientation: str):
     if target.rotation is None:
         return PositionIK(robot, target)
@@ -104,67 +90,6 @@ def _population(algorithm) -> tuple[np.ndarray, np.ndarray]:
     if isinstance(X, np.ndarray) and isinstance(F, np.ndarray):
         return X, F.reshape(len(X), -1)[:, 0]
     return algorithm.pop.get("X"), algorithm.pop.get("F")[:, 0]
-
-
-def joint_distance(robot: Robot, q: np.ndarray, others: np.ndarray) -> np.ndarray:
-    """Joint-space distances from ``q`` to each row of ``others``.
-
-    Revolute differences are wrapped to ``[-pi, pi]``: angles 2*pi apart are
-    the same arm configuration (though not the same motion).
-    """
-    diff = np.atleast_2d(others) - q
-    wrapped = (diff + np.pi) % (2 * np.pi) - np.pi
-    return np.linalg.norm(np.where(robot.is_prismatic, diff, wrapped), axis=1)
-
-
-def _distinct(robot: Robot, q: np.ndarray, others: list[np.ndarray], threshold: float) -> bool:
-    return not others or bool(np.all(joint_distance(robot, q, np.array(others)) > threshold))
-
-
-class _Session:
-    """Bookkeeping of one solve: budget, found solutions, failures."""
-
-    def __init__(self, robot, target, tol_pos, tol_ori, distinct, wanted):
-        self.robot, self.target = robot, target
-        self.tol_pos, self.tol_ori, self.distinct = tol_pos, tol_ori, distinct
-        self.wanted = wanted  # solutions asked for: no more are kept
-        self.n_eval = 0
-        self.found: list[np.ndarray] = []
-        self.best: tuple[float, np.ndarray] | None = None  # (scaled error, q)
-
-    def refine(self, q0: np.ndarray, do_polish: bool, max_nfev: int = 60) -> None:
-        if do_polish:
-            out = polish_q(self.robot, self.target, q0, length=self.robot.reach,
-                           max_nfev=max_nfev,
-                           stop_position=1e-3 * self.tol_pos,
-                           stop_orientation=1e-3 * self.tol_ori)
-            self.n_eval += out.n_eval
-            q = out.q
-        else:
-            q = np.clip(q0, self.robot.lower, self.robot.upper)
-        self.consider(q[None])
-
-    def local_batch(self, Q0: np.ndarray, stop_after: int | None) -> bool:
-        """Batched Levenberg-Marquardt from the rows of ``Q0``; whether any converged."""
-        out = batch_lm(self.robot, self.target, Q0, length=self.robot.reach,
-                       stop_position=1e-3 * self.tol_pos, stop_orientation=1e-3 * self.tol_ori,
-                       max_iter=BATCH_ITERATIONS, stop_after=stop_after)
-        self.n_eval += out.n_eval
-        err = out.position_error / self.robot.reach + out.orientation_error
-        order = np.argsort(np.where(out.converged, -1.0, err), kind="stable")
-        self.consider(out.Q[order[: max(int(out.converged.sum()), 1)]])
-        return bool(out.converged.any())
-
-    def consider(self, Q: np.ndarray) -> None:
-        """Check candidates with the reference FK; keep the distinct solutions and the best."""
-        pos, ori = pose_errors(self.robot, self.target, Q)
-        for q, p, o in zip(Q, pos, ori, strict=True):
-            err = float(p) / self.robot.reach + float(o)
-            if self.best is None or err < self.best[0]:
-                self.best = (err, q)
-            if (len(self.found) < self.wanted and p <= self.tol_pos and o <= self.tol_ori
-                    and _distinct(self.robot, q, self.found, self.distinct)):
-                self.found.append(q)
 
 
 def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = "geodesic",
@@ -205,7 +130,7 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     t0 = time.perf_counter()
     target = as_target(target)
     check_unit_range(target, robot)
-    tol_pos, tol_ori = _tolerances(tol, robot)
+    tol_pos, tol_ori = tolerances(tol, robot)
     if pop_size is None:
         pop_size = 20 if n_solutions == 1 else 40
     for name, value, low in (("n_solutions", n_solutions, 1), ("max_evals", max_evals, 1),
@@ -222,7 +147,7 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     if not is_multi_objective(front_method):
         raise ParameterError(f"front_method must be a multi-objective algorithm, got "
                              f"{front_method!r}")
-    session = _Session(robot, target, tol_pos, tol_ori, distinct, n_solutions)
+    session = SolveSession(robot, target, tol_pos, tol_ori, distinct, n_solutions)
     seeds = seed if isinstance(seed, np.random.SeedSequence) else np.random.SeedSequence(seed)
     if q_current is not None:
         q_current = robot.check_q(q_current, "q_current")
@@ -248,7 +173,7 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     return _result(session, q_current, t0, searched_out, front, front_q)
 
 
-def _search_round(session: _Session, problem, method: str, pop_size: int, generations: int,
+def _search_round(session: SolveSession, problem, method: str, pop_size: int, generations: int,
                   candidates: int, run_seed: int, n_solutions: int, do_polish: bool) -> None:
     """One search run; the best candidate of the initial population is polished
     at once (early stop when that already solves the target), the best
@@ -266,7 +191,7 @@ def _search_round(session: _Session, problem, method: str, pop_size: int, genera
         for i in np.argsort(F, kind="stable"):
             if len(picked) == (1 if gen == 1 else candidates):
                 break
-            if _distinct(robot, X[i], picked + session.found, session.distinct):
+            if is_distinct(robot, X[i], picked + session.found, session.distinct):
                 picked.append(X[i])
         for q0 in picked:  # a quick try after gen 1; a full refinement at the end
             session.refine(q0, do_polish, max_nfev=QUICK_NFEV if gen == 1 else 60)
@@ -275,7 +200,7 @@ def _search_round(session: _Session, problem, method: str, pop_size: int, genera
     session.n_eval += algorithm.evaluator.n_eval
 
 
-def _front(session: _Session, orientation: str, seeds, front_method: str, front_evals: int,
+def _front(session: SolveSession, orientation: str, seeds, front_method: str, front_evals: int,
            do_polish: bool) -> tuple[np.ndarray, np.ndarray]:
     """Pareto front of (position, orientation) errors; its member with the
     smallest combined error is refined too (a second, independent global search:
@@ -293,7 +218,7 @@ def _front(session: _Session, orientation: str, seeds, front_method: str, front_
     return front, front_q
 
 
-def _result(session: _Session, q_current, t0: float, searched_out: bool, front, front_q
+def _result(session: SolveSession, q_current, t0: float, searched_out: bool, front, front_q
             ) -> IKResult:
     robot, target = session.robot, session.target
     if session.found:

@@ -6,7 +6,8 @@ import pytest
 from moik.exceptions import ParameterError, UnknownNameError
 from moik.problems import Target, random_reachable_targets
 from moik.robots import get_robot
-from moik.solve import joint_distance, solve_ik
+from moik.solve import solve_ik
+from moik.solve_session import joint_distance
 
 
 @pytest.mark.parametrize("name", ["eosma7", "sawyer7", "irb2600"])

@@ -1,0 +1,105 @@
+"""Bookkeeping of one :func:`moik.solve.solve_ik` call: tolerances, found solutions.
+
+Every candidate, from any stage (batched Levenberg-Marquardt, least-squares
+polish, search), goes through :meth:`SolveSession.consider`, which recomputes
+its errors with the reference FK and keeps it only if it is within tolerance
+and distinct from the solutions already found.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from moik.exceptions import ParameterError
+from moik.kinematics.batch_lm import batch_lm
+from moik.kinematics.polish import polish as polish_q
+from moik.kinematics.polish import pose_errors
+from moik.robots.chain import Robot
+
+BATCH_ITERATIONS = 30  # Levenberg-Marquardt iterations of the first attempt
+
+
+def tolerances(tol, robot: Robot) -> tuple[float, float]:
+    """``(position, orientation)`` tolerances from ``solve_ik``'s ``tol``.
+
+    A number ``t`` means ``t * robot.reach`` and ``t`` rad; a pair is taken as is.
+    """
+    if np.ndim(tol) == 0:
+        tol_pos, tol_ori = float(tol) * robot.reach, float(tol)
+    elif np.shape(tol) == (2,):
+        tol_pos, tol_ori = (float(v) for v in tol)
+    else:
+        raise ParameterError(f"tol must be a number or (position, orientation), got {tol!r}")
+    if not (tol_pos > 0 and tol_ori > 0 and np.isfinite(tol_pos) and np.isfinite(tol_ori)):
+        raise ParameterError(f"tolerances must be positive and finite, got {tol!r}")
+    return tol_pos, tol_ori
+
+
+def joint_distance(robot: Robot, q: np.ndarray, others: np.ndarray) -> np.ndarray:
+    """Joint-space distances from ``q`` to each row of ``others``.
+
+    Revolute differences are wrapped to ``[-pi, pi]``: angles 2*pi apart are
+    the same arm configuration (though not the same motion).
+    """
+    diff = np.atleast_2d(others) - q
+    wrapped = (diff + np.pi) % (2 * np.pi) - np.pi
+    return np.linalg.norm(np.where(robot.is_prismatic, diff, wrapped), axis=1)
+
+
+def is_distinct(robot: Robot, q: np.ndarray, others: list[np.ndarray], threshold: float) -> bool:
+    """Whether ``q`` is farther than ``threshold`` from every row of ``others``."""
+    return not others or bool(np.all(joint_distance(robot, q, np.array(others)) > threshold))
+
+
+class SolveSession:
+    """Bookkeeping of one solve: FK evaluations, found solutions, best candidate.
+
+    Args:
+        robot, target: The problem.
+        tol_pos, tol_ori: Tolerances (robot unit, rad).
+        distinct: Joint-space distance above which two solutions are distinct.
+        wanted: Number of solutions asked for; no more are kept.
+    """
+
+    def __init__(self, robot, target, tol_pos, tol_ori, distinct, wanted):
+        self.robot, self.target = robot, target
+        self.tol_pos, self.tol_ori, self.distinct = tol_pos, tol_ori, distinct
+        self.wanted = wanted  # solutions asked for: no more are kept
+        self.n_eval = 0
+        self.found: list[np.ndarray] = []
+        self.best: tuple[float, np.ndarray] | None = None  # (scaled error, q)
+
+    def refine(self, q0: np.ndarray, do_polish: bool, max_nfev: int = 60) -> None:
+        """Least-squares polish of ``q0`` (or only clipping), then :meth:`consider`."""
+        if do_polish:
+            out = polish_q(self.robot, self.target, q0, length=self.robot.reach,
+                           max_nfev=max_nfev,
+                           stop_position=1e-3 * self.tol_pos,
+                           stop_orientation=1e-3 * self.tol_ori)
+            self.n_eval += out.n_eval
+            q = out.q
+        else:
+            q = np.clip(q0, self.robot.lower, self.robot.upper)
+        self.consider(q[None])
+
+    def local_batch(self, Q0: np.ndarray, stop_after: int | None) -> bool:
+        """Batched Levenberg-Marquardt from the rows of ``Q0``; whether any converged."""
+        out = batch_lm(self.robot, self.target, Q0, length=self.robot.reach,
+                       stop_position=1e-3 * self.tol_pos, stop_orientation=1e-3 * self.tol_ori,
+                       max_iter=BATCH_ITERATIONS, stop_after=stop_after)
+        self.n_eval += out.n_eval
+        err = out.position_error / self.robot.reach + out.orientation_error
+        order = np.argsort(np.where(out.converged, -1.0, err), kind="stable")
+        self.consider(out.Q[order[: max(int(out.converged.sum()), 1)]])
+        return bool(out.converged.any())
+
+    def consider(self, Q: np.ndarray) -> None:
+        """Check candidates with the reference FK; keep the distinct solutions and the best."""
+        pos, ori = pose_errors(self.robot, self.target, Q)
+        for q, p, o in zip(Q, pos, ori, strict=True):
+            err = float(p) / self.robot.reach + float(o)
+            if self.best is None or err < self.best[0]:
+                self.best = (err, q)
+            if (len(self.found) < self.wanted and p <= self.tol_pos and o <= self.tol_ori
+                    and is_distinct(self.robot, q, self.found, self.distinct)):
+                self.found.append(q)

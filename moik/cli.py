@@ -98,8 +98,10 @@ def _cmd_solve(args: argparse.Namespace) -> int:
         from moik.plotting import plot_robot
 
         stem = args.plot.rsplit(".", 1)[0]
-        plot_robot(robot, res.solutions if len(res.solutions) else res.q,
-                   target=target.position, save=stem)
+        Q = res.solutions if len(res.solutions) else res.q[None]
+        labels = ([f"solution {k}" for k in range(1, len(Q) + 1)] if len(res.solutions)
+                  else [f"best ({res.status})"])
+        plot_robot(robot, Q, labels=labels, target=target.position, save=stem)
         print(f"plot written to {stem}.png and {stem}.pdf")
     return 0 if res.success else 1
 

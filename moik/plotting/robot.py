@@ -41,6 +41,10 @@ def plot_robot(robot: Robot, Q, *, ax=None, target=None, labels=None, save: str 
     ax.set_zlabel(f"z ({unit})")
     ax.set_title(robot.name)
     ax.set_aspect("equal")
+    from matplotlib.ticker import MaxNLocator
+
+    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):  # equal aspect squeezes short axes
+        axis.set_major_locator(MaxNLocator(5))
     if labels is not None or target is not None:
         ax.legend(loc="upper left", fontsize="small")
     if save:

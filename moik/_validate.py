@@ -1,0 +1,172 @@
+"""The one set of input validators used across moik.
+
+One rule each, everywhere (robots, problems, algorithms, solver, experiments, CLI):
+
+- an *integer* is a Python ``int`` or a numpy integer, never a ``bool`` and never
+  a float (``2.0`` is refused: a count is not a measurement);
+- a *number* is a finite real (``int``/``float``/numpy scalar), never a ``bool``;
+- an *array* is converted to contiguous, writeable ``float64`` and must be finite;
+- a *seed* is ``None``, a non-negative integer or a ``numpy.random.SeedSequence``;
+- a *name* is one of a listed set (case-insensitive), else
+  :class:`~moik.exceptions.UnknownNameError` listing the valid names.
+
+Each validator takes the ``name`` of the argument for its message and an
+``error`` class (a :class:`~moik.exceptions.MoikError` subclass; experiments pass
+:class:`~moik.exceptions.ConfigError` so the message names the config key).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from typing import Any
+
+import numpy as np
+
+from moik.exceptions import MoikError, NonFiniteError, ParameterError, ShapeError, UnknownNameError
+
+_INTEGER = (int, np.integer)
+_REAL = (int, float, np.integer, np.floating)
+
+
+def is_integer(value: object) -> bool:
+    """Whether ``value`` is an integer under moik's rule (int or numpy integer, not bool)."""
+    return isinstance(value, _INTEGER) and not isinstance(value, (bool, np.bool_))
+
+
+def integer(name: str, value: object, *, minimum: int | None = None, maximum: int | None = None,
+            error: type[MoikError] = ParameterError) -> int:
+    """``value`` as an ``int`` in ``[minimum, maximum]``.
+
+    Raises:
+        error: If ``value`` is not an integer (bools and floats are refused) or is
+            out of range; the message gives the range and the value received.
+    """
+    if minimum is not None and maximum is not None:
+        expected = f"an integer in [{minimum}, {maximum}]"
+    elif minimum is not None:
+        expected = f"an integer >= {minimum}"
+    elif maximum is not None:
+        expected = f"an integer <= {maximum}"
+    else:
+        expected = "an integer"
+    if not is_integer(value):
+        raise error(f"{name} must be {expected}, got {value!r}")
+    v = int(value)  # type: ignore[call-overload]
+    if (minimum is not None and v < minimum) or (maximum is not None and v > maximum):
+        raise error(f"{name} must be {expected}, got {v}")
+    return v
+
+
+def optional_integer(name: str, value: object, *, minimum: int | None = None,
+                     error: type[MoikError] = ParameterError) -> int | None:
+    """``None`` or :func:`integer`."""
+    return None if value is None else integer(name, value, minimum=minimum, error=error)
+
+
+def number(name: str, value: object, *, minimum: float | None = None,
+           maximum: float | None = None, lo_open: bool = False, hi_open: bool = False,
+           error: type[MoikError] = ParameterError) -> float:
+    """``value`` as a finite ``float`` in the given (closed or open) range.
+
+    Raises:
+        error: If ``value`` is not a finite real number (bools refused) or is out
+            of range; the message shows the range in interval notation.
+    """
+    lo = -np.inf if minimum is None else minimum
+    hi = np.inf if maximum is None else maximum
+    ok = isinstance(value, _REAL) and not isinstance(value, (bool, np.bool_))
+    v = float(value) if ok else np.nan  # type: ignore[arg-type]
+    ok = ok and bool(np.isfinite(v))
+    ok = ok and (lo < v if lo_open else lo <= v) and (v < hi if hi_open else v <= hi)
+    if not ok:
+        if minimum is None and maximum is None:
+            expected = "a finite number"
+        else:
+            expected = (f"a finite number in {'(' if lo_open or minimum is None else '['}"
+                        f"{lo}, {hi}{')' if hi_open or maximum is None else ']'}")
+        raise error(f"{name} must be {expected}, got {value!r}")
+    return v
+
+
+def positive(name: str, value: object, *, allow_zero: bool = False,
+             error: type[MoikError] = ParameterError) -> float:
+    """A finite number ``> 0`` (or ``>= 0`` with ``allow_zero``)."""
+    return number(name, value, minimum=0.0, lo_open=not allow_zero, error=error)
+
+
+def flag(name: str, value: object, *, error: type[MoikError] = ParameterError) -> bool:
+    """``value`` as a ``bool`` (``True``/``False`` or numpy bools only)."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise error(f"{name} must be True or False, got {value!r}")
+    return bool(value)
+
+
+def finite_array(name: str, values: Any, *, shape: tuple[int | None, ...] | None = None,
+                 ndim: int | None = None, error: type[MoikError] = ShapeError) -> np.ndarray:
+    """``values`` as a contiguous, writeable, finite ``float64`` array.
+
+    Args:
+        name: What the array is, for messages.
+        values: Anything ``numpy.asarray`` accepts.
+        shape: Required shape; ``None`` entries match any length.
+        ndim: Required number of dimensions (when ``shape`` is not given).
+        error: Raised for a wrong shape or a non-numeric input.
+
+    Raises:
+        error: Wrong shape or not numeric.
+        NonFiniteError: NaN or infinite entries (the first one is located).
+    """
+    try:
+        arr = np.array(values, dtype=np.float64, order="C", copy=True)
+    except (TypeError, ValueError):
+        raise error(f"{name} must be an array of real numbers, got {values!r}") from None
+    if shape is not None:
+        ok = arr.ndim == len(shape) and all(s is None or s == n for s, n in zip(shape, arr.shape, strict=True))
+        if not ok:
+            want = "(" + ", ".join("n" if s is None else str(s) for s in shape) + (
+                ",)" if len(shape) == 1 else ")")
+            raise error(f"{name} must have shape {want}, got {arr.shape}")
+    elif ndim is not None and arr.ndim != ndim:
+        raise error(f"{name} must be {ndim}-D, got shape {arr.shape}")
+    if not np.all(np.isfinite(arr)):
+        bad = np.argwhere(~np.isfinite(arr))[0]
+        where = f" at index {tuple(int(i) for i in bad)}" if arr.ndim else ""
+        raise NonFiniteError(f"{name} must hold finite values only; got {arr[tuple(bad)]}{where}")
+    return arr
+
+
+def seed(name: str, value: object, *, error: type[MoikError] = ParameterError
+         ) -> int | np.random.SeedSequence | None:
+    """``None``, a non-negative integer, or a ``numpy.random.SeedSequence``."""
+    if value is None or isinstance(value, np.random.SeedSequence):
+        return value
+    if not is_integer(value) or int(value) < 0:  # type: ignore[call-overload]
+        raise error(f"{name} must be a non-negative integer, a numpy SeedSequence or None, "
+                    f"got {value!r}")
+    return int(value)  # type: ignore[call-overload]
+
+
+def choice(kind: str, value: object, valid: Iterable[str] | Mapping[str, Any]) -> str:
+    """``value`` lower-cased if it is one of ``valid`` (case-insensitive).
+
+    Raises:
+        UnknownNameError: Otherwise; the message lists the valid names.
+    """
+    names = list(valid)
+    key = value.lower() if isinstance(value, str) else value
+    if key not in {n.lower() for n in names}:
+        raise UnknownNameError(kind, value, names)
+    return key  # type: ignore[return-value]
+
+
+def keywords(owner: str, given: Mapping[str, Any], accepted: Iterable[str]) -> None:
+    """Refuse keywords outside ``accepted`` (a misspelled option must not pass silently).
+
+    Raises:
+        ParameterError: Naming the unknown keywords and listing the accepted ones.
+    """
+    allowed = set(accepted)
+    unknown = sorted(set(given) - allowed)
+    if unknown:
+        raise ParameterError(f"unknown parameter(s) {', '.join(unknown)} for {owner}; "
+                             f"accepted: {', '.join(sorted(allowed))}")

@@ -1,0 +1,80 @@
+"""The one set of validators: one rule each (moik/_validate.py)."""
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from moik import _validate as v
+from moik.exceptions import (
+    ConfigError,
+    NonFiniteError,
+    ParameterError,
+    ShapeError,
+    UnknownNameError,
+)
+
+
+@given(st.integers(min_value=-10**6, max_value=10**6))
+def test_integer_accepts_ints_in_range(x):
+    if x >= 0:
+        assert v.integer("n", x, minimum=0) == x
+    else:
+        with pytest.raises(ParameterError, match=r"n must be an integer >= 0, got"):
+            v.integer("n", x, minimum=0)
+
+
+@pytest.mark.parametrize("bad", [True, False, 2.0, "3", None, np.float64(2.0)])
+def test_integer_refuses_bools_floats_and_strings(bad):
+    with pytest.raises(ParameterError, match=r"pop_size must be an integer >= 2"):
+        v.integer("pop_size", bad, minimum=2)
+
+
+def test_integer_numpy_ints_and_error_class():
+    assert v.integer("n", np.int64(4), minimum=1, maximum=4) == 4
+    with pytest.raises(ConfigError, match=r"runs must be an integer in \[1, 3\], got 5"):
+        v.integer("runs", 5, minimum=1, maximum=3, error=ConfigError)
+
+
+@given(st.floats(allow_nan=True, allow_infinity=True))
+def test_number_is_finite_and_in_range(x):
+    if np.isfinite(x) and 0 < x <= 1:
+        assert v.number("w", x, minimum=0, maximum=1, lo_open=True) == x
+    else:
+        with pytest.raises(ParameterError, match=r"w must be a finite number in \(0, 1\]"):
+            v.number("w", x, minimum=0, maximum=1, lo_open=True)
+
+
+def test_number_refuses_bool_and_positive():
+    with pytest.raises(ParameterError):
+        v.number("x", True)
+    assert v.positive("tol", 0.0, allow_zero=True) == 0.0
+    with pytest.raises(ParameterError, match="tol must be a finite number in"):
+        v.positive("tol", 0.0)
+
+
+def test_finite_array_normalises_and_locates_bad_values():
+    view = np.arange(12.0).reshape(3, 4)[:, ::2]
+    view.flags.writeable = False
+    a = v.finite_array("Q", view, shape=(None, 2))
+    assert a.flags.c_contiguous and a.flags.writeable and a.dtype == np.float64
+    with pytest.raises(ShapeError, match=r"Q must have shape \(n, 3\), got \(3, 2\)"):
+        v.finite_array("Q", view, shape=(None, 3))
+    with pytest.raises(NonFiniteError, match=r"at index \(1,\)"):
+        v.finite_array("q", [0.0, np.nan])
+    with pytest.raises(ShapeError, match="array of real numbers"):
+        v.finite_array("q", ["a", "b"])
+
+
+def test_seed_choice_flag_keywords():
+    assert v.seed("seed", 3) == 3 and v.seed("seed", None) is None
+    with pytest.raises(ParameterError, match="non-negative integer"):
+        v.seed("seed", -1)
+    assert v.choice("metric", "Geodesic", ["geodesic", "frobenius"]) == "geodesic"
+    with pytest.raises(UnknownNameError, match="expected one of: frobenius, geodesic"):
+        v.choice("metric", "bogus", ["geodesic", "frobenius"])
+    with pytest.raises(ParameterError, match="True or False"):
+        v.flag("polish", 1)
+    with pytest.raises(ParameterError, match=r"unknown parameter\(s\) pop_sise for EOSMA; "
+                                             r"accepted: a1, pop_size"):
+        v.keywords("EOSMA", {"pop_sise": 50}, ["pop_size", "a1"])

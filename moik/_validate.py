@@ -121,7 +121,8 @@ def finite_array(name: str, values: Any, *, shape: tuple[int | None, ...] | None
     except (TypeError, ValueError):
         raise error(f"{name} must be an array of real numbers, got {values!r}") from None
     if shape is not None:
-        ok = arr.ndim == len(shape) and all(s is None or s == n for s, n in zip(shape, arr.shape, strict=True))
+        ok = arr.ndim == len(shape) and all(
+            s is None or s == n for s, n in zip(shape, arr.shape, strict=True))
         if not ok:
             want = "(" + ", ".join("n" if s is None else str(s) for s in shape) + (
                 ",)" if len(shape) == 1 else ")")

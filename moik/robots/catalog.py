@@ -16,11 +16,16 @@ Papers (``shared/papers``):
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 
 from moik.exceptions import UnknownNameError
 from moik.robots.chain import Robot
+from moik.robots.urdf import load_urdf
+
+DATA = Path(__file__).with_name("data")
 
 PI = np.pi
 DEG = PI / 180.0
@@ -229,6 +234,27 @@ def irb2600() -> Robot:
     )
 
 
+def _shipped(file: str, name: str, tip: str | None, origin: str) -> Callable[[], Robot]:
+    """A catalog entry for a URDF shipped in ``moik/robots/data`` (see its README.md)."""
+
+    def build() -> Robot:
+        robot = load_urdf(DATA / file, tip_link=tip, name=name)
+        return replace(robot, source=f"{robot.source} ({origin})")
+
+    build.__doc__ = f"{name}: {file} ({origin}), chain to {tip or 'its last movable link'}."
+    return build
+
+
+iiwa14 = _shipped("lbr_iiwa_14_r820.urdf", "iiwa14", "tool0",
+                  "KUKA LBR iiwa 14 R820, ROS-Industrial, via rtb-data 2.0.0")
+panda = _shipped("panda.urdf", "panda", "panda_hand_tcp",
+                 "Franka Emika Panda, franka_description, via example-robot-data 6.0.0")
+ur5 = _shipped("ur5_robot.urdf", "ur5", "tool0",
+               "Universal Robots UR5, ROS-Industrial, via example-robot-data 6.0.0")
+puma560_urdf = _shipped("puma560_robot.urdf", "puma560-urdf", None,
+                        "Unimation Puma 560, via rtb-data 2.0.0")
+
+
 _CATALOG: dict[str, Callable[[], Robot]] = {
     "eosma7": eosma7,
     "eosma7-m": eosma7_m,
@@ -241,6 +267,10 @@ _CATALOG: dict[str, Callable[[], Robot]] = {
     "puma560-kalra": puma560_kalra,
     "sawyer7": sawyer7,
     "irb2600": irb2600,
+    "iiwa14": iiwa14,
+    "panda": panda,
+    "ur5": ur5,
+    "puma560-urdf": puma560_urdf,
 }
 
 

@@ -14,7 +14,10 @@ Rules:
 * ``revolute`` and ``prismatic`` joints read their ``<limit>``; ``continuous``
   joints get ``[-pi, pi]`` (one full turn covers every orientation);
   ``fixed`` joints are folded into the constant transforms. ``floating`` and
-  ``planar`` joints are rejected. ``mimic`` tags are ignored (each joint is free).
+  ``planar`` joints are rejected with a hint; a chain through a ``<mimic>`` joint is
+  refused (coupled joints are not modelled, never silently made independent).
+* The file must describe a tree: duplicate joint names, undeclared links, a link
+  with two parents and cycles are reported; ``.xacro`` files must be expanded first.
 * ``<origin xyz rpy>`` (fixed-axis roll-pitch-yaw, ``R = Rz(y) Ry(p) Rx(r)``)
   and ``<axis xyz>`` (any unit vector; default x as the URDF spec says) are
   honoured. Lengths are metres.
@@ -73,21 +76,66 @@ def _axis_frame(axis: np.ndarray) -> np.ndarray:
     return C
 
 
-def _parse(path: Path) -> tuple[dict, dict]:
+def _read(source) -> tuple[ET.Element, str]:
+    """The ``<robot>`` element of a URDF file path or XML string, and a label for messages."""
+    if isinstance(source, str) and source.lstrip().startswith("<"):
+        label, text = "<URDF string>", source
+    else:
+        if not isinstance(source, (str, Path)):
+            raise URDFError(f"a URDF must be a file path or an XML string, got "
+                            f"{type(source).__name__}")
+        path = Path(source)
+        label = str(path)
+        if path.suffix == ".xacro":
+            raise URDFError(f"{label!r} is a xacro file: run xacro first "
+                            f"(`xacro {path.name} > {path.stem}.urdf`) and load the URDF")
+        try:
+            text = path.read_text()
+        except OSError as exc:
+            raise URDFError(f"cannot read URDF {label!r}: {exc}") from None
     try:
-        root = ET.parse(path).getroot()
-    except (ET.ParseError, OSError) as exc:
-        raise URDFError(f"cannot read URDF {str(path)!r}: {exc}") from None
+        root = ET.fromstring(text)
+    except ET.ParseError as exc:
+        raise URDFError(f"cannot read URDF {label!r}: {exc}") from None
     if root.tag != "robot":
-        raise URDFError(f"{str(path)!r} is not a URDF file: root element <{root.tag}>")
+        raise URDFError(f"{label!r} is not a URDF file: root element <{root.tag}>")
+    if any(el.tag.startswith("{") and "xacro" in el.tag for el in root.iter()):
+        raise URDFError(f"{label!r} contains xacro elements: run xacro first")
+    return root, label
+
+
+def _parse(root: ET.Element, label: str) -> tuple[set, dict]:
+    """Links and joints of a URDF, checked to form a tree (one parent per link, no cycle)."""
     links = {el.get("name") for el in root.findall("link")}
-    joints = {}
+    joints: dict[str, ET.Element] = {}
+    parent_of: dict[str, str] = {}
     for el in root.findall("joint"):
         name = el.get("name")
         parent, child = el.find("parent"), el.find("child")
-        if parent is None or child is None:
-            raise URDFError(f"joint {name!r} needs <parent> and <child>")
+        if parent is None or child is None or parent.get("link") is None \
+                or child.get("link") is None:
+            raise URDFError(f"joint {name!r} needs <parent link=> and <child link=>")
+        if name in joints:
+            raise URDFError(f"{label!r}: two joints are named {name!r} (joint names must be "
+                            "unique)")
+        for end in (parent.get("link"), child.get("link")):
+            if end not in links:
+                raise URDFError(f"joint {name!r} refers to link {end!r}, which is not declared "
+                                f"as a <link> in {label!r}")
+        kid = child.get("link")
+        if kid in parent_of:
+            raise URDFError(f"link {kid!r} has two parent joints ({parent_of[kid]!r} and "
+                            f"{name!r}): a URDF must be a tree")
+        parent_of[kid] = name
         joints[name] = el
+    for start in parent_of:  # walk up from every link: a cycle never reaches a root
+        link, seen = start, set()
+        while link in parent_of:
+            if link in seen:
+                raise URDFError(f"{label!r}: the joints form a cycle through link {link!r}; "
+                                "a URDF must be a tree")
+            seen.add(link)
+            link = joints[parent_of[link]].find("parent").get("link")
     return links, joints
 
 
@@ -149,22 +197,23 @@ def _chain_joints(links, joints, base: str, tip: str | None) -> list[ET.Element]
     return chain
 
 
-def load_urdf(path, base_link: str | None = None, tip_link: str | None = None,
+def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
               name: str | None = None) -> Robot:
     """A :class:`Robot` for the serial chain ``base_link -> tip_link`` of a URDF.
 
     Args:
-        path: URDF file.
+        source: URDF file path, or the URDF's XML text.
         base_link: First link (default: the root link of the file).
         tip_link: Last link (default: follow the chain as the module doc says).
         name: Robot name (default: the URDF's robot name).
 
     Raises:
-        URDFError: malformed file, unsupported joint, branching chain without tip.
+        URDFError: malformed file (not a tree, undeclared link, duplicate joint
+            name, xacro), unsupported or mimic joint, branching chain without tip.
         UnknownNameError: a link name not in the file (lists the links).
     """
-    path = Path(path)
-    links, joints = _parse(path)
+    root, label = _read(source)
+    links, joints = _parse(root, label)
     for given in (base_link, tip_link):
         if given is not None and given not in links:
             raise UnknownNameError("link", given, links)
@@ -182,8 +231,18 @@ def load_urdf(path, base_link: str | None = None, tip_link: str | None = None,
         if jtype == "fixed":
             origins[-1] = T
             continue
+        if jtype in ("floating", "planar"):
+            raise URDFError(f"joint {jname!r} is {jtype!r}: moik loads serial arms with revolute "
+                            "and prismatic joints; pass base_link= the link after it (e.g. the "
+                            "arm's base) to leave a floating/planar root out")
         if jtype not in ("revolute", "continuous", "prismatic"):
-            raise URDFError(f"joint {jname!r} has unsupported type {jtype!r}")
+            raise URDFError(f"joint {jname!r} has unsupported type {jtype!r}; expected revolute, "
+                            "continuous, prismatic or fixed")
+        mimic = el.find("mimic")
+        if mimic is not None:
+            raise URDFError(f"joint {jname!r} mimics joint {mimic.get('joint')!r}: coupled (mimic) "
+                            "joints are not supported; choose a tip_link whose chain has no "
+                            "mimic joint")
         axis_el = el.find("axis")
         axis = _floats(None if axis_el is None else axis_el.get("xyz"), (1, 0, 0),
                        f"joint {jname!r} axis")
@@ -197,11 +256,14 @@ def load_urdf(path, base_link: str | None = None, tip_link: str | None = None,
         upper.append(hi)
         types.append("prismatic" if jtype == "prismatic" else "revolute")
     if not types:
-        raise URDFError(f"no movable joint between {base_link!r} and {tip_link!r}")
+        end = tip_link if tip_link is not None else (chain[-1].find("child").get("link")
+                                                     if chain else base_link)
+        raise URDFError(f"no movable joint between {base_link!r} and {end!r}")
     tip = chain[-1].find("child").get("link")
-    return Robot(name=name or ET.parse(path).getroot().get("name", path.stem),
+    stem = Path(label).stem if label != "<URDF string>" else "urdf"
+    return Robot(name=name or root.get("name", stem),
                  origins=np.array(origins), lower=lower, upper=upper, joint_types=tuple(types),
-                 unit="m", source=f"URDF {path.name}: {base_link} -> {tip}")
+                 unit="m", source=f"URDF {Path(label).name}: {base_link} -> {tip}")
 
 
 def _limits(el: ET.Element, name: str, jtype: str) -> tuple[float, float]:

@@ -10,7 +10,9 @@ from moik.robots import available_robots, get_robot
 EXPECTED = {"eosma7": (7, "cm"), "eosma7-m": (7, "m"), "rokbani5": (5, "cm"), "planar2": (2, "m"),
             "anthropomorphic3": (3, "m"), "scara4": (4, "m"), "youbot5": (5, "m"),
             "puma560": (6, "m"), "puma560-kalra": (6, "m"), "sawyer7": (7, "m"),
-            "irb2600": (6, "mm")}
+            "irb2600": (6, "mm"),
+            # the URDF arms moik ships (moik/robots/data/README.md)
+            "iiwa14": (7, "m"), "panda": (7, "m"), "ur5": (6, "m"), "puma560-urdf": (6, "m")}
 
 
 def test_catalog_names_dof_units():
@@ -21,8 +23,8 @@ def test_catalog_names_dof_units():
 
 
 def test_unknown_robot_lists_valid_names():
-    with pytest.raises(UnknownNameError, match=r"unknown robot 'ur5'; expected one of: .*eosma7"):
-        get_robot("ur5")
+    with pytest.raises(UnknownNameError, match=r"unknown robot 'ur10'; expected one of: .*eosma7"):
+        get_robot("ur10")
     with pytest.raises(MoikError):
         get_robot(None)
 

@@ -1,15 +1,16 @@
-"""URDF loading: a file written here for the EOSMA arm, the real URDFs in shared/data."""
+"""URDF loading: a file written here for the EOSMA arm, the real URDFs moik ships."""
 
 from pathlib import Path
 
 import numpy as np
 import pytest
 
+import moik.robots
 from moik.exceptions import MoikError, UnknownNameError
 from moik.robots import fk_reference, get_robot
 from moik.robots.urdf import URDFError, load_urdf
 
-URDF_DIR = Path(__file__).resolve().parents[3] / "shared" / "data" / "urdf"
+URDF_DIR = Path(moik.robots.__file__).with_name("data")  # the URDFs moik ships
 
 # EOSMA Table 1 (standard DH, here in metres): joint i+1's origin is
 # Tz(d_i) Tx(a_i) Rx(alpha_i) = xyz (a_i, 0, d_i), rpy (alpha_i, 0, 0).
@@ -93,3 +94,71 @@ def test_bad_urdfs(tmp_path):
         load_urdf(URDF_DIR / "puma560_robot.urdf", tip_link="nope")
     with pytest.raises(MoikError, match="cannot read URDF"):
         load_urdf(tmp_path / "missing.urdf")
+
+
+def _chain(*joints: str, links=("a", "b", "c")) -> str:
+    return ("<robot name='t'>" + "".join(f"<link name='{n}'/>" for n in links)
+            + "".join(joints) + "</robot>")
+
+
+def _joint(name, parent, child, extra="", jtype="revolute"):
+    return (f"<joint name='{name}' type='{jtype}'><parent link='{parent}'/>"
+            f"<child link='{child}'/><axis xyz='0 0 1'/>"
+            f"<limit lower='-1' upper='1'/>{extra}</joint>")
+
+
+def test_urdf_from_a_string_equals_the_file():
+    text = (URDF_DIR / "ur5_robot.urdf").read_text()
+    a = load_urdf(text, tip_link="tool0")
+    b = load_urdf(URDF_DIR / "ur5_robot.urdf", tip_link="tool0")
+    Q = a.random_q(20, rng=np.random.default_rng(2))
+    np.testing.assert_array_equal(a.fk(Q), b.fk(Q))
+    assert a.name == "ur5"
+
+
+def test_cyclic_urdf_is_refused_not_hung():
+    text = _chain(_joint("j1", "a", "b"), _joint("j2", "b", "c"), _joint("j3", "c", "b"))
+    with pytest.raises(URDFError, match="two parent joints"):
+        load_urdf(text)
+    ring = _chain(_joint("j1", "a", "b"), _joint("j2", "b", "a"), links=("a", "b"))
+    with pytest.raises(URDFError, match="cycle"):
+        load_urdf(ring)
+
+
+def test_malformed_trees_get_precise_messages():
+    with pytest.raises(URDFError, match="link 'ghost', which is not declared"):
+        load_urdf(_chain(_joint("j1", "a", "ghost")))
+    with pytest.raises(URDFError, match="two joints are named 'j1'"):
+        load_urdf(_chain(_joint("j1", "a", "b"), _joint("j1", "b", "c")))
+    with pytest.raises(URDFError, match="link 'b' has two parent joints"):
+        load_urdf(_chain(_joint("j1", "a", "b"), _joint("j2", "c", "b")))
+
+
+def test_xacro_floating_and_mimic_are_explained(tmp_path):
+    xacro = tmp_path / "arm.urdf.xacro"
+    xacro.write_text("<robot/>")
+    with pytest.raises(URDFError, match="run xacro first"):
+        load_urdf(xacro)
+    macro = ("<robot name='x' xmlns:xacro='http://www.ros.org/wiki/xacro'>"
+             "<xacro:macro name='m'/></robot>")
+    with pytest.raises(URDFError, match="run xacro first"):
+        load_urdf(macro)
+    floating = _chain(_joint("free", "a", "b", jtype="floating"), _joint("j2", "b", "c"))
+    with pytest.raises(URDFError, match="'floating'.*pass base_link="):
+        load_urdf(floating)
+    assert load_urdf(floating, base_link="b").dof == 1
+    mimic = _chain(_joint("j1", "a", "b"), _joint("j2", "b", "c", "<mimic joint='j1'/>"))
+    with pytest.raises(URDFError, match="'j2' mimics joint 'j1'"):
+        load_urdf(mimic)
+    with pytest.raises(URDFError, match="file path or an XML string"):
+        load_urdf(3)
+
+
+@pytest.mark.parametrize(("name", "dof", "tip"), [
+    ("iiwa14", 7, "tool0"), ("panda", 7, "panda_hand_tcp"), ("ur5", 6, "tool0"),
+    ("puma560-urdf", 6, "link7")])
+def test_shipped_urdf_arms_are_catalog_robots(name, dof, tip):
+    robot = get_robot(name)
+    assert robot.dof == dof and robot.unit == "m" and f"-> {tip}" in robot.source
+    Q = robot.random_q(20, rng=np.random.default_rng(3))
+    np.testing.assert_allclose(robot.fk(Q), fk_reference(robot, Q), atol=1e-12)

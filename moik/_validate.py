@@ -91,7 +91,12 @@ def number(name: str, value: object, *, minimum: float | None = None,
 def positive(name: str, value: object, *, allow_zero: bool = False,
              error: type[MoikError] = ParameterError) -> float:
     """A finite number ``> 0`` (or ``>= 0`` with ``allow_zero``)."""
-    return number(name, value, minimum=0.0, lo_open=not allow_zero, error=error)
+    ok = isinstance(value, _REAL) and not isinstance(value, (bool, np.bool_))
+    v = float(value) if ok else np.nan  # type: ignore[arg-type]
+    if not (np.isfinite(v) and (v >= 0 if allow_zero else v > 0)):
+        kind = "a finite number >= 0" if allow_zero else "a positive finite number"
+        raise error(f"{name} must be {kind}, got {value!r}")
+    return v
 
 
 def flag(name: str, value: object, *, error: type[MoikError] = ParameterError) -> bool:

@@ -49,7 +49,7 @@ def test_number_refuses_bool_and_positive():
     with pytest.raises(ParameterError):
         v.number("x", True)
     assert v.positive("tol", 0.0, allow_zero=True) == 0.0
-    with pytest.raises(ParameterError, match="tol must be a finite number in"):
+    with pytest.raises(ParameterError, match="tol must be a positive finite number, got 0.0"):
         v.positive("tol", 0.0)
 
 

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import integer
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError
 
 
@@ -49,9 +50,7 @@ def quintic_trajectory(
     duration = float(duration)
     if not (np.isfinite(duration) and duration > 0):
         raise ParameterError(f"duration must be a positive number of seconds, got {duration}")
-    if isinstance(n, bool) or int(n) != n or n < 2:
-        raise ParameterError(f"n must be an integer >= 2 (samples including both ends), got {n!r}")
-    n = int(n)
+    n = integer("n", n, minimum=2)  # samples, both ends included
     t = np.linspace(0.0, duration, n)
     s = (t / duration)[:, None]
     dq = (b - a)[None, :]

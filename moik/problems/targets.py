@@ -10,6 +10,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from moik._validate import integer, positive
+from moik._validate import seed as seed_value
 from moik.exceptions import NonFiniteError, ShapeError, TargetError
 from moik.kinematics.orientation import (
     check_rotation,
@@ -150,13 +152,12 @@ def random_reachable_targets(robot: Robot, n: int, *, seed, with_orientation: bo
         seed: Seed (int or ``numpy.random.SeedSequence``) of the joint sampling.
         with_orientation: Keep the FK orientation (pose targets) or not.
     """
-    if int(n) != n or n < 1:
-        raise TargetError(f"n must be a positive integer, got {n!r}")
-    rng = np.random.default_rng(seed)
-    Q = robot.random_q(int(n), rng=rng)
+    n = integer("n", n, minimum=1, error=TargetError)
+    rng = np.random.default_rng(seed_value("seed", seed))
+    Q = robot.random_q(n, rng=rng)
     T = robot.fk(Q)
     return [Target(T[i, :3, 3], T[i, :3, :3] if with_orientation else None, Q[i])
-            for i in range(int(n))]
+            for i in range(n)]
 
 
 def circle_path(center, radius: float, n_points: int, *, rotation=None) -> list[Target]:
@@ -168,12 +169,10 @@ def circle_path(center, radius: float, n_points: int, *, rotation=None) -> list[
     c = np.asarray(center, dtype=float)
     if c.shape != (3,):
         raise ShapeError(f"circle center must have shape (3,), got {c.shape}")
-    if not (np.isfinite(radius) and radius > 0):
-        raise TargetError(f"circle radius must be a positive finite number, got {radius}")
-    if int(n_points) != n_points or n_points < 2:
-        raise TargetError(f"n_points must be an integer >= 2, got {n_points!r}")
+    radius = positive("circle radius", radius, error=TargetError)
+    n_points = integer("n_points", n_points, minimum=2, error=TargetError)
     step = 2 * np.pi / n_points  # Eq. 18
-    p = np.arange(int(n_points))
+    p = np.arange(n_points)
     pts = np.column_stack([np.full(p.size, c[0]), c[1] + radius * np.cos(step * p),
                            c[2] + radius * np.sin(step * p)])  # Eq. 17
     return [Target(x, rotation) for x in pts]

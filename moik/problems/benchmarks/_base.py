@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 from pymoo.core.problem import Problem
 
-from moik.exceptions import ParameterError
+from moik._validate import integer
 
 
 def check_n_var(n_var: object) -> int:
@@ -26,9 +26,7 @@ def check_n_var(n_var: object) -> int:
     Raises:
         ParameterError: If ``n_var`` is not an integer >= 2.
     """
-    if isinstance(n_var, bool) or not isinstance(n_var, (int, np.integer)) or n_var < 2:
-        raise ParameterError(f"n_var must be an integer >= 2, got {n_var!r}")
-    return int(n_var)
+    return integer("n_var", n_var, minimum=2)
 
 
 class Benchmark(Problem):

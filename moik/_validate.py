@@ -43,8 +43,6 @@ def integer(name: str, value: object, *, minimum: int | None = None, maximum: in
     """
     if minimum is not None and maximum is not None:
         expected = f"an integer in [{minimum}, {maximum}]"
-    elif minimum == 1:
-        expected = "a positive integer"
     elif minimum is not None:
         expected = f"an integer >= {minimum}"
     elif maximum is not None:

@@ -61,5 +61,5 @@ def test_bad_targets():
         Target.from_pose(np.ones((4, 4)))
     with pytest.raises(TargetError, match="radius must be a positive"):
         circle_path([0, 0, 0], -1, 10)
-    with pytest.raises(TargetError, match="n must be a positive integer"):
+    with pytest.raises(TargetError, match="n must be an integer >= 1"):
         random_reachable_targets(get_robot("planar2"), 0, seed=0)

@@ -7,11 +7,12 @@ from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 from moik import load_urdf
-from moik.kinematics.batch_lm import _residuals, batch_lm, inverse_left_jacobians, rotation_logs
-from moik.kinematics.polish import ResidualModel, inverse_left_jacobian_so3, pose_errors
 from moik.problems import random_reachable_targets
 from moik.problems.targets import Target
 from moik.robots import get_robot
+from moik.solver.batch_lm import _residuals, batch_lm, inverse_left_jacobians, rotation_logs
+from moik.solver.polish import ResidualModel, inverse_left_jacobian_so3
+from moik.solver.session import pose_errors
 
 unit_vectors = st.lists(st.floats(-1, 1), min_size=3, max_size=3).filter(
     lambda v: np.linalg.norm(v) > 1e-3)

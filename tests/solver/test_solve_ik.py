@@ -6,8 +6,8 @@ import pytest
 from moik.exceptions import ParameterError, UnknownNameError
 from moik.problems import Target, random_reachable_targets
 from moik.robots import get_robot
-from moik.solve import solve_ik
-from moik.solve_session import joint_distance
+from moik.solver import solve_ik
+from moik.solver.session import joint_distance
 
 
 @pytest.mark.parametrize("name", ["eosma7", "sawyer7", "irb2600"])

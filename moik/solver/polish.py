@@ -172,19 +172,3 @@ def _result(robot: Robot, sol, q: np.ndarray, n_fk: int) -> PolishResult:
     # status -2: stopped by the callback (within tolerance): a stationary success
     stationary = sol.status in CONVERGED_STATUS or sol.status == -2
     return PolishResult(q, float(sol.cost), n_fk, stationary)
-
-
-def pose_errors(robot: Robot, target: Target, Q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Position error (robot unit) and geodesic orientation error (rad), recomputed by FK.
-
-    Uses the straightforward reference FK (``fk_reference``), independent of the
-    kernel the optimizers ran on. Orientation error is 0 for position-only targets.
-    """
-    from moik.kinematics.orientation import geodesic_error
-    from moik.robots.chain import fk_reference
-
-    T = fk_reference(robot, np.atleast_2d(Q))
-    pos = np.linalg.norm(T[:, :3, 3] - target.position, axis=1)
-    if target.rotation is None:
-        return pos, np.zeros_like(pos)
-    return pos, geodesic_error(T[:, :3, :3], target.rotation)

@@ -1,6 +1,6 @@
 """Batched multi-start Levenberg-Marquardt IK: many starts in one numpy pass.
 
-The residual and its exact Jacobian are those of :mod:`moik.kinematics.polish`
+The residual and its exact Jacobian are those of :mod:`moik.solver.polish`
 (``[(p - p_t) / L, rotvec(R R_t^T)]`` and ``[J_v / L; J_l^{-1}(r) J_w]``), but
 computed for a whole batch of joint vectors at once: each iteration is one
 batched FK + Jacobian pass, one batched rotation log and one batched linear
@@ -17,7 +17,7 @@ whose step points outwards are held there and the step is solved for the
 others (an active-set projection, as in dogbox). Starts are dropped
 once within the stopping tolerances; every iterate is within the limits.
 
-This is a fast first attempt for :func:`moik.solve.solve_ik`; the global
+This is a fast first attempt for :func:`moik.solver.solve_ik`; the global
 search (metaheuristic + bounded least squares) remains the fallback.
 """
 
@@ -58,7 +58,7 @@ class BatchLMResult:
 def inverse_left_jacobians(phi: np.ndarray) -> np.ndarray:
     """Batched ``J_l^{-1}(phi)`` of SO(3) for ``phi`` of shape ``(n, 3)``.
 
-    Same formula as :func:`moik.kinematics.polish.inverse_left_jacobian_so3`:
+    Same formula as :func:`moik.solver.polish.inverse_left_jacobian_so3`:
     ``I - [phi]/2 + c(t) [phi]^2``, ``c = 1/t^2 - (1 + cos t) / (2 t sin t)``,
     ``c -> 1/12`` as ``t -> 0``; the identity within 1e-6 of ``pi``.
     """

@@ -2,11 +2,11 @@
 
 First a fast attempt: batched Levenberg-Marquardt from ``q_current`` and from
 ``starts`` seeded random configurations, all in one numpy pass
-(:mod:`moik.kinematics.batch_lm`); most reachable poses end there. Otherwise,
+(:mod:`moik.solver.batch_lm`); most reachable poses end there. Otherwise,
 the memetic design of BioIK: a registered metaheuristic (EOSMA by default)
 searches the joint space with a small population for a few generations; the
 best distinct candidates are then refined with bounded least squares and the
-analytic Jacobian (:mod:`moik.kinematics.polish`). Rounds repeat with fresh
+analytic Jacobian (:mod:`moik.solver.polish`). Rounds repeat with fresh
 derived seeds until enough distinct solutions are found or the budget is spent.
 
 Honesty rules: the returned errors are recomputed with the reference FK (never
@@ -32,12 +32,11 @@ from pymoo.optimize import minimize
 from moik.algorithms import get_algorithm
 from moik.algorithms.registry import is_multi_objective
 from moik.exceptions import ParameterError
-from moik.kinematics.polish import pose_errors
 from moik.metrics.compromise import closest_to_utopia
 from moik.problems.ik import BiObjectiveIK, PoseIK, PositionIK
 from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.chain import Robot
-from moik.solve_session import SolveSession, is_distinct, tolerances
+from moik.solver.session import SolveSession, is_distinct, pose_errors, tolerances
 
 STATUSES = ("solved", "unreachable", "not-converged")
 UNREACHABLE_FACTOR = 1e3  # best error beyond this many tolerances after a full search

@@ -4,9 +4,9 @@ import numpy as np
 import pytest
 
 from moik.exceptions import ParameterError
-from moik.path import solve_path
 from moik.problems import circle_path
 from moik.robots import get_robot
+from moik.solver import solve_path
 
 
 def test_circle_path_tracked_continuously():

@@ -2,7 +2,7 @@
 
 Each target is first refined from the previous solution (a warm start keeps
 the arm on the same branch); only if that fails, or the step would exceed
-``max_step``, is the target solved globally with :func:`moik.solve.solve_ik`,
+``max_step``, is the target solved globally with :func:`moik.solver.solve_ik`,
 preferring the solution nearest the previous configuration. The largest joint
 step along the path is reported, so a branch jump cannot pass unnoticed.
 
@@ -20,11 +20,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from moik.exceptions import ParameterError
-from moik.kinematics.polish import polish, pose_errors
 from moik.problems.targets import as_target, check_unit_range
 from moik.robots.chain import Robot
-from moik.solve import solve_ik
-from moik.solve_session import tolerances
+from moik.solver.polish import polish
+from moik.solver.session import pose_errors, tolerances
+from moik.solver.solve_ik import solve_ik
 
 
 @dataclass(frozen=True)
@@ -68,10 +68,10 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
         max_step: Largest acceptable change of any joint between neighbouring
             targets; a warm-started solution beyond it is re-solved globally.
         seed: Base seed; target ``i`` uses ``SeedSequence(seed).spawn`` child ``i``.
-        tol: As in :func:`moik.solve.solve_ik`.
+        tol: As in :func:`moik.solver.solve_ik`.
         first_branches: Without ``q_start``: distinct solutions of the first
             target tried as the path's branch (1: take the first found).
-        **solve_options: Passed to :func:`moik.solve.solve_ik` (not ``seed``,
+        **solve_options: Passed to :func:`moik.solver.solve_ik` (not ``seed``,
             ``q_current``, ``n_solutions``).
     """
     t0 = time.perf_counter()

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import positive
 from moik.exceptions import ParameterError
 from moik.kinematics.orientation import geodesic_error
 from moik.problems.targets import Target
@@ -25,16 +26,24 @@ def tolerances(tol, robot: Robot) -> tuple[float, float]:
     """``(position, orientation)`` tolerances from ``solve_ik``'s ``tol``.
 
     A number ``t`` means ``t * robot.reach`` and ``t`` rad; a pair is taken as is.
+    Each must be a finite number > 0 (bools refused).
+
+    Raises:
+        ParameterError: Anything else, naming what was given.
     """
-    if np.ndim(tol) == 0:
-        tol_pos, tol_ori = float(tol) * robot.reach, float(tol)
-    elif np.shape(tol) == (2,):
-        tol_pos, tol_ori = (float(v) for v in tol)
-    else:
-        raise ParameterError(f"tol must be a number or (position, orientation), got {tol!r}")
-    if not (tol_pos > 0 and tol_ori > 0 and np.isfinite(tol_pos) and np.isfinite(tol_ori)):
-        raise ParameterError(f"tolerances must be positive and finite, got {tol!r}")
-    return tol_pos, tol_ori
+    if isinstance(tol, np.ndarray) and tol.ndim == 0:
+        tol = tol.item()
+    try:
+        shape = np.shape(tol)
+    except ValueError:  # ragged sequences
+        shape = None
+    if shape == ():
+        t = positive("tol", tol)
+        return t * robot.reach, t
+    if shape == (2,):
+        return (positive("tol[0] (position tolerance)", tol[0]),
+                positive("tol[1] (orientation tolerance)", tol[1]))
+    raise ParameterError(f"tol must be a number or (position, orientation), got {tol!r}")
 
 
 def pose_errors(robot: Robot, target: Target, Q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from moik.exceptions import ParameterError
+from moik.exceptions import ParameterError, UnknownNameError
 from moik.problems import circle_path
 from moik.robots import get_robot
 from moik.solver import solve_path
@@ -33,3 +33,28 @@ def test_bad_input():
         solve_path(robot, [])
     with pytest.raises(ParameterError, match="solve_path sets 'q_current' itself"):
         solve_path(robot, circle_path([15, 0, 12], 8, 3), **{"q_current": None})
+    with pytest.raises(ParameterError, match="unknown parameter\\(s\\) pop for solve_path"):
+        solve_path(robot, circle_path([15, 0, 12], 8, 3), pop=20)
+    with pytest.raises(ParameterError, match="first_branches must be an integer >= 1, got 2.0"):
+        solve_path(robot, circle_path([15, 0, 12], 8, 3), first_branches=2.0)
+    with pytest.raises(ParameterError, match="max_step must be a finite number"):
+        solve_path(robot, circle_path([15, 0, 12], 8, 3), max_step=0)
+    with pytest.raises(ParameterError, match="seed must be a non-negative integer"):
+        solve_path(robot, circle_path([15, 0, 12], 8, 3), seed=-2)
+
+
+def test_solve_options_are_validated_even_when_warm_starts_do_everything():
+    """With q_start on the path every target is solved by a warm start and
+    solve_ik never runs; its options are checked up front all the same."""
+    robot = get_robot("rokbani5")
+    pts = circle_path([15, 0, 12], 8, 5)
+    start = solve_path(robot, pts, seed=0)
+    assert start.warm_started[1:].all()
+    res = solve_path(robot, pts, q_start=start.Q[0], seed=0)
+    assert res.warm_started.all()
+    with pytest.raises(UnknownNameError, match="unknown orientation metric 'bogus'"):
+        solve_path(robot, pts, q_start=start.Q[0], orientation="bogus")
+    with pytest.raises(ParameterError, match="pop_size must be an integer >= 2, got 1"):
+        solve_path(robot, pts, q_start=start.Q[0], pop_size=1)
+    with pytest.raises(UnknownNameError, match="unknown algorithm 'nope'"):
+        solve_path(robot, pts, q_start=start.Q[0], method="nope")

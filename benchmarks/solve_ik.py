@@ -27,8 +27,8 @@ from pathlib import Path
 import numpy as np
 
 from moik import get_robot, load_urdf, solve_ik
-from moik.kinematics.polish import pose_errors
 from moik.problems import random_reachable_targets
+from moik.solver.session import pose_errors
 
 URDF = Path(__file__).resolve().parents[2] / "shared" / "data" / "urdf" / "lbr_iiwa_14_r820.urdf"
 

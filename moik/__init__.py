@@ -8,10 +8,9 @@ in :mod:`moik.problems` and the algorithms in :mod:`moik.algorithms`.
 from moik import algorithms, problems
 from moik._version import __version__
 from moik.exceptions import MoikError
-from moik.path import PathResult, solve_path
 from moik.robots import Robot, available_robots, get_robot
 from moik.robots.urdf import load_urdf
-from moik.solve import IKResult, solve_ik
+from moik.solver import IKResult, PathResult, solve_ik, solve_path
 
 __all__ = [
     "IKResult",

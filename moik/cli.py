@@ -69,7 +69,7 @@ def _cmd_algorithms(args: argparse.Namespace) -> int:
 
 def _cmd_solve(args: argparse.Namespace) -> int:
     from moik.problems.targets import Target
-    from moik.solve import solve_ik
+    from moik.solver import solve_ik
 
     robot = get_robot(args.robot)
     if args.euler is None:

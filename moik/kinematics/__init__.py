@@ -1,1 +1,1 @@
-"""Kinematics helpers: orientation conventions and metrics, Jacobians."""
+"""Kinematics helpers: orientation conventions and metrics, SO(3) maths, Jacobians, trajectories."""

@@ -28,7 +28,8 @@ from collections.abc import Callable
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from moik.exceptions import NonFiniteError, ShapeError, UnknownNameError
+from moik.exceptions import NonFiniteError, ShapeError, TargetError, UnknownNameError
+from moik.kinematics.so3 import rotation_angle
 
 
 def _atan_ratio(num: np.ndarray, den: np.ndarray) -> np.ndarray:
@@ -99,17 +100,12 @@ def frobenius_error(R: np.ndarray, R_t: np.ndarray) -> np.ndarray:
 def geodesic_error(R: np.ndarray, R_t: np.ndarray) -> np.ndarray:
     """Angle of ``M = R_t^T R`` in ``[0, pi]``, accurate near 0 and near pi.
 
-    ``atan2(|v|, trace(M) - 1)`` with ``v`` the skew part of ``M``
-    (``|v| = 2 sin(angle)``, ``trace - 1 = 2 cos(angle)``); unlike
-    ``arccos((trace - 1) / 2)`` it loses no precision at small angles and
-    never sees an argument pushed past +-1 by rounding.
+    :func:`moik.kinematics.so3.rotation_angle`: ``atan2(|v|, trace(M) - 1)``
+    with ``v`` the skew part of ``M`` (``|v| = 2 sin(angle)``, ``trace - 1 =
+    2 cos(angle)``); unlike ``arccos((trace - 1) / 2)`` it loses no precision at
+    small angles and never sees an argument pushed past +-1 by rounding.
     """
-    M = np.swapaxes(R_t, -1, -2) @ R
-    vx = M[..., 2, 1] - M[..., 1, 2]
-    vy = M[..., 0, 2] - M[..., 2, 0]
-    vz = M[..., 1, 0] - M[..., 0, 1]
-    trace = M[..., 0, 0] + M[..., 1, 1] + M[..., 2, 2]
-    return np.arctan2(np.sqrt(vx * vx + vy * vy + vz * vz), trace - 1.0)
+    return rotation_angle(np.swapaxes(R_t, -1, -2) @ R)
 
 
 # metric name -> (target representation from a rotation matrix, error function)
@@ -170,8 +166,6 @@ def check_rotation(
         NonFiniteError: NaN/inf entries.
         moik.exceptions.TargetError: not orthonormal with det +1 (within ``atol``).
     """
-    from moik.exceptions import TargetError
-
     R = np.asarray(R, dtype=float)
     ok = R.shape[-2:] == (3, 3) and (R.ndim == 2 or (batch and R.ndim == 3))
     if not ok:

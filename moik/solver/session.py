@@ -1,20 +1,23 @@
-"""Bookkeeping of one :func:`moik.solve.solve_ik` call: tolerances, found solutions.
+"""Bookkeeping of one :func:`moik.solver.solve_ik` call: tolerances, found solutions.
 
 Every candidate, from any stage (batched Levenberg-Marquardt, least-squares
 polish, search), goes through :meth:`SolveSession.consider`, which recomputes
-its errors with the reference FK and keeps it only if it is within tolerance
-and distinct from the solutions already found.
+its errors with the reference FK (:func:`pose_errors`, the honest re-check)
+and keeps it only if it is within tolerance and distinct from the solutions
+already found.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import positive
 from moik.exceptions import ParameterError
-from moik.kinematics.batch_lm import batch_lm
-from moik.kinematics.polish import polish as polish_q
-from moik.kinematics.polish import pose_errors
-from moik.robots.chain import Robot
+from moik.kinematics.orientation import geodesic_error
+from moik.problems.targets import Target
+from moik.robots.chain import Robot, fk_reference
+from moik.solver.batch_lm import batch_lm
+from moik.solver.polish import polish as polish_q
 
 BATCH_ITERATIONS = 30  # Levenberg-Marquardt iterations of the first attempt
 
@@ -23,16 +26,37 @@ def tolerances(tol, robot: Robot) -> tuple[float, float]:
     """``(position, orientation)`` tolerances from ``solve_ik``'s ``tol``.
 
     A number ``t`` means ``t * robot.reach`` and ``t`` rad; a pair is taken as is.
+    Each must be a finite number > 0 (bools refused).
+
+    Raises:
+        ParameterError: Anything else, naming what was given.
     """
-    if np.ndim(tol) == 0:
-        tol_pos, tol_ori = float(tol) * robot.reach, float(tol)
-    elif np.shape(tol) == (2,):
-        tol_pos, tol_ori = (float(v) for v in tol)
-    else:
-        raise ParameterError(f"tol must be a number or (position, orientation), got {tol!r}")
-    if not (tol_pos > 0 and tol_ori > 0 and np.isfinite(tol_pos) and np.isfinite(tol_ori)):
-        raise ParameterError(f"tolerances must be positive and finite, got {tol!r}")
-    return tol_pos, tol_ori
+    if isinstance(tol, np.ndarray) and tol.ndim == 0:
+        tol = tol.item()
+    try:
+        shape = np.shape(tol)
+    except ValueError:  # ragged sequences
+        shape = None
+    if shape == ():
+        t = positive("tol", tol)
+        return t * robot.reach, t
+    if shape == (2,):
+        return (positive("tol[0] (position tolerance)", tol[0]),
+                positive("tol[1] (orientation tolerance)", tol[1]))
+    raise ParameterError(f"tol must be a number or (position, orientation), got {tol!r}")
+
+
+def pose_errors(robot: Robot, target: Target, Q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Position error (robot unit) and geodesic orientation error (rad), recomputed by FK.
+
+    Uses the straightforward reference FK (``fk_reference``), independent of the
+    kernel the optimizers ran on. Orientation error is 0 for position-only targets.
+    """
+    T = fk_reference(robot, np.atleast_2d(Q))
+    pos = np.linalg.norm(T[:, :3, 3] - target.position, axis=1)
+    if target.rotation is None:
+        return pos, np.zeros_like(pos)
+    return pos, geodesic_error(T[:, :3, :3], target.rotation)
 
 
 def joint_distance(robot: Robot, q: np.ndarray, others: np.ndarray) -> np.ndarray:

@@ -1,10 +1,10 @@
 """Batched multi-start Levenberg-Marquardt IK: many starts in one numpy pass.
 
-The residual and its exact Jacobian are those of :mod:`moik.kinematics.polish`
-(``[(p - p_t) / L, rotvec(R R_t^T)]`` and ``[J_v / L; J_l^{-1}(r) J_w]``), but
-computed for a whole batch of joint vectors at once: each iteration is one
-batched FK + Jacobian pass, one batched rotation log and one batched linear
-solve, whatever the number of starts. The step of start ``i`` is
+The residual and its exact Jacobian are those of :mod:`moik.solver.polish`
+(``[(p - p_t) / L, log(R R_t^T)]`` and ``[J_v / L; J_l^{-1}(r) J_w]``, from
+:mod:`moik.kinematics.so3`), computed for a whole batch of joint vectors at
+once: each iteration is one batched FK + Jacobian pass, one batched rotation
+log and one batched linear solve, whatever the number of starts. The step of start ``i`` is
 
     (J_i^T J_i + lambda_i (diag(J_i^T J_i) + mu I)) delta_i = -J_i^T r_i
 
@@ -17,7 +17,7 @@ whose step points outwards are held there and the step is solved for the
 others (an active-set projection, as in dogbox). Starts are dropped
 once within the stopping tolerances; every iterate is within the limits.
 
-This is a fast first attempt for :func:`moik.solve.solve_ik`; the global
+This is a fast first attempt for :func:`moik.solver.solve_ik`; the global
 search (metaheuristic + bounded least squares) remains the fallback.
 """
 
@@ -26,9 +26,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.spatial.transform import Rotation
 
 from moik.kinematics.jacobian import kernel_jacobian
+from moik.kinematics.so3 import pose_residual, pose_residual_jacobian
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
 
@@ -55,70 +55,12 @@ class BatchLMResult:
     n_eval: int
 
 
-def inverse_left_jacobians(phi: np.ndarray) -> np.ndarray:
-    """Batched ``J_l^{-1}(phi)`` of SO(3) for ``phi`` of shape ``(n, 3)``.
-
-    Same formula as :func:`moik.kinematics.polish.inverse_left_jacobian_so3`:
-    ``I - [phi]/2 + c(t) [phi]^2``, ``c = 1/t^2 - (1 + cos t) / (2 t sin t)``,
-    ``c -> 1/12`` as ``t -> 0``; the identity within 1e-6 of ``pi``.
-    """
-    t = np.sqrt(np.einsum("ij,ij->i", phi, phi))
-    small, near_pi = t < 1e-6, t > np.pi - 1e-6
-    ts = np.where(small | near_pi, 1.0, t)
-    c = 1.0 / ts**2 - (1.0 + np.cos(ts)) / (2.0 * ts * np.sin(ts))
-    c[small] = 1.0 / 12.0
-    c[near_pi] = 0.0
-    # [phi]^2 = phi phi^T - t^2 I, so the matrix is (1 - c t^2) I - [phi]/2 + c phi phi^T
-    out = c[:, None, None] * (phi[:, :, None] * phi[:, None, :])
-    diag = 1.0 - c * t**2
-    diag[near_pi] = 1.0
-    out[:, 0, 0] += diag
-    out[:, 1, 1] += diag
-    out[:, 2, 2] += diag
-    half = 0.5 * np.where(near_pi[:, None], 0.0, phi)
-    out[:, 0, 1] += half[:, 2]
-    out[:, 1, 0] -= half[:, 2]
-    out[:, 0, 2] -= half[:, 1]
-    out[:, 2, 0] += half[:, 1]
-    out[:, 1, 2] += half[:, 0]
-    out[:, 2, 1] -= half[:, 0]
-    return out
-
-
-def rotation_logs(M: np.ndarray) -> np.ndarray:
-    """Rotation vectors ``(n, 3)`` of rotation matrices ``M (n, 3, 3)``.
-
-    ``theta = atan2(|v|, trace(M) - 1)`` with ``v`` the skew part
-    (``|v| = 2 sin theta``), ``log = v theta / |v|`` (limit ``v / 2``); rows within
-    1e-3 rad of ``pi``, where ``v`` loses the axis, go to scipy's ``as_rotvec``.
-    """
-    v = np.stack([M[:, 2, 1] - M[:, 1, 2], M[:, 0, 2] - M[:, 2, 0], M[:, 1, 0] - M[:, 0, 1]],
-                 axis=1)
-    norm_v = np.sqrt(np.einsum("ij,ij->i", v, v))
-    theta = np.arctan2(norm_v, np.einsum("ijj->i", M) - 1.0)
-    scale = np.full_like(theta, 0.5)
-    nonzero = norm_v > 0
-    scale[nonzero] = theta[nonzero] / norm_v[nonzero]
-    out = v * scale[:, None]
-    near_pi = theta > np.pi - 1e-3
-    if near_pi.any():
-        out[near_pi] = Rotation.from_matrix(M[near_pi]).as_rotvec()
-    return out
-
-
 def _residuals(robot: Robot, target: Target, length: float, Q: np.ndarray):
     """Residuals ``(n, m)`` and exact Jacobians ``(n, m, dof)`` of a batch."""
     xy, z, p, J = kernel_jacobian(robot, Q)
-    r_pos = (p.T - target.position) / length
-    J_pos = J[:, :3] / length
-    if target.rotation is None:
-        return r_pos, J_pos
-    Rt = target.rotation  # M = R Rt^T, R = [x y z]: M_ab = x_a Rt_b0 + y_a Rt_b1 + z_a Rt_b2
-    M = (xy.real.T[:, :, None] * Rt[:, 0] + xy.imag.T[:, :, None] * Rt[:, 1]
-         + z.T[:, :, None] * Rt[:, 2])
-    r_rot = rotation_logs(M)
-    J_rot = inverse_left_jacobians(r_rot) @ J[:, 3:]
-    return np.hstack([r_pos, r_rot]), np.concatenate([J_pos, J_rot], axis=1)
+    R = None if target.rotation is None else np.stack([xy.real.T, xy.imag.T, z.T], axis=-1)
+    r = pose_residual(p.T, R, target.position, target.rotation, length)
+    return r, pose_residual_jacobian(J, r, length)
 
 
 def batch_lm(robot: Robot, target: Target, Q0: np.ndarray, *, length: float,

@@ -1,15 +1,15 @@
 """Local IK refinement: bounded least squares with the analytic Jacobian.
 
-The residual of a pose target is ``[(p(q) - p_t) / L, rotvec(R(q) R_t^T)]``:
+The residual of a pose target is ``[(p(q) - p_t) / L, log(R(q) R_t^T)]``:
 the position error divided by a characteristic length ``L`` (so that one
 robot-length of position error weighs like one radian) and the orientation
 error as a rotation vector in the base frame. Its Jacobian is
 ``[J_v / L; J_l^{-1}(r) J_w]`` with the inverse left Jacobian of SO(3), exact
 everywhere (so a non-zero minimum, an unreachable pose, is a true stationary
-point of the model and the solver stops there). Position-only targets
-use the first three rows. ``scipy.optimize.least_squares`` (``dogbox``: on these
-square-or-wide systems it converges in ~5-10 evaluations where ``trf`` often
-runs out of budget) keeps
+point of the model and the solver stops there); both come from
+:mod:`moik.kinematics.so3`. Position-only targets use the first three rows.
+``scipy.optimize.least_squares`` (``dogbox``: on these square-or-wide systems
+it converges in ~5-10 evaluations where ``trf`` often runs out of budget) keeps
 every iterate within the joint limits.
 """
 
@@ -19,9 +19,9 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.optimize import least_squares
-from scipy.spatial.transform import Rotation
 
 from moik.kinematics.jacobian import pose_and_jacobian
+from moik.kinematics.so3 import pose_residual, pose_residual_jacobian
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
 
@@ -47,24 +47,6 @@ class PolishResult:
     stationary: bool
 
 
-def inverse_left_jacobian_so3(phi: np.ndarray) -> np.ndarray:
-    """``J_l^{-1}(phi)``: maps a world-frame angular velocity to d log(R)/dt.
-
-    ``I - [phi]/2 + (1/t^2 - (1 + cos t) / (2 t sin t)) [phi]^2`` with ``t = |phi|``
-    (Barfoot, *State Estimation for Robotics*, Eq. 7.46); the series limit
-    ``1/12`` near 0; near ``pi`` (where it is singular) the identity is used.
-    """
-    t = float(np.linalg.norm(phi))
-    K = np.array([[0.0, -phi[2], phi[1]], [phi[2], 0.0, -phi[0]], [-phi[1], phi[0], 0.0]])
-    if t < 1e-6:
-        coef = 1.0 / 12.0
-    elif t > np.pi - 1e-6:
-        return np.eye(3)
-    else:
-        coef = 1.0 / t**2 - (1.0 + np.cos(t)) / (2.0 * t * np.sin(t))
-    return np.eye(3) - 0.5 * K + coef * (K @ K)
-
-
 class ResidualModel:
     """Residual and Jacobian of a target, sharing one FK pass per point.
 
@@ -83,16 +65,12 @@ class ResidualModel:
         T, J = pose_and_jacobian(self.robot, q)
         self.n_fk += 1
         self._q = np.array(q, dtype=float)
-        r_pos = (T[:3, 3] - self.target.position) / self.length
-        if self.target.rotation is None:
-            self._r, self._J = r_pos, J[:3] / self.length
-            return
-        r_rot = Rotation.from_matrix(T[:3, :3] @ self.target.rotation.T).as_rotvec()
-        self._r = np.concatenate([r_pos, r_rot])
-        self._J = np.vstack([J[:3] / self.length, inverse_left_jacobian_so3(r_rot) @ J[3:]])
+        r = pose_residual(T[None, :3, 3], T[None, :3, :3], self.target.position,
+                          self.target.rotation, self.length)
+        self._r, self._J = r[0], pose_residual_jacobian(J[None], r, self.length)[0]
 
     def residual(self, q: np.ndarray) -> np.ndarray:
-        """``[(p - p_t) / L, rotvec(R R_t^T)]`` (position rows only without rotation)."""
+        """``[(p - p_t) / L, log(R R_t^T)]`` (position rows only without rotation)."""
         self._update(q)
         return self._r
 
@@ -102,22 +80,7 @@ class ResidualModel:
         return self._J
 
 
-def pose_residual(robot: Robot, target: Target, length: float, q: np.ndarray) -> np.ndarray:
-    """Residual vector of ``q`` (see module docstring)."""
-    return ResidualModel(robot, target, length).residual(q)
-
-
-def pose_residual_jacobian(robot: Robot, target: Target, length: float,
-                           q: np.ndarray) -> np.ndarray:
-    """Jacobian of :func:`pose_residual` (``(3 or 6, dof)``), exact.
-
-    The orientation rows are ``J_l^{-1}(r) J_w``: ``d log(R R_t^T)`` under a
-    world-frame rotation ``dR = [w] R``.
-    """
-    return ResidualModel(robot, target, length).jacobian(q)
-
-
-def _stopper(target: Target, length: float, stop_position: float, stop_orientation: float):
+def _stopper(length: float, stop_position: float, stop_orientation: float):
     """least_squares callback: stop once the residual is well inside tolerance."""
     n_pos = 3
 
@@ -145,7 +108,7 @@ def polish(robot: Robot, target: Target, q0: np.ndarray, *, length: float,
             (robot unit) and the orientation error at most ``stop_orientation``
             (rad); 0 runs to ``least_squares``' own convergence tests.
     """
-    callback = _stopper(target, length, stop_position, stop_orientation)
+    callback = _stopper(length, stop_position, stop_orientation)
     span = robot.upper - robot.lower
     margin = np.minimum(1e-10 * np.maximum(span, 1.0), 0.25 * span)
     x0 = np.clip(q0, robot.lower + margin, robot.upper - margin)
@@ -172,19 +135,3 @@ def _result(robot: Robot, sol, q: np.ndarray, n_fk: int) -> PolishResult:
     # status -2: stopped by the callback (within tolerance): a stationary success
     stationary = sol.status in CONVERGED_STATUS or sol.status == -2
     return PolishResult(q, float(sol.cost), n_fk, stationary)
-
-
-def pose_errors(robot: Robot, target: Target, Q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Position error (robot unit) and geodesic orientation error (rad), recomputed by FK.
-
-    Uses the straightforward reference FK (``fk_reference``), independent of the
-    kernel the optimizers ran on. Orientation error is 0 for position-only targets.
-    """
-    from moik.kinematics.orientation import geodesic_error
-    from moik.robots.chain import fk_reference
-
-    T = fk_reference(robot, np.atleast_2d(Q))
-    pos = np.linalg.norm(T[:, :3, 3] - target.position, axis=1)
-    if target.rotation is None:
-        return pos, np.zeros_like(pos)
-    return pos, geodesic_error(T[:, :3, :3], target.rotation)

@@ -2,7 +2,7 @@
 
 Each target is first refined from the previous solution (a warm start keeps
 the arm on the same branch); only if that fails, or the step would exceed
-``max_step``, is the target solved globally with :func:`moik.solve.solve_ik`,
+``max_step``, is the target solved globally with :func:`moik.solver.solve_ik`,
 preferring the solution nearest the previous configuration. The largest joint
 step along the path is reported, so a branch jump cannot pass unnoticed.
 
@@ -14,17 +14,25 @@ limit half way would force a jump later).
 
 from __future__ import annotations
 
+import inspect
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
+from moik._validate import integer, keywords, positive
 from moik.exceptions import ParameterError
-from moik.kinematics.polish import polish, pose_errors
 from moik.problems.targets import as_target, check_unit_range
 from moik.robots.chain import Robot
-from moik.solve import solve_ik
-from moik.solve_session import tolerances
+from moik.solver.options import SearchOptions, seed_sequence
+from moik.solver.polish import polish
+from moik.solver.session import pose_errors, tolerances
+from moik.solver.solve_ik import solve_ik
+
+# solve_ik's defaults of the options solve_path passes on (one source: its signature)
+SOLVE_IK_DEFAULTS = {f.name: inspect.signature(solve_ik).parameters[f.name].default
+                     for f in fields(SearchOptions)}
+PASSED_OPTIONS = tuple(name for name in SOLVE_IK_DEFAULTS if name != "n_solutions")
 
 
 @dataclass(frozen=True)
@@ -68,11 +76,18 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
         max_step: Largest acceptable change of any joint between neighbouring
             targets; a warm-started solution beyond it is re-solved globally.
         seed: Base seed; target ``i`` uses ``SeedSequence(seed).spawn`` child ``i``.
-        tol: As in :func:`moik.solve.solve_ik`.
+        tol: As in :func:`moik.solver.solve_ik`.
         first_branches: Without ``q_start``: distinct solutions of the first
             target tried as the path's branch (1: take the first found).
-        **solve_options: Passed to :func:`moik.solve.solve_ik` (not ``seed``,
+        **solve_options: Passed to :func:`moik.solver.solve_ik` (not ``seed``,
             ``q_current``, ``n_solutions``).
+
+    Every argument, ``solve_options`` included, is validated before the first
+    target is solved (warm starts alone may never call ``solve_ik``).
+
+    Raises:
+        ParameterError: A bad value or an unknown option (the accepted ones listed).
+        UnknownNameError: An unknown algorithm or orientation metric.
     """
     t0 = time.perf_counter()
     targets = [as_target(t) for t in targets]
@@ -83,21 +98,20 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
     for key in ("seed", "q_current", "n_solutions"):
         if key in solve_options:
             raise ParameterError(f"solve_path sets {key!r} itself; do not pass it")
-    if max_step is not None and not max_step > 0:
-        raise ParameterError(f"max_step must be > 0, got {max_step!r}")
-    if isinstance(first_branches, bool) or int(first_branches) != first_branches \
-            or first_branches < 1:
-        raise ParameterError(f"first_branches must be an integer >= 1, got {first_branches!r}")
+    keywords("solve_path", solve_options, PASSED_OPTIONS)
+    SearchOptions(**{**SOLVE_IK_DEFAULTS, **solve_options})  # validated before any solve
+    max_step = None if max_step is None else positive("max_step", max_step)
+    first_branches = integer("first_branches", first_branches, minimum=1)
     tol_pos, tol_ori = tolerances(tol, robot)
     prev = None if q_start is None else robot.check_q(q_start, "q_start")
-    seeds = np.random.SeedSequence(seed).spawn(len(targets))
+    seeds = seed_sequence(seed).spawn(len(targets))
     Q, statuses, warm_flags, n_eval = [], [], [], 0
     warm = _WarmStart(robot, tol_pos, tol_ori, max_step)
     tracked: list[np.ndarray] = []  # warm-start solutions already found by the branch choice
     for i, target in enumerate(targets):
         q, status, used_warm = None, None, False
         if prev is not None:
-            q = tracked[i - 1] if i - 1 < len(tracked) else warm.step(target, prev)
+            q = tracked[i - 1] if 1 <= i <= len(tracked) else warm.step(target, prev)
             status, used_warm = ("solved", True) if q is not None else (None, False)
         elif first_branches > 1 and len(targets) > 1:
             first = solve_ik(robot, target, seed=seeds[i], tol=tol, n_solutions=first_branches,

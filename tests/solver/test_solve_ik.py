@@ -6,8 +6,8 @@ import pytest
 from moik.exceptions import ParameterError, UnknownNameError
 from moik.problems import Target, random_reachable_targets
 from moik.robots import get_robot
-from moik.solve import solve_ik
-from moik.solve_session import joint_distance
+from moik.solver import solve_ik
+from moik.solver.session import joint_distance
 
 
 @pytest.mark.parametrize("name", ["eosma7", "sawyer7", "irb2600"])
@@ -120,3 +120,50 @@ def test_bad_input():
         solve_ik(robot, reachable, front_method="eosma")
     with pytest.raises(ParameterError, match="starts must be an integer >= 0"):
         solve_ik(robot, reachable, starts=2.5)
+
+
+def test_every_argument_is_validated_whichever_stage_ends_the_solve():
+    """The batched first attempt solves these targets, so a check made only when
+    the search starts would never run: every bad value must raise all the same."""
+    robot = get_robot("eosma7")
+    reachable = random_reachable_targets(robot, 1, seed=0)[0]
+    assert solve_ik(robot, reachable, seed=0).n_eval <= 16 * 31  # solved by the first stage
+    position = reachable.position
+    with pytest.raises(UnknownNameError, match="unknown orientation metric 'bogus'.*geodesic"):
+        solve_ik(robot, position, orientation="bogus")
+    with pytest.raises(UnknownNameError, match="unknown orientation metric 'bogus'"):
+        solve_ik(robot, reachable, orientation="bogus")
+    with pytest.raises(ParameterError, match=r"pop_size must be an integer >= 2, got 2\.0"):
+        solve_ik(robot, reachable, pop_size=2.0)
+    with pytest.raises(ParameterError, match="n_solutions must be an integer >= 1, got True"):
+        solve_ik(robot, reachable, n_solutions=True)
+    with pytest.raises(ParameterError, match="pop_size must be an integer >= 2, got 1"):
+        solve_ik(robot, reachable, pop_size=1)
+    with pytest.raises(ParameterError, match="pop_size must be an integer >= 3, got 2"):
+        solve_ik(robot, reachable, pop_size=2)  # EOSMA's own minimum, checked up front too
+    bad = [("max_evals", 0, "max_evals must be an integer >= 1"),
+           ("starts", -1, "starts must be an integer >= 0"),
+           ("generations", 1.5, "generations must be an integer >= 1"),
+           ("candidates_per_round", 0, "candidates_per_round must be an integer >= 1"),
+           ("patience", False, "patience must be an integer >= 1"),
+           ("front_evals", 0, "front_evals must be an integer >= 1"),
+           ("distinct", 0.0, r"distinct must be a (positive )?finite number"),
+           ("distinct", float("inf"), r"distinct must be a (positive )?finite number"),
+           ("polish", 1, "polish must be True or False"),
+           ("seed", -1, "seed must be a non-negative integer"),
+           ("seed", 1.5, "seed must be a non-negative integer"),
+           ("tol", True, r"tol must be a (positive )?finite number"),
+           ("tol", -1e-9, r"tol must be a (positive )?finite number"),
+           ("tol", (1e-6, float("nan")),
+            r"tol\[1\] \(orientation tolerance\) must be a (positive )?finite")]
+    for name, value, message in bad:
+        with pytest.raises(ParameterError, match=message):
+            solve_ik(robot, reachable, **{name: value})
+
+
+def test_orientation_metric_names_are_case_insensitive():
+    robot = get_robot("eosma7")
+    target = random_reachable_targets(robot, 1, seed=0)[0]
+    a = solve_ik(robot, target, seed=0, starts=0, orientation="Geodesic")
+    b = solve_ik(robot, target, seed=0, starts=0)
+    np.testing.assert_array_equal(a.q, b.q)

@@ -1,43 +1,15 @@
-"""Batched Levenberg-Marquardt IK and its batched SO(3) pieces."""
+"""Batched Levenberg-Marquardt IK: same residuals as the single-start model, convergence, limits."""
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
-from scipy.spatial.transform import Rotation
 
 from moik import load_urdf
-from moik.kinematics.batch_lm import _residuals, batch_lm, inverse_left_jacobians, rotation_logs
-from moik.kinematics.polish import ResidualModel, inverse_left_jacobian_so3, pose_errors
 from moik.problems import random_reachable_targets
 from moik.problems.targets import Target
 from moik.robots import get_robot
-
-unit_vectors = st.lists(st.floats(-1, 1), min_size=3, max_size=3).filter(
-    lambda v: np.linalg.norm(v) > 1e-3)
-
-
-@settings(max_examples=200, deadline=None)
-@given(axis=unit_vectors, angle=st.one_of(st.floats(0, np.pi), st.floats(0, 1e-7),
-                                          st.floats(np.pi - 1e-5, np.pi)))
-def test_rotation_log_matches_scipy(axis, angle):
-    phi = np.asarray(axis) / np.linalg.norm(axis) * angle
-    M = Rotation.from_rotvec(phi).as_matrix()[None]
-    expected = Rotation.from_matrix(M).as_rotvec()
-    # at exactly pi the sign of the axis is arbitrary: compare rotations there
-    got = rotation_logs(M)
-    if angle > np.pi - 1e-5:
-        np.testing.assert_allclose(Rotation.from_rotvec(got).as_matrix(), M, atol=1e-9)
-    else:
-        np.testing.assert_allclose(got, expected, atol=1e-12)
-
-
-@settings(max_examples=100, deadline=None)
-@given(axis=unit_vectors, angle=st.one_of(st.floats(0, np.pi), st.floats(0, 1e-7)))
-def test_batched_inverse_left_jacobian_matches_single(axis, angle):
-    phi = np.asarray(axis) / np.linalg.norm(axis) * angle
-    np.testing.assert_allclose(inverse_left_jacobians(phi[None])[0],
-                               inverse_left_jacobian_so3(phi), atol=1e-12)
+from moik.solver.batch_lm import _residuals, batch_lm
+from moik.solver.polish import ResidualModel
+from moik.solver.session import pose_errors
 
 
 def _robots():

@@ -2,11 +2,11 @@
 
 First a fast attempt: batched Levenberg-Marquardt from ``q_current`` and from
 ``starts`` seeded random configurations, all in one numpy pass
-(:mod:`moik.kinematics.batch_lm`); most reachable poses end there. Otherwise,
+(:mod:`moik.solver.batch_lm`); most reachable poses end there. Otherwise,
 the memetic design of BioIK: a registered metaheuristic (EOSMA by default)
 searches the joint space with a small population for a few generations; the
 best distinct candidates are then refined with bounded least squares and the
-analytic Jacobian (:mod:`moik.kinematics.polish`). Rounds repeat with fresh
+analytic Jacobian (:mod:`moik.solver.polish`). Rounds repeat with fresh
 derived seeds until enough distinct solutions are found or the budget is spent.
 
 Honesty rules: the returned errors are recomputed with the reference FK (never
@@ -30,14 +30,12 @@ import numpy as np
 from pymoo.optimize import minimize
 
 from moik.algorithms import get_algorithm
-from moik.algorithms.registry import is_multi_objective
-from moik.exceptions import ParameterError
-from moik.kinematics.polish import pose_errors
 from moik.metrics.compromise import closest_to_utopia
 from moik.problems.ik import BiObjectiveIK, PoseIK, PositionIK
 from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.chain import Robot
-from moik.solve_session import SolveSession, is_distinct, tolerances
+from moik.solver.options import SearchOptions, seed_sequence
+from moik.solver.session import SolveSession, is_distinct, pose_errors, tolerances
 
 STATUSES = ("solved", "unreachable", "not-converged")
 UNREACHABLE_FACTOR = 1e3  # best error beyond this many tolerances after a full search
@@ -126,59 +124,58 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
         patience: Stop after this many search rounds without a new solution.
         front_method: Multi-objective algorithm for the front of unreachable poses.
         front_evals: Evaluation budget of that front.
+
+    Every argument is validated before any stage runs (:class:`SearchOptions`),
+    whichever stage would end the solve.
+
+    Raises:
+        ParameterError: A value out of range or of the wrong kind (integers
+            refuse bools and floats such as ``2.0``), or an algorithm of the
+            wrong kind for ``method`` / ``front_method``.
+        UnknownNameError: An unknown algorithm or orientation metric.
+        TargetError, ShapeError, NonFiniteError: A malformed target or ``q_current``.
     """
     t0 = time.perf_counter()
     target = as_target(target)
     check_unit_range(target, robot)
     tol_pos, tol_ori = tolerances(tol, robot)
-    if pop_size is None:
-        pop_size = 20 if n_solutions == 1 else 40
-    for name, value, low in (("n_solutions", n_solutions, 1), ("max_evals", max_evals, 1),
-                             ("starts", starts, 0),
-                             ("pop_size", pop_size, 2), ("generations", generations, 1),
-                             ("candidates_per_round", candidates_per_round, 1),
-                             ("patience", patience, 1)):
-        if int(value) != value or value < low:
-            raise ParameterError(f"{name} must be an integer >= {low}, got {value!r}")
-    if not distinct > 0:
-        raise ParameterError(f"distinct must be > 0, got {distinct!r}")
-    if is_multi_objective(method):  # also raises UnknownNameError for an unknown name
-        raise ParameterError(f"method must be a single-objective algorithm, got {method!r}")
-    if not is_multi_objective(front_method):
-        raise ParameterError(f"front_method must be a multi-objective algorithm, got "
-                             f"{front_method!r}")
-    session = SolveSession(robot, target, tol_pos, tol_ori, distinct, n_solutions)
-    seeds = seed if isinstance(seed, np.random.SeedSequence) else np.random.SeedSequence(seed)
-    if q_current is not None:
-        q_current = robot.check_q(q_current, "q_current")
-        if not (polish and session.local_batch(q_current[None], stop_after=1)):
-            session.refine(q_current, polish)
-    if polish and starts and len(session.found) < n_solutions:
-        Q0 = robot.random_q(starts, rng=np.random.default_rng(seeds.spawn(1)[0]))
+    opts = SearchOptions(method=method, orientation=orientation, polish=polish,
+                         n_solutions=n_solutions, max_evals=max_evals, starts=starts,
+                         pop_size=pop_size, generations=generations,
+                         candidates_per_round=candidates_per_round, distinct=distinct,
+                         patience=patience, front_method=front_method, front_evals=front_evals)
+    seeds = seed_sequence(seed)
+    q_current = None if q_current is None else robot.check_q(q_current, "q_current")
+    n_solutions, polish = opts.n_solutions, opts.polish
+    session = SolveSession(robot, target, tol_pos, tol_ori, opts.distinct, n_solutions)
+    if q_current is not None and not (polish and session.local_batch(q_current[None],
+                                                                     stop_after=1)):
+        session.refine(q_current, polish)
+    if polish and opts.starts and len(session.found) < n_solutions:
+        Q0 = robot.random_q(opts.starts, rng=np.random.default_rng(seeds.spawn(1)[0]))
         session.local_batch(Q0, stop_after=1 if n_solutions == 1 else None)
-    problem = _search_problem(robot, target, orientation)
+    problem = _search_problem(robot, target, opts.orientation)
     idle_rounds = 0
-    while (len(session.found) < n_solutions and session.n_eval < max_evals
-           and idle_rounds < patience):
+    while (len(session.found) < n_solutions and session.n_eval < opts.max_evals
+           and idle_rounds < opts.patience):
         n_found = len(session.found)
-        _search_round(session, problem, method, pop_size, generations, candidates_per_round,
-                      int(seeds.spawn(1)[0].generate_state(1)[0]), n_solutions, polish)
+        _search_round(session, problem, opts, int(seeds.spawn(1)[0].generate_state(1)[0]))
         idle_rounds = 0 if len(session.found) > n_found else idle_rounds + 1
-    searched_out = idle_rounds >= patience  # ended for lack of progress, not for budget
+    searched_out = idle_rounds >= opts.patience  # ended for lack of progress, not for budget
     if not session.found and polish:  # a near miss may only need more iterations
         session.refine(session.best[1], polish, max_nfev=FINAL_NFEV)
     front = front_q = None
     if not session.found and target.rotation is not None:
-        front, front_q = _front(session, orientation, seeds, front_method, front_evals, polish)
+        front, front_q = _front(session, opts, seeds)
     return _result(session, q_current, t0, searched_out, front, front_q)
 
 
-def _search_round(session: SolveSession, problem, method: str, pop_size: int, generations: int,
-                  candidates: int, run_seed: int, n_solutions: int, do_polish: bool) -> None:
+def _search_round(session: SolveSession, problem, opts: SearchOptions, run_seed: int) -> None:
     """One search run; the best candidate of the initial population is polished
     at once (early stop when that already solves the target), the best
-    ``candidates`` distinct ones after the last generation."""
-    algorithm = get_algorithm(method, pop_size=pop_size)
+    ``opts.candidates_per_round`` distinct ones after the last generation."""
+    generations, n_solutions = opts.generations, opts.n_solutions
+    algorithm = get_algorithm(opts.method, pop_size=opts.pop_size)
     algorithm.setup(problem, termination=("n_gen", generations), seed=run_seed)
     robot, gen = session.robot, 0
     while algorithm.has_next() and len(session.found) < n_solutions:
@@ -189,32 +186,31 @@ def _search_round(session: SolveSession, problem, method: str, pop_size: int, ge
         X, F = _population(algorithm)
         picked: list[np.ndarray] = []
         for i in np.argsort(F, kind="stable"):
-            if len(picked) == (1 if gen == 1 else candidates):
+            if len(picked) == (1 if gen == 1 else opts.candidates_per_round):
                 break
             if is_distinct(robot, X[i], picked + session.found, session.distinct):
                 picked.append(X[i])
         for q0 in picked:  # a quick try after gen 1; a full refinement at the end
-            session.refine(q0, do_polish, max_nfev=QUICK_NFEV if gen == 1 else 60)
+            session.refine(q0, opts.polish, max_nfev=QUICK_NFEV if gen == 1 else 60)
             if len(session.found) >= n_solutions:
                 break
     session.n_eval += algorithm.evaluator.n_eval
 
 
-def _front(session: SolveSession, orientation: str, seeds, front_method: str, front_evals: int,
-           do_polish: bool) -> tuple[np.ndarray, np.ndarray]:
+def _front(session: SolveSession, opts: SearchOptions, seeds) -> tuple[np.ndarray, np.ndarray]:
     """Pareto front of (position, orientation) errors; its member with the
     smallest combined error is refined too (a second, independent global search:
     if it reaches the pose after all, the target is solved)."""
     robot, target = session.robot, session.target
-    problem = BiObjectiveIK(robot, target, orientation=orientation)
-    algorithm = get_algorithm(front_method)
+    problem = BiObjectiveIK(robot, target, orientation=opts.orientation)
+    algorithm = get_algorithm(opts.front_method)
     run_seed = int(seeds.spawn(1)[0].generate_state(1)[0])
-    res = minimize(problem, algorithm, ("n_eval", front_evals), seed=run_seed,
+    res = minimize(problem, algorithm, ("n_eval", opts.front_evals), seed=run_seed,
                    copy_algorithm=False)
     session.n_eval += algorithm.evaluator.n_eval
     front, front_q = np.atleast_2d(res.F), np.atleast_2d(res.X)
     best = int(np.argmin(front[:, 0] / robot.reach + front[:, 1]))
-    session.refine(front_q[best], do_polish, max_nfev=FINAL_NFEV)
+    session.refine(front_q[best], opts.polish, max_nfev=FINAL_NFEV)
     return front, front_q
 
 

@@ -1,0 +1,13 @@
+"""The practical IK solver: :func:`solve_ik` for one target, :func:`solve_path` for a sequence.
+
+Modules: :mod:`~moik.solver.solve_ik` (the stages and the verdict),
+:mod:`~moik.solver.session` (per-solve bookkeeping, the honest FK re-check),
+:mod:`~moik.solver.batch_lm` (batched multi-start Levenberg-Marquardt),
+:mod:`~moik.solver.polish` (bounded least-squares refinement) and
+:mod:`~moik.solver.path` (a path kept on one branch).
+"""
+
+from moik.solver.path import PathResult, solve_path
+from moik.solver.solve_ik import IKResult, solve_ik
+
+__all__ = ["IKResult", "PathResult", "solve_ik", "solve_path"]

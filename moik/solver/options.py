@@ -1,0 +1,80 @@
+"""The search options of :func:`moik.solver.solve_ik`, validated together and up front.
+
+Every option is checked before any stage runs, so a bad value raises whichever
+stage would have ended the solve (the batched first attempt often solves a pose
+before the search, whose options would otherwise never be looked at).
+:func:`moik.solver.solve_path` validates the options it passes on the same way.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from moik._validate import choice, flag, integer, optional_integer, positive
+from moik._validate import seed as check_seed
+from moik.algorithms import get_algorithm
+from moik.algorithms.registry import is_multi_objective
+from moik.exceptions import ParameterError
+from moik.kinematics.orientation import available_metrics
+
+# (name, smallest value) of the integer options
+_COUNTS = (("n_solutions", 1), ("max_evals", 1), ("starts", 0), ("generations", 1),
+           ("candidates_per_round", 1), ("patience", 1), ("front_evals", 1))
+
+
+@dataclass(frozen=True, kw_only=True)
+class SearchOptions:
+    """Validated options of one :func:`~moik.solver.solve_ik` call (see its arguments).
+
+    Integers refuse bools and floats (``2.0``); ``orientation`` is an
+    orientation-metric name (case-insensitive, stored lower-case); ``pop_size``
+    ``None`` becomes 20, or 40 when several solutions are wanted, and must suit
+    ``method`` (EOSMA needs at least 3).
+
+    Raises:
+        ParameterError: A value out of its range or of the wrong kind, or an
+            algorithm of the wrong kind for ``method`` / ``front_method``.
+        UnknownNameError: An unknown algorithm or orientation-metric name,
+            listing the valid ones.
+    """
+
+    method: str
+    orientation: str
+    polish: bool
+    n_solutions: int
+    max_evals: int
+    starts: int
+    pop_size: int | None
+    generations: int
+    candidates_per_round: int
+    distinct: float
+    patience: int
+    front_method: str
+    front_evals: int
+
+    def __post_init__(self) -> None:
+        for name, low in _COUNTS:
+            object.__setattr__(self, name, integer(name, getattr(self, name), minimum=low))
+        pop_size = optional_integer("pop_size", self.pop_size, minimum=2)
+        if pop_size is None:
+            pop_size = 20 if self.n_solutions == 1 else 40
+        object.__setattr__(self, "pop_size", pop_size)
+        object.__setattr__(self, "distinct", positive("distinct", self.distinct))
+        object.__setattr__(self, "polish", flag("polish", self.polish))
+        object.__setattr__(self, "orientation",
+                           choice("orientation metric", self.orientation, available_metrics()))
+        if is_multi_objective(self.method):  # also raises UnknownNameError for an unknown name
+            raise ParameterError(f"method must be a single-objective algorithm, got "
+                                 f"{self.method!r}")
+        if not is_multi_objective(self.front_method):
+            raise ParameterError(f"front_method must be a multi-objective algorithm, got "
+                                 f"{self.front_method!r}")
+        get_algorithm(self.method, pop_size=pop_size)  # the algorithm's own limits on pop_size
+
+
+def seed_sequence(seed) -> np.random.SeedSequence:
+    """``seed`` validated (``None``, an integer >= 0 or a SeedSequence) as a ``SeedSequence``."""
+    seed = check_seed("seed", seed)
+    return seed if isinstance(seed, np.random.SeedSequence) else np.random.SeedSequence(seed)

@@ -69,16 +69,17 @@ def test_ik_config_needs_robot_and_checks_locked_joints_and_point_robots(tiny):
 
 
 def test_missing_extra_is_one_clear_error(monkeypatch, tmp_path):
-    from moik.experiments import benchmark, run_experiment
+    from moik.experiments import run_experiment
+    from moik.experiments.kinds import functions
 
     cfg = ExperimentConfig.from_dict(_bench(requires=["cec"]))
-    monkeypatch.setattr(benchmark.importlib.util, "find_spec", lambda name: None)
+    monkeypatch.setattr(functions.importlib.util, "find_spec", lambda name: None)
     with pytest.raises(ConfigError, match=r"needs the optional extra 'cec' .*moik\[cec\]"):
         run_experiment(cfg, out=tmp_path / "r")
 
 
 def test_constraint_violation_of_an_infeasible_design():
-    from moik.experiments.benchmark import constraint_violation
+    from moik.experiments.kinds.functions import constraint_violation
     from moik.problems.benchmarks import get_benchmark
 
     spring = get_benchmark("spring")

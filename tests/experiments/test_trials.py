@@ -2,8 +2,8 @@
 
 import numpy as np
 
-from moik.experiments.targets import build_targets
-from moik.experiments.trials import build_trials, run_trial, trial_seeds
+from moik.experiments.spec import trial_seeds
+from moik.experiments.trials import build_trials, run_trial
 
 
 def test_seeds_are_identical_across_algorithms(tiny_config):
@@ -28,7 +28,7 @@ def test_seeds_come_from_seedsequence_spawn(tiny_config):
 
 
 def test_random_targets_are_reachable_positions(tiny_config):
-    targets = build_targets(tiny_config)
+    targets = tiny_config.targets
     assert len(targets) == 2 and targets[0].rotation is None
 
 

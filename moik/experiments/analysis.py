@@ -2,11 +2,11 @@
 
 One function per analysis name of :data:`moik.experiments.config.ANALYSES`
 (the per-target ones in :mod:`moik.experiments.per_target`); each returns
-:class:`~moik.experiments.tables.Table` objects that :mod:`moik.experiments.report` prints
-as Markdown. Paper rows come from the config's ``paper`` dict (keys
-``summary``, ``hv``, ``joint_motion``, ``compromise``, ``signed_rank``) and are
-marked with its ``citation``. Only trials with ``status="ok"`` enter a table;
-failed ones are counted in a note.
+:class:`~moik.experiments.tables.Table` objects that
+:mod:`moik.experiments.report` prints as Markdown. Paper rows come from the
+config's ``paper`` dict (keys ``summary``, ``hv``, ``joint_motion``,
+``compromise``, ``signed_rank``) and are marked with its ``citation``. Only
+trials with ``status="ok"`` enter a table; failed ones are counted in a note.
 """
 
 from __future__ import annotations

@@ -7,6 +7,7 @@ Subcommands:
     moik solve ROBOT --target x y z [--euler a b c [--deg]] ...   solve IK
     moik experiment list             list the papers' experiments
     moik experiment run NAME [--quick] [--workers N] [--resume] [--out DIR] [--dask-scheduler A]
+    moik experiment run --config FILE [...]   run your own config file
     moik report DIR                  Markdown report of a results folder
 """
 
@@ -19,6 +20,7 @@ import sys
 import numpy as np
 
 from moik.exceptions import MoikError
+from moik.experiments.commands import add_subcommands
 from moik.kinematics.orientation import eosma_euler, zyx_euler
 from moik.robots import available_robots, get_robot
 
@@ -137,8 +139,6 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--n-solutions", type=int, default=1, help="distinct solutions wanted")
     p.add_argument("--plot", metavar="FILE", help="save a 3-D drawing (FILE.png and .pdf)")
     p.set_defaults(func=_cmd_solve)
-    from moik.experiments.commands import add_subcommands
-
     add_subcommands(sub)
     return parser
 

@@ -1,9 +1,12 @@
 """Experiments that regenerate the papers' tables and figures.
 
-Configs (one file per table/figure in ``experiments/``) are validated into
-:class:`ExperimentConfig`; :func:`run_experiment` runs their trials (serially,
-in a process pool or on Dask) and stores each as it finishes in a
-:class:`ResultStore`; :func:`write_report` writes the Markdown report.
+Configs (one file per table/figure in the repository's ``experiments/``,
+shipped as ``moik.paper_configs``; see :mod:`moik.experiments.registry`) are
+validated into :class:`ExperimentConfig` by their kind
+(:mod:`moik.experiments.kinds`: IK problems on robot arms, benchmark
+functions); :func:`run_experiment` runs their trials (serially, in a process
+pool or on Dask) and stores each as it finishes in a :class:`ResultStore`;
+:func:`write_report` writes the Markdown report.
 :func:`solve_until_success` is the EOSMA paper's re-solve protocol.
 """
 

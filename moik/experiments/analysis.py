@@ -1,21 +1,21 @@
 """Tables computed from a results folder, with the paper's numbers side by side.
 
-One function per analysis name of :data:`moik.experiments.config.ANALYSES`;
-each returns :class:`Table` objects that :mod:`moik.experiments.report` prints
-as Markdown. Paper rows come from the config's ``paper`` dict (keys
-``summary``, ``hv``, ``joint_motion``, ``compromise``, ``signed_rank``) and are
-marked with its ``citation``. Only trials with ``status="ok"`` enter a table;
-failed ones are counted in a note.
+One function per analysis name of :data:`moik.experiments.config.ANALYSES`
+(the per-target ones in :mod:`moik.experiments.per_target`); each returns
+:class:`~moik.experiments.tables.Table` objects that
+:mod:`moik.experiments.report` prints as Markdown. Paper rows come from the
+config's ``paper`` dict (keys ``summary``, ``hv``, ``joint_motion``,
+``compromise``, ``signed_rank``) and are marked with its ``citation``. Only
+trials with ``status="ok"`` enter a table; failed ones are counted in a note.
 """
 
 from __future__ import annotations
 
-from collections import defaultdict
-from dataclasses import dataclass, field
-
 import numpy as np
 
+from moik.experiments.per_target import FUNCTIONS
 from moik.experiments.store import ResultStore
+from moik.experiments.tables import Results, Table, fmt
 from moik.metrics import (
     friedman_ranks,
     hypervolume,
@@ -25,63 +25,6 @@ from moik.metrics import (
     success_rate,
     summarize,
 )
-
-
-@dataclass
-class Table:
-    """A titled table of formatted cells."""
-
-    title: str
-    header: list[str]
-    rows: list[list[str]]
-    notes: list[str] = field(default_factory=list)
-
-
-def fmt(value, digits: int = 4) -> str:
-    """A number as the report prints it (``-`` for missing)."""
-    if value is None or (isinstance(value, float) and np.isnan(value)):
-        return "-"
-    if isinstance(value, (int, np.integer)) and not isinstance(value, bool):
-        return str(value)
-    if isinstance(value, (float, np.floating)):
-        return f"{value:.{digits}g}"
-    return str(value)
-
-
-class Results:
-    """The records of a results folder grouped for analysis."""
-
-    def __init__(self, store: ResultStore):
-        self.store = store
-        self.meta = store.meta
-        self.config = store.meta["config"]
-        self.paper = self.config.get("paper", {})
-        self.citation = "paper"
-        cite = self.paper.get("citation")
-        self.paper_note = f"paper rows: {cite}" if cite else None
-        records = store.records()
-        self.ok = [r for r in records if r.get("status") == "ok"]
-        self.failed = [r for r in records if r.get("status") != "ok"]
-        labels = self.meta.get("algorithms") or [a.get("label", a["name"])
-                                                 for a in self.config["algorithms"]]
-        self.labels = [lab for lab in labels if any(r["algorithm"] == lab for r in self.ok)]
-        self.by_label: dict[str, list[dict]] = defaultdict(list)
-        for r in sorted(self.ok, key=lambda r: (r["target"], r["run"])):
-            self.by_label[r["algorithm"]].append(r)
-
-    def values(self, label: str, key: str) -> np.ndarray:
-        """``key`` of every ok record of ``label`` (missing/None as inf), target-major order."""
-        return np.array([np.inf if r.get(key) is None else r[key] for r in self.by_label[label]],
-                        dtype=float)
-
-    def notes(self) -> list[str]:
-        """Counts of finished and failed trials."""
-        n_planned = len(self.meta.get("trials", []))
-        out = [f"{len(self.ok)} of {n_planned} planned trials finished"]
-        if self.failed:
-            out.append(f"{len(self.failed)} trials failed (status error), e.g. "
-                       f"{self.failed[0]['trial']}: {self.failed[0].get('error')}")
-        return out
 
 
 def _paper(res: Results, key: str) -> dict:
@@ -263,8 +206,6 @@ ANALYSIS_FUNCTIONS = {"summary": summary_table, "ranksum": ranksum_table,
 
 def analyze(store: ResultStore) -> tuple[Results, list[Table]]:
     """All tables the experiment's config asks for."""
-    from moik.experiments.per_target import FUNCTIONS
-
     res = Results(store)
     tables: list[Table] = []
     if res.ok:

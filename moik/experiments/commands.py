@@ -5,24 +5,25 @@ from __future__ import annotations
 import argparse
 import sys
 
+from moik._validate import integer
 from moik.exceptions import MoikError
+from moik.experiments.config import load_config
+from moik.experiments.registry import ENV_VAR, experiment_files, get_experiment
+from moik.experiments.report import write_report
+from moik.experiments.runner import default_out, run_experiment
 
 
 def cmd_list(args: argparse.Namespace) -> int:
     """Print every experiment with its trial counts (full / quick) and title."""
-    from moik.experiments.registry import experiment_files, get_experiment
-    from moik.experiments.targets import build_targets
-
     files = experiment_files()
     if not files:
-        print("no experiments found (see MOIK_EXPERIMENTS_PATH)")
+        print(f"no experiments found (see {ENV_VAR})")
         return 0
     print(f"{'name':<16}{'trials':>8}{'quick':>7}  title")
     for name in files:
         try:
             cfg = get_experiment(name)
-            counts = [len(c.algorithms) * len(build_targets(c)) * c["runs"]
-                      for c in (cfg, cfg.quick())]
+            counts = [len(c.algorithms) * len(c.targets) * c["runs"] for c in (cfg, cfg.quick())]
             print(f"{name:<16}{counts[0]:>8}{counts[1]:>7}  {cfg['title']}")
         except MoikError as exc:
             print(f"{name:<16}{'-':>8}{'-':>7}  INVALID: {exc}")
@@ -30,11 +31,9 @@ def cmd_list(args: argparse.Namespace) -> int:
 
 
 def cmd_run(args: argparse.Namespace) -> int:
-    """Run one experiment; Ctrl-C keeps the stored trials and says how to resume."""
-    from moik.experiments.registry import get_experiment
-    from moik.experiments.runner import default_out, run_experiment
-
-    config = get_experiment(args.name)
+    """Run one experiment (by name or ``--config FILE``); Ctrl-C keeps the stored trials."""
+    config = load_config(args.config) if args.config else get_experiment(args.name)
+    what = f"--config {args.config}" if args.config else args.name
     out = args.out or default_out(config.quick() if args.quick else config)
     try:
         summary = run_experiment(config, out=out, quick=args.quick, workers=args.workers,
@@ -42,7 +41,7 @@ def cmd_run(args: argparse.Namespace) -> int:
                                  progress=not args.no_progress, limit=args.limit)
     except KeyboardInterrupt:
         print(f"\nmoik: interrupted; finished trials are stored in {out}; continue with "
-              f"`moik experiment run {args.name}{' --quick' if args.quick else ''} --out {out} "
+              f"`moik experiment run {what}{' --quick' if args.quick else ''} --out {out} "
               "--resume`", file=sys.stderr)
         return 130
     print(f"{config.name}: ran {summary.ran} trial(s) ({summary.failed} failed), "
@@ -57,21 +56,17 @@ def cmd_run(args: argparse.Namespace) -> int:
 
 def cmd_report(args: argparse.Namespace) -> int:
     """Write the Markdown report of a results folder."""
-    from moik.experiments.report import write_report
-
     path = write_report(args.folder, figures=not args.no_figures, output=args.output)
     print(f"report written to {path}")
     return 0
 
 
 def _positive_int(text: str) -> int:
+    """An argparse type: ``text`` as an integer >= 1 (the rule of :mod:`moik._validate`)."""
     try:
-        value = int(text)
-    except ValueError:
+        return integer("value", int(text), minimum=1)
+    except ValueError:  # int() failed, or ParameterError (a ValueError): below 1
         raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
-    return value
 
 
 def add_subcommands(sub) -> None:
@@ -85,7 +80,12 @@ def add_subcommands(sub) -> None:
     q = esub.add_parser("run", help="run an experiment; results are stored trial by trial",
                         description="Run an experiment. Each finished trial is stored at once; "
                                     "Ctrl-C loses only the trials in flight; --resume continues.")
-    q.add_argument("name", help="experiment name (see `moik experiment list`) or config file")
+    which = q.add_mutually_exclusive_group(required=True)
+    which.add_argument("name", nargs="?",
+                       help="experiment name (see `moik experiment list`) or config file")
+    which.add_argument("--config", metavar="FILE",
+                       help="run the experiment defined by this config file (your own; the "
+                            f"folders in {ENV_VAR} are listed by name too)")
     q.add_argument("--quick", action="store_true", help="the seconds-long smoke-test size")
     q.add_argument("--workers", type=_positive_int, default=None,
                    help="worker processes (default: the number of cores; 1 = serial)")

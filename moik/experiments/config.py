@@ -5,19 +5,17 @@ An experiment is one Python file in an experiments folder that defines a dict
 
 - ``name`` (lower-case, ``-`` separated; the file is ``name`` with ``_`` for
   ``-``), ``title``, ``source`` (paper, table and figures reproduced);
-- ``robot``: catalog name;
-- ``problem``: ``{"kind": "position" | "pose" | "bi-objective", "orientation":
-  metric, "weights": [w1, w2], "displacement_weight": w, "q_start_deg": [...],
-  "locked_joints_deg": [...]}`` (see :mod:`moik.experiments.targets`), or
-  ``{"kind": "benchmark", "names": [...]}`` with no robot and no targets (see
-  :mod:`moik.experiments.benchmark`; ``requires`` lists its optional extras);
-- ``targets``: ``{"kind": "random", "n", "seed", "with_orientation"}``,
-  ``{"kind": "fixed", "points": [{"name", "position" or "fk_q_deg",
-  "euler_deg", "convention", "hv_ref_point"}]}`` or ``{"kind": "circle",
-  "center", "radius", "n_points", "euler_deg", "convention"}``;
+- ``problem`` and, for IK experiments, ``robot`` and ``targets``: their keys
+  depend on the experiment kind, chosen once from ``problem.kind``
+  (:mod:`moik.experiments.kinds`): ``"position"``, ``"pose"``,
+  ``"bi-objective"`` are IK problems on a catalog robot
+  (:mod:`moik.experiments.kinds.ik`); ``"benchmark"`` lists test functions
+  and design problems, with no robot and no targets
+  (:mod:`moik.experiments.kinds.functions`; ``requires`` lists its optional
+  extras);
 - ``algorithms``: list of ``{"name": registry name, "label": shown name,
   "params": {...}, "optional": bool}`` (an optional algorithm that is not
-  registered is left out: baselines that later issues add); ``pop_size``,
+  registered is left out); ``pop_size``,
   ``archive_size`` (multi-objective only), ``n_gen``, ``runs`` (per target)
   and ``seed`` apply to all;
 - ``protocol`` (optional): ``{"threshold", "max_failures"}``, the EOSMA
@@ -27,8 +25,9 @@ An experiment is one Python file in an experiments folder that defines a dict
 - ``paper``: the paper's numbers, with their citation, for the report;
 - ``quick``: overrides (merged into the dict) for the seconds-long smoke size.
 
-Unknown keys, wrong types and values out of range raise :class:`ConfigError`
-naming the file and the key.
+Validation builds what a run uses (the robot, targets and pymoo problems of
+the kind, and every algorithm through the registry). Unknown keys, wrong types
+and values out of range raise :class:`ConfigError` naming the file and the key.
 """
 
 from __future__ import annotations
@@ -39,12 +38,15 @@ import json
 import re
 import runpy
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from moik.algorithms import available, get_algorithm
+from moik.algorithms.registry import accepted_parameters, is_multi_objective
 from moik.exceptions import ConfigError, MoikError
-from moik.experiments.targets import check_problem, check_targets
+from moik.experiments.checks import check_keys, flag, integer, number
+from moik.experiments.kinds import KINDS, kind_of
 
 ANALYSES = ("summary", "ranksum", "friedman-hv", "joint-motion", "compromise", "signed-rank",
             "per-target", "per-target-ranksum", "branches")
@@ -56,37 +58,6 @@ _TOP_KEYS = {"name", "title", "source", "robot", "problem", "targets", "algorith
 _REQUIRED = ("name", "title", "source", "problem", "algorithms", "pop_size", "n_gen", "runs",
              "seed")
 _NAME = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
-
-
-def check_int(where: str, value: Any, lo: int) -> int:
-    """``value`` as an int >= ``lo`` (bools rejected), else :class:`ConfigError`."""
-    if isinstance(value, bool) or not isinstance(value, int) or value < lo:
-        raise ConfigError(f"{where} must be an integer >= {lo}, got {value!r}")
-    return value
-
-
-def check_float(where: str, value: Any, *, positive: bool = False) -> float:
-    """``value`` as a finite float (> 0 if ``positive``), else :class:`ConfigError`."""
-    ok = isinstance(value, (int, float)) and not isinstance(value, bool)
-    if not ok or value != value or value in (float("inf"), float("-inf")) or (
-            positive and value <= 0):
-        kind = "a finite number > 0" if positive else "a finite number"
-        raise ConfigError(f"{where} must be {kind}, got {value!r}")
-    return float(value)
-
-
-def check_keys(where: str, spec: Any, allowed: set[str], required: tuple[str, ...] = ()) -> dict:
-    """``spec`` as a dict with only ``allowed`` keys and all ``required`` ones."""
-    if not isinstance(spec, Mapping):
-        raise ConfigError(f"{where} must be a dict, got {type(spec).__name__}")
-    unknown = sorted(set(spec) - allowed)
-    if unknown:
-        raise ConfigError(f"{where}: unknown key(s) {', '.join(unknown)}; "
-                          f"expected some of: {', '.join(sorted(allowed))}")
-    missing = [k for k in required if k not in spec]
-    if missing:
-        raise ConfigError(f"{where}: missing key(s) {', '.join(missing)}")
-    return dict(spec)
 
 
 def merge(base: Mapping, overrides: Mapping) -> dict:
@@ -112,19 +83,14 @@ class AlgorithmSpec:
 
 def _algorithms(where: str, raw: Any, cfg: Mapping
                 ) -> tuple[tuple[AlgorithmSpec, ...], tuple[str, ...]]:
-    from moik.algorithms import available, get_algorithm
-    from moik.algorithms.registry import accepted_parameters
-
     if not isinstance(raw, list) or not raw:
         raise ConfigError(f"{where} must be a non-empty list of algorithms")
-    if any(isinstance(e, Mapping) and e.get("optional", False) not in (True, False) for e in raw):
-        raise ConfigError(f"{where}: optional must be true or false")
     specs, labels, skipped = [], set(), []
     for i, entry in enumerate(raw):
         w = f"{where}[{i}]"
         entry = check_keys(w, entry, {"name", "label", "params", "optional"}, ("name",))
         name = entry["name"]
-        if entry.get("optional", False) and name not in available():
+        if flag(f"{w}.optional", entry.get("optional", False)) and name not in available():
             skipped.append(name)
             continue
         if name not in available():
@@ -140,11 +106,11 @@ def _algorithms(where: str, raw: Any, cfg: Mapping
         if cfg.get("archive_size") is not None and "archive_size" in accepted_parameters(name):
             params.setdefault("archive_size", cfg["archive_size"])
         try:
-            algorithm = get_algorithm(name, **params)
+            get_algorithm(name, **params)
         except MoikError as exc:
             raise ConfigError(f"{w}.params: {exc}") from None
-        multi = ".moo." in type(algorithm).__module__
-        specs.append(AlgorithmSpec(name=name, label=label, params=params, multi_objective=multi))
+        specs.append(AlgorithmSpec(name=name, label=label, params=params,
+                                   multi_objective=is_multi_objective(name)))
     if not specs:
         raise ConfigError(f"{where}: none of the algorithms is registered")
     return tuple(specs), tuple(skipped)
@@ -159,6 +125,9 @@ class ExperimentConfig:
         raw: The configuration dict as validated (without ``quick``).
         quick_overrides: The ``quick`` dict.
         algorithms: The algorithms, in report order.
+        kind: The experiment kind (a key of :data:`moik.experiments.kinds.KINDS`).
+        targets: The targets, built and validated (IK poses, or the benchmark
+            problems that take their place), in trial order.
         skipped: Optional algorithms left out because they are not registered.
         is_quick: Whether this is the quick size.
         path: The file it came from, if any.
@@ -168,6 +137,8 @@ class ExperimentConfig:
     raw: dict
     quick_overrides: dict
     algorithms: tuple[AlgorithmSpec, ...]
+    kind: str
+    targets: tuple = field(repr=False, compare=False)
     skipped: tuple[str, ...] = ()
     is_quick: bool = False
     path: str | None = None
@@ -189,37 +160,25 @@ class ExperimentConfig:
         for key in ("title", "source"):
             if not isinstance(cfg[key], str) or not cfg[key]:
                 raise ConfigError(f"{where}: {key} must be a non-empty string")
-        from moik.experiments.benchmark import check_benchmark_experiment, is_benchmark
-        from moik.robots import available_robots
-
-        if is_benchmark(cfg["problem"]):
-            cfg["problem"] = check_benchmark_experiment(where, cfg)
-        elif "robot" not in cfg or "targets" not in cfg or "requires" in cfg:
-            raise ConfigError(f"{where}: an IK experiment needs 'robot' and 'targets' (and takes "
-                              "no 'requires')")
-        elif cfg["robot"] not in available_robots():
-            raise ConfigError(f"{where}: robot: unknown robot {cfg['robot']!r}; expected one of: "
-                              f"{', '.join(available_robots())}")
-        check_int(f"{where}: pop_size", cfg["pop_size"], 1)
+        kind = kind_of(f"{where}: problem", cfg["problem"])
+        integer(f"{where}: pop_size", cfg["pop_size"], 1)
         if cfg.get("archive_size") is not None:
-            check_int(f"{where}: archive_size", cfg["archive_size"], 1)
-        check_int(f"{where}: n_gen", cfg["n_gen"], 1)
-        check_int(f"{where}: runs", cfg["runs"], 1)
-        check_int(f"{where}: seed", cfg["seed"], 0)
-        if not is_benchmark(cfg["problem"]):
-            cfg["problem"] = check_problem(f"{where}: problem", cfg["problem"], cfg["robot"])
-            check_targets(f"{where}: targets", cfg["targets"], cfg["problem"])
+            integer(f"{where}: archive_size", cfg["archive_size"], 1)
+        integer(f"{where}: n_gen", cfg["n_gen"], 1)
+        integer(f"{where}: runs", cfg["runs"], 1)
+        integer(f"{where}: seed", cfg["seed"], 0)
+        cfg["problem"], targets = KINDS[kind].check_config(where, cfg)
         problem = cfg["problem"]
         algorithms, skipped = _algorithms(f"{where}: algorithms", cfg["algorithms"], cfg)
         want_mo = problem["kind"] == "bi-objective"
         for a in algorithms:
             if a.multi_objective != want_mo:
-                kind = "multi-objective" if a.multi_objective else "single-objective"
-                raise ConfigError(f"{where}: algorithm {a.name!r} is {kind} but the problem kind "
+                which = "multi-objective" if a.multi_objective else "single-objective"
+                raise ConfigError(f"{where}: algorithm {a.name!r} is {which} but the problem kind "
                                   f"is {problem['kind']!r}")
         _check_rest(where, cfg, algorithms, want_mo)
-        return cls(name=name, raw=cfg, quick_overrides=quick, algorithms=algorithms,
-                   skipped=skipped, is_quick=is_quick, path=path)
+        return cls(name=name, raw=cfg, quick_overrides=quick, algorithms=algorithms, kind=kind,
+                   targets=targets, skipped=skipped, is_quick=is_quick, path=path)
 
     def quick(self) -> ExperimentConfig:
         """The quick (smoke-test) size: ``raw`` with the ``quick`` overrides merged."""
@@ -250,10 +209,10 @@ def _check_rest(where: str, cfg: dict, algorithms: tuple[AlgorithmSpec, ...],
             raise ConfigError(f"{where}: protocol applies to single-objective problems only")
         p = check_keys(f"{where}: protocol", cfg["protocol"], {"threshold", "max_failures"},
                        ("threshold", "max_failures"))
-        check_float(f"{where}: protocol.threshold", p["threshold"], positive=True)
-        check_int(f"{where}: protocol.max_failures", p["max_failures"], 1)
+        number(f"{where}: protocol.threshold", p["threshold"], positive=True)
+        integer(f"{where}: protocol.max_failures", p["max_failures"], 1)
     if "success_threshold" in cfg:
-        check_float(f"{where}: success_threshold", cfg["success_threshold"], positive=True)
+        number(f"{where}: success_threshold", cfg["success_threshold"], positive=True)
     analyses = cfg.get("analyses", ["summary"])
     if not isinstance(analyses, list) or any(a not in ANALYSES for a in analyses):
         raise ConfigError(f"{where}: analyses must be a list of: {', '.join(ANALYSES)}; "

@@ -25,7 +25,8 @@ import time
 from collections.abc import Iterator, Sequence
 
 from moik.exceptions import ParameterError
-from moik.experiments.trials import TrialSpec, run_trial
+from moik.experiments.spec import TrialSpec
+from moik.experiments.trials import run_trial
 
 
 def run_serial(specs: Sequence[TrialSpec]) -> Iterator[tuple[dict, dict]]:

@@ -18,8 +18,11 @@ from pathlib import Path
 
 import numpy as np
 
+import moik.plotting as mp
 from moik.exceptions import MoikError
-from moik.experiments.analysis import Results
+from moik.experiments.tables import Results
+from moik.metrics import ranksum_pvalues
+from moik.robots import get_robot
 
 
 def _curves(res: Results, labels) -> dict[str, np.ndarray]:
@@ -41,9 +44,6 @@ def _per_target(res: Results, lab: str, key: str) -> np.ndarray:
 
 def _plans(res: Results) -> list[tuple[str, str, Callable]]:
     """(file stem, caption, draw(save_stem)) of every figure that applies."""
-    import moik.plotting as mp
-    from moik.robots import get_robot
-
     cfg, labels, plans = res.config, res.labels, []
     robot = get_robot(cfg["robot"])
     unit = robot.unit
@@ -68,8 +68,6 @@ def _plans(res: Results) -> list[tuple[str, str, Callable]]:
         plans.append(("times", "Solve time per target", lambda s: mp.plot_solve_times(
             times, save=s)))
     if "ranksum" in analyses:
-        from moik.metrics import ranksum_pvalues
-
         samples = {lab: np.nan_to_num(res.values(lab, "best_f"), posinf=1e300) for lab in labels}
         if cfg["proposed"] in samples and len(samples) > 1:
             pv = ranksum_pvalues(samples, cfg["proposed"])
@@ -120,7 +118,10 @@ def _plans(res: Results) -> list[tuple[str, str, Callable]]:
 
 
 def make_figures(res: Results, folder: Path) -> tuple[list[tuple[str, Path]], list[str]]:
-    """Draw the figures into ``folder``; returns ``[(caption, png path)]`` and notes."""
+    """Draw the figures into ``folder``; returns ``[(caption, png path)]`` and notes.
+
+    matplotlib is imported here, not at module level: only drawing needs it.
+    """
     try:
         import matplotlib
 
@@ -129,7 +130,7 @@ def make_figures(res: Results, folder: Path) -> tuple[list[tuple[str, Path]], li
 
         plans = _plans(res)
     except (ImportError, AttributeError) as exc:
-        return [], [f"figures skipped: moik.plotting is not available ({exc})"]
+        return [], [f"figures skipped: matplotlib is not available ({exc})"]
     except MoikError as exc:
         return [], [f"figures skipped: {exc}"]
     folder.mkdir(parents=True, exist_ok=True)

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from moik.experiments.analysis import Results, Table, fmt
+from moik.experiments.tables import Results, Table, fmt
 from moik.metrics import ranksum_pvalues, summarize
 
 DISTINCT = 0.1
@@ -163,4 +163,4 @@ def branches_table(res: Results) -> list[Table]:
 
 FUNCTIONS = {"per-target": per_target_table, "per-target-ranksum": per_target_ranksum_table,
              "branches": branches_table}
-"""Analysis name -> table function, merged into :mod:`moik.experiments.analysis`."""
+"""Analysis name -> table function, merged into those of :mod:`moik.experiments.analysis`."""

@@ -25,6 +25,7 @@ from pymoo.core.problem import Problem
 from pymoo.core.result import Result
 from pymoo.optimize import minimize
 
+from moik._validate import integer
 from moik.exceptions import ParameterError
 
 
@@ -80,8 +81,7 @@ def solve_until_success(problem: Problem, algorithm_factory: Callable[[], Algori
     """
     if not (np.isfinite(threshold) and threshold > 0):
         raise ParameterError(f"threshold must be a finite number > 0, got {threshold!r}")
-    if isinstance(max_failures, bool) or not isinstance(max_failures, int) or max_failures < 1:
-        raise ParameterError(f"max_failures must be an integer >= 1, got {max_failures!r}")
+    max_failures = integer("max_failures", max_failures, minimum=1)
     root = seed if isinstance(seed, np.random.SeedSequence) else np.random.SeedSequence(seed)
     children = root.spawn(max_failures)
     best, best_f, run_f, seeds = None, float("inf"), [], []

@@ -1,28 +1,59 @@
 """Where experiments are found: one config file per table or figure.
 
-The folders searched, in order: the ``experiments/`` folder next to the moik
-package (the repository's), then every folder in the environment variable
-``MOIK_EXPERIMENTS_PATH`` (``os.pathsep``-separated). Each ``*.py`` file not
-starting with ``_`` is one experiment named after the file (``eosma_table5.py``
--> ``eosma-table5``). Adding an experiment = dropping a file there; a later
-folder's file replaces an earlier one of the same name. ``NAME`` may also be
-the path of a config file.
+The folders searched, in order:
+
+1. the papers' configs shipped with moik: the package ``moik.paper_configs``,
+   which is the repository's top-level ``experiments/`` folder mapped into the
+   package (``pyproject.toml``), found with :mod:`importlib.resources`; in a
+   source checkout whose install predates that mapping, the checkout's
+   ``experiments/`` folder;
+2. every folder in the environment variable ``MOIK_EXPERIMENTS_PATH``
+   (:data:`ENV_VAR`, ``os.pathsep``-separated): a user's own configs.
+
+Each ``*.py`` file not starting with ``_`` is one experiment named after the
+file (``eosma_table5.py`` -> ``eosma-table5``). Adding an experiment = dropping
+a file in such a folder; a later folder's file replaces an earlier one of the
+same name. :func:`get_experiment` also takes the path of a config file
+(``moik experiment run --config FILE``).
 """
 
 from __future__ import annotations
 
 import os
+from importlib import resources
 from pathlib import Path
 
 from moik.exceptions import UnknownNameError
 from moik.experiments.config import ExperimentConfig, load_config
 
 ENV_VAR = "MOIK_EXPERIMENTS_PATH"
+"""Environment variable: extra folders of experiment configs, ``os.pathsep``-separated."""
+
+PACKAGE = "moik.paper_configs"
+"""The package that holds the papers' configs (the repository's ``experiments/``)."""
+
+_CHECKOUT = Path(__file__).resolve().parents[2] / "experiments"
+
+
+def packaged_dir() -> Path | None:
+    """The folder of the papers' configs, or None if moik has none.
+
+    The installed package :data:`PACKAGE` if importable; else (a source checkout
+    whose editable install predates the package) the checkout's ``experiments/``.
+    """
+    try:
+        root = resources.files(PACKAGE)
+    except ModuleNotFoundError:
+        root = None
+    if isinstance(root, Path) and root.is_dir():
+        return root
+    return _CHECKOUT if (_CHECKOUT / "__init__.py").is_file() else None
 
 
 def experiment_dirs() -> list[Path]:
     """The folders searched for experiment files, existing ones only."""
-    dirs = [Path(__file__).resolve().parents[2] / "experiments"]
+    packaged = packaged_dir()
+    dirs = [] if packaged is None else [packaged]
     dirs += [Path(p) for p in os.environ.get(ENV_VAR, "").split(os.pathsep) if p]
     return [d for d in dirs if d.is_dir()]
 

@@ -13,8 +13,10 @@ from __future__ import annotations
 from pathlib import Path
 
 from moik.exceptions import ResultsError
-from moik.experiments.analysis import Results, Table, analyze
+from moik.experiments.analysis import analyze
+from moik.experiments.figures import make_figures
 from moik.experiments.store import ResultStore
+from moik.experiments.tables import Results, Table
 
 
 def result_folders(folder: str | Path) -> list[Path]:
@@ -87,8 +89,6 @@ def _figures(res: Results, folder: Path):
         return [], ["no finished trials: no figures"]
     if res.config["problem"]["kind"] == "benchmark":
         return [], ["benchmark experiments have tables only (the figures draw robots/targets)"]
-    from moik.experiments.figures import make_figures
-
     return make_figures(res, folder)
 
 

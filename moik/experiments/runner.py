@@ -7,13 +7,13 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from moik.exceptions import ParameterError
-from moik.experiments.benchmark import check_requirements
+from moik._validate import integer, optional_integer
 from moik.experiments.config import ExperimentConfig
 from moik.experiments.executors import Progress, execute
+from moik.experiments.kinds.functions import check_requirements
+from moik.experiments.spec import spec_summary
 from moik.experiments.store import ResultStore
-from moik.experiments.targets import build_targets
-from moik.experiments.trials import build_trials, spec_summary
+from moik.experiments.trials import build_trials
 
 
 @dataclass(frozen=True)
@@ -46,9 +46,7 @@ def check_workers(workers: int | None) -> int:
     """``workers`` validated; None means the number of cores."""
     if workers is None:
         return os.cpu_count() or 1
-    if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
-        raise ParameterError(f"workers must be an integer >= 1, got {workers!r}")
-    return workers
+    return integer("workers", workers, minimum=1)
 
 
 def run_experiment(config: ExperimentConfig, *, out: str | Path | None = None,
@@ -78,10 +76,9 @@ def run_experiment(config: ExperimentConfig, *, out: str | Path | None = None,
     t0 = time.perf_counter()
     cfg = config.quick() if quick else config
     workers = check_workers(workers)
-    if limit is not None and (isinstance(limit, bool) or not isinstance(limit, int) or limit < 0):
-        raise ParameterError(f"limit must be an integer >= 0, got {limit!r}")
+    limit = optional_integer("limit", limit, minimum=0)
     check_requirements(cfg)
-    targets = build_targets(cfg)
+    targets = list(cfg.targets)
     specs = build_trials(cfg, targets)
     folder = Path(out) if out is not None else default_out(cfg)
     executor = f"dask:{dask_scheduler}" if dask_scheduler else (

@@ -23,6 +23,7 @@ the trials in flight. Non-finite floats are stored as ``null``.
 from __future__ import annotations
 
 import datetime as _dt
+import io
 import json
 import math
 import os
@@ -33,7 +34,10 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import pymoo
+import scipy
 
+from moik._version import __version__
 from moik.exceptions import ResultsError
 
 FORMAT = "moik-results/1"
@@ -69,15 +73,13 @@ def atomic_write_bytes(path: Path, data: bytes) -> None:
 
 
 def environment() -> dict:
-    """Versions, git commit and machine description for the metadata."""
-    import pymoo
-    import scipy
+    """Versions, git commit and machine description for the metadata.
 
-    import moik
-
+    The commit is that of the git checkout holding this moik (None for an installed wheel).
+    """
     commit = None
     try:
-        root = Path(moik.__file__).resolve().parents[1]
+        root = Path(__file__).resolve().parents[2]
         out = subprocess.run(["git", "-C", str(root), "rev-parse", "HEAD"], capture_output=True,
                              text=True, timeout=5, check=False)
         if out.returncode == 0:
@@ -89,7 +91,7 @@ def environment() -> dict:
     except (OSError, subprocess.SubprocessError):
         commit = None
     return {
-        "versions": {"moik": getattr(moik, "__version__", "unknown"), "pymoo": pymoo.__version__,
+        "versions": {"moik": __version__, "pymoo": pymoo.__version__,
                      "numpy": np.__version__, "scipy": scipy.__version__,
                      "python": platform.python_version()},
         "git_commit": commit,
@@ -196,8 +198,6 @@ class ResultStore:
         """Store one finished trial: its arrays (atomic), then its line (commit mark)."""
         record = dict(record, finished_at=_now(), has_arrays=bool(arrays))
         if arrays:
-            import io
-
             buf = io.BytesIO()
             np.savez(buf, **{k: np.asarray(v) for k, v in arrays.items()})
             atomic_write_bytes(self.folder / "arrays" / self.array_name(record["trial"]),

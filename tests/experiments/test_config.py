@@ -1,20 +1,9 @@
-"""Experiment configs: validation messages, quick overrides, the registry."""
+"""Experiment configs (moik.experiments.config): validation messages, quick overrides, loading."""
 
 import pytest
 
-from moik.exceptions import ConfigError, UnknownNameError
+from moik.exceptions import ConfigError
 from moik.experiments.config import ExperimentConfig, load_config, merge
-from moik.experiments.registry import ENV_VAR, available_experiments, get_experiment
-
-PAPER_EXPERIMENTS = ["eosma-table5", "eosma-table7", "eosma-table8", "eosma-table9",
-                     "mpso-single", "mpso-table2", "mpso-table3", "mpso-circle", "mpso-table5"]
-
-
-def test_all_paper_experiments_are_listed_and_valid():
-    assert set(PAPER_EXPERIMENTS) <= set(available_experiments())
-    for name in PAPER_EXPERIMENTS:
-        cfg = get_experiment(name)
-        assert cfg.name == name and cfg.quick().is_quick
 
 
 @pytest.mark.parametrize("change, match", [
@@ -73,15 +62,3 @@ def test_load_config_file_errors(tmp_path):
     bad.write_text("EXPERIMENT = {'name': \n")
     with pytest.raises(ConfigError, match="cannot be executed: SyntaxError"):
         load_config(bad)
-
-
-def test_dropping_a_file_adds_an_experiment(tmp_path, monkeypatch, tiny):
-    (tmp_path / "tiny_test.py").write_text(f"EXPERIMENT = {tiny!r}\n")
-    monkeypatch.setenv(ENV_VAR, str(tmp_path))
-    assert "tiny-test" in available_experiments()
-    assert get_experiment("tiny-test").labels == ["eosma", "pso"]
-    (tmp_path / "other_name.py").write_text(f"EXPERIMENT = {tiny!r}\n")
-    with pytest.raises(ConfigError, match="must match the file name"):
-        get_experiment("other-name")
-    with pytest.raises(UnknownNameError, match="unknown experiment 'zzz'; expected one of"):
-        get_experiment("zzz")

@@ -1,9 +1,6 @@
-"""Trials: seeds shared by all algorithms and recorded; run_trial records failures."""
+"""Trials (moik.experiments.trials): seeds shared by all algorithms; run_trial records failures."""
 
-import numpy as np
-
-from moik.experiments.targets import build_targets
-from moik.experiments.trials import build_trials, run_trial, trial_seeds
+from moik.experiments.trials import build_trials, run_trial
 
 
 def test_seeds_are_identical_across_algorithms(tiny_config):
@@ -15,21 +12,6 @@ def test_seeds_are_identical_across_algorithms(tiny_config):
     assert by_alg["eosma"] == by_alg["pso"]
     seeds = [v[0] for v in by_alg["eosma"].values()]
     assert len(set(seeds)) == len(seeds)
-
-
-def test_seeds_come_from_seedsequence_spawn(tiny_config):
-    specs = build_trials(tiny_config)
-    children = trial_seeds(11, 2, 2)
-    for s in specs:
-        child = children[s.target_index * 2 + s.run]
-        assert s.spawn_key == child.spawn_key and s.entropy == 11
-        assert s.seed == int(child.generate_state(1, dtype=np.uint32)[0])
-        assert (s.seed_sequence.generate_state(4) == child.generate_state(4)).all()
-
-
-def test_random_targets_are_reachable_positions(tiny_config):
-    targets = build_targets(tiny_config)
-    assert len(targets) == 2 and targets[0].rotation is None
 
 
 def test_run_trial_records_and_is_deterministic(tiny_config):

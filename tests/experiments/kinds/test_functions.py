@@ -1,4 +1,4 @@
-"""Benchmark-problem experiments, per-target tables, locked joints and per-point robots."""
+"""Benchmark-function experiments (moik.experiments.kinds.functions): config, trials, tables."""
 
 import copy
 
@@ -53,32 +53,18 @@ def test_benchmark_config_errors(change, match):
         ExperimentConfig.from_dict(_bench(**change))
 
 
-def test_ik_config_needs_robot_and_checks_locked_joints_and_point_robots(tiny):
-    no_robot = {k: v for k, v in tiny.items() if k != "robot"}
-    with pytest.raises(ConfigError, match="needs 'robot' and 'targets'"):
-        ExperimentConfig.from_dict(no_robot)
-    bad = copy.deepcopy(tiny)
-    bad["problem"]["locked_joints_deg"] = [0.0]
-    with pytest.raises(ConfigError, match="locked_joints_deg must be a list of 2"):
-        ExperimentConfig.from_dict(bad)
-    bad = copy.deepcopy(tiny)
-    bad["targets"] = {"kind": "fixed", "points": [{"name": "a", "robot": "r2d2",
-                                                   "position": [0.1, 0.1, 0]}]}
-    with pytest.raises(ConfigError, match="unknown robot 'r2d2'"):
-        ExperimentConfig.from_dict(bad)
-
-
 def test_missing_extra_is_one_clear_error(monkeypatch, tmp_path):
-    from moik.experiments import benchmark, run_experiment
+    from moik.experiments import run_experiment
+    from moik.experiments.kinds import functions
 
     cfg = ExperimentConfig.from_dict(_bench(requires=["cec"]))
-    monkeypatch.setattr(benchmark.importlib.util, "find_spec", lambda name: None)
+    monkeypatch.setattr(functions.importlib.util, "find_spec", lambda name: None)
     with pytest.raises(ConfigError, match=r"needs the optional extra 'cec' .*moik\[cec\]"):
         run_experiment(cfg, out=tmp_path / "r")
 
 
 def test_constraint_violation_of_an_infeasible_design():
-    from moik.experiments.benchmark import constraint_violation
+    from moik.experiments.kinds.functions import constraint_violation
     from moik.problems.benchmarks import get_benchmark
 
     spring = get_benchmark("spring")
@@ -117,12 +103,3 @@ def test_same_seeds_give_the_same_benchmark_records(tmp_path):
         run_experiment(cfg, out=tmp_path / f"r{k}")
     a, b = (ResultStore.open(tmp_path / f"r{k}").records() for k in (1, 2))
     assert [r["objective"] for r in a] == [r["objective"] for r in b]
-
-
-def test_branch_clustering_wraps_angles():
-    from moik.experiments.per_target import cluster_solutions, wrapped_distance
-
-    assert wrapped_distance([np.pi - 0.01], [-np.pi + 0.01]) == pytest.approx(0.02)
-    recs = [{"best_f": 0.0, "best_x": [3.14, 0.0]}, {"best_f": 1e-9, "best_x": [-3.14, 0.01]},
-            {"best_f": 0.0, "best_x": [0.0, 1.0]}]
-    assert sorted(len(b) for b in cluster_solutions(recs)) == [1, 2]

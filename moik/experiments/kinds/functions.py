@@ -1,6 +1,6 @@
-"""Experiments on benchmark problems (test functions, constrained design problems).
+"""Benchmark-function experiments: classical and CEC test functions, engineering design problems.
 
-A benchmark experiment has no robot and no targets; its problem is::
+Such an experiment has no robot and no targets; its problem is::
 
     {"kind": "benchmark", "names": ["F1", {"name": "pressure_vessel",
                                            "label": "vessel-discrete",
@@ -12,7 +12,8 @@ or a dict with that ``name``, an optional display ``label`` and ``params`` (the
 problem's keywords); the top-level ``params`` go to every problem that accepts
 them (``n_var`` to the scalable functions, not to the fixed-dimension ones).
 The problems take the place of the targets: trials are (algorithm x problem x
-run), with the same seeds for every algorithm.
+run), with the same seeds for every algorithm. Validation builds every problem
+(except those of an extra, built only when run).
 
 The experiment key ``requires`` lists optional extras (``"cec"``: opfunu for
 the CEC2017 functions); a run checks them first and fails with one clear line.
@@ -35,10 +36,16 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+from pymoo.core.problem import Problem
 from pymoo.optimize import minimize
 
 from moik.exceptions import ConfigError, MoikError
+from moik.experiments.checks import check_keys
+from moik.experiments.convergence import algorithm_factory, convergence_curve
+from moik.experiments.spec import TrialSpec
+from moik.problems.benchmarks import _REGISTRY, available_benchmarks, get_benchmark
 
+PROBLEM_KINDS = ("benchmark",)
 EXTRAS = {"cec": ("opfunu", "the CEC2017 functions")}
 """Optional extras an experiment may require: name -> (module, what needs it)."""
 
@@ -46,21 +53,24 @@ _KEYS = {"kind", "names", "params"}
 _ENTRY_KEYS = {"name", "label", "params"}
 
 
-def is_benchmark(problem: Any) -> bool:
-    """Whether a problem dict is of kind ``"benchmark"``."""
-    return isinstance(problem, Mapping) and problem.get("kind") == "benchmark"
+@dataclass(frozen=True)
+class BenchmarkTarget:
+    """One problem of a benchmark experiment, in the place of a target."""
+
+    name: str
+    benchmark: str
+    params: dict = field(default_factory=dict)
+
+    def as_dict(self) -> dict:
+        """JSON-ready form."""
+        return {"name": self.name, "benchmark": self.benchmark, "params": dict(self.params)}
 
 
 def _factory_parameters(name: str) -> set[str]:
-    from moik.problems.benchmarks import _REGISTRY
-
     return set(inspect.signature(_REGISTRY[name]).parameters)
 
 
 def _entry(where: str, raw: Any, common: Mapping) -> dict:
-    from moik.experiments.config import check_keys
-    from moik.problems.benchmarks import available_benchmarks
-
     entry = {"name": raw} if isinstance(raw, str) else dict(
         check_keys(where, raw, _ENTRY_KEYS, ("name",)))
     name = entry["name"]
@@ -76,26 +86,25 @@ def _entry(where: str, raw: Any, common: Mapping) -> dict:
     return {"name": name, "label": label, "params": params}
 
 
-def check_benchmark_experiment(where: str, cfg: dict) -> dict:
+def check_config(where: str, cfg: Mapping) -> tuple[dict, tuple[BenchmarkTarget, ...]]:
     """Validate a benchmark experiment's ``problem`` (and absence of robot/targets).
 
     Returns:
-        The problem dict with every entry of ``names`` in the dict form.
+        The problem dict with every entry of ``names`` in the dict form, and the
+        problems as targets.
 
     Raises:
         ConfigError: For a robot or targets given, an unknown problem name or
             keyword, a bad value (problems are built to check them, except those
             of an extra, built only when run), duplicate labels, unknown extras.
     """
-    from moik.experiments.config import check_keys
-
     for key in ("robot", "targets", "protocol"):
         if key in cfg:
             raise ConfigError(f"{where}: problem kind 'benchmark' takes no {key!r} (the "
                               "problems listed in problem.names replace the targets)")
     p = check_keys(f"{where}: problem", cfg["problem"], _KEYS, ("kind", "names"))
     common = check_keys(f"{where}: problem.params", p.get("params", {}),
-                        set().union(*(_factory_parameters(n) for n in _all_names())))
+                        set().union(*(_factory_parameters(n) for n in available_benchmarks())))
     names = p["names"]
     if not isinstance(names, list) or not names:
         raise ConfigError(f"{where}: problem.names must be a non-empty list of benchmark names")
@@ -115,13 +124,9 @@ def check_benchmark_experiment(where: str, cfg: dict) -> dict:
                 raise ConfigError(f"{where}: problem.names[{i}]: {exc}") from None
         elif "cec" not in requires:
             raise ConfigError(f"{where}: {e['name']} needs requires: ['cec'] (opfunu)")
-    return {"kind": "benchmark", "names": entries, **({"params": common} if common else {})}
-
-
-def _all_names() -> list[str]:
-    from moik.problems.benchmarks import available_benchmarks
-
-    return available_benchmarks()
+    problem = {"kind": "benchmark", "names": entries, **({"params": common} if common else {})}
+    targets = tuple(BenchmarkTarget(e["label"], e["name"], dict(e["params"])) for e in entries)
+    return problem, targets
 
 
 def check_requirements(config) -> None:
@@ -133,34 +138,13 @@ def check_requirements(config) -> None:
                               f"({module}, for {what}): pip install 'moik[{extra}]'")
 
 
-@dataclass(frozen=True)
-class BenchmarkTarget:
-    """One problem of a benchmark experiment, in the place of a target."""
-
-    name: str
-    benchmark: str
-    params: dict = field(default_factory=dict)
-
-    def as_dict(self) -> dict:
-        """JSON-ready form."""
-        return {"name": self.name, "benchmark": self.benchmark, "params": dict(self.params)}
-
-
-def build_benchmark_targets(config) -> list[BenchmarkTarget]:
-    """The problems of a benchmark experiment, as targets (nothing is built yet)."""
-    return [BenchmarkTarget(e["label"], e["name"], dict(e["params"]))
-            for e in config["problem"]["names"]]
-
-
-def build_benchmark(entry: Mapping):
+def build_benchmark(entry: Mapping) -> Problem:
     """The pymoo problem of an entry (``name`` and ``params``)."""
-    from moik.problems.benchmarks import get_benchmark
-
     return get_benchmark(entry["name"] if "name" in entry else entry["benchmark"],
                          **entry.get("params", {}))
 
 
-def constraint_violation(problem, x: np.ndarray) -> tuple[float, float]:
+def constraint_violation(problem: Problem, x: np.ndarray) -> tuple[float, float]:
     """``(objective, violation)`` of one design, evaluated afresh on ``problem``."""
     if problem.n_ieq_constr or problem.n_eq_constr:
         F, G, H = problem.evaluate(x[None], return_values_of=["F", "G", "H"])
@@ -172,21 +156,11 @@ def constraint_violation(problem, x: np.ndarray) -> tuple[float, float]:
     return float(np.asarray(F).ravel()[0]), 0.0
 
 
-def run_benchmark_trial(spec, record: dict, arrays: dict, make_algorithm, convergence) -> None:
-    """Run one (algorithm, problem, run) trial; fills ``record`` and ``arrays``.
-
-    Args:
-        spec: The :class:`~moik.experiments.trials.TrialSpec` (its ``target`` is a
-            :class:`BenchmarkTarget`).
-        record: The trial record to complete (see the module docstring).
-        arrays: Receives ``convergence`` and ``best_x``.
-        make_algorithm: ``make_algorithm(spec, created)`` returns a factory of the
-            trial's algorithm (:mod:`moik.experiments.trials`).
-        convergence: ``convergence(algorithm)`` returns its best-so-far curve.
-    """
+def run_trial(spec: TrialSpec, record: dict, arrays: dict) -> None:
+    """Run one (algorithm, problem, run) trial; fills ``record`` and ``arrays``."""
     problem = build_benchmark(spec.target.as_dict())
     created: list = []
-    algorithm = make_algorithm(spec, created)()
+    algorithm = algorithm_factory(spec, created)()
     algorithm.return_least_infeasible = True  # so res.X exists; feasibility is checked below
     t0 = time.perf_counter()
     res = minimize(problem, algorithm, ("n_gen", spec.n_gen), seed=spec.seed,
@@ -203,4 +177,4 @@ def run_benchmark_trial(spec, record: dict, arrays: dict, make_algorithm, conver
         record.update(best_f=f if feasible else None, objective=f, cv=cv, feasible=feasible,
                       error=(f - record["f_opt"]) if feasible else None, best_x=x.tolist())
         arrays["best_x"] = x
-    arrays["convergence"] = convergence(res.algorithm)
+    arrays["convergence"] = convergence_curve(res.algorithm)

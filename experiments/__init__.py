@@ -1,0 +1,6 @@
+"""The papers' experiment configs, one file per table or figure (see README.md here).
+
+This folder is shipped inside the moik wheel as the package ``moik.paper_configs``
+(``pyproject.toml`` maps it); :mod:`moik.experiments.registry` finds the files.
+Each file is data: it defines a dict ``EXPERIMENT`` and is never imported as a module.
+"""

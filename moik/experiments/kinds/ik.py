@@ -1,0 +1,320 @@
+"""IK experiments: inverse kinematics of a catalog robot at a set of targets.
+
+Config keys (see :mod:`moik.experiments.config` for the others):
+
+- ``robot``: catalog name;
+- ``problem``: ``{"kind": "position" | "pose" | "bi-objective", "orientation":
+  metric, "weights": [w1, w2], "displacement_weight": w, "q_start_deg": [...],
+  "locked_joints_deg": [...]}``; the kinds map to :class:`~moik.problems.PositionIK`,
+  :class:`~moik.problems.PoseIK` and :class:`~moik.problems.BiObjectiveIK`;
+- ``targets``: ``{"kind": "random", "n", "seed", "with_orientation"}``,
+  ``{"kind": "fixed", "points": [{"name", "position" or "fk_q_deg",
+  "euler_deg", "convention", "hv_ref_point", "robot"}]}`` or ``{"kind": "circle",
+  "center", "radius", "n_points", "euler_deg", "convention"}``.
+
+Joint values in configs are degrees (``q_start_deg``, ``fk_q_deg``); lengths are
+in the robot's unit. MO-m-PSO Section 4.4 ("alpha = 0, beta = 0, gamma is free")
+uses the named metric ``"zyx-euler-free-gamma"`` of :mod:`moik.kinematics.orientation`.
+``locked_joints_deg`` (one entry per joint, ``None`` for a free joint) fixes
+joints with :meth:`~moik.robots.Robot.with_locked_joints` (I-BES Table 9 solves
+the Puma 560 position with joints 4-6 at 0); a fixed target point may name its
+own ``robot`` (I-BES Table 8: one target per arm), else the experiment's is used.
+
+Validation builds what a run uses: the robots, every target (a
+:class:`~moik.problems.Target`, validated once and carried to the trials as it
+is) and the pymoo problem at every target; a :class:`~moik.exceptions.MoikError`
+raised there becomes a :class:`~moik.exceptions.ConfigError` naming the key.
+
+A trial records ``best_f``/``position_error``/``orientation_error``/``best_x``
+(and ``attempts``/``solved`` under the protocol, ``joint_distance_deg`` with a
+start configuration) for single-objective problems; the compromise's errors,
+``n_front`` and ``hv`` for bi-objective ones. Its arrays are ``convergence`` or
+``front_F``/``front_X``, and ``best_x``.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from pymoo.optimize import minimize
+
+from moik.algorithms import get_algorithm
+from moik.exceptions import ConfigError, MoikError
+from moik.experiments.checks import check_keys, flag, integer, number, numbers
+from moik.experiments.convergence import algorithm_factory, convergence_curve
+from moik.experiments.protocol import solve_until_success
+from moik.experiments.spec import TrialSpec
+from moik.kinematics.orientation import orientation_metric
+from moik.metrics import closest_to_utopia, hypervolume
+from moik.problems import BiObjectiveIK, PoseIK, PositionIK, Target
+from moik.problems.targets import circle_path, random_reachable_targets
+from moik.robots import Robot, get_robot
+
+PROBLEM_KINDS = ("position", "pose", "bi-objective")
+TARGET_KINDS = ("random", "fixed", "circle")
+_PROBLEM_KEYS = {"kind", "orientation", "weights", "displacement_weight", "q_start_deg",
+                 "locked_joints_deg"}
+_TARGET_KEYS = {
+    "random": {"kind", "n", "seed", "with_orientation"},
+    "fixed": {"kind", "points"},
+    "circle": {"kind", "center", "radius", "n_points", "euler_deg", "convention"},
+}
+_POINT_KEYS = {"name", "position", "fk_q_deg", "euler_deg", "convention", "hv_ref_point",
+               "robot"}
+
+
+@dataclass(frozen=True)
+class NamedTarget:
+    """A target of an IK experiment: display name, pose, HV reference point, own robot.
+
+    ``target`` is the validated :class:`~moik.problems.Target`; ``robot`` names the
+    arm of this target when it is not the experiment's.
+    """
+
+    name: str
+    target: Target
+    hv_ref_point: list[float] | None = None
+    robot: str | None = None
+
+    @property
+    def position(self) -> np.ndarray:
+        """``(3,)`` position in the robot's unit."""
+        return self.target.position
+
+    @property
+    def rotation(self) -> np.ndarray | None:
+        """``(3, 3)`` rotation, or None for a position target."""
+        return self.target.rotation
+
+    def as_dict(self) -> dict:
+        """JSON-ready form (floats round-trip exactly through ``json``)."""
+        rot = self.target.rotation
+        d = {"name": self.name, "position": self.target.position.tolist(),
+             "rotation": None if rot is None else rot.tolist(), "hv_ref_point": self.hv_ref_point}
+        return d if self.robot is None else {**d, "robot": self.robot}
+
+
+def experiment_robot(name: str, problem: Mapping) -> Robot:
+    """The catalog robot ``name`` with the problem's ``locked_joints_deg`` applied."""
+    return _locked(get_robot(name), problem)
+
+
+def _locked(robot: Robot, problem: Mapping) -> Robot:
+    locked = problem.get("locked_joints_deg")
+    if locked:
+        robot = robot.with_locked_joints({i: float(np.radians(v)) for i, v in enumerate(locked)
+                                          if v is not None})
+    return robot
+
+
+def build_problem(robot: Robot, problem: Mapping, target: NamedTarget):
+    """The pymoo problem of ``problem`` (the config dict) at ``target``."""
+    common = {"displacement_weight": float(problem.get("displacement_weight", 0.0))}
+    if "q_start_deg" in problem:
+        common["q_start"] = np.radians(problem["q_start_deg"])
+    kind = problem["kind"]
+    if kind == "position":
+        return PositionIK(robot, target.target, **common)
+    if kind == "pose":
+        return PoseIK(robot, target.target, weights=tuple(problem.get("weights", (0.5, 0.5))),
+                      orientation=problem["orientation"], **common)
+    return BiObjectiveIK(robot, target.target, orientation=problem["orientation"], **common)
+
+
+def check_config(where: str, cfg: Mapping) -> tuple[dict, tuple[NamedTarget, ...]]:
+    """Validate an IK experiment's robot, problem and targets by building them.
+
+    Returns:
+        The problem dict (``orientation`` defaulted to ``"geodesic"``) and the targets.
+
+    Raises:
+        ConfigError: Naming the key and what was expected.
+    """
+    if "robot" not in cfg or "targets" not in cfg or "requires" in cfg:
+        raise ConfigError(f"{where}: an IK experiment needs 'robot' and 'targets' (and takes "
+                          "no 'requires')")
+    problem = _check_problem(f"{where}: problem", cfg["problem"])
+    robots: dict[str, Robot] = {}  # name -> the arm with the locked joints, built once
+
+    def robot_of(name: Any, key: str) -> Robot:
+        try:
+            arm = get_robot(name)
+        except MoikError as exc:
+            raise ConfigError(f"{key}: {exc}") from None
+        if name not in robots:
+            _check_locked_joints(f"{where}: problem", problem, arm.dof)
+            try:
+                robots[name] = _locked(arm, problem)
+            except MoikError as exc:
+                raise ConfigError(f"{where}: problem.locked_joints_deg: {exc}") from None
+        return robots[name]
+
+    robot = robot_of(cfg["robot"], f"{where}: robot")
+    if "q_start_deg" in problem:
+        numbers(f"{where}: problem.q_start_deg", problem["q_start_deg"], robot.dof)
+    targets = _targets(f"{where}: targets", cfg["targets"], problem, robot, robot_of)
+    for t in targets:
+        try:
+            build_problem(robots[t.robot or cfg["robot"]], problem, t)
+        except MoikError as exc:
+            raise ConfigError(f"{where}: problem (at target {t.name!r}): {exc}") from None
+    return problem, tuple(targets)
+
+
+def _check_problem(where: str, spec: Any) -> dict:
+    p = check_keys(where, spec, _PROBLEM_KEYS, ("kind",))
+    if p["kind"] not in PROBLEM_KINDS:
+        raise ConfigError(f"{where}.kind must be one of {', '.join(PROBLEM_KINDS)}, "
+                          f"got {p['kind']!r}")
+    p.setdefault("orientation", "geodesic")
+    try:
+        orientation_metric(p["orientation"])
+    except MoikError as exc:
+        raise ConfigError(f"{where}.orientation: {exc}") from None
+    if "weights" in p:
+        numbers(f"{where}.weights", p["weights"], 2)
+    number(f"{where}.displacement_weight", p.get("displacement_weight", 0.0))
+    return p
+
+
+def _check_locked_joints(where: str, p: Mapping, dof: int) -> None:
+    """``locked_joints_deg``: one entry per joint of the arm, a number or None."""
+    if "locked_joints_deg" in p:
+        lj = p["locked_joints_deg"]
+        if not isinstance(lj, list) or len(lj) != dof:
+            raise ConfigError(f"{where}.locked_joints_deg must be a list of {dof} entries "
+                              f"(a number or None per joint), got {lj!r}")
+        for i, v in enumerate(lj):
+            if v is not None:
+                number(f"{where}.locked_joints_deg[{i}]", v)
+
+
+def _rotation(spec: Mapping) -> np.ndarray:
+    return Target.from_euler([0.0, 0.0, 0.0], spec["euler_deg"],
+                             convention=spec.get("convention", "zyx-euler"), degrees=True).rotation
+
+
+def _targets(where: str, spec: Any, problem: Mapping, robot: Robot,
+             robot_of: Callable[[Any, str], Robot]) -> list[NamedTarget]:
+    kind = spec.get("kind") if isinstance(spec, Mapping) else None
+    if kind not in TARGET_KINDS:
+        raise ConfigError(f"{where}.kind must be one of {', '.join(TARGET_KINDS)}, got {kind!r}")
+    t = check_keys(where, spec, _TARGET_KEYS[kind], ("kind",))
+    oriented = problem["kind"] != "position"
+    try:
+        if kind == "random":
+            n = integer(f"{where}.n", t.get("n"), 1)
+            seed = integer(f"{where}.seed", t.get("seed"), 0)
+            with_orientation = flag(f"{where}.with_orientation", t.get("with_orientation", True))
+            if oriented and not with_orientation:
+                raise ConfigError(f"{where}: problem kind {problem['kind']!r} needs "
+                                  "with_orientation true")
+            ts = random_reachable_targets(robot, n, seed=seed, with_orientation=with_orientation)
+            return [NamedTarget(f"T{i + 1}", x) for i, x in enumerate(ts)]
+        if kind == "circle":
+            numbers(f"{where}.center", t.get("center"), 3)
+            number(f"{where}.radius", t.get("radius"), positive=True)
+            integer(f"{where}.n_points", t.get("n_points"), 2)
+            rot = None
+            if oriented or "euler_deg" in t:
+                numbers(f"{where}.euler_deg", t.get("euler_deg"), 3)
+                rot = _rotation(t)
+            ts = circle_path(t["center"], t["radius"], t["n_points"], rotation=rot)
+            return [NamedTarget(f"C{i + 1}", x) for i, x in enumerate(ts)]
+        points = t.get("points")
+        if not isinstance(points, list) or not points:
+            raise ConfigError(f"{where}.points must be a non-empty list")
+        return [_point(f"{where}.points[{i}]", raw, oriented, problem, robot, robot_of)
+                for i, raw in enumerate(points)]
+    except ConfigError:
+        raise
+    except MoikError as exc:
+        raise ConfigError(f"{where}: {exc}") from None
+
+
+def _point(where: str, raw: Any, oriented: bool, problem: Mapping, robot: Robot,
+           robot_of: Callable[[Any, str], Robot]) -> NamedTarget:
+    pt = check_keys(where, raw, _POINT_KEYS, ("name",))
+    if not isinstance(pt["name"], str) or not pt["name"]:
+        raise ConfigError(f"{where}.name must be a non-empty string, got {pt['name']!r}")
+    arm = robot_of(pt["robot"], f"{where}.robot") if "robot" in pt else robot
+    if ("position" in pt) == ("fk_q_deg" in pt):
+        raise ConfigError(f"{where}: give exactly one of position and fk_q_deg")
+    if "position" in pt:
+        pos, rot = np.asarray(numbers(f"{where}.position", pt["position"], 3)), None
+        if oriented and "euler_deg" not in pt:
+            raise ConfigError(f"{where}: problem kind {problem['kind']!r} needs euler_deg")
+    else:
+        T = arm.fk(np.radians(numbers(f"{where}.fk_q_deg", pt["fk_q_deg"], arm.dof)))
+        pos, rot = T[:3, 3], T[:3, :3]
+    if "euler_deg" in pt:
+        numbers(f"{where}.euler_deg", pt["euler_deg"], 3)
+        rot = _rotation(pt)
+    if "hv_ref_point" in pt:
+        numbers(f"{where}.hv_ref_point", pt["hv_ref_point"], 2)
+    return NamedTarget(pt["name"], Target(pos, rot), pt.get("hv_ref_point"), pt.get("robot"))
+
+
+def run_trial(spec: TrialSpec, record: dict, arrays: dict) -> None:
+    """Run one IK trial; fills ``record`` and ``arrays`` (see the module docstring)."""
+    robot = experiment_robot(spec.robot, spec.problem)
+    problem = build_problem(robot, spec.problem, spec.target)
+    if problem.n_obj == 1:
+        _single_objective(spec, problem, record, arrays)
+    else:
+        _multi_objective(spec, problem, record, arrays)
+
+
+def _single_objective(spec: TrialSpec, problem, record: dict, arrays: dict) -> None:
+    created: list = []
+    factory = algorithm_factory(spec, created)
+    termination = ("n_gen", spec.n_gen)
+    t0 = time.perf_counter()
+    if spec.protocol is not None:
+        out = solve_until_success(problem, factory, termination, seed=spec.seed_sequence,
+                                  threshold=spec.protocol["threshold"],
+                                  max_failures=spec.protocol["max_failures"])
+        res, elapsed = out.best, out.total_time
+        record.update(attempts=out.attempts, solved=bool(out.solved), run_f=out.run_f,
+                      run_seeds=out.seeds)
+    else:
+        res = minimize(problem, factory(), termination, seed=spec.seed, copy_algorithm=False)
+        elapsed = time.perf_counter() - t0
+    x = np.asarray(res.X, dtype=float).reshape(-1) if res.X is not None else None
+    record.update(time=elapsed, n_eval=int(sum(a.evaluator.n_eval for a in created)),
+                  best_f=float(np.min(res.F)) if res.F is not None else float("inf"))
+    if x is not None:
+        record["best_x"] = x.tolist()
+        if hasattr(problem, "errors"):
+            pos, ori = problem.errors(x[None])
+            record.update(position_error=float(pos[0]), orientation_error=float(ori[0]))
+        else:
+            record["position_error"] = float(problem.position_error(x[None])[0])
+        if problem.q_start is not None:
+            record["joint_distance_deg"] = float(np.linalg.norm(np.degrees(x - problem.q_start)))
+        arrays["best_x"] = x
+    arrays["convergence"] = convergence_curve(res.algorithm)
+    if spec.record_history and hasattr(res.algorithm, "best_x_history"):
+        arrays["best_x_history"] = res.algorithm.best_x_history
+
+
+def _multi_objective(spec: TrialSpec, problem, record: dict, arrays: dict) -> None:
+    algorithm = get_algorithm(spec.algorithm, **spec.params)
+    t0 = time.perf_counter()
+    res = minimize(problem, algorithm, ("n_gen", spec.n_gen), seed=spec.seed,
+                   copy_algorithm=False)
+    elapsed = time.perf_counter() - t0
+    F = np.atleast_2d(np.asarray(res.F, dtype=float))
+    X = np.atleast_2d(np.asarray(res.X, dtype=float))
+    i = closest_to_utopia(F)
+    record.update(time=elapsed, n_eval=int(algorithm.evaluator.n_eval), n_front=int(len(F)),
+                  position_error=float(F[i, 0]), orientation_error=float(F[i, 1]),
+                  min_position_error=float(F[:, 0].min()),
+                  min_orientation_error=float(F[:, 1].min()), best_x=X[i].tolist())
+    if spec.target.hv_ref_point is not None:
+        record["hv"] = hypervolume(F, spec.target.hv_ref_point)
+    arrays.update(front_F=F, front_X=X, best_x=X[i])

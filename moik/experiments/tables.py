@@ -1,0 +1,73 @@
+"""Result tables: the records of a results folder grouped for analysis, and a titled table.
+
+:class:`Results` reads a :class:`~moik.experiments.store.ResultStore` (ok and
+failed trials, records per algorithm label in (target, run) order);
+:class:`Table` is what an analysis returns and :mod:`moik.experiments.report`
+prints; :func:`fmt` formats a number as the report prints it.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from moik.experiments.store import ResultStore
+
+
+@dataclass
+class Table:
+    """A titled table of formatted cells."""
+
+    title: str
+    header: list[str]
+    rows: list[list[str]]
+    notes: list[str] = field(default_factory=list)
+
+
+def fmt(value, digits: int = 4) -> str:
+    """A number as the report prints it (``-`` for missing)."""
+    if value is None or (isinstance(value, float) and np.isnan(value)):
+        return "-"
+    if isinstance(value, (int, np.integer)) and not isinstance(value, bool):
+        return str(value)
+    if isinstance(value, (float, np.floating)):
+        return f"{value:.{digits}g}"
+    return str(value)
+
+
+class Results:
+    """The records of a results folder grouped for analysis."""
+
+    def __init__(self, store: ResultStore):
+        self.store = store
+        self.meta = store.meta
+        self.config = store.meta["config"]
+        self.paper = self.config.get("paper", {})
+        self.citation = "paper"
+        cite = self.paper.get("citation")
+        self.paper_note = f"paper rows: {cite}" if cite else None
+        records = store.records()
+        self.ok = [r for r in records if r.get("status") == "ok"]
+        self.failed = [r for r in records if r.get("status") != "ok"]
+        labels = self.meta.get("algorithms") or [a.get("label", a["name"])
+                                                 for a in self.config["algorithms"]]
+        self.labels = [lab for lab in labels if any(r["algorithm"] == lab for r in self.ok)]
+        self.by_label: dict[str, list[dict]] = defaultdict(list)
+        for r in sorted(self.ok, key=lambda r: (r["target"], r["run"])):
+            self.by_label[r["algorithm"]].append(r)
+
+    def values(self, label: str, key: str) -> np.ndarray:
+        """``key`` of every ok record of ``label`` (missing/None as inf), target-major order."""
+        return np.array([np.inf if r.get(key) is None else r[key] for r in self.by_label[label]],
+                        dtype=float)
+
+    def notes(self) -> list[str]:
+        """Counts of finished and failed trials."""
+        n_planned = len(self.meta.get("trials", []))
+        out = [f"{len(self.ok)} of {n_planned} planned trials finished"]
+        if self.failed:
+            out.append(f"{len(self.failed)} trials failed (status error), e.g. "
+                       f"{self.failed[0]['trial']}: {self.failed[0].get('error')}")
+        return out

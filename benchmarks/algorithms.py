@@ -40,7 +40,7 @@ from moik.algorithms.soo.eosma import (
     random_difference_mutation,
     update_distinct_pool,
 )
-from moik.algorithms.soo.mpso import mpso_velocity
+from moik.algorithms.soo.modified_pso import mpso_velocity
 from moik.algorithms.soo.pso import clamp_velocity, pso_velocity
 from moik.algorithms.soo.sma import sma_schedule, sma_update, sma_weights
 

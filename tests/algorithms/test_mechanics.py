@@ -1,11 +1,9 @@
 """Hand-computed checks of the shared mechanics (moik.algorithms.mechanics)."""
 
 import numpy as np
-import pytest
 
 from moik.algorithms.mechanics import (
     best_index,
-    check_param,
     clip_to_bounds,
     constraint_violation,
     greedy_memory,
@@ -14,7 +12,6 @@ from moik.algorithms.mechanics import (
     ranking_fitness,
     uniform_population,
 )
-from moik.exceptions import ParameterError
 
 XL, XU = np.array([0.0, -1.0]), np.array([1.0, 1.0])
 
@@ -59,15 +56,3 @@ def test_constraint_violation_matches_pymoo_default():
     H = np.array([[1e-5], [0.1]])
     np.testing.assert_allclose(constraint_violation(G, H), [0.5, 0.1 - 1e-4])
     np.testing.assert_array_equal(constraint_violation(G, None), [0.5, 0.0])
-
-
-@pytest.mark.parametrize("value", [-0.1, 1.1, "0.5", None, True, np.nan])
-def test_check_param_rejects_with_range(value):
-    with pytest.raises(ParameterError, match=r"z must be a number in \[0.0, 1.0\]"):
-        check_param("z", value, 0.0, 1.0)
-
-
-def test_check_param_open_bounds():
-    assert check_param("V", 1, 0.0, np.inf, lo_open=True, hi_open=True) == 1.0
-    with pytest.raises(ParameterError, match=r"\(0.0, inf\)"):
-        check_param("V", 0.0, 0.0, np.inf, lo_open=True, hi_open=True)

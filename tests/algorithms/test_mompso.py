@@ -7,9 +7,9 @@ from pymoo.problems import get_problem
 
 from moik.algorithms import MOMPSO
 from moik.algorithms.archive import nondominated_mask
-from moik.algorithms.moo.mompso import own_objective, swarm_best
+from moik.algorithms.moo.mo_modified_pso import own_objective, swarm_best
 from moik.exceptions import ParameterError
-from moik.metrics import closest_to_utopia
+from moik.metrics import closest_to_utopia, compromise
 
 
 def test_own_objective_and_swarm_best_on_tiny_arrays():
@@ -34,7 +34,7 @@ def test_swarms_reach_both_ends_and_compromise_is_closest_to_utopia():
     res = minimize(get_problem("zdt1", n_var=10), MOMPSO(pop_size=30), ("n_eval", 20_000), seed=3)
     assert nondominated_mask(res.F).all() and len(res.F) <= 30
     assert res.F[:, 0].min() < 1e-6  # the f1 swarm drives x1 to its bound 0
-    x, f = res.algorithm.compromise()
+    x, f = compromise(res)
     i = closest_to_utopia(res.F)
     np.testing.assert_array_equal(f, res.F[i])
     np.testing.assert_array_equal(x, res.X[i])

@@ -10,7 +10,7 @@ from moik.algorithms import MOEOSMA, MOMPSO
 from moik.algorithms.archive import nondominated_mask
 from moik.algorithms.moo.base import dominates, pareto_memory
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError
-from moik.metrics import closest_to_utopia
+from moik.metrics import closest_to_utopia, compromise
 
 
 class Schaffer(Problem):
@@ -88,7 +88,7 @@ def test_front_of_a_known_problem_and_compromise():
     res = minimize(Schaffer(), MOEOSMA(pop_size=20), ("n_gen", 60), seed=2)
     x0 = res.X[:, 0]
     assert np.all((x0 > -0.05) & (x0 < 2.05))  # Pareto set: 0 <= x <= 2
-    x, f = res.algorithm.compromise()
+    x, f = compromise(res)
     np.testing.assert_array_equal(f, res.F[closest_to_utopia(res.F)])
     assert abs(x[0] - 1.0) < 0.2
 
@@ -107,7 +107,7 @@ def test_bad_problems_and_parameters():
     with pytest.raises(ParameterError, match="max_iter must be a positive integer"):
         MOEOSMA(max_iter=0)
     with pytest.raises(ShapeError, match="no archive yet"):
-        MOEOSMA().compromise()
+        compromise(MOEOSMA())
     with pytest.raises(ShapeError, match=r"X0 must have shape \(k, 2\)"):
         minimize(Schaffer(), MOEOSMA(pop_size=5, X0=np.zeros((6, 2))), ("n_gen", 2))
     with pytest.raises(ParameterError, match="outside the problem bounds"):

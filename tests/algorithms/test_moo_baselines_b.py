@@ -10,17 +10,17 @@ from moik.algorithms import MOCSA, MOJAYA, MOMPA, MOPSO, MOSMA, MOClassicPSO, ge
 from moik.algorithms.archive import CrowdingArchive, GridArchive, nondominated_mask
 from moik.algorithms.moo.mo_csa import crow_move, inside_box
 from moik.algorithms.moo.mompa import top_predator
-from moik.algorithms.moo.mopso import (
+from moik.algorithms.moo.mopso_grid import (
     mopso_mutation,
     mutation_rate,
     pareto_accept,
     reflect_velocity,
 )
 from moik.algorithms.moo.mosma import elitist_order
-from moik.algorithms.moo.swarms import swarm_extreme, swarm_partners
+from moik.algorithms.moo.objective_swarms import swarm_extreme, swarm_partners
 from moik.algorithms.soo.jaya import jaya_update as jaya_move
 from moik.exceptions import ParameterError
-from moik.metrics import hypervolume
+from moik.metrics import compromise, hypervolume
 from moik.problems import BiObjectiveIK, random_reachable_targets
 from moik.robots import get_robot
 
@@ -155,7 +155,7 @@ def test_same_seed_bit_identical_within_bounds_nondominated(name, problem_name):
     assert np.array_equal(np.clip(res.X, xl, xu), res.X)
     assert nondominated_mask(res.F).all()
     assert res.algorithm.evaluator.n_eval == 1200
-    x, f = res.algorithm.compromise()
+    x, f = compromise(res)
     assert any(np.array_equal(f, row) for row in res.F)
 
 

@@ -7,7 +7,7 @@ from pymoo.problems import get_problem
 
 from moik.algorithms import available, get_algorithm
 from moik.algorithms.archive import nondominated_mask
-from moik.algorithms.moo.pymoo_moo import MOEAD, das_dennis_partitions
+from moik.algorithms.moo.moead import MOEAD, das_dennis_partitions
 from moik.exceptions import ParameterError
 from moik.problems.ik import BiObjectiveIK
 from moik.problems.targets import Target

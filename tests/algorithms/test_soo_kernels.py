@@ -10,7 +10,7 @@ import numpy as np
 
 from moik.algorithms.soo.eo import concentration_update, eo_schedule, update_pool, with_mean
 from moik.algorithms.soo.eosma import eosma_update, random_difference_mutation
-from moik.algorithms.soo.mpso import mpso_velocity
+from moik.algorithms.soo.modified_pso import mpso_velocity
 from moik.algorithms.soo.pso import clamp_velocity, pso_velocity
 from moik.algorithms.soo.sma import sma_schedule, sma_update, sma_weights
 from moik.testing import ScriptedRng

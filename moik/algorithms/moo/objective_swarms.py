@@ -21,8 +21,8 @@ This module holds the mechanics those four methods share, once:
 - per-swarm best/worst rows (:func:`swarm_extreme`) and random partners inside
   the same swarm (:func:`swarm_partners`);
 - every evaluated row of every swarm is offered to the shared archive (the
-  base class), ``res.X``/``res.F`` is its front and ``compromise()`` returns the
-  member closest to the utopia point.
+  base class), ``res.X``/``res.F`` is its front and ``moik.metrics.compromise(res)``
+  picks the member closest to the utopia point.
 
 Evaluations: M * pop_size for the initial population and, by default, per iteration.
 """

@@ -1,4 +1,4 @@
-"""Kernels shared by Mirjalili's multi-objective algorithms (MSSA, MOMVO).
+"""The move around the best solution shared by MSSA (salp leaders) and MOMVO (wormholes).
 
 The salp-chain leader (SSA Eq. 3.1, Mirjalili et al. 2017,
 DOI 10.1016/j.advengsoft.2017.07.002) and the wormhole (MVO Eq. 3.2, Mirjalili,

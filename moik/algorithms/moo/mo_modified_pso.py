@@ -8,13 +8,13 @@ DOI 10.3390/app12147091, Section 2.2 (Eqs. 6-8), Algorithm 2:
   a single objective": M swarms of ``pop_size`` particles each (the paper: "the
   same number of particles, similar m-PSO parameters, and the same maximum
   iterations number"); swarm k runs m-PSO (Eqs. 3-5,
-  :mod:`moik.algorithms.soo.mpso`) on objective k alone (shared swarm
-  mechanics in :mod:`moik.algorithms.moo.swarms`);
+  :mod:`moik.algorithms.soo.modified_pso`) on objective k alone (shared swarm
+  mechanics in :mod:`moik.algorithms.moo.objective_swarms`);
 - "then a Pareto-based approach is used to find a compromise solution by
   sorting the closest particle to the utopia point of the Pareto front" (Eq. 8):
   every evaluated particle of every swarm is offered to one shared
   crowding-radius archive (Eqs. 7, Pareto dominance); the result ``res.X``/
-  ``res.F`` is the archive's front, and ``algorithm.compromise()`` returns the
+  ``res.F`` is the archive's front, and ``moik.metrics.compromise(res)`` picks the
   member closest to the utopia point (objectives scaled to [0, 1] over the
   front, :func:`moik.metrics.closest_to_utopia`).
 
@@ -40,8 +40,8 @@ import numpy as np
 
 from moik.algorithms.mechanics import clip_to_bounds
 from moik.algorithms.moo.base import Step
-from moik.algorithms.moo.swarms import ObjectiveSwarms, own_objective, swarm_best
-from moik.algorithms.soo.mpso import SWITCHES, mpso_velocity
+from moik.algorithms.moo.objective_swarms import ObjectiveSwarms, own_objective, swarm_best
+from moik.algorithms.soo.modified_pso import SWITCHES, mpso_velocity
 from moik.algorithms.soo.pso import check_pso_params, clamp_velocity
 from moik.exceptions import ParameterError
 
@@ -55,7 +55,7 @@ class MOMPSO(ObjectiveSwarms):
     ``pbest_X``/``pbest_F``/``pbest_S`` (personal bests on the swarm's objective), ``S``
     (current fitness on the swarm's objective), ``swarm`` (objective index of
     each row), ``classic`` (particles that moved classically last iteration).
-    ``compromise()`` returns the archive member closest to the utopia point.
+    ``moik.metrics.compromise(res)`` picks the archive member closest to the utopia point.
 
     Args:
         pop_size: Particles per swarm N (one swarm per objective).

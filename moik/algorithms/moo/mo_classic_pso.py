@@ -4,7 +4,7 @@ The MO-PSO baseline of Rokbani, Neji, Slim, Mirjalili & Ghandour, "A
 Multi-Objective Modified PSO for Inverse Kinematics of a 5-DOF Robotic Arm",
 Applied Sciences 12, 7091 (2022), DOI 10.3390/app12147091, Section 5.2
 (Table 6), built the way the paper builds MO-m-PSO (Section 2.2, Algorithm 2,
-:mod:`moik.algorithms.moo.swarms`): swarm k runs classical PSO (Shi &
+:mod:`moik.algorithms.moo.objective_swarms`): swarm k runs classical PSO (Shi &
 Eberhart 1998, DOI 10.1109/ICEC.1998.699146; the paper's Eqs. 1-2,
 :mod:`moik.algorithms.soo.pso`) on objective k alone:
 
@@ -14,7 +14,7 @@ Eberhart 1998, DOI 10.1109/ICEC.1998.699146; the paper's Eqs. 1-2,
 
 Every evaluated particle of every swarm is offered to the shared
 crowding-radius archive; ``res.X``/``res.F`` are its front and
-``compromise()`` returns the member closest to the utopia point (Eq. 8).
+``moik.metrics.compromise(res)`` picks the member closest to the utopia point (Eq. 8).
 
 Defaults: w=0.8, c1=c2=1.493 (Section 4.1; the paper's PSO baselines use
 "similar m-PSO parameters"). Evaluations: ``M pop_size`` per iteration and
@@ -36,7 +36,7 @@ import numpy as np
 
 from moik.algorithms.mechanics import clip_to_bounds
 from moik.algorithms.moo.base import Step
-from moik.algorithms.moo.swarms import ObjectiveSwarms, swarm_best
+from moik.algorithms.moo.objective_swarms import ObjectiveSwarms, swarm_best
 from moik.algorithms.soo.pso import check_pso_params, clamp_velocity, pso_velocity
 
 

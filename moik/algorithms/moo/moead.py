@@ -1,11 +1,15 @@
-"""pymoo's multi-objective algorithms as registered in moik, for comparisons.
+"""MOEA/D: pymoo's, with default reference directions.
 
-``NSGA2``, ``SMSEMOA`` and ``MOPSO_CD`` are registered unchanged (pymoo 0.6.2
-defaults). pymoo's ``MOEAD`` needs reference directions at construction;
-:class:`MOEAD` here is pymoo's with a default: when ``ref_dirs`` is None, the
-Das-Dennis directions for the problem's number of objectives are built at setup
-with the most partitions that give at most ``pop_size`` directions (for two
-objectives: ``n_partitions = pop_size - 1``, exactly ``pop_size`` directions).
+Zhang & Li, "MOEA/D: A Multiobjective Evolutionary Algorithm Based on
+Decomposition", IEEE Transactions on Evolutionary Computation 11(6), 712-731
+(2007), DOI 10.1109/TEVC.2007.892759, as implemented by pymoo. pymoo's ``MOEAD``
+needs reference directions at construction; :class:`MOEAD` here is pymoo's with
+a default: when ``ref_dirs`` is None, the Das-Dennis directions for the
+problem's number of objectives are built at setup with the most partitions that
+give at most ``pop_size`` directions (for two objectives:
+``n_partitions = pop_size - 1``, exactly ``pop_size`` directions). pymoo's other
+multi-objective algorithms (NSGA2, SMS-EMOA, MOPSO-CD) are registered unchanged
+(:mod:`moik.algorithms.registry`).
 """
 
 from __future__ import annotations
@@ -16,8 +20,8 @@ import numpy as np
 from pymoo.algorithms.moo import moead
 from pymoo.util.ref_dirs import get_reference_directions
 
-from moik.algorithms.driver import is_int
-from moik.exceptions import ParameterError
+from moik._validate import integer
+from moik.algorithms.array_state import refuse_unknown_keywords
 
 
 def das_dennis_partitions(n_obj: int, pop_size: int) -> int:
@@ -40,14 +44,18 @@ class MOEAD(moead.MOEAD):
     Args:
         ref_dirs: Reference directions (n, n_obj), or None for Das-Dennis ones.
         pop_size: Number of directions when ``ref_dirs`` is None, an integer >= 2.
-        **kwargs: pymoo ``MOEAD`` options (``n_neighbors``, ``decomposition`` ...).
+        **kwargs: pymoo ``MOEAD`` options (``n_neighbors``, ``decomposition`` ...) and
+            pymoo ``Algorithm`` options.
+
+    Raises:
+        ParameterError: For a keyword pymoo's ``MOEAD`` does not take (listing the
+            accepted ones) or a bad ``pop_size``.
     """
 
     def __init__(self, *, ref_dirs: np.ndarray | None = None, pop_size: int = 100, **kwargs):
-        if not is_int(pop_size) or pop_size < 2:
-            raise ParameterError(f"pop_size must be an integer >= 2, got {pop_size!r}")
+        refuse_unknown_keywords(type(self), kwargs)
+        self._n_dirs = integer("pop_size", pop_size, minimum=2)
         self._default_dirs = ref_dirs is None
-        self._n_dirs = int(pop_size)
         dirs = default_ref_dirs(2, self._n_dirs) if ref_dirs is None else ref_dirs
         super().__init__(ref_dirs=dirs, **kwargs)
 

@@ -1,22 +1,62 @@
-"""Mechanics shared by the single- and multi-objective array-state bases.
+"""The generation driver shared by the single- and multi-objective array-state bases.
 
 Both :class:`moik.algorithms.base.ArrayAlgorithm` and
-:class:`moik.algorithms.moo.base.MOArrayAlgorithm` validate the same
+:class:`moik.algorithms.moo.base.MOArrayAlgorithm` refuse unknown constructor
+keywords (a misspelled option must not pass silently), validate the same
 constructor arguments, need finite bounds, infer the schedule length T from the
 termination, build the initial population the same way (uniform, optionally
 seeded with ``X0``), count the evaluation budget the same way and build pymoo
-``Population`` objects only when read (:class:`ArrayStateMixin`).
+``Population`` objects only when read (:class:`ArrayStateMixin`, whose
+``next()`` drives one generation).
 """
 
 from __future__ import annotations
 
+import functools
+import inspect
+
 import numpy as np
+from pymoo.core.algorithm import Algorithm
 from pymoo.core.population import Population
 from pymoo.core.termination import TerminateIfAny
 from pymoo.termination.default import DefaultTermination
 
+from moik._validate import integer, is_integer, keywords
 from moik.algorithms.mechanics import clip_to_bounds, uniform_population
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError
+
+PYMOO_OPTIONS: frozenset[str] = frozenset(
+    p.name for p in inspect.signature(Algorithm.__init__).parameters.values()
+    if p.name != "self" and p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY))
+"""The options of pymoo's ``Algorithm.__init__`` (termination, output, display, callback,
+archive, return_least_infeasible, save_history, verbose, seed, evaluator): accepted by
+every algorithm besides its own hyperparameters."""
+
+
+@functools.cache
+def constructor_keywords(cls: type) -> frozenset[str]:
+    """Every keyword ``cls(...)`` accepts: the named parameters of each ``__init__`` along
+    its MRO (subclasses forward the rest through ``**kwargs``) and :data:`PYMOO_OPTIONS`."""
+    names = set(PYMOO_OPTIONS)
+    for klass in cls.__mro__:
+        init = klass.__dict__.get("__init__")
+        if init is not None and klass not in (Algorithm, object):
+            names.update(p.name for p in inspect.signature(init).parameters.values()
+                         if p.name != "self"
+                         and p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY))
+    return frozenset(names)
+
+
+def refuse_unknown_keywords(cls: type, given: dict) -> None:
+    """Refuse keywords that reached a base's ``**kwargs`` and that ``cls`` does not accept
+    (pymoo's ``Algorithm`` would swallow them silently).
+
+    Raises:
+        ParameterError: Naming the unknown keywords and listing every keyword ``cls``
+            accepts (:func:`constructor_keywords`).
+    """
+    if given and not PYMOO_OPTIONS.issuperset(given):
+        keywords(cls.__name__, given, constructor_keywords(cls))
 
 
 def find_limit(termination, attr: str) -> float:
@@ -29,17 +69,18 @@ def find_limit(termination, attr: str) -> float:
     return limit
 
 
-def is_int(value) -> bool:
-    """An integer that is not a bool."""
-    return isinstance(value, (int, np.integer)) and not isinstance(value, bool)
+def check_sizes(pop_size: object, min_pop_size: int, max_iter: object) -> tuple[int, int | None]:
+    """``(pop_size, max_iter)`` validated: an integer >= ``min_pop_size``; a positive
+    integer or None.
 
-
-def check_sizes(pop_size, min_pop_size: int, max_iter) -> None:
-    """Validate ``pop_size`` (>= ``min_pop_size``) and ``max_iter`` (positive or None)."""
-    if not is_int(pop_size) or pop_size < min_pop_size:
-        raise ParameterError(f"pop_size must be an integer >= {min_pop_size}, got {pop_size!r}")
-    if max_iter is not None and (not is_int(max_iter) or max_iter < 1):
+    Raises:
+        ParameterError: For a value that is not an integer (bools and floats refused)
+            or is out of range.
+    """
+    pop_size = integer("pop_size", pop_size, minimum=min_pop_size)
+    if max_iter is not None and not (is_integer(max_iter) and max_iter >= 1):
         raise ParameterError(f"max_iter must be a positive integer or None, got {max_iter!r}")
+    return pop_size, None if max_iter is None else int(max_iter)
 
 
 def finite_bounds(problem, name: str) -> tuple[np.ndarray, np.ndarray]:

@@ -40,8 +40,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.archive import ArchiveBase, GridArchive
-from moik.algorithms.mechanics import check_param, clip_to_bounds
+from moik.algorithms.mechanics import clip_to_bounds
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step, dominates
 from moik.algorithms.soo.pso import pso_velocity
 
@@ -108,11 +109,11 @@ class MOPSO(MOArrayAlgorithm):
                  **kwargs):
         super().__init__(pop_size=pop_size, archive_size=archive_size, X0=X0,
                          max_iter=max_iter, **kwargs)
-        self.w = check_param("w", w, 0.0, 1.5)
-        self.wdamp = check_param("wdamp", wdamp, 0.0, 1.0, lo_open=True)
-        self.c1 = check_param("c1", c1, 0.0, 4.0)
-        self.c2 = check_param("c2", c2, 0.0, 4.0)
-        self.mu = check_param("mu", mu, 0.0, 1.0, lo_open=True)
+        self.w = interval("w", w, 0.0, 1.5)
+        self.wdamp = interval("wdamp", wdamp, 0.0, 1.0, lo_open=True)
+        self.c1 = interval("c1", c1, 0.0, 4.0)
+        self.c2 = interval("c2", c2, 0.0, 4.0)
+        self.mu = interval("mu", mu, 0.0, 1.0, lo_open=True)
 
     def _make_archive(self, capacity: int) -> ArchiveBase:
         return GridArchive.mopso(capacity)

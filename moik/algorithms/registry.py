@@ -104,7 +104,7 @@ _ROKBANI_2022 = "Rokbani et al. 2022, Appl. Sci. 12, 7091, DOI 10.3390/app121470
 _SSA_2017 = ("Mirjalili et al. 2017, Adv. Eng. Softw. 114, 163-191, "
              "DOI 10.1016/j.advengsoft.2017.07.002")
 _MCHOA = ("Hou, Luo, Wu, Sun & Zhang, Solution of Inverse Kinematics for Industry Robot "
-          "Based on Multi-Strategy Improved Chimpanzee Optimization Algorithm")
+          "Based on MChOA")
 
 _SINGLE = [
     ("eosma", EOSMA, _YIN_2022),

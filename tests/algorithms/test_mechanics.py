@@ -1,6 +1,7 @@
 """Hand-computed checks of the shared mechanics (moik.algorithms.mechanics)."""
 
 import numpy as np
+import pytest
 
 from moik.algorithms.mechanics import (
     best_index,
@@ -8,10 +9,13 @@ from moik.algorithms.mechanics import (
     constraint_violation,
     greedy_memory,
     is_better,
+    mantegna_levy,
+    mantegna_sigma,
     midpoint_repair,
     ranking_fitness,
     uniform_population,
 )
+from moik.testing import ScriptedRng
 
 XL, XU = np.array([0.0, -1.0]), np.array([1.0, 1.0])
 
@@ -56,3 +60,9 @@ def test_constraint_violation_matches_pymoo_default():
     H = np.array([[1e-5], [0.1]])
     np.testing.assert_allclose(constraint_violation(G, H), [0.5, 0.1 - 1e-4])
     np.testing.assert_array_equal(constraint_violation(G, None), [0.5, 0.0])
+
+
+def test_mantegna_sigma_and_levy_step():
+    assert mantegna_sigma(1.5) == pytest.approx(0.696574502, rel=1e-8)
+    step = mantegna_levy((1, 1), 1.5, rng=ScriptedRng([[1.0]], [[-4.0]]))
+    assert step[0, 0] == pytest.approx(mantegna_sigma(1.5) / 4.0 ** (2 / 3))

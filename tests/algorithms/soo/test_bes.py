@@ -1,4 +1,5 @@
-"""BES and I-BES (Zhao et al. 2024): kernels on tiny arrays, runs, the I-BES IK case.
+"""BES and I-BES (moik.algorithms.soo.bes; Zhao et al. 2024): kernels on tiny arrays, runs,
+the I-BES IK case.
 
 ``ScriptedRng`` hands out queued numbers in the order a kernel draws them, so
 each expected value is worked out by hand from the equations of bes.py.
@@ -8,11 +9,10 @@ import math
 
 import numpy as np
 import pytest
-from pymoo.core.problem import Problem
 from pymoo.optimize import minimize
 
 import moik
-from moik.algorithms import BES, IBES, PSO, get_algorithm
+from moik.algorithms import BES, IBES, get_algorithm
 from moik.algorithms.soo.bes import (
     levy_sigma,
     levy_step,
@@ -22,16 +22,7 @@ from moik.algorithms.soo.bes import (
     swoop,
 )
 from moik.exceptions import ParameterError
-from moik.problems.benchmarks import get_benchmark
 from moik.testing import ScriptedRng
-
-
-class Sphere(Problem):
-    def __init__(self, n_var=10):
-        super().__init__(n_var=n_var, n_obj=1, xl=-100.0, xu=100.0)
-
-    def _evaluate(self, X, out, *args, **kwargs):
-        out["F"] = (X * X).sum(axis=1)
 
 
 def test_levy_sigma_eq10_and_step_eq9():
@@ -81,16 +72,16 @@ def test_swoop_eq7():
 
 
 @pytest.mark.parametrize(("cls", "per_iteration"), [(BES, 29), (IBES, 30)])
-def test_evaluations_per_iteration_and_exact_budget(cls, per_iteration):
-    res = minimize(Sphere(), cls(pop_size=10), ("n_gen", 5), seed=0)
+def test_evaluations_per_iteration_and_exact_budget(sphere, cls, per_iteration):
+    res = minimize(sphere(), cls(pop_size=10), ("n_gen", 5), seed=0)
     assert res.algorithm.evaluator.n_eval == 10 + 4 * per_iteration
-    res = minimize(Sphere(), cls(pop_size=10), ("n_eval", 1000), seed=0)
+    res = minimize(sphere(), cls(pop_size=10), ("n_eval", 1000), seed=0)
     assert res.algorithm.evaluator.n_eval == 1000
 
 
 @pytest.mark.parametrize("name", ["bes", "ibes"])
-def test_deterministic_in_bounds_greedy(name):
-    runs = [minimize(Sphere(3), get_algorithm(name, pop_size=12), ("n_gen", 20), seed=5)
+def test_deterministic_in_bounds_greedy(sphere, name):
+    runs = [minimize(sphere(n_var=3), get_algorithm(name, pop_size=12), ("n_gen", 20), seed=5)
             for _ in range(2)]
     np.testing.assert_array_equal(runs[0].X, runs[1].X)
     alg = runs[0].algorithm
@@ -113,32 +104,21 @@ def test_presets_and_validation():
         BES(levy="yes")
 
 
-def test_pso_ibes_preset():
-    p = PSO.ibes(pop_size=20)
-    assert (p.w, p.c1, p.c2, p.vmax_rate, p.pop_size) == (0.9, 1.4, 1.4, 0.5, 20)
-
-
 @pytest.mark.parametrize("cls", [BES, IBES])
-def test_sphere_10d_below_1e_6_within_30k(cls):
-    res = minimize(Sphere(), cls(pop_size=30), ("n_eval", 30_000), seed=1)
-    assert res.F[0] < 1e-6
+def test_sphere_10d_below_1e_6_within_30k(check, cls):
+    check.solves_sphere(lambda: cls(pop_size=30), level=1e-6)
 
 
 @pytest.mark.parametrize(("name", "level"), [("F1", 1e-6), ("F9", 40.0)])
-def test_ibes_on_classical_benchmarks(name, level):
+def test_ibes_on_classical_benchmarks(check, name, level):
     """F9 (Rastrigin, 10-D): the greedy phases settle in a local basin; over seeds 0-4
     I-BES reaches 6-35 with 15,000 evaluations (BES 0-22), so the level is 40."""
-    problem = get_benchmark(name, n_var=10)
-    res = minimize(problem, IBES(pop_size=30), ("n_eval", 15_000), seed=2)
-    assert res.F[0] < level + problem.f_opt
+    check.classical_benchmark(lambda: IBES(pop_size=30), name, level=level)
 
 
 @pytest.mark.parametrize("cls", [BES, IBES])
-def test_spring_best_design_is_feasible(cls):
-    problem = get_benchmark("spring")
-    res = minimize(problem, cls(pop_size=30), ("n_eval", 15_000), seed=3)
-    G = problem.evaluate(res.X[None], return_values_of=["G"])
-    assert np.all(G <= 0.0) and res.CV[0] == 0.0
+def test_spring_best_design_is_feasible(check, cls):
+    res = check.spring_feasible(lambda: cls(pop_size=30), n_eval=15_000)
     assert res.F[0] < 0.0135  # best known 0.012665
 
 

@@ -106,8 +106,6 @@ def test_bad_problems_and_parameters():
         MOEOSMA(pop_size=2)
     with pytest.raises(ParameterError, match="max_iter must be a positive integer"):
         MOEOSMA(max_iter=0)
-    with pytest.raises(ShapeError, match="no archive yet"):
-        compromise(MOEOSMA())
     with pytest.raises(ShapeError, match=r"X0 must have shape \(k, 2\)"):
         minimize(Schaffer(), MOEOSMA(pop_size=5, X0=np.zeros((6, 2))), ("n_gen", 2))
     with pytest.raises(ParameterError, match="outside the problem bounds"):

@@ -1,4 +1,5 @@
-"""ChOA and the MChOA ablations: chaotic maps, coefficients, the four-leader average, runs.
+"""ChOA and the MChOA ablations (moik.algorithms.soo.choa): chaotic maps, coefficients, the
+four-leader average, runs.
 
 ``ScriptedRng`` hands out queued numbers in the order a kernel draws them, so
 each expected value is worked out by hand from the equations of choa.py.
@@ -8,7 +9,6 @@ import math
 
 import numpy as np
 import pytest
-from pymoo.core.problem import Problem
 from pymoo.optimize import minimize
 
 from moik.algorithms import CChOA, ChOA, MChOA, OChOA, OIChOA, WChOA, get_algorithm
@@ -22,18 +22,9 @@ from moik.algorithms.soo.choa import (
     iterative_map,
 )
 from moik.exceptions import ParameterError
-from moik.problems.benchmarks import get_benchmark
 from moik.testing import ScriptedRng
 
 NAMES = ["choa", "cchoa", "oichoa", "ochoa", "wchoa", "mchoa"]
-
-
-class Sphere(Problem):
-    def __init__(self, n_var=10):
-        super().__init__(n_var=n_var, n_obj=1, xl=-100.0, xu=100.0)
-
-    def _evaluate(self, X, out, *args, **kwargs):
-        out["F"] = (X * X).sum(axis=1)
 
 
 def test_chaotic_maps():
@@ -108,37 +99,29 @@ def test_presets_switches_and_validation():
         ChOA(weighted=1)
 
 
-def test_chaotic_values_change_per_iteration_and_chimp():
-    first = minimize(Sphere(3), ChOA(pop_size=8), ("n_gen", 2), seed=0).algorithm.chaos
-    alg = minimize(Sphere(3), ChOA(pop_size=8), ("n_gen", 3), seed=0).algorithm
+def test_chaotic_values_change_per_iteration_and_chimp(sphere):
+    first = minimize(sphere(n_var=3), ChOA(pop_size=8), ("n_gen", 2), seed=0).algorithm.chaos
+    alg = minimize(sphere(n_var=3), ChOA(pop_size=8), ("n_gen", 3), seed=0).algorithm
     assert not np.array_equal(first, alg.chaos)
     assert np.unique(alg.chaos).size == alg.chaos.size  # not one constant value
 
 
 @pytest.mark.parametrize("name", NAMES)
-def test_deterministic_bounds_budget_sphere(name):
-    runs = [minimize(Sphere(), get_algorithm(name, pop_size=30), ("n_eval", 30_000), seed=1)
-            for _ in range(2)]
-    np.testing.assert_array_equal(runs[0].X, runs[1].X)
-    assert runs[0].algorithm.evaluator.n_eval == 30_000
-    assert np.all(np.abs(runs[0].algorithm.X) <= 100.0)
-    assert runs[0].F[0] < 1e-6
+def test_deterministic_bounds_budget_sphere(check, sphere, name):
+    res = check.reproducible_exact_budget(lambda: get_algorithm(name, pop_size=30), sphere(),
+                                          n_eval=30_000, seed=1, bound=100.0)
+    assert res.F[0] < 1e-6
 
 
 @pytest.mark.parametrize(("name", "bench", "level"), [
     ("choa", "F1", 1e-6), ("mchoa", "F1", 1e-6), ("choa", "F9", 60.0), ("mchoa", "F9", 1e-6)])
-def test_classical_benchmarks(name, bench, level):
+def test_classical_benchmarks(check, name, bench, level):
     """F9 (Rastrigin, 10-D, 15,000 evaluations, seeds 0-4): plain ChOA stops in local
     basins at 15-58, MChOA reaches 0 in four of five runs (1.0 in one), OIChOA 0 in
     four; the MChOA paper's Table 3 tells the same story for F9."""
-    problem = get_benchmark(bench, n_var=10)
-    res = minimize(problem, get_algorithm(name, pop_size=30), ("n_eval", 15_000), seed=2)
-    assert res.F[0] < level + problem.f_opt
+    check.classical_benchmark(lambda: get_algorithm(name, pop_size=30), bench, level=level)
 
 
 @pytest.mark.parametrize("name", ["choa", "mchoa"])
-def test_spring_best_design_is_feasible(name):
-    problem = get_benchmark("spring")
-    res = minimize(problem, get_algorithm(name, pop_size=30), ("n_eval", 15_000), seed=3)
-    G = problem.evaluate(res.X[None], return_values_of=["G"])
-    assert np.all(G <= 0.0) and res.CV[0] == 0.0
+def test_spring_best_design_is_feasible(check, name):
+    check.spring_feasible(lambda: get_algorithm(name, pop_size=30), n_eval=15_000)

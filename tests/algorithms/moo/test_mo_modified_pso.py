@@ -1,4 +1,5 @@
-"""MO-m-PSO: swarm kernels, evaluation count, the shared archive and the compromise."""
+"""MO-m-PSO (moik.algorithms.moo.mo_modified_pso): evaluation count, the shared archive and
+the compromise."""
 
 import numpy as np
 import pytest
@@ -7,18 +8,8 @@ from pymoo.problems import get_problem
 
 from moik.algorithms import MOMPSO
 from moik.algorithms.archive import nondominated_mask
-from moik.algorithms.moo.mo_modified_pso import own_objective, swarm_best
 from moik.exceptions import ParameterError
 from moik.metrics import closest_to_utopia, compromise
-
-
-def test_own_objective_and_swarm_best_on_tiny_arrays():
-    F = np.array([[1.0, 9.0], [2.0, 8.0], [3.0, 7.0], [4.0, 6.0]])
-    swarm = np.array([0, 0, 1, 1])
-    np.testing.assert_array_equal(own_objective(F, swarm), [1.0, 2.0, 7.0, 6.0])
-    P = np.arange(8.0).reshape(4, 2)
-    g = swarm_best(P, np.array([5.0, 1.0, 3.0, 4.0]), 2)
-    np.testing.assert_array_equal(g, [[2.0, 3.0], [2.0, 3.0], [4.0, 5.0], [4.0, 5.0]])
 
 
 @pytest.mark.parametrize(("switch", "per_iteration"), [("mean-position", 22), ("mean-fitness", 20)])

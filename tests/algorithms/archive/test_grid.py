@@ -1,4 +1,4 @@
-"""Tests of GridArchive specifics (shared invariants are in test_archive.py)."""
+"""Adaptive-grid archive (moik.algorithms.archive.grid); shared invariants are in test_base.py."""
 
 from __future__ import annotations
 
@@ -112,3 +112,8 @@ def test_presets_and_repr():
 def test_bad_parameters(kwargs, match):
     with pytest.raises(ParameterError, match=match):
         GridArchive(10, **kwargs)
+
+
+def test_pressure_must_be_exp_or_power():
+    with pytest.raises(ParameterError, match="pressure must be one of exp, power"):
+        GridArchive(5, pressure="linear")

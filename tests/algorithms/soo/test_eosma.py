@@ -1,8 +1,9 @@
-"""EOSMA accuracy on the EOSMA paper's 7-DOF arm (issue 3), with the paper's protocol.
+"""EOSMA (moik.algorithms.soo.eosma): its kernels, scenarios, and its accuracy on the
+EOSMA paper's 7-DOF arm with the paper's protocol.
 
 Yin et al., Sci. Rep. 12, 9421 (2022). Targets are the paper's: FK of joint
 vectors drawn uniformly within the Table 1 limits (``random_reachable_targets``),
-20 per test as the issue asks. Each target is solved with the paper's re-solve
+20 per test. Each target is solved with the paper's re-solve
 protocol (``solve_until_success``: re-run with a fresh seed, at most 10 runs).
 
 Units decide scenario 2. Eq. 28 adds a length (Eq. 29) to an angle (Eq. 30,
@@ -23,8 +24,8 @@ arm in cm (catalog)    16 of 60     16 of 20; 9.4e-3 / 9.2e-2            1.65
 
 So Table 7 is reproduced with the arm in metres (paper: 7.79e-18 / 5.55e-17,
 0.36 s) and not in cm, where runs converge on the position and stall on the
-orientation (position error ~1e-5 cm, Euler error 0.06-1.4 rad in failed runs). The issue's
-"18 of 20 to < 1e-8" is asserted for the metre arm; the cm figure is asserted
+orientation (position error ~1e-5 cm, Euler error 0.06-1.4 rad in failed runs). The
+target "18 of 20 to < 1e-8" is asserted for the metre arm; the cm figure is asserted
 as measured (slow test).
 
 Scenario 1 (position only) does not depend on the unit: EOSMA's operators and
@@ -32,7 +33,7 @@ its comparisons are invariant to scaling f. Single runs reach < 1e-10 cm on 93
 of 100 targets and < 1e-6 on 100 of 100; the others stall between 1e-10 and
 3e-7 cm when the population collapses onto one point (q=0 has no mutation).
 The paper reports a worst case of 7.85e-16 (Table 5), which these single runs
-do not match; the issue's "< 1e-10 cm on 20 targets" is therefore reached with
+do not match; the target "< 1e-10 cm on 20 targets" is therefore reached with
 the re-solve protocol at threshold 1e-10 instead of the paper's 1e-6.
 """
 
@@ -41,10 +42,16 @@ import numpy as np
 import pytest
 
 from moik.algorithms import EOSMA
-from moik.algorithms.soo.eosma import update_distinct_pool
+from moik.algorithms.soo.eosma import (
+    eosma_update,
+    random_difference_mutation,
+    update_distinct_pool,
+)
+from moik.exceptions import ParameterError
 from moik.experiments.protocol import solve_until_success
 from moik.problems import PoseIK, PositionIK, random_reachable_targets
 from moik.robots import get_robot
+from moik.testing import ScriptedRng
 
 N_TARGETS = 20
 TARGET_SEED = 2022
@@ -72,6 +79,33 @@ def solve_all(robot, scenario: int, threshold: float):
         first.append(out.run_f[0])
         assert np.all(robot.within_limits(out.best.X))
     return np.array(final), np.array(first)
+
+
+def test_eosma_update_eq15_picks_operator_per_agent():
+    P, W, pool = np.array([[1.0], [2.0]]), np.array([[1.0], [2.0]]), np.array([[3.0], [4.0]])
+    rng = ScriptedRng(np.full((2, 1), 0.5), np.full((2, 1), 0.75), [1, 0], [0.4, 0.4],
+                      [0.6, 0.6],  # EO draws (t1 = 0 makes F = 0: X = Ceq)
+                      [[0.9], [0.5]], [0, 1], [0, 0],  # vb, A, B
+                      [0.1, 0.9])  # rand < z: EO for agent 0, SMA for agent 1
+    out = eosma_update(P, np.array([0.5]), pool, W, 0.0, 1.0, z=0.5, a1=2.0, GP=0.5, V=1.0,
+                       rng=rng)
+    np.testing.assert_allclose(out, [[4.0], [0.5 + 0.5 * (2.0 * 2.0 - 1.0)]])
+
+
+def test_random_difference_mutation_eq16():
+    P = np.array([[0.0], [1.0], [2.0]])
+    rng = ScriptedRng([[2, 1, 1], [1, 2, 0], [0, 0, 0]], [[0.5], [0.4], [0.3]])
+    out = random_difference_mutation(P, rng=rng)
+    np.testing.assert_allclose(out, [[2.5], [1.8], [1.0]])
+
+
+def test_scenarios():
+    s1, s2 = EOSMA.scenario(1), EOSMA.scenario(2)
+    assert (s1.pop_size, s1.q, s1.a1, s1.a2, s1.z) == (50, 0.0, 1.0, 2.0, 0.5)
+    assert (s2.pop_size, s2.q, s2.a1) == (100, 1.0, 2.0)
+    assert EOSMA.scenario(1, pop_size=20).pop_size == 20
+    with pytest.raises(ParameterError, match="scenario must be 1 or 2"):
+        EOSMA.scenario(3)
 
 
 def test_distinct_pool_keeps_each_point_once():
@@ -118,7 +152,7 @@ def test_scenario2_pose_table1_metres():
 
 @pytest.mark.slow
 def test_scenario2_pose_cm_as_measured():
-    """Scenario 2 with the catalog arm in cm: NOT the issue's 18 of 20.
+    """Scenario 2 with the catalog arm in cm: NOT 18 of 20.
 
     The same algorithm and targets; only the unit of length differs. Measured:
     2 of 20 first runs and 16 of 20 protocol results below 1e-8 (103 runs, about

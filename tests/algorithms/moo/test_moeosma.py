@@ -1,4 +1,5 @@
-"""MOEOSMA: kernels, evaluation count, parameters, and HV sanity against pymoo's NSGA2."""
+"""MOEOSMA (moik.algorithms.moo.moeosma): kernels, evaluation count, parameters, and HV
+sanity against pymoo's NSGA2."""
 
 import numpy as np
 import pytest

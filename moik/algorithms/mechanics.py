@@ -5,7 +5,9 @@ Eq. 17), the greedy personal-best memory (EOSMA Eq. 18) and feasibility-first
 comparisons (Deb's rules: a feasible point beats an infeasible one, two
 infeasible ones compare by total violation CV, two feasible ones by f). ``CV``
 is ``None`` for unconstrained problems, which keeps their comparisons to a
-single ``<``. Randomness only through the ``rng`` keyword (no default).
+single ``<``. Mantegna's Levy-stable step is shared by FPA, MPA, HHO, MODA and
+I-BES. Randomness only through the ``rng`` keyword (no default). Hyperparameter
+validation is :mod:`moik._validate`'s (``interval``, ``integer``, ``flag``).
 """
 
 from __future__ import annotations

@@ -45,7 +45,7 @@ Deviations and readings:
 - W uses ``log10`` and ``eps`` as the SMA code (Eq. 4 prints ``log``).
 - Constrained problems: comparisons are feasibility-first (see base.py).
 
-Reproducing Tables 5 and 7 on the 7-DOF arm: tests/algorithms/test_eosma_ik.py
+Reproducing Tables 5 and 7 on the 7-DOF arm: tests/algorithms/soo/test_eosma.py
 (Table 7 is reproduced with Table 1's lengths in metres, not in cm).
 """
 

@@ -32,7 +32,7 @@ from pymoo.algorithms.soo.nonconvex.ga import GA
 from pymoo.core.algorithm import Algorithm
 
 from moik._validate import choice, is_integer, keywords
-from moik.algorithms.array_state import PYMOO_OPTIONS, constructor_keywords
+from moik.algorithms.array_state import PYMOO_OPTIONS, ArrayStateMixin, constructor_keywords
 from moik.algorithms.moo.base import MOArrayAlgorithm
 from moik.algorithms.moo.mo_classic_pso import MOClassicPSO
 from moik.algorithms.moo.mo_csa import MOCSA
@@ -272,8 +272,8 @@ def is_multi_objective(name: str) -> bool:
 def accepted_parameters(name: str) -> list[str]:
     """Keyword names ``get_algorithm(name, ...)`` accepts (class and pymoo options), sorted."""
     cls = entry(name).cls
-    if cls.__module__.startswith("moik."):
-        return sorted(constructor_keywords(cls))
+    if issubclass(cls, ArrayStateMixin) or cls.__module__.startswith("moik."):
+        return sorted(constructor_keywords(cls))  # what the class itself accepts
     own = {p.name for p in inspect.signature(cls.__init__).parameters.values()
            if p.kind in (p.KEYWORD_ONLY, p.POSITIONAL_OR_KEYWORD) and p.name != "self"}
     return sorted(own | PYMOO_OPTIONS | set(_FORWARDED.get(cls, ())))

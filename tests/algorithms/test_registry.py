@@ -180,6 +180,14 @@ def test_register_infers_or_takes_kind_and_source(monkeypatch):
     with pytest.raises(UnknownNameError, match="unknown algorithm kind"):
         register("my-pso", registry.PSO, kind="both")
 
+    class MyMOPSO(registry.MOClassicPSO):  # a user's subclass: accepts what its bases take
+        pass
+
+    register("my-mo-pso", MyMOPSO)
+    assert algorithm_kind("my-mo-pso") == "multi-objective"
+    assert {"max_iter", "archive_size", "w"} <= set(accepted_parameters("my-mo-pso"))
+    assert get_algorithm("my-mo-pso", max_iter=5).max_iter == 5
+
 
 # ---- what every registered algorithm keeps ----------------------------------------------------
 @pytest.mark.parametrize("name", SINGLE)

@@ -9,7 +9,7 @@ Run: ``.venv/bin/python benchmarks/algorithms.py [--quick]``
     N=50, T=500) and scenario 2 (pose with the Eq. 26 Euler error, N=100,
     T=1000), one run and with the paper's re-solve protocol; scenario 2 both
     with the catalog arm (cm) and with Table 1's lengths in metres (the unit
-    that reproduces Table 7, see tests/algorithms/test_eosma_ik.py). The
+    that reproduces Table 7, see tests/algorithms/soo/test_eosma.py). The
     paper's MATLAB figures: 0.0567 s and 0.3608 s; goals 0.015 s and 0.08 s.
 (c) moik EO/SMA/PSO against mealpy 3.0.3 OriginalEO/OriginalSMA/OriginalPSO,
     N=100, 1000 iterations, on the 7-D sphere and on eosma7 position IK
@@ -40,7 +40,7 @@ from moik.algorithms.soo.eosma import (
     random_difference_mutation,
     update_distinct_pool,
 )
-from moik.algorithms.soo.mpso import mpso_velocity
+from moik.algorithms.soo.modified_pso import mpso_velocity
 from moik.algorithms.soo.pso import clamp_velocity, pso_velocity
 from moik.algorithms.soo.sma import sma_schedule, sma_update, sma_weights
 

@@ -74,11 +74,8 @@ def number(name: str, value: object, *, minimum: float | None = None,
     """
     lo = -np.inf if minimum is None else minimum
     hi = np.inf if maximum is None else maximum
-    ok = isinstance(value, _REAL) and not isinstance(value, (bool, np.bool_))
-    v = float(value) if ok else np.nan  # type: ignore[arg-type]
-    ok = ok and bool(np.isfinite(v))
-    ok = ok and (lo < v if lo_open else lo <= v) and (v < hi if hi_open else v <= hi)
-    if not ok:
+    v = _real_in(value, lo, hi, lo_open, hi_open)
+    if v is None:
         if minimum is None and maximum is None:
             expected = "a finite number"
         else:
@@ -86,6 +83,33 @@ def number(name: str, value: object, *, minimum: float | None = None,
                         f"{lo}, {hi}{')' if hi_open or maximum is None else ']'}")
         raise error(f"{name} must be {expected}, got {value!r}")
     return v
+
+
+def interval(name: str, value: object, lo: float, hi: float, *, lo_open: bool = False,
+             hi_open: bool = False, error: type[MoikError] = ParameterError) -> float:
+    """``value`` as a finite ``float`` in the interval from ``lo`` to ``hi``.
+
+    The rule of :func:`number`, with both ends given (an infinite end is open) and
+    the message hyperparameters use: ``"z must be a number in [0.0, 1.0], got 2"``.
+
+    Raises:
+        error: If ``value`` is not a finite real number (bools refused) or lies
+            outside the interval.
+    """
+    v = _real_in(value, lo, hi, lo_open, hi_open)
+    if v is None:
+        raise error(f"{name} must be a number in {'(' if lo_open else '['}{lo}, {hi}"
+                    f"{')' if hi_open else ']'}, got {value!r}")
+    return v
+
+
+def _real_in(value: object, lo: float, hi: float, lo_open: bool, hi_open: bool) -> float | None:
+    """``value`` as a float if it is a finite real (not a bool) in the range, else None."""
+    if not isinstance(value, _REAL) or isinstance(value, (bool, np.bool_)):
+        return None
+    v = float(value)  # type: ignore[arg-type]
+    inside = (lo < v if lo_open else lo <= v) and (v < hi if hi_open else v <= hi)
+    return v if bool(np.isfinite(v)) and inside else None
 
 
 def positive(name: str, value: object, *, allow_zero: bool = False,

@@ -2,7 +2,7 @@
 
 Subcommands:
     moik robots                      list the robot catalog
-    moik algorithms                  list the registered algorithms
+    moik algorithms                  list the registered algorithms (name, kind, source)
     moik fk ROBOT q1 ... qn [--deg]  print the end-effector pose
     moik solve ROBOT --target x y z [--euler a b c [--deg]] ...   solve IK
     moik experiment list             list the papers' experiments
@@ -62,10 +62,12 @@ def _cmd_fk(args: argparse.Namespace) -> int:
 
 
 def _cmd_algorithms(args: argparse.Namespace) -> int:
-    from moik.algorithms import available
+    from moik.algorithms import available, entry
 
+    print(f"{'name':<10}{'kind':<18}source")
     for name in available():
-        print(name)
+        e = entry(name)
+        print(f"{name:<10}{e.kind:<18}{e.source}")
     return 0
 
 
@@ -119,7 +121,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("q", nargs="+", type=float, help="joint values (rad, or deg with --deg)")
     p.add_argument("--deg", action="store_true", help="revolute joint values in degrees")
     p.set_defaults(func=_cmd_fk)
-    p = sub.add_parser("algorithms", help="list the registered algorithms")
+    p = sub.add_parser("algorithms", help="list the registered algorithms (name, kind, source)")
     p.set_defaults(func=_cmd_algorithms)
     p = sub.add_parser("solve", help="solve inverse kinematics for one target")
     p.add_argument("robot", help="catalog name (see `moik robots`)")

@@ -45,6 +45,18 @@ def test_number_is_finite_and_in_range(x):
             v.number("w", x, minimum=0, maximum=1, lo_open=True)
 
 
+@pytest.mark.parametrize("value", [-0.1, 1.1, "0.5", None, True, np.nan])
+def test_interval_rejects_with_range(value):
+    with pytest.raises(ParameterError, match=r"z must be a number in \[0.0, 1.0\]"):
+        v.interval("z", value, 0.0, 1.0)
+
+
+def test_interval_open_bounds():
+    assert v.interval("V", 1, 0.0, np.inf, lo_open=True, hi_open=True) == 1.0
+    with pytest.raises(ParameterError, match=r"\(0.0, inf\)"):
+        v.interval("V", 0.0, 0.0, np.inf, lo_open=True, hi_open=True)
+
+
 def test_number_refuses_bool_and_positive():
     with pytest.raises(ParameterError):
         v.number("x", True)

@@ -5,7 +5,8 @@ pymoo's ``Population`` objects cost 25-40x a swarm update rule (design.md), so
 per-algorithm array (memory, velocities, pool) as numpy arrays and builds pymoo
 objects lazily: ``algorithm.pop`` and ``algorithm.opt`` are properties that
 build a ``Population`` from the arrays only when something reads them (the
-final ``Result``, a tolerance termination, ``save_history`` copies).
+final ``Result``, a tolerance termination, ``save_history`` copies). The
+generation driver both bases share is :mod:`moik.algorithms.array_state`.
 
 A subclass writes one generation as a generator ``_generation()`` that yields
 candidate arrays ``X`` and receives ``(F, CV)`` for them (``CV`` is ``None`` for
@@ -32,13 +33,14 @@ from pymoo.core.population import Population
 from pymoo.util.display.column import Column
 from pymoo.util.display.output import Output
 
-from moik.algorithms.driver import (
+from moik.algorithms.array_state import (
     ArrayStateMixin,
     budget_left,
     check_sizes,
     find_limit,
     finite_bounds,
     initial_population,
+    refuse_unknown_keywords,
     schedule_length,
 )
 from moik.algorithms.mechanics import best_index, constraint_violation, is_better
@@ -81,17 +83,23 @@ class ArrayAlgorithm(ArrayStateMixin, Algorithm):
             remaining rows are drawn uniformly.
         max_iter: Schedule length T of algorithms whose parameters depend on
             t/T. None: taken from an ``n_gen``/``n_eval`` termination, else 1000.
-        **kwargs: pymoo ``Algorithm`` options (``output``, ``callback`` ...).
+        **kwargs: pymoo ``Algorithm`` options (``output``, ``callback``, ``seed`` ...,
+            :data:`~moik.algorithms.array_state.PYMOO_OPTIONS`).
+
+    Raises:
+        ParameterError: For a keyword that is neither a parameter of the algorithm nor
+            a pymoo option (the message lists the accepted ones), or a bad size.
     """
 
     min_pop_size = 2
 
     def __init__(self, *, pop_size: int = 100, X0: np.ndarray | None = None,
                  max_iter: int | None = None, **kwargs):
+        refuse_unknown_keywords(type(self), kwargs)
         kwargs.setdefault("output", ArrayOutput())
         super().__init__(**kwargs)
-        check_sizes(pop_size, self.min_pop_size, max_iter)
-        self.pop_size, self.X0, self.max_iter = int(pop_size), X0, max_iter
+        self.pop_size, self.max_iter = check_sizes(pop_size, self.min_pop_size, max_iter)
+        self.X0 = X0
         self.X = self.F = self.CV = None
         self.best_x, self.best_f, self.best_cv = None, np.inf, None
         self.t = 0

@@ -5,7 +5,9 @@ Eq. 17), the greedy personal-best memory (EOSMA Eq. 18) and feasibility-first
 comparisons (Deb's rules: a feasible point beats an infeasible one, two
 infeasible ones compare by total violation CV, two feasible ones by f). ``CV``
 is ``None`` for unconstrained problems, which keeps their comparisons to a
-single ``<``. Randomness only through the ``rng`` keyword (no default).
+single ``<``. Mantegna's Levy-stable step is shared by FPA, MPA, HHO, MODA and
+I-BES. Randomness only through the ``rng`` keyword (no default). Hyperparameter
+validation is :mod:`moik._validate`'s (``interval``, ``integer``, ``flag``).
 """
 
 from __future__ import annotations
@@ -13,8 +15,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-
-from moik.exceptions import ParameterError
 
 
 def uniform_population(n: int, xl: np.ndarray, xu: np.ndarray, *, rng: np.random.Generator):
@@ -83,18 +83,6 @@ def best_index(F: np.ndarray, CV: np.ndarray | None) -> int:
         idx = np.flatnonzero(feas)
         return int(idx[np.argmin(F[idx])])
     return int(np.argmin(CV))
-
-
-def check_param(name: str, value, lo: float, hi: float, *, lo_open: bool = False,
-                hi_open: bool = False) -> float:
-    """Return ``value`` as float if it lies in the range, else raise ParameterError."""
-    ok = isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool)
-    v = float(value) if ok else np.nan
-    ok = ok and (lo < v if lo_open else lo <= v) and (v < hi if hi_open else v <= hi)
-    if not ok:
-        rng = f"{'(' if lo_open else '['}{lo}, {hi}{')' if hi_open else ']'}"
-        raise ParameterError(f"{name} must be a number in {rng}, got {value!r}")
-    return v
 
 
 def mantegna_sigma(beta: float) -> float:

@@ -1,7 +1,12 @@
 """Metrics for comparing results: hypervolume, its reference-point policy, compromise picks,
 statistics over runs (summaries, Wilcoxon tests, Friedman ranks)."""
 
-from moik.metrics.compromise import closest_to_utopia, normalized_front, weighted_choice
+from moik.metrics.compromise import (
+    closest_to_utopia,
+    compromise,
+    normalized_front,
+    weighted_choice,
+)
 from moik.metrics.hypervolume import EOSMA_TABLE8_REF_POINTS, hypervolume, reference_point
 from moik.metrics.stats import (
     FriedmanResult,
@@ -20,6 +25,7 @@ __all__ = [
     "SignedRank",
     "Summary",
     "closest_to_utopia",
+    "compromise",
     "friedman_ranks",
     "hypervolume",
     "normalized_front",

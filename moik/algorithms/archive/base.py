@@ -27,7 +27,8 @@ import abc
 
 import numpy as np
 
-from moik.exceptions import NonFiniteError, ParameterError, ShapeError
+from moik._validate import finite_array, is_integer, positive
+from moik.exceptions import ParameterError, ShapeError
 
 
 def as_finite_2d(name: str, value: object, n_cols: int | None = None) -> np.ndarray:
@@ -49,40 +50,36 @@ def as_finite_2d(name: str, value: object, n_cols: int | None = None) -> np.ndar
         raise ShapeError(f"{name} must have {n_cols} columns; got shape {arr.shape}")
     if arr.shape[1] == 0:
         raise ShapeError(f"{name} must have at least one column; got shape {arr.shape}")
-    if not np.all(np.isfinite(arr)):
-        bad = np.argwhere(~np.isfinite(arr))[0]
-        raise NonFiniteError(
-            f"{name} must hold finite values only; got {arr[tuple(bad)]} at row {bad[0]}, "
-            f"column {bad[1]}"
-        )
-    return arr
+    return finite_array(name, arr)
 
 
 def check_count(name: str, value: object, minimum: int) -> int:
     """Return ``value`` as an int, checking it is an integer >= ``minimum``.
 
+    The rule is moik's (:func:`moik._validate.is_integer`: bools and floats are
+    refused); the message keeps the archives' wording.
+
     Raises:
         ParameterError: If ``value`` is not an integer or is below ``minimum``.
     """
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+    if not (is_integer(value) and value >= minimum):  # type: ignore[operator]
         raise ParameterError(f"{name} must be an integer >= {minimum}; got {value!r}")
-    if value < minimum:
-        raise ParameterError(f"{name} must be an integer >= {minimum}; got {value}")
-    return int(value)
+    return int(value)  # type: ignore[call-overload]
 
 
 def check_positive(name: str, value: object, *, allow_zero: bool = False) -> float:
     """Return ``value`` as a float, checking it is finite and > 0 (or >= 0).
 
+    The rule is :func:`moik._validate.positive`; the message keeps the archives' wording.
+
     Raises:
         ParameterError: If ``value`` is not a finite real number in range.
     """
-    bound = ">= 0" if allow_zero else "> 0"
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
-        raise ParameterError(f"{name} must be a finite number {bound}; got {value!r}")
-    if not np.isfinite(value) or value < 0 or (value == 0 and not allow_zero):
-        raise ParameterError(f"{name} must be a finite number {bound}; got {value}")
-    return float(value)
+    try:
+        return positive(name, value, allow_zero=allow_zero)
+    except ParameterError:
+        bound = ">= 0" if allow_zero else "> 0"
+        raise ParameterError(f"{name} must be a finite number {bound}; got {value!r}") from None
 
 
 def nondominated_mask(F: np.ndarray) -> np.ndarray:

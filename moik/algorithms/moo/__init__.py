@@ -1,8 +1,24 @@
-"""Multi-objective algorithms: the array-state base, MOEOSMA, MO-m-PSO, pymoo wrappers."""
+"""Multi-objective algorithms: the array-state base, the per-objective-swarm base and one
+module per algorithm (registered in :mod:`moik.algorithms.registry`)."""
 
+from moik.algorithms.moo.around_best import around_best
 from moik.algorithms.moo.base import MOArrayAlgorithm, dominates, pareto_memory
+from moik.algorithms.moo.mo_classic_pso import MOClassicPSO
+from moik.algorithms.moo.mo_csa import MOCSA
+from moik.algorithms.moo.mo_jaya import MOJAYA
+from moik.algorithms.moo.mo_modified_pso import MOMPSO
+from moik.algorithms.moo.moalo import MOALO
+from moik.algorithms.moo.moda import MODA
+from moik.algorithms.moo.moead import MOEAD
 from moik.algorithms.moo.moeosma import MOEOSMA
-from moik.algorithms.moo.mompso import MOMPSO
-from moik.algorithms.moo.pymoo_moo import MOEAD
+from moik.algorithms.moo.mogwo import MOGWO
+from moik.algorithms.moo.mompa import MOMPA
+from moik.algorithms.moo.momvo import MOMVO
+from moik.algorithms.moo.mopso_grid import MOPSO
+from moik.algorithms.moo.mosma import MOSMA
+from moik.algorithms.moo.mssa import MSSA
+from moik.algorithms.moo.objective_swarms import ObjectiveSwarms
 
-__all__ = ["MOEAD", "MOEOSMA", "MOMPSO", "MOArrayAlgorithm", "dominates", "pareto_memory"]
+__all__ = ["MOALO", "MOCSA", "MODA", "MOEAD", "MOEOSMA", "MOGWO", "MOJAYA", "MOMPA", "MOMPSO",
+           "MOMVO", "MOPSO", "MOSMA", "MSSA", "MOArrayAlgorithm", "MOClassicPSO",
+           "ObjectiveSwarms", "around_best", "dominates", "pareto_memory"]

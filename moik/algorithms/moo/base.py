@@ -33,19 +33,19 @@ from pymoo.core.population import Population
 from pymoo.util.display.column import Column
 from pymoo.util.display.output import Output
 
+from moik._validate import optional_integer
 from moik.algorithms.archive import ArchiveBase, CrowdingArchive
-from moik.algorithms.driver import (
+from moik.algorithms.array_state import (
     ArrayStateMixin,
     budget_left,
     check_sizes,
     find_limit,
     finite_bounds,
     initial_population,
-    is_int,
+    refuse_unknown_keywords,
     schedule_length,
 )
-from moik.exceptions import ParameterError, ShapeError
-from moik.metrics import closest_to_utopia
+from moik.exceptions import ParameterError
 
 Step = Generator[np.ndarray, np.ndarray, None]
 
@@ -93,21 +93,25 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
             initial population); the other rows are drawn uniformly.
         max_iter: Schedule length T. None: from an ``n_gen``/``n_eval``
             termination, else 1000.
-        **kwargs: pymoo ``Algorithm`` options (``output``, ``callback`` ...).
+        **kwargs: pymoo ``Algorithm`` options (``output``, ``callback``, ``seed`` ...,
+            :data:`~moik.algorithms.array_state.PYMOO_OPTIONS`).
+
+    Raises:
+        ParameterError: For a keyword that is neither a parameter of the algorithm nor
+            a pymoo option (the message lists the accepted ones), or a bad size.
     """
 
     min_pop_size = 2
 
     def __init__(self, *, pop_size: int = 100, archive_size: int | None = None,
                  X0: np.ndarray | None = None, max_iter: int | None = None, **kwargs):
+        refuse_unknown_keywords(type(self), kwargs)
         kwargs.setdefault("output", MOArrayOutput())
         super().__init__(**kwargs)
-        check_sizes(pop_size, self.min_pop_size, max_iter)
-        if archive_size is not None and (not is_int(archive_size) or archive_size < 1):
-            raise ParameterError(f"archive_size must be an integer >= 1 or None, "
-                                 f"got {archive_size!r}")
-        self.pop_size, self.X0, self.max_iter = int(pop_size), X0, max_iter
-        self.archive_size = int(pop_size if archive_size is None else archive_size)
+        self.pop_size, self.max_iter = check_sizes(pop_size, self.min_pop_size, max_iter)
+        archive_size = optional_integer("archive_size", archive_size, minimum=1)
+        self.X0 = X0
+        self.archive_size = self.pop_size if archive_size is None else archive_size
         self.X = self.F = self.pareto_archive = None
         self.t = 0
 
@@ -120,17 +124,6 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         """The archive members as a ``Population``."""
         A = self.pareto_archive
         return Population.new("X", A.X.copy(), "F", A.F.copy(), "CV", np.zeros((len(A), 1)))
-
-    def compromise(self) -> tuple[np.ndarray, np.ndarray]:
-        """The archive member closest to the utopia point (MO-m-PSO Eq. 8), as ``(x, f)``.
-
-        Objectives are scaled to [0, 1] over the archive first
-        (:func:`moik.metrics.closest_to_utopia`).
-        """
-        if self.pareto_archive is None or len(self.pareto_archive) == 0:
-            raise ShapeError("no archive yet: run the algorithm before compromise()")
-        i = closest_to_utopia(self.pareto_archive.F)
-        return self.pareto_archive.X[i].copy(), self.pareto_archive.F[i].copy()
 
     # ---- pymoo hooks ----------------------------------------------------------------------
     def _setup(self, problem, **kwargs) -> None:

@@ -4,7 +4,7 @@ The MO-CSA baseline of Rokbani, Neji, Slim, Mirjalili & Ghandour, "A
 Multi-Objective Modified PSO for Inverse Kinematics of a 5-DOF Robotic Arm",
 Applied Sciences 12, 7091 (2022), DOI 10.3390/app12147091, Section 5.2
 (Table 6), built the way the paper builds MO-m-PSO (Section 2.2, Algorithm 2,
-:mod:`moik.algorithms.moo.swarms`): flock k runs the crow search algorithm on
+:mod:`moik.algorithms.moo.objective_swarms`): flock k runs the crow search algorithm on
 objective k alone.
 
 Crow search: Askarzadeh, "A novel metaheuristic method for solving constrained
@@ -21,7 +21,7 @@ Structures 169, 1-12 (2016), DOI 10.1016/j.compstruc.2016.03.001:
 
 Every evaluated position of every flock is offered to the shared
 crowding-radius archive; ``res.X``/``res.F`` are its front and
-``compromise()`` returns the member closest to the utopia point (Eq. 8).
+``moik.metrics.compromise(res)`` picks the member closest to the utopia point (Eq. 8).
 
 Defaults: awareness probability AP=0.1, flight length fl=2 (Askarzadeh's
 defaults; the MO-m-PSO paper gives none). Evaluations: at most
@@ -43,9 +43,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from moik.algorithms.mechanics import check_param, clip_to_bounds, uniform_population
+from moik._validate import interval
+from moik.algorithms.mechanics import clip_to_bounds, uniform_population
 from moik.algorithms.moo.base import Step
-from moik.algorithms.moo.swarms import ObjectiveSwarms, swarm_partners
+from moik.algorithms.moo.objective_swarms import ObjectiveSwarms, swarm_partners
 
 
 def crow_move(X: np.ndarray, M_followed: np.ndarray, *, AP: float, fl: float,
@@ -97,8 +98,8 @@ class MOCSA(ObjectiveSwarms):
     def __init__(self, *, pop_size: int = 100, archive_size: int | None = None,
                  AP: float = 0.1, fl: float = 2.0, X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, archive_size=archive_size, X0=X0, **kwargs)
-        self.AP = check_param("AP", AP, 0.0, 1.0)
-        self.fl = check_param("fl", fl, 0.0, 10.0, lo_open=True)
+        self.AP = interval("AP", AP, 0.0, 1.0)
+        self.fl = interval("fl", fl, 0.0, 10.0, lo_open=True)
 
     def _generation(self) -> Step:
         rng = self.random_state

@@ -4,7 +4,7 @@ The MO-JAYA baseline of Rokbani, Neji, Slim, Mirjalili & Ghandour, "A
 Multi-Objective Modified PSO for Inverse Kinematics of a 5-DOF Robotic Arm",
 Applied Sciences 12, 7091 (2022), DOI 10.3390/app12147091, Section 5.2
 (Table 6), built the way the paper builds MO-m-PSO (Section 2.2, Algorithm 2,
-:mod:`moik.algorithms.moo.swarms`): population k runs JAYA on objective k alone.
+:mod:`moik.algorithms.moo.objective_swarms`): population k runs JAYA on objective k alone.
 
 JAYA: Rao, "Jaya: A simple and new optimization algorithm for solving
 constrained and unconstrained optimization problems", International Journal
@@ -19,7 +19,7 @@ DOI 10.5267/j.ijiec.2015.8.004:
 
 Every evaluated candidate of every population is offered to the shared
 crowding-radius archive; ``res.X``/``res.F`` are its front and
-``compromise()`` returns the member closest to the utopia point (Eq. 8).
+``moik.metrics.compromise(res)`` picks the member closest to the utopia point (Eq. 8).
 
 Defaults: JAYA has no algorithm-specific parameters ("parameter-less"); the
 MO-m-PSO paper gives none. Evaluations: ``M pop_size`` per iteration and for
@@ -42,7 +42,7 @@ import numpy as np
 
 from moik.algorithms.mechanics import clip_to_bounds
 from moik.algorithms.moo.base import Step
-from moik.algorithms.moo.swarms import ObjectiveSwarms, swarm_extreme
+from moik.algorithms.moo.objective_swarms import ObjectiveSwarms, swarm_extreme
 from moik.algorithms.soo.jaya import jaya_update
 
 

@@ -46,9 +46,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.archive import ArchiveBase, CrowdingArchive
 from moik.algorithms.archive.base import roulette
-from moik.algorithms.mechanics import check_param, clip_to_bounds, mantegna_levy
+from moik.algorithms.mechanics import clip_to_bounds, mantegna_levy
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step
 
 
@@ -126,8 +127,8 @@ class MODA(MOArrayAlgorithm):
                  X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, archive_size=archive_size, X0=X0,
                          max_iter=max_iter, **kwargs)
-        self.w_start = check_param("w_start", w_start, 0.0, 1.0)
-        self.w_end = check_param("w_end", w_end, 0.0, 1.0)
+        self.w_start = interval("w_start", w_start, 0.0, 1.0)
+        self.w_end = interval("w_end", w_end, 0.0, 1.0)
 
     def _make_archive(self, capacity: int) -> ArchiveBase:
         return CrowdingArchive.mirjalili(capacity)

@@ -51,7 +51,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from moik.algorithms.mechanics import check_param, midpoint_repair
+from moik._validate import interval
+from moik.algorithms.mechanics import midpoint_repair
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step, pareto_memory
 from moik.algorithms.soo.eo import eo_schedule
 from moik.algorithms.soo.eosma import eosma_update, random_difference_mutation
@@ -73,8 +74,8 @@ class MOEOSMA(MOArrayAlgorithm):
 
     Extra public arrays: ``pbest_X``/``pbest_F`` (personal bests, Eq. 18) and
     ``pool_X`` (equilibrium pool of the last iteration). ``X``/``F`` are the
-    last evaluated positions. ``compromise()`` picks the member closest to the
-    utopia point.
+    last evaluated positions. ``moik.metrics.compromise(res)`` picks the member
+    closest to the utopia point.
 
     Args:
         pop_size: Number of agents N (paper: 100).
@@ -98,12 +99,12 @@ class MOEOSMA(MOArrayAlgorithm):
                  **kwargs):
         super().__init__(pop_size=pop_size, archive_size=archive_size, X0=X0,
                          max_iter=max_iter, **kwargs)
-        self.z = check_param("z", z, 0.0, 1.0)
-        self.q = check_param("q", q, 0.0, 1.0)
-        self.V = check_param("V", V, 0.0, np.inf, lo_open=True, hi_open=True)
-        self.GP = check_param("GP", GP, 0.0, 1.0)
-        self.a1 = check_param("a1", a1, 0.0, 10.0, lo_open=True)
-        self.a2 = check_param("a2", a2, 0.0, 10.0, lo_open=True)
+        self.z = interval("z", z, 0.0, 1.0)
+        self.q = interval("q", q, 0.0, 1.0)
+        self.V = interval("V", V, 0.0, np.inf, lo_open=True, hi_open=True)
+        self.GP = interval("GP", GP, 0.0, 1.0)
+        self.a1 = interval("a1", a1, 0.0, 10.0, lo_open=True)
+        self.a2 = interval("a2", a2, 0.0, 10.0, lo_open=True)
 
     def _evals_per_iteration(self) -> float:
         return self.pop_size * (1.0 + self.q)

@@ -37,8 +37,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.archive import ArchiveBase, CrowdingArchive
-from moik.algorithms.mechanics import check_param, clip_to_bounds
+from moik.algorithms.mechanics import clip_to_bounds
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step, pareto_memory
 from moik.algorithms.soo.mpa import fads_effect, mpa_cf, mpa_phase, predator_move
 
@@ -69,8 +70,8 @@ class MOMPA(MOArrayAlgorithm):
                  X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, archive_size=archive_size, X0=X0,
                          max_iter=max_iter, **kwargs)
-        self.P = check_param("P", P, 0.0, 2.0, lo_open=True)
-        self.FADs = check_param("FADs", FADs, 0.0, 1.0)
+        self.P = interval("P", P, 0.0, 2.0, lo_open=True)
+        self.FADs = interval("FADs", FADs, 0.0, 1.0)
 
     def _make_archive(self, capacity: int) -> ArchiveBase:
         return CrowdingArchive.mirjalili(capacity)

@@ -44,10 +44,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.archive import ArchiveBase, CrowdingArchive
-from moik.algorithms.mechanics import check_param, clip_to_bounds
+from moik.algorithms.mechanics import clip_to_bounds
+from moik.algorithms.moo.around_best import around_best
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step
-from moik.algorithms.moo.mirjalili import around_best
 
 
 def mvo_schedule(t: int, T: int, wep_min: float, wep_max: float, p: float):
@@ -109,9 +110,9 @@ class MOMVO(MOArrayAlgorithm):
                  max_iter: int | None = None, X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, archive_size=archive_size, X0=X0,
                          max_iter=max_iter, **kwargs)
-        self.wep_min = check_param("wep_min", wep_min, 0.0, 1.0)
-        self.wep_max = check_param("wep_max", wep_max, self.wep_min, 1.0)
-        self.p = check_param("p", p, 0.0, 100.0, lo_open=True)
+        self.wep_min = interval("wep_min", wep_min, 0.0, 1.0)
+        self.wep_max = interval("wep_max", wep_max, self.wep_min, 1.0)
+        self.p = interval("p", p, 0.0, 100.0, lo_open=True)
 
     def _make_archive(self, capacity: int) -> ArchiveBase:
         return CrowdingArchive.mirjalili(capacity)

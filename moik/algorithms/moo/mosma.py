@@ -54,7 +54,8 @@ import numpy as np
 from pymoo.operators.survival.rank_and_crowding.metrics import calc_crowding_distance
 from pymoo.util.nds.non_dominated_sorting import NonDominatedSorting
 
-from moik.algorithms.mechanics import check_param, clip_to_bounds
+from moik._validate import interval
+from moik.algorithms.mechanics import clip_to_bounds
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step
 from moik.algorithms.soo.sma import sma_schedule, sma_update, sma_weights
 
@@ -103,7 +104,7 @@ class MOSMA(MOArrayAlgorithm):
                  **kwargs):
         super().__init__(pop_size=pop_size, archive_size=archive_size, X0=X0,
                          max_iter=max_iter, **kwargs)
-        self.z = check_param("z", z, 0.0, 1.0)
+        self.z = interval("z", z, 0.0, 1.0)
 
     def _initialize_state(self) -> None:
         self._survive(self.X, self.F)

@@ -35,8 +35,8 @@ import numpy as np
 
 from moik.algorithms.archive import ArchiveBase, CrowdingArchive
 from moik.algorithms.mechanics import clip_to_bounds
+from moik.algorithms.moo.around_best import around_best
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step
-from moik.algorithms.moo.mirjalili import around_best
 
 
 def ssa_c1(t: int, T: int) -> float:

@@ -48,9 +48,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import flag, interval
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.mechanics import (
-    check_param,
     clip_to_bounds,
     greedy_memory,
     mantegna_levy,
@@ -140,15 +140,13 @@ class BES(ArrayAlgorithm):
                  beta: float = 1.5, bounds: str | None = None, X0: np.ndarray | None = None,
                  **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, **kwargs)
-        self.alpha = check_param("alpha", alpha, 1.5, 2.0)
-        self.a = check_param("a", a, 5.0, 10.0)
-        self.R = check_param("R", R, 0.5, 2.0)
-        self.c1 = check_param("c1", c1, 1.0, 2.0)
-        self.c2 = check_param("c2", c2, 1.0, 2.0)
-        self.beta = check_param("beta", beta, 0.0, 2.0, lo_open=True)
-        levy = self.preset["levy"] if levy is None else levy
-        if not isinstance(levy, (bool, np.bool_)):
-            raise ParameterError(f"levy must be True or False, got {levy!r}")
+        self.alpha = interval("alpha", alpha, 1.5, 2.0)
+        self.a = interval("a", a, 5.0, 10.0)
+        self.R = interval("R", R, 0.5, 2.0)
+        self.c1 = interval("c1", c1, 1.0, 2.0)
+        self.c2 = interval("c2", c2, 1.0, 2.0)
+        self.beta = interval("beta", beta, 0.0, 2.0, lo_open=True)
+        levy = flag("levy", self.preset["levy"] if levy is None else levy)
         bounds = self.preset["bounds"] if bounds is None else bounds
         if bounds not in BOUND_HANDLING:
             raise ParameterError(f"bounds must be one of {', '.join(BOUND_HANDLING)}, "

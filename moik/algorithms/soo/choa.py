@@ -53,8 +53,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
-from moik.algorithms.mechanics import check_param, clip_to_bounds, ranking_fitness
+from moik.algorithms.mechanics import clip_to_bounds, ranking_fitness
 from moik.algorithms.soo.eo import update_pool
 from moik.exceptions import ParameterError
 
@@ -178,9 +179,9 @@ class ChOA(ArrayAlgorithm):
                  weighted: bool | None = None, f_opt: float = 0.0,
                  max_iter: int | None = None, X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, max_iter=max_iter, **kwargs)
-        self.f_max = check_param("f_max", f_max, 0.0, 5.0, lo_open=True)
-        self.b = check_param("b", b, 0.0, 1.0, lo_open=True)
-        self.f_opt = check_param("f_opt", f_opt, -np.inf, np.inf, lo_open=True, hi_open=True)
+        self.f_max = interval("f_max", f_max, 0.0, 5.0, lo_open=True)
+        self.b = interval("b", b, 0.0, 1.0, lo_open=True)
+        self.f_opt = interval("f_opt", f_opt, -np.inf, np.inf, lo_open=True, hi_open=True)
         if chaotic_map not in CHAOTIC_MAPS:
             raise ParameterError(f"chaotic_map must be one of {', '.join(CHAOTIC_MAPS)}, "
                                  f"got {chaotic_map!r}")

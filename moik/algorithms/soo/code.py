@@ -39,9 +39,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.mechanics import (
-    check_param,
     greedy_memory,
     ranking_fitness,
     uniform_population,
@@ -119,9 +119,9 @@ class CODE(ArrayAlgorithm):
     def __init__(self, *, pop_size: int = 50, F: float = 0.5, Cr: float = 0.9, Jr: float = 0.3,
                  X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, **kwargs)
-        self.F_scale = check_param("F", F, 0.0, 2.0, lo_open=True)
-        self.Cr = check_param("Cr", Cr, 0.0, 1.0)
-        self.Jr = check_param("Jr", Jr, 0.0, 1.0)
+        self.F_scale = interval("F", F, 0.0, 2.0, lo_open=True)
+        self.Cr = interval("Cr", Cr, 0.0, 1.0)
+        self.Jr = interval("Jr", Jr, 0.0, 1.0)
 
     def _evals_per_iteration(self) -> float:
         return self.pop_size * (1.0 + self.Jr)

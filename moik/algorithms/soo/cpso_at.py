@@ -29,10 +29,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import integer, interval
 from moik.algorithms.base import ArrayAlgorithm, Step
-from moik.algorithms.mechanics import check_param, clip_to_bounds, greedy_memory
+from moik.algorithms.mechanics import clip_to_bounds, greedy_memory
 from moik.algorithms.soo.pso import clamp_velocity, pso_velocity
-from moik.exceptions import ParameterError
 
 
 def logistic_sequence(z0: np.ndarray, n: int) -> np.ndarray:
@@ -69,15 +69,13 @@ class CPSOAT(ArrayAlgorithm):
                  vmax_rate: float = 0.2, max_iter: int | None = None,
                  X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, max_iter=max_iter, **kwargs)
-        self.w_max = check_param("w_max", w_max, 0.0, 1.5)
-        self.w_min = check_param("w_min", w_min, 0.0, self.w_max)
-        self.c1 = check_param("c1", c1, 0.0, 4.0)
-        self.c2 = check_param("c2", c2, 0.0, 4.0)
-        self.radius = check_param("radius", radius, 0.0, 1.0)
-        self.vmax_rate = check_param("vmax_rate", vmax_rate, 0.0, 1.0, lo_open=True)
-        if isinstance(n_chaos, bool) or not isinstance(n_chaos, (int, np.integer)) or n_chaos < 0:
-            raise ParameterError(f"n_chaos must be an integer >= 0, got {n_chaos!r}")
-        self.n_chaos = int(n_chaos)
+        self.w_max = interval("w_max", w_max, 0.0, 1.5)
+        self.w_min = interval("w_min", w_min, 0.0, self.w_max)
+        self.c1 = interval("c1", c1, 0.0, 4.0)
+        self.c2 = interval("c2", c2, 0.0, 4.0)
+        self.radius = interval("radius", radius, 0.0, 1.0)
+        self.vmax_rate = interval("vmax_rate", vmax_rate, 0.0, 1.0, lo_open=True)
+        self.n_chaos = integer("n_chaos", n_chaos, minimum=0)
 
     def _evals_per_iteration(self) -> float:
         return float(self.pop_size + self.n_chaos)

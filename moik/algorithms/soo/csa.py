@@ -24,8 +24,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
-from moik.algorithms.mechanics import check_param, greedy_memory, uniform_population
+from moik.algorithms.mechanics import greedy_memory, uniform_population
 
 
 def crow_flight(X, M, xl, xu, *, AP: float, fl: float,
@@ -57,8 +58,8 @@ class CSA(ArrayAlgorithm):
     def __init__(self, *, pop_size: int = 100, AP: float = 0.1, fl: float = 2.0,
                  X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, **kwargs)
-        self.AP = check_param("AP", AP, 0.0, 1.0)
-        self.fl = check_param("fl", fl, 0.0, 10.0, lo_open=True)
+        self.AP = interval("AP", AP, 0.0, 1.0)
+        self.fl = interval("fl", fl, 0.0, 10.0, lo_open=True)
 
     def _initialize_state(self) -> None:
         self.positions = self.X

@@ -25,8 +25,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
-from moik.algorithms.mechanics import check_param, clip_to_bounds, greedy_memory
+from moik.algorithms.mechanics import clip_to_bounds, greedy_memory
 
 
 def distinct_partners(n: int, k: int, *, rng: np.random.Generator) -> np.ndarray:
@@ -72,8 +73,8 @@ class DE(ArrayAlgorithm):
     def __init__(self, *, pop_size: int = 100, F: float = 0.5, CR: float = 0.9,
                  X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, **kwargs)
-        self.F_weight = check_param("F", F, 0.0, 2.0, lo_open=True)
-        self.CR = check_param("CR", CR, 0.0, 1.0)
+        self.F_weight = interval("F", F, 0.0, 2.0, lo_open=True)
+        self.CR = interval("CR", CR, 0.0, 1.0)
 
     def _generation(self) -> Step:
         rng = self.random_state

@@ -31,9 +31,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.mechanics import (
-    check_param,
     clip_to_bounds,
     greedy_memory,
     ranking_fitness,
@@ -107,10 +107,10 @@ class EO(ArrayAlgorithm):
                  GP: float = 0.5, V: float = 1.0, max_iter: int | None = None,
                  X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, max_iter=max_iter, **kwargs)
-        self.a1 = check_param("a1", a1, 0.0, 10.0, lo_open=True)
-        self.a2 = check_param("a2", a2, 0.0, 10.0, lo_open=True)
-        self.GP = check_param("GP", GP, 0.0, 1.0)
-        self.V = check_param("V", V, 0.0, np.inf, lo_open=True, hi_open=True)
+        self.a1 = interval("a1", a1, 0.0, 10.0, lo_open=True)
+        self.a2 = interval("a2", a2, 0.0, 10.0, lo_open=True)
+        self.GP = interval("GP", GP, 0.0, 1.0)
+        self.V = interval("V", V, 0.0, np.inf, lo_open=True, hi_open=True)
 
     def _initialize_state(self) -> None:
         empty = np.empty((0, self.problem.n_var))

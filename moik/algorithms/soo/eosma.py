@@ -45,7 +45,7 @@ Deviations and readings:
 - W uses ``log10`` and ``eps`` as the SMA code (Eq. 4 prints ``log``).
 - Constrained problems: comparisons are feasibility-first (see base.py).
 
-Reproducing Tables 5 and 7 on the 7-DOF arm: tests/algorithms/test_eosma_ik.py
+Reproducing Tables 5 and 7 on the 7-DOF arm: tests/algorithms/soo/test_eosma.py
 (Table 7 is reproduced with Table 1's lengths in metres, not in cm).
 """
 
@@ -53,9 +53,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.mechanics import (
-    check_param,
     greedy_memory,
     midpoint_repair,
     ranking_fitness,
@@ -151,12 +151,12 @@ class EOSMA(ArrayAlgorithm):
                  GP: float = 0.5, a1: float = 2.0, a2: float = 2.0,
                  max_iter: int | None = None, X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, max_iter=max_iter, **kwargs)
-        self.z = check_param("z", z, 0.0, 1.0)
-        self.q = check_param("q", q, 0.0, 1.0)
-        self.V = check_param("V", V, 0.0, np.inf, lo_open=True, hi_open=True)
-        self.GP = check_param("GP", GP, 0.0, 1.0)
-        self.a1 = check_param("a1", a1, 0.0, 10.0, lo_open=True)
-        self.a2 = check_param("a2", a2, 0.0, 10.0, lo_open=True)
+        self.z = interval("z", z, 0.0, 1.0)
+        self.q = interval("q", q, 0.0, 1.0)
+        self.V = interval("V", V, 0.0, np.inf, lo_open=True, hi_open=True)
+        self.GP = interval("GP", GP, 0.0, 1.0)
+        self.a1 = interval("a1", a1, 0.0, 10.0, lo_open=True)
+        self.a2 = interval("a2", a2, 0.0, 10.0, lo_open=True)
 
     @classmethod
     def scenario(cls, number: int, **overrides) -> EOSMA:

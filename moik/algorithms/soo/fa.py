@@ -35,8 +35,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
-from moik.algorithms.mechanics import check_param, clip_to_bounds, ranking_fitness
+from moik.algorithms.mechanics import clip_to_bounds, ranking_fitness
 
 
 def firefly_move(X, light, *, alpha: float, beta0: float, gamma: float, scale: np.ndarray,
@@ -75,10 +76,10 @@ class FA(ArrayAlgorithm):
                  gamma: float = 1.0, theta: float = 1.0, X0: np.ndarray | None = None,
                  **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, **kwargs)
-        self.alpha = check_param("alpha", alpha, 0.0, 1.0)
-        self.beta0 = check_param("beta0", beta0, 0.0, 10.0)
-        self.gamma = check_param("gamma", gamma, 0.0, 100.0)
-        self.theta = check_param("theta", theta, 0.0, 1.0, lo_open=True)
+        self.alpha = interval("alpha", alpha, 0.0, 1.0)
+        self.beta0 = interval("beta0", beta0, 0.0, 10.0)
+        self.gamma = interval("gamma", gamma, 0.0, 100.0)
+        self.theta = interval("theta", theta, 0.0, 1.0, lo_open=True)
 
     def _generation(self) -> Step:
         alpha = self.alpha * self.theta**self.t

@@ -42,9 +42,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.mechanics import (
-    check_param,
     clip_to_bounds,
     greedy_memory,
     mantegna_levy,
@@ -91,9 +91,9 @@ class FPA(ArrayAlgorithm):
     def __init__(self, *, pop_size: int = 100, p: float = 0.2, beta: float = 1.5,
                  levy_scale: float = 0.01, X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, **kwargs)
-        self.p = check_param("p", p, 0.0, 1.0)
-        self.beta = check_param("beta", beta, 0.0, 2.0, lo_open=True)
-        self.levy_scale = check_param("levy_scale", levy_scale, 0.0, np.inf, lo_open=True,
+        self.p = interval("p", p, 0.0, 1.0)
+        self.beta = interval("beta", beta, 0.0, 2.0, lo_open=True)
+        self.levy_scale = interval("levy_scale", levy_scale, 0.0, np.inf, lo_open=True,
                                       hi_open=True)
 
     def _generation(self) -> Step:

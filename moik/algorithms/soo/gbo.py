@@ -45,10 +45,10 @@ import math
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.mechanics import (
     best_index,
-    check_param,
     clip_to_bounds,
     greedy_memory,
     ranking_fitness,
@@ -131,7 +131,7 @@ class GBO(ArrayAlgorithm):
     def __init__(self, *, pop_size: int = 100, pr: float = 0.5, max_iter: int | None = None,
                  X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, max_iter=max_iter, **kwargs)
-        self.pr = check_param("pr", pr, 0.0, 1.0)
+        self.pr = interval("pr", pr, 0.0, 1.0)
 
     def _generation(self) -> Step:
         best = self.X[best_index(self.F, self.CV)]

@@ -48,8 +48,9 @@ import math
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
-from moik.algorithms.mechanics import check_param, clip_to_bounds, is_better, mantegna_levy
+from moik.algorithms.mechanics import clip_to_bounds, is_better, mantegna_levy
 
 RAPID_DIVE_SHARE = 0.5 * (0.5 + 0.5 * math.log(2.0))
 
@@ -109,7 +110,7 @@ class HHO(ArrayAlgorithm):
     def __init__(self, *, pop_size: int = 50, beta: float = 1.5, max_iter: int | None = None,
                  X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, max_iter=max_iter, **kwargs)
-        self.beta = check_param("beta", beta, 0.0, 2.0, lo_open=True)
+        self.beta = interval("beta", beta, 0.0, 2.0, lo_open=True)
 
     def _evals_per_iteration(self) -> float:
         return self.pop_size * (1.0 + 0.7 * RAPID_DIVE_SHARE)

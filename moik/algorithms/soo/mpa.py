@@ -44,9 +44,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.mechanics import (
-    check_param,
     clip_to_bounds,
     greedy_memory,
     mantegna_levy,
@@ -111,8 +111,8 @@ class MPA(ArrayAlgorithm):
     def __init__(self, *, pop_size: int = 100, P: float = 0.5, FADs: float = 0.2,
                  max_iter: int | None = None, X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, max_iter=max_iter, **kwargs)
-        self.P = check_param("P", P, 0.0, 2.0, lo_open=True)
-        self.FADs = check_param("FADs", FADs, 0.0, 1.0)
+        self.P = interval("P", P, 0.0, 2.0, lo_open=True)
+        self.FADs = interval("FADs", FADs, 0.0, 1.0)
 
     def _evals_per_iteration(self) -> float:
         return 2.0 * self.pop_size

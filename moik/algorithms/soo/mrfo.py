@@ -42,9 +42,9 @@ import math
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.mechanics import (
-    check_param,
     clip_to_bounds,
     greedy_memory,
     uniform_population,
@@ -93,7 +93,7 @@ class MRFO(ArrayAlgorithm):
     def __init__(self, *, pop_size: int = 100, S: float = 2.0, max_iter: int | None = None,
                  X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, max_iter=max_iter, **kwargs)
-        self.S = check_param("S", S, 0.0, 10.0, lo_open=True)
+        self.S = interval("S", S, 0.0, 10.0, lo_open=True)
 
     def _evals_per_iteration(self) -> float:
         return 2.0 * self.pop_size

@@ -48,10 +48,10 @@ import math
 
 import numpy as np
 
+from moik._validate import integer, interval
 from moik.algorithms.base import ArrayAlgorithm, Step
-from moik.algorithms.mechanics import check_param, is_better, midpoint_repair, ranking_fitness
+from moik.algorithms.mechanics import is_better, midpoint_repair, ranking_fitness
 from moik.algorithms.soo.code import distinct_indices
-from moik.exceptions import ParameterError
 
 
 def mtde_schedules(t: int, T: int, initial: float, final: float, Mu: float):
@@ -120,16 +120,14 @@ class MTDE(ArrayAlgorithm):
                  mu_f: float = 0.5, sigma: float = 0.2, pr: float = 0.11,
                  max_iter: int | None = None, X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, max_iter=max_iter, **kwargs)
-        for name, value in (("WinIter", WinIter), ("H", H)):
-            if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
-                raise ParameterError(f"{name} must be an integer >= 1, got {value!r}")
-        self.WinIter, self.H = int(WinIter), int(H)
-        self.initial = check_param("initial", initial, 0.0, 10.0, lo_open=True)
-        self.final = check_param("final", final, 0.0, 10.0, lo_open=True)
-        self.Mu = None if Mu is None else check_param("Mu", Mu, 0.0, 100.0)
-        self.mu_f = check_param("mu_f", mu_f, 0.0, 1.0, lo_open=True)
-        self.sigma = check_param("sigma", sigma, 0.0, 10.0, lo_open=True)
-        self.pr = check_param("pr", pr, 0.0, 1.0, lo_open=True)
+        self.WinIter = integer("WinIter", WinIter, minimum=1)
+        self.H = integer("H", H, minimum=1)
+        self.initial = interval("initial", initial, 0.0, 10.0, lo_open=True)
+        self.final = interval("final", final, 0.0, 10.0, lo_open=True)
+        self.Mu = None if Mu is None else interval("Mu", Mu, 0.0, 100.0)
+        self.mu_f = interval("mu_f", mu_f, 0.0, 1.0, lo_open=True)
+        self.sigma = interval("sigma", sigma, 0.0, 10.0, lo_open=True)
+        self.pr = interval("pr", pr, 0.0, 1.0, lo_open=True)
 
     def _initialize_state(self) -> None:
         n, d = self.X.shape

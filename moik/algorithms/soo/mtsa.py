@@ -29,14 +29,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import integer, interval
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.mechanics import (
-    check_param,
     clip_to_bounds,
     greedy_memory,
     ranking_fitness,
 )
-from moik.exceptions import ParameterError
 
 
 def tournament_partners(owner: np.ndarray, rank: np.ndarray, *,
@@ -80,10 +79,8 @@ class MTSA(ArrayAlgorithm):
     def __init__(self, *, pop_size: int = 150, s_max: int = 3, eps: float = 0.01,
                  X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, **kwargs)
-        if isinstance(s_max, bool) or not isinstance(s_max, (int, np.integer)) or s_max < 1:
-            raise ParameterError(f"s_max must be an integer >= 1, got {s_max!r}")
-        self.s_max = int(s_max)
-        self.eps = check_param("eps", eps, 0.0, 1.0)
+        self.s_max = integer("s_max", s_max, minimum=1)
+        self.eps = interval("eps", eps, 0.0, 1.0)
 
     def _evals_per_iteration(self) -> float:
         return self.pop_size * (1 + self.s_max) / 2.0

@@ -24,10 +24,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.mechanics import (
     best_index,
-    check_param,
     clip_to_bounds,
     greedy_memory,
 )
@@ -48,11 +48,11 @@ def clamp_velocity(V: np.ndarray, vmax: np.ndarray | None) -> np.ndarray:
 
 def check_pso_params(w, c1, c2, vmax_rate) -> tuple[float, float, float, float | None]:
     """Validate the shared PSO hyperparameters (used by PSO and MPSO)."""
-    w = check_param("w", w, 0.0, 1.5)
-    c1 = check_param("c1", c1, 0.0, 4.0)
-    c2 = check_param("c2", c2, 0.0, 4.0)
+    w = interval("w", w, 0.0, 1.5)
+    c1 = interval("c1", c1, 0.0, 4.0)
+    c2 = interval("c2", c2, 0.0, 4.0)
     if vmax_rate is not None:
-        vmax_rate = check_param("vmax_rate", vmax_rate, 0.0, 1.0, lo_open=True)
+        vmax_rate = interval("vmax_rate", vmax_rate, 0.0, 1.0, lo_open=True)
     return w, c1, c2, vmax_rate
 
 

@@ -33,8 +33,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
-from moik.algorithms.mechanics import check_param, clip_to_bounds, ranking_fitness
+from moik.algorithms.mechanics import clip_to_bounds, ranking_fitness
 
 EPS = np.finfo(float).eps
 
@@ -89,12 +90,12 @@ class PSOGSA(ArrayAlgorithm):
                  c1: float = 0.5, c2: float = 1.5, G0: float = 1.0, alpha: float = 23.0,
                  max_iter: int | None = None, X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, max_iter=max_iter, **kwargs)
-        self.w_start = check_param("w_start", w_start, 0.0, 1.5)
-        self.w_end = check_param("w_end", w_end, 0.0, 1.5)
-        self.c1 = check_param("c1", c1, 0.0, 4.0)
-        self.c2 = check_param("c2", c2, 0.0, 4.0)
-        self.G0 = check_param("G0", G0, 0.0, np.inf, lo_open=True, hi_open=True)
-        self.alpha = check_param("alpha", alpha, 0.0, 100.0)
+        self.w_start = interval("w_start", w_start, 0.0, 1.5)
+        self.w_end = interval("w_end", w_end, 0.0, 1.5)
+        self.c1 = interval("c1", c1, 0.0, 4.0)
+        self.c2 = interval("c2", c2, 0.0, 4.0)
+        self.G0 = interval("G0", G0, 0.0, np.inf, lo_open=True, hi_open=True)
+        self.alpha = interval("alpha", alpha, 0.0, 100.0)
 
     def _initialize_state(self) -> None:
         self.V = np.zeros_like(self.X)

@@ -52,9 +52,9 @@ import math
 
 import numpy as np
 
+from moik._validate import integer, interval
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.mechanics import (
-    check_param,
     is_better,
     midpoint_repair,
     ranking_fitness,
@@ -62,7 +62,6 @@ from moik.algorithms.mechanics import (
 )
 from moik.algorithms.soo.code import distinct_indices
 from moik.algorithms.soo.mtde import cauchy_scale_factors, lehmer_mean
-from moik.exceptions import ParameterError
 
 MIN_POP = 4
 
@@ -118,13 +117,11 @@ class SASS(ArrayAlgorithm):
         super().__init__(pop_size=MIN_POP if pop_size is None else pop_size, X0=X0,
                          max_iter=max_iter, **kwargs)
         self._auto_size = pop_size is None
-        self.rd = check_param("rd", rd, 0.0, 1.0)
-        self.c = check_param("c", c, 0.0, 1.0, lo_open=True)
-        self.Ar = check_param("Ar", Ar, 0.0, 10.0)
-        if isinstance(Ms, bool) or not isinstance(Ms, (int, np.integer)) or Ms < 1:
-            raise ParameterError(f"Ms must be an integer >= 1, got {Ms!r}")
-        self.Ms = int(Ms)
-        self.p_best = check_param("p_best", p_best, 0.0, 1.0, lo_open=True)
+        self.rd = interval("rd", rd, 0.0, 1.0)
+        self.c = interval("c", c, 0.0, 1.0, lo_open=True)
+        self.Ar = interval("Ar", Ar, 0.0, 10.0)
+        self.Ms = integer("Ms", Ms, minimum=1)
+        self.p_best = interval("p_best", p_best, 0.0, 1.0, lo_open=True)
 
     def _setup(self, problem, **kwargs) -> None:
         if self._auto_size:

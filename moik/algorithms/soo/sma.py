@@ -38,9 +38,9 @@ import math
 
 import numpy as np
 
+from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.mechanics import (
-    check_param,
     clip_to_bounds,
     ranking_fitness,
     uniform_population,
@@ -103,7 +103,7 @@ class SMA(ArrayAlgorithm):
     def __init__(self, *, pop_size: int = 100, z: float = 0.03, max_iter: int | None = None,
                  X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, max_iter=max_iter, **kwargs)
-        self.z = check_param("z", z, 0.0, 1.0)
+        self.z = interval("z", z, 0.0, 1.0)
 
     def _generation(self) -> Step:
         rng = self.random_state

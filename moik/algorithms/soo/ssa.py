@@ -26,9 +26,9 @@ import math
 
 import numpy as np
 
+from moik._validate import integer
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.mechanics import clip_to_bounds
-from moik.exceptions import ParameterError
 
 
 def ssa_c1(t: int, T: int) -> float:
@@ -64,11 +64,7 @@ class SSA(ArrayAlgorithm):
     def __init__(self, *, pop_size: int = 100, n_leaders: int = 1,
                  max_iter: int | None = None, X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, max_iter=max_iter, **kwargs)
-        if isinstance(n_leaders, bool) or not isinstance(n_leaders, (int, np.integer)) \
-                or not 1 <= n_leaders < self.pop_size:
-            raise ParameterError(f"n_leaders must be an integer in [1, pop_size - 1], "
-                                 f"got {n_leaders!r}")
-        self.n_leaders = int(n_leaders)
+        self.n_leaders = integer("n_leaders", n_leaders, minimum=1, maximum=self.pop_size - 1)
 
     def _generation(self) -> Step:
         X = salp_update(self.X, self.best_x, ssa_c1(self.t, self.max_iter), self.n_leaders,

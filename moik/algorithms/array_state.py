@@ -1,0 +1,199 @@
+"""The generation driver shared by the single- and multi-objective array-state bases.
+
+Both :class:`moik.algorithms.base.ArrayAlgorithm` and
+:class:`moik.algorithms.moo.base.MOArrayAlgorithm` refuse unknown constructor
+keywords (a misspelled option must not pass silently), validate the same
+constructor arguments, need finite bounds, infer the schedule length T from the
+termination, build the initial population the same way (uniform, optionally
+seeded with ``X0``), count the evaluation budget the same way and build pymoo
+``Population`` objects only when read (:class:`ArrayStateMixin`, whose
+``next()`` drives one generation).
+"""
+
+from __future__ import annotations
+
+import functools
+import inspect
+
+import numpy as np
+from pymoo.core.algorithm import Algorithm
+from pymoo.core.population import Population
+from pymoo.core.termination import TerminateIfAny
+from pymoo.termination.default import DefaultTermination
+
+from moik._validate import integer, is_integer, keywords
+from moik.algorithms.mechanics import clip_to_bounds, uniform_population
+from moik.exceptions import NonFiniteError, ParameterError, ShapeError
+
+PYMOO_OPTIONS: frozenset[str] = frozenset(
+    p.name for p in inspect.signature(Algorithm.__init__).parameters.values()
+    if p.name != "self" and p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY))
+"""The options of pymoo's ``Algorithm.__init__`` (termination, output, display, callback,
+archive, return_least_infeasible, save_history, verbose, seed, evaluator): accepted by
+every algorithm besides its own hyperparameters."""
+
+
+@functools.cache
+def constructor_keywords(cls: type) -> frozenset[str]:
+    """Every keyword ``cls(...)`` accepts: the named parameters of each ``__init__`` along
+    its MRO (subclasses forward the rest through ``**kwargs``) and :data:`PYMOO_OPTIONS`."""
+    names = set(PYMOO_OPTIONS)
+    for klass in cls.__mro__:
+        init = klass.__dict__.get("__init__")
+        if init is not None and klass not in (Algorithm, object):
+            names.update(p.name for p in inspect.signature(init).parameters.values()
+                         if p.name != "self"
+                         and p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY))
+    return frozenset(names)
+
+
+def refuse_unknown_keywords(cls: type, given: dict) -> None:
+    """Refuse keywords that reached a base's ``**kwargs`` and that ``cls`` does not accept
+    (pymoo's ``Algorithm`` would swallow them silently).
+
+    Raises:
+        ParameterError: Naming the unknown keywords and listing every keyword ``cls``
+            accepts (:func:`constructor_keywords`).
+    """
+    if given and not PYMOO_OPTIONS.issuperset(given):
+        keywords(cls.__name__, given, constructor_keywords(cls))
+
+
+def find_limit(termination, attr: str) -> float:
+    """Smallest ``attr`` (n_max_gen / n_max_evals) among any-of termination criteria."""
+    limit = getattr(termination, attr, None)
+    limit = np.inf if limit is None else float(limit)
+    if isinstance(termination, (TerminateIfAny, DefaultTermination)):
+        for sub in termination.criteria:
+            limit = min(limit, find_limit(sub, attr))
+    return limit
+
+
+def check_sizes(pop_size: object, min_pop_size: int, max_iter: object) -> tuple[int, int | None]:
+    """``(pop_size, max_iter)`` validated: an integer >= ``min_pop_size``; a positive
+    integer or None.
+
+    Raises:
+        ParameterError: For a value that is not an integer (bools and floats refused)
+            or is out of range.
+    """
+    pop_size = integer("pop_size", pop_size, minimum=min_pop_size)
+    if max_iter is not None and not (is_integer(max_iter) and max_iter >= 1):
+        raise ParameterError(f"max_iter must be a positive integer or None, got {max_iter!r}")
+    return pop_size, None if max_iter is None else int(max_iter)
+
+
+def finite_bounds(problem, name: str) -> tuple[np.ndarray, np.ndarray]:
+    """The problem's ``(xl, xu)`` as float arrays; both must be finite."""
+    xl, xu = problem.bounds()
+    if xl is None or xu is None or not (np.all(np.isfinite(xl)) and np.all(np.isfinite(xu))):
+        raise ParameterError(f"{name} needs finite bounds xl, xu")
+    return np.asarray(xl, float), np.asarray(xu, float)
+
+
+def schedule_length(termination, max_iter, n_initial: int, per_iteration: float) -> int:
+    """T: ``max_iter`` if given, else from an ``n_gen`` or ``n_eval`` termination
+    (the smaller), else 1000."""
+    if max_iter is None:
+        n_gen = find_limit(termination, "n_max_gen")
+        by_eval = (find_limit(termination, "n_max_evals") - n_initial) / per_iteration + 1
+        limit = min(n_gen, np.ceil(by_eval))
+        max_iter = int(limit) if np.isfinite(limit) else 1000
+    return max(int(max_iter), 1)
+
+
+def initial_population(n: int, xl: np.ndarray, xu: np.ndarray, X0, *,
+                       rng: np.random.Generator) -> Population:
+    """Uniform initial points; the first rows replaced by ``X0`` if given (validated)."""
+    X = uniform_population(n, xl, xu, rng=rng)
+    if X0 is not None:
+        X0 = np.asarray(X0, dtype=float)
+        n_var = len(xl)
+        if X0.ndim != 2 or X0.shape[1] != n_var or not 1 <= len(X0) <= n:
+            raise ShapeError(f"X0 must have shape (k, {n_var}) with 1 <= k <= {n}, "
+                             f"got {X0.shape}")
+        if not np.all(np.isfinite(X0)):
+            raise NonFiniteError("X0 holds NaN or infinite values")
+        if np.any(clip_to_bounds(X0, xl, xu) != X0):
+            raise ParameterError("X0 has points outside the problem bounds [xl, xu]")
+        X[: len(X0)] = X0
+    return Population.new("X", X)
+
+
+def budget_left(max_evals: float, n_eval: int, n: int) -> int:
+    """How many of ``n`` candidates the evaluation budget still allows."""
+    left = max_evals - n_eval
+    return n if left >= n else int(max(left, 0))
+
+
+class ArrayStateMixin:
+    """What both array-state bases share on pymoo's side.
+
+    Mixed in before pymoo's ``Algorithm``. ``pop`` and ``opt`` are properties
+    built from arrays only when read: a base marks them stale
+    (``_pop_stale``/``_opt_stale``) and implements ``_build_pop()``/
+    ``_build_opt()``; pymoo's own assignments go to the setters. ``_infill``
+    hands out the pending candidates of the ``_generation()`` generator for
+    ``ask()`` (cut to the evaluation budget), ``next()`` drives the same
+    generator directly; ``_set_optimum`` does nothing
+    because ``opt`` is built lazily.
+    """
+
+    def next(self) -> None:
+        """One iteration through the array fast path: run ``_generation()``,
+        sending each yielded batch its ``_evaluate`` result (pymoo's own path
+        for initialization and while an ``ask()/tell()`` iteration is open)."""
+        if not self.is_initialized or self._step is not None:
+            return super().next()
+        self.t = self.n_iter - 1
+        step = self._generation()
+        X = next(step)
+        while True:
+            try:
+                X = step.send(self._evaluate(X))
+            except StopIteration:
+                break
+        self._end_iteration()
+        self._post_advance()
+        if self.termination.has_terminated():
+            self.finalize()
+
+    def _end_iteration(self) -> None:
+        """Hook run after an iteration's last batch (the MO base merges its archive)."""
+
+    def _infill(self) -> Population:
+        if self._step is None:
+            self.t = self.n_iter - 1
+            self._step = self._generation()
+            self._pending = next(self._step)
+        n = budget_left(self._max_evals, self.evaluator.n_eval, len(self._pending))
+        return Population.new("X", self._pending[:n])
+
+    def _set_optimum(self) -> None:
+        """Nothing to do: ``opt`` is built when read."""
+
+    def _build_pop(self) -> Population:
+        raise NotImplementedError("abstract hook: subclasses implement it")
+
+    def _build_opt(self) -> Population:
+        raise NotImplementedError("abstract hook: subclasses implement it")
+
+    @property
+    def pop(self) -> Population | None:
+        if self.__dict__.get("_pop_stale"):
+            self._pop, self._pop_stale = self._build_pop(), False
+        return self.__dict__.get("_pop")
+
+    @pop.setter
+    def pop(self, value) -> None:
+        self._pop, self._pop_stale = value, False
+
+    @property
+    def opt(self) -> Population | None:
+        if self.__dict__.get("_opt_stale"):
+            self._opt, self._opt_stale = self._build_opt(), False
+        return self.__dict__.get("_opt")
+
+    @opt.setter
+    def opt(self, value) -> None:
+        self._opt, self._opt_stale = value, False

@@ -1,0 +1,65 @@
+"""MOEA/D: pymoo's, with default reference directions.
+
+Zhang & Li, "MOEA/D: A Multiobjective Evolutionary Algorithm Based on
+Decomposition", IEEE Transactions on Evolutionary Computation 11(6), 712-731
+(2007), DOI 10.1109/TEVC.2007.892759, as implemented by pymoo. pymoo's ``MOEAD``
+needs reference directions at construction; :class:`MOEAD` here is pymoo's with
+a default: when ``ref_dirs`` is None, the Das-Dennis directions for the
+problem's number of objectives are built at setup with the most partitions that
+give at most ``pop_size`` directions (for two objectives:
+``n_partitions = pop_size - 1``, exactly ``pop_size`` directions). pymoo's other
+multi-objective algorithms (NSGA2, SMS-EMOA, MOPSO-CD) are registered unchanged
+(:mod:`moik.algorithms.registry`).
+"""
+
+from __future__ import annotations
+
+from math import comb
+
+import numpy as np
+from pymoo.algorithms.moo import moead
+from pymoo.util.ref_dirs import get_reference_directions
+
+from moik._validate import integer
+from moik.algorithms.array_state import refuse_unknown_keywords
+
+
+def das_dennis_partitions(n_obj: int, pop_size: int) -> int:
+    """Largest ``p`` with ``C(p + n_obj - 1, n_obj - 1) <= pop_size`` (at least 1)."""
+    p = 1
+    while comb(p + 1 + n_obj - 1, n_obj - 1) <= pop_size:
+        p += 1
+    return p
+
+
+def default_ref_dirs(n_obj: int, pop_size: int) -> np.ndarray:
+    """Das-Dennis reference directions, at most ``pop_size`` of them (see module doc)."""
+    return get_reference_directions("das-dennis", n_obj,
+                                    n_partitions=das_dennis_partitions(n_obj, pop_size))
+
+
+class MOEAD(moead.MOEAD):
+    """pymoo's MOEA/D with default reference directions (see the module doc).
+
+    Args:
+        ref_dirs: Reference directions (n, n_obj), or None for Das-Dennis ones.
+        pop_size: Number of directions when ``ref_dirs`` is None, an integer >= 2.
+        **kwargs: pymoo ``MOEAD`` options (``n_neighbors``, ``decomposition`` ...) and
+            pymoo ``Algorithm`` options.
+
+    Raises:
+        ParameterError: For a keyword pymoo's ``MOEAD`` does not take (listing the
+            accepted ones) or a bad ``pop_size``.
+    """
+
+    def __init__(self, *, ref_dirs: np.ndarray | None = None, pop_size: int = 100, **kwargs):
+        refuse_unknown_keywords(type(self), kwargs)
+        self._n_dirs = integer("pop_size", pop_size, minimum=2)
+        self._default_dirs = ref_dirs is None
+        dirs = default_ref_dirs(2, self._n_dirs) if ref_dirs is None else ref_dirs
+        super().__init__(ref_dirs=dirs, **kwargs)
+
+    def _setup(self, problem, **kwargs) -> None:
+        if self._default_dirs and self.ref_dirs.shape[1] != problem.n_obj:
+            self.ref_dirs = default_ref_dirs(problem.n_obj, self._n_dirs)
+        super()._setup(problem, **kwargs)

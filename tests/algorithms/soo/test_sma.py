@@ -1,0 +1,37 @@
+"""Slime mould algorithm (moik.algorithms.soo.sma): Eqs. 1-4 on hand-computed arrays."""
+
+import math
+
+import numpy as np
+
+from moik.algorithms.soo.sma import sma_schedule, sma_update, sma_weights
+from moik.testing import ScriptedRng
+
+
+def test_sma_schedule():
+    a, b = sma_schedule(500, 1000)
+    assert a == math.atanh(0.5) and b == 0.5
+
+
+def test_sma_weights_eq4():
+    S = np.array([3.0, 1.0, 2.0, 4.0])
+    W = sma_weights(S, 1, rng=ScriptedRng(np.full((4, 1), 0.5)))
+    expected = [1 - 0.5 * math.log10(5 / 3), 1.0, 1 + 0.5 * math.log10(4 / 3),
+                1 - 0.5 * math.log10(2)]
+    np.testing.assert_allclose(W[:, 0], expected, rtol=1e-12)
+
+
+def test_sma_update_eqs_1_2():
+    X, W = np.array([[1.0], [2.0]]), np.ones((2, 1))
+    # vb, vc, r, A, B, restart draw, restart position
+    rng = ScriptedRng([[0.2], [0.4]], [[0.5], [-0.5]], [[0.3], [0.3]], [[0], [1]], [[1], [0]],
+                      [0.5, 0.5])
+    out = sma_update(X, W, np.array([0.5]), np.array([0.0, 10.0]), 0.0, 1.0, 0.5, z=0.03,
+                     xl=np.array([0.0]), xu=np.array([4.0]), rng=rng)
+    # row 0: p = tanh(0) = 0 -> vc*X = 0.5; row 1: p ~ 1 -> 0.5 + 0.4*(1*2 - 1) = 0.9
+    np.testing.assert_allclose(out, [[0.5], [0.9]])
+    rng = ScriptedRng([[0.2], [0.4]], [[0.5], [-0.5]], [[0.3], [0.3]], [[0], [1]], [[1], [0]],
+                      [0.5, 0.01], [[0.25]])
+    out = sma_update(X, W, np.array([0.5]), np.array([0.0, 10.0]), 0.0, 1.0, 0.5, z=0.03,
+                     xl=np.array([0.0]), xu=np.array([4.0]), rng=rng)
+    np.testing.assert_allclose(out, [[0.5], [1.0]])  # row 1 restarts at 0 + 0.25*4

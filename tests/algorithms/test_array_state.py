@@ -1,0 +1,89 @@
+"""The generation driver both array-state bases share (moik.algorithms.array_state):
+strict keywords, sizes, the schedule from the termination, the evaluation budget."""
+
+import numpy as np
+import pytest
+from pymoo.optimize import minimize
+from pymoo.problems import get_problem
+from pymoo.termination import get_termination
+from pymoo.termination.default import DefaultSingleObjectiveTermination
+
+from moik.algorithms import EOSMA, MOEOSMA, available, entry
+from moik.algorithms.array_state import (
+    PYMOO_OPTIONS,
+    budget_left,
+    check_sizes,
+    constructor_keywords,
+    find_limit,
+    refuse_unknown_keywords,
+    schedule_length,
+)
+from moik.exceptions import ParameterError
+
+MOIK = [name for name in available() if entry(name).cls.__module__.startswith("moik.")]
+
+
+def test_pymoo_options_are_those_of_algorithm_init():
+    assert {"termination", "output", "display", "callback", "archive",
+                             "return_least_infeasible", "save_history", "verbose", "seed",
+                             "evaluator"} == PYMOO_OPTIONS
+
+
+def test_constructor_keywords_follow_the_mro():
+    names = constructor_keywords(EOSMA)
+    assert {"pop_size", "X0", "max_iter", "q", "z", "a1"} <= names and names >= PYMOO_OPTIONS
+    assert {"archive_size", "pop_size"} <= constructor_keywords(MOEOSMA)
+    refuse_unknown_keywords(EOSMA, {"seed": 1, "verbose": False})
+
+
+def test_misspelled_keyword_is_refused_naming_the_right_one():
+    with pytest.raises(ParameterError, match=r"unknown parameter\(s\) pop_sise for EOSMA; "
+                                             r"accepted: .*\bpop_size\b"):
+        EOSMA(pop_sise=50)
+
+
+@pytest.mark.parametrize("name", MOIK)
+def test_every_moik_algorithm_refuses_an_unknown_keyword(name):
+    cls = entry(name).cls
+    with pytest.raises(ParameterError, match=rf"unknown parameter\(s\) pop_sise for "
+                                             rf"{cls.__name__}; accepted: .*\bpop_size\b"):
+        cls(pop_sise=50)
+
+
+@pytest.mark.parametrize("name", MOIK)
+def test_every_moik_algorithm_takes_pymoo_options(name):
+    """pymoo's options pass through ``minimize`` (to ``setup``) and through the constructor."""
+    cls = entry(name).cls
+    multi = entry(name).kind == "multi-objective"
+    problem = get_problem("zdt1", n_var=5) if multi else get_problem("sphere", n_var=5)
+    res = minimize(problem, cls(), ("n_gen", 3), seed=1, verbose=False, save_history=True)
+    assert len(res.history) == 3 and res.algorithm.seed == 1
+    again = minimize(problem, cls(seed=1, verbose=False, save_history=True), ("n_gen", 3))
+    np.testing.assert_array_equal(again.F, res.F)
+
+
+def test_sizes_are_integers_under_moiks_rule():
+    assert check_sizes(np.int64(5), 2, None) == (5, None)
+    assert check_sizes(5, 2, np.int32(7)) == (5, 7)
+    for bad in (True, 5.0, "5"):
+        with pytest.raises(ParameterError, match="pop_size must be an integer >= 2"):
+            check_sizes(bad, 2, None)
+    for bad in (0, 2.0, True):
+        with pytest.raises(ParameterError, match="max_iter must be a positive integer or None"):
+            check_sizes(5, 2, bad)
+
+
+def test_schedule_length_and_limits_from_the_termination():
+    assert find_limit(get_termination("n_gen", 7), "n_max_gen") == 7
+    assert find_limit(get_termination("n_eval", 500), "n_max_gen") == np.inf
+    assert find_limit(DefaultSingleObjectiveTermination(n_max_gen=40), "n_max_gen") == 40
+    assert schedule_length(get_termination("n_gen", 7), None, 10, 10.0) == 7
+    assert schedule_length(get_termination("n_eval", 2010), None, 10, 20.0) == 101
+    assert schedule_length(get_termination("n_gen", 7), 50, 10, 10.0) == 50
+    assert schedule_length(get_termination("time", 1.0), None, 10, 10.0) == 1000
+
+
+def test_budget_left_cuts_the_last_batch():
+    assert budget_left(np.inf, 100, 30) == 30
+    assert budget_left(120, 100, 30) == 20
+    assert budget_left(100, 100, 30) == 0

@@ -5,7 +5,7 @@ Table 5 and Figs. 7-11. N=50, T=500 (Table 3 caption); a run is solved when its
 error is below 1e-6, else the algorithm solves again, at most 10 runs (the
 re-solve protocol); Wilcoxon rank-sum of EOSMA vs each algorithm (Fig. 11).
 EOSMA uses the scenario 1 preset q=0, a1=1. Baselines marked optional are
-included when registered (issue 7 adds the paper's baselines); their
+included when registered (every baseline of the paper is registered); their
 parameters are their classes' defaults, which follow Table 3.
 The arm is ``eosma7-m`` (Table 1 in metres): the table's errors are in metres.
 """

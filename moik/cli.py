@@ -19,10 +19,13 @@ import sys
 
 import numpy as np
 
+from moik.algorithms import available, entry
 from moik.exceptions import MoikError
 from moik.experiments.commands import add_subcommands
 from moik.kinematics.orientation import eosma_euler, zyx_euler
+from moik.problems.targets import Target
 from moik.robots import available_robots, get_robot
+from moik.solver import solve_ik
 
 
 def _cmd_robots(args: argparse.Namespace) -> int:
@@ -62,8 +65,6 @@ def _cmd_fk(args: argparse.Namespace) -> int:
 
 
 def _cmd_algorithms(args: argparse.Namespace) -> int:
-    from moik.algorithms import available, entry
-
     print(f"{'name':<10}{'kind':<18}source")
     for name in available():
         e = entry(name)
@@ -72,9 +73,6 @@ def _cmd_algorithms(args: argparse.Namespace) -> int:
 
 
 def _cmd_solve(args: argparse.Namespace) -> int:
-    from moik.problems.targets import Target
-    from moik.solver import solve_ik
-
     robot = get_robot(args.robot)
     if args.euler is None:
         target = Target(args.target)

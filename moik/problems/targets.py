@@ -12,7 +12,7 @@ import numpy as np
 
 from moik._validate import integer, positive
 from moik._validate import seed as seed_value
-from moik.exceptions import NonFiniteError, ShapeError, TargetError
+from moik.exceptions import NonFiniteError, ShapeError, TargetError, UnknownNameError
 from moik.kinematics.orientation import (
     check_rotation,
     rotation_from_eosma_euler,
@@ -87,8 +87,6 @@ class Target:
                 ``"eosma-euler"`` (EOSMA Eq. 26, intrinsic ``Rx Ry Rz``).
         """
         if convention not in EULER_CONVENTIONS:
-            from moik.exceptions import UnknownNameError
-
             raise UnknownNameError("Euler convention", convention, EULER_CONVENTIONS)
         ang = np.asarray(angles, dtype=float)
         if ang.shape != (3,):

@@ -1,4 +1,4 @@
-"""Benchmark problems of issue 8: classical F1-F23, CEC2017, engineering design.
+"""Benchmark problems of the I-BES and MChOA papers: classical F1-F23, CEC2017, engineering design.
 
 * ``F1`` ... ``F23``: the classical functions of the MChOA paper's Table 2
   (:mod:`moik.problems.benchmarks.classical`, :mod:`moik.problems.benchmarks.fixed`).

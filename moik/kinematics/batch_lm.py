@@ -28,7 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from moik.kinematics.jacobian import kernel_jacobian
+from moik.kinematics.jacobian import parts_and_jacobian
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
 
@@ -108,14 +108,12 @@ def rotation_logs(M: np.ndarray) -> np.ndarray:
 
 def _residuals(robot: Robot, target: Target, length: float, Q: np.ndarray):
     """Residuals ``(n, m)`` and exact Jacobians ``(n, m, dof)`` of a batch."""
-    xy, z, p, J = kernel_jacobian(robot, Q)
-    r_pos = (p.T - target.position) / length
+    R, p, J = parts_and_jacobian(robot, Q)
+    r_pos = (p - target.position) / length
     J_pos = J[:, :3] / length
     if target.rotation is None:
         return r_pos, J_pos
-    Rt = target.rotation  # M = R Rt^T, R = [x y z]: M_ab = x_a Rt_b0 + y_a Rt_b1 + z_a Rt_b2
-    M = (xy.real.T[:, :, None] * Rt[:, 0] + xy.imag.T[:, :, None] * Rt[:, 1]
-         + z.T[:, :, None] * Rt[:, 2])
+    M = R @ target.rotation.T
     r_rot = rotation_logs(M)
     J_rot = inverse_left_jacobians(r_rot) @ J[:, 3:]
     return np.hstack([r_pos, r_rot]), np.concatenate([J_pos, J_rot], axis=1)

@@ -32,7 +32,7 @@ def test_eosma_pose_objective_formula():
     T = robot.fk(q[0])
     f1 = np.linalg.norm(T[:3, 3] - target.position)
     f2 = np.linalg.norm(eosma_euler(T[:3, :3]) - eosma_euler(target.rotation))
-    F = PoseIK(robot, target, weights=(0.3, 0.7)).evaluate(q)
+    F = PoseIK(robot, target, weights=(0.3, 0.7), orientation="eosma-euler").evaluate(q)
     assert F[0, 0] == pytest.approx(0.3 * f1 + 0.7 * f2, rel=1e-12)
     F2 = BiObjectiveIK(robot, target, orientation="eosma-euler").evaluate(q)
     np.testing.assert_allclose(F2[0], [f1, f2], rtol=1e-12)

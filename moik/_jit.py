@@ -6,8 +6,14 @@ depend on the batch it is part of. It asks numba for an on-disk cache
 (``cache=True``): numba stores compiled code in ``NUMBA_CACHE_DIR``, beside the
 source (``__pycache__``) or in the user cache directory, whichever it can write.
 When it can write none of them (a read-only installation and home), numba refuses
-``cache=True`` when the function is decorated; :func:`jit` then compiles without a
-cache instead, so importing moik never fails for a cache.
+to build the cache when the function is decorated; :func:`jit` then compiles
+without a cache instead, so importing moik never fails for a cache.
+
+numba keys a cached function by its own source file only, while moik's kernels
+inline helpers from other modules (a fused IK objective holds the FK kernel of
+:mod:`moik.robots.dh`): after an edit of ``dh.py`` the cached objective would be
+stale. So the cache key also holds a digest of every moik module that compiles
+kernels (those importing this module); editing one recompiles them all, once.
 
 Kernels compile lazily, at their first call. The first real compilation in a
 process (not a load from the cache) prints one line on stderr,
@@ -22,18 +28,21 @@ C-contiguous, writeable ``float64`` keeps each kernel at its one compiled versio
 
 from __future__ import annotations
 
+import hashlib
 import sys
 from collections.abc import Callable
+from pathlib import Path
 from typing import Any
 
 import numba
 import numpy as np
 from numba.core import event
+from numba.core.caching import FunctionCache
 
 COMPILE_NOTICE = "compiling kinematics kernels, first run only"
 
 _kernels: set[Callable] = set()  # the Python functions compiled by jit
-_notice = {"printed": False}
+_notice: dict[str, Any] = {"printed": False}  # and the sources digest, once computed
 
 
 class _CompileNotice(event.Listener):
@@ -53,6 +62,26 @@ class _CompileNotice(event.Listener):
 event.register("numba:compile", _CompileNotice())
 
 
+def _kernel_sources_digest() -> str:
+    """SHA-256 of the source of every moik module that compiles kernels."""
+    if "digest" not in _notice:
+        h = hashlib.sha256()
+        for path in sorted(Path(__file__).parent.rglob("*.py")):
+            text = path.read_bytes()
+            if b"moik._jit import" in text:
+                h.update(path.relative_to(Path(__file__).parent).as_posix().encode())
+                h.update(text)
+        _notice["digest"] = h.hexdigest()
+    return _notice["digest"]
+
+
+class _KernelCache(FunctionCache):
+    """numba's per-function disk cache, keyed also by :func:`_kernel_sources_digest`."""
+
+    def _index_key(self, sig, codegen):
+        return (*super()._index_key(sig, codegen), _kernel_sources_digest())
+
+
 def jit(func: Callable | None = None, *, inline: bool = False) -> Any:
     """Compile ``func`` with numba (nopython, no fastmath, cached when a cache can be written).
 
@@ -64,13 +93,14 @@ def jit(func: Callable | None = None, *, inline: bool = False) -> Any:
     if func is None:
         return lambda f: jit(f, inline=inline)
     _kernels.add(func)
-    options = {"fastmath": False, "inline": "always" if inline else "never"}
+    dispatcher = numba.njit(cache=False, fastmath=False,
+                            inline="always" if inline else "never")(func)
     try:
-        return numba.njit(cache=True, **options)(func)
-    except RuntimeError as exc:  # numba found no writable cache location
+        dispatcher._cache = _KernelCache(func)  # what cache=True does, with our key
+    except RuntimeError as exc:  # numba found no writable cache location: stay uncached
         if "no locator available" not in str(exc):
             raise
-        return numba.njit(cache=False, **options)(func)
+    return dispatcher
 
 
 def kernel_array(values: Any) -> np.ndarray:

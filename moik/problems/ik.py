@@ -117,7 +117,7 @@ class _IKProblem(Problem):
     def _objectives(self, X, mode: int, weights: np.ndarray) -> np.ndarray:
         """One compiled call: the objectives ``(n, 1)`` or ``(n, 2)`` of a batch."""
         Q = kernel_array(np.atleast_2d(X))
-        if not all_finite(Q):
+        if not all_finite(Q.reshape(-1)):
             raise NonFiniteError(f"{type(self).__name__}: joint values contain NaN or inf")
         out = np.empty((Q.shape[0], 2 if mode == BI_OBJECTIVE else 1))
         chain = self.robot.kinematic_chain

@@ -210,7 +210,7 @@ class Robot:
                 f"{name} for robot {self.name!r} must have shape ({self.dof},) or "
                 f"(n, {self.dof}), got {Q.shape}"
             )
-        if not dh.all_finite(Q):
+        if not dh.all_finite(Q.reshape(-1)):
             raise NonFiniteError(f"{name} must be finite, got NaN or inf in {name}")
         return Q
 

@@ -60,6 +60,11 @@ class KinematicChain:
             arr.setflags(write=False)
             object.__setattr__(self, key, arr)
 
+    def __reduce__(self):
+        # through the constructor, so unpickled arrays are read-only again (numpy
+        # pickles them writeable, which the kernels would see as another type)
+        return KinematicChain, (self.origins, self.joint_types, self.link_frames)
+
     @property
     def dof(self) -> int:
         """Number of joints."""
@@ -312,8 +317,8 @@ def fk_rotations_positions(F, types, Q, R, p):
 
 @jit
 def all_finite(x):
-    """Whether every entry of the float array ``x`` is finite."""
-    for v in x.flat:  # noqa: SIM110 (a compiled early-exit loop)
+    """Whether every entry of the 1-D float array ``x`` is finite."""
+    for v in x:  # noqa: SIM110 (a compiled early-exit loop)
         if not math.isfinite(v):
             return False
     return True

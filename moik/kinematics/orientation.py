@@ -218,13 +218,14 @@ def metric_code(name: str) -> int:
 def metric_target(name: str, R_t: np.ndarray) -> np.ndarray:
     """The target angles :func:`rotation_error` compares with, shape ``(3,)``.
 
-    The paper's Euler angles of ``R_t`` for the Euler metrics (computed once, by
-    the numpy conventions above), zeros for the matrix metrics.
+    The paper's Euler angles of ``R_t`` for the Euler metrics, zeros for the matrix
+    metrics. Computed by the same compiled code as the angles of each candidate,
+    so a candidate with the target's rotation has an error of exactly 0 (numpy's
+    vectorised ``arctan2`` may differ from it by an ulp).
     """
-    target_repr, _ = orientation_metric(name)
-    if name in ("frobenius", "geodesic"):
-        return np.zeros(3)
-    return np.array(target_repr(R_t), dtype=np.float64).reshape(3)
+    out = np.zeros(3)
+    _target_angles(metric_code(name), np.array(R_t, dtype=np.float64, order="C"), out)
+    return out
 
 
 @jit(inline=True)
@@ -318,6 +319,16 @@ def rotation_error(code, rot, R_t, angles_t):
     m21 = R_t[0, 2] * r01 + R_t[1, 2] * r11 + R_t[2, 2] * r21
     vx, vy, vz = m21 - m12, m02 - m20, m10 - m01
     return math.atan2(math.sqrt(vx * vx + vy * vy + vz * vz), m00 + m11 + m22 - 1.0)
+
+
+@jit
+def _target_angles(code, R_t, out):
+    rot = (R_t[0, 0], R_t[0, 1], R_t[0, 2], R_t[1, 0], R_t[1, 1], R_t[1, 2],
+           R_t[2, 0], R_t[2, 1], R_t[2, 2])
+    if code == EOSMA_EULER:
+        out[0], out[1], out[2] = eosma_euler_angles(rot)
+    elif code in (ZYX_EULER, ZYX_EULER_FREE_GAMMA):
+        out[0], out[1], out[2] = zyx_euler_angles(rot)
 
 
 @jit

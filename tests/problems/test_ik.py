@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from scipy.spatial.transform import Rotation
 
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetError
 from moik.kinematics.orientation import (
@@ -13,6 +14,7 @@ from moik.kinematics.orientation import (
     eosma_euler,
     metric_code,
     metric_target,
+    orientation_error,
     orientation_metric,
 )
 from moik.problems import BiObjectiveIK, PoseIK, PositionIK, Target, random_reachable_targets
@@ -177,3 +179,42 @@ def test_objectives_accept_any_array_layout():
     np.testing.assert_array_equal(problem.evaluate(wide[:, ::2]), F)
     np.testing.assert_array_equal(problem.evaluate(frozen), F)
     np.testing.assert_array_equal(problem.errors(X.tolist())[0], F[:, 0])
+
+
+def _special_rotations() -> np.ndarray:
+    """Rotations where the Euler conventions are delicate: half turns, ZYX gimbal
+    lock (beta = +-pi/2) and a hair away from it, angles at +-pi."""
+    rng = np.random.default_rng(0)
+    axes = rng.normal(size=(200, 3))
+    half_turns = Rotation.from_rotvec(np.pi * axes / np.linalg.norm(axes, axis=1)[:, None])
+    beta = rng.choice([-1, 1], 200) * (np.pi / 2 - 10.0 ** rng.uniform(-15, -3, 200))
+    lock = np.column_stack([rng.uniform(-3, 3, 200), beta, rng.uniform(-3, 3, 200)])
+    grid = rng.choice([-np.pi, -np.pi / 2, 0.0, np.pi / 2, np.pi], size=(200, 3))
+    return np.concatenate([half_turns.as_matrix(), Rotation.from_euler("ZYX", lock).as_matrix(),
+                           Rotation.from_euler("ZYX", grid).as_matrix(), [np.eye(3)],
+                           Rotation.random(500, random_state=1).as_matrix()])
+
+
+@pytest.mark.parametrize("metric", available_metrics())
+def test_compiled_metrics_equal_numpy_on_delicate_rotations(metric):
+    """The compiled metric (as the fused objectives use it) against the numpy
+    formula, including scipy's gimbal-lock rule for the ZYX angles."""
+    R = _special_rotations()
+    R_t = Rotation.random(1, random_state=3).as_matrix()[0]
+    target_repr, error = orientation_metric(metric)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)
+        expected = error(R, target_repr(R_t))
+        angles = np.zeros(3) if metric in ("frobenius", "geodesic") else target_repr(R_t)
+    np.testing.assert_allclose(metric_target(metric, R_t), angles, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(orientation_error(R, R_t, metric), expected, rtol=0, atol=1e-14)
+
+
+@pytest.mark.parametrize("metric", ["eosma-euler", "zyx-euler", "zyx-euler-free-gamma"])
+def test_euler_target_angles_make_the_source_exact(metric):
+    """Target angles come from the same compiled code as the candidates' angles, so
+    the joint vector that generated a target scores exactly 0."""
+    robot = get_robot("eosma7")
+    for target in random_reachable_targets(robot, 5, seed=9):
+        F = BiObjectiveIK(robot, target, orientation=metric).evaluate(target.q_source[None])
+        assert F[0, 1] == 0.0

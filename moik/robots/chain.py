@@ -23,8 +23,10 @@ import numpy as np
 from moik._jit import kernel_array
 from moik.exceptions import LimitsError, NonFiniteError, ParameterError, ShapeError
 from moik.robots import dh
-from moik.robots.dh import PRISMATIC, REVOLUTE, KinematicChain
 from moik.robots.transforms import (
+    PRISMATIC,
+    REVOLUTE,
+    KinematicChain,
     dh_link_frames,
     dh_to_origins,
     fk_general_reference,

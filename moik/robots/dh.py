@@ -3,7 +3,7 @@
 Every chain moik knows (standard or modified DH rows with angle offsets and
 prismatic joints, URDF chains, chains with locked joints) is evaluated in the
 general form ``F_0 M_1(q_1) F_1 ... M_n(q_n) F_n`` (:mod:`moik.robots.transforms`),
-given by a :class:`KinematicChain`: the constants ``F_0 .. F_n``, the joint
+given by a :class:`~moik.robots.transforms.KinematicChain`: the constants ``F_0 .. F_n``, the joint
 types and, for per-joint frames, the transforms ``P_j`` from each joint's motion
 frame to its displayed frame.
 
@@ -24,52 +24,11 @@ oracle that tests compare the kernels with.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
 from moik._jit import jit
-
-REVOLUTE = 0
-PRISMATIC = 1
-
-
-@dataclass(frozen=True)
-class KinematicChain:
-    """The constants of ``F_0 M_1(q_1) F_1 ... M_n(q_n) F_n``, as the kernels take them.
-
-    All arrays are C-contiguous and read-only (one array type for the kernels).
-
-    Attributes:
-        origins: ``(dof + 1, 4, 4)`` fixed transforms ``F_0 .. F_n``.
-        joint_types: ``(dof,)`` int64, :data:`REVOLUTE` (``M = Rz(q)``) or
-            :data:`PRISMATIC` (``M = Tz(q)``).
-        link_frames: ``(dof, 4, 4)`` transforms ``P_j``: frame ``j`` (for plotting)
-            is ``F_0 M_1 F_1 ... M_j P_j``; the DH frames for DH robots, ``P_j = F_j``
-            for general chains.
-    """
-
-    origins: np.ndarray
-    joint_types: np.ndarray
-    link_frames: np.ndarray
-
-    def __post_init__(self) -> None:
-        for key, dtype in (("origins", np.float64), ("joint_types", np.int64),
-                           ("link_frames", np.float64)):
-            arr = np.array(getattr(self, key), dtype=dtype, order="C", copy=True)
-            arr.setflags(write=False)
-            object.__setattr__(self, key, arr)
-
-    def __reduce__(self):
-        # through the constructor, so unpickled arrays are read-only again (numpy
-        # pickles them writeable, which the kernels would see as another type)
-        return KinematicChain, (self.origins, self.joint_types, self.link_frames)
-
-    @property
-    def dof(self) -> int:
-        """Number of joints."""
-        return self.joint_types.size
-
+from moik.robots.transforms import PRISMATIC
 
 # sin and cos on [-pi/4, pi/4] (fdlibm k_sin.c / k_cos.c, error < 1 ulp) and the
 # Cody-Waite split of pi/2 (fdlibm e_rem_pio2.c): exact products for |n| < 2**20

@@ -6,13 +6,56 @@ rigid transform and ``M_j`` is ``Rz(q_j)`` (revolute) or ``Tz(q_j)``
 (prismatic). URDF chains, DH chains and chains with locked joints all take this
 form, which the compiled FK kernels of :mod:`moik.robots.dh` evaluate. This
 module builds the constants (elementary transforms with exact values at
-multiples of pi/2, DH rows to origins, locked joints folded in) and holds the
-plain-numpy reference FK of a general chain.
+multiples of pi/2, DH rows to origins, locked joints folded in), holds them as
+the kernels take them (:class:`KinematicChain`) and has the plain-numpy
+reference FK of a general chain.
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
+
+REVOLUTE = 0
+PRISMATIC = 1
+
+
+@dataclass(frozen=True)
+class KinematicChain:
+    """The constants of ``F_0 M_1(q_1) F_1 ... M_n(q_n) F_n``, as the kernels take them.
+
+    All arrays are C-contiguous and read-only (one array type for the kernels).
+
+    Attributes:
+        origins: ``(dof + 1, 4, 4)`` fixed transforms ``F_0 .. F_n``.
+        joint_types: ``(dof,)`` int64, :data:`REVOLUTE` (``M = Rz(q)``) or
+            :data:`PRISMATIC` (``M = Tz(q)``).
+        link_frames: ``(dof, 4, 4)`` transforms ``P_j``: frame ``j`` (for plotting)
+            is ``F_0 M_1 F_1 ... M_j P_j``; the DH frames for DH robots, ``P_j = F_j``
+            for general chains.
+    """
+
+    origins: np.ndarray
+    joint_types: np.ndarray
+    link_frames: np.ndarray
+
+    def __post_init__(self) -> None:
+        for key, dtype in (("origins", np.float64), ("joint_types", np.int64),
+                           ("link_frames", np.float64)):
+            arr = np.array(getattr(self, key), dtype=dtype, order="C", copy=True)
+            arr.setflags(write=False)
+            object.__setattr__(self, key, arr)
+
+    def __reduce__(self):
+        # through the constructor, so unpickled arrays are read-only again (numpy
+        # pickles them writeable, which the kernels would see as another type)
+        return KinematicChain, (self.origins, self.joint_types, self.link_frames)
+
+    @property
+    def dof(self) -> int:
+        """Number of joints."""
+        return self.joint_types.size
 
 
 def exact_cos_sin(angle: float) -> tuple[float, float]:

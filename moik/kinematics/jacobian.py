@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from moik._jit import jit, kernel_array
+from moik._jit import jit
 from moik.robots.chain import Robot
 from moik.robots.dh import PRISMATIC, compose, move_joint, pose_state, store_pose
 
@@ -76,14 +76,14 @@ def parts_and_jacobians(F, types, Q):
 
 
 def parts_and_jacobian(robot: Robot, Q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """End-effector rotations, positions and Jacobians of a 2-D batch, without validation.
+    """End-effector rotations, positions and Jacobians of a 2-D batch (no finiteness check).
 
     Returns:
         ``(R, p, J)``: ``(n, 3, 3)``, ``(n, 3)`` and ``(n, 6, dof)`` (see
         :func:`pose_and_jacobian`).
     """
     chain = robot.kinematic_chain
-    return parts_and_jacobians(chain.origins, chain.joint_types, kernel_array(Q))
+    return parts_and_jacobians(chain.origins, chain.joint_types, robot.kernel_batch(Q))
 
 
 def pose_and_jacobian(robot: Robot, q) -> tuple[np.ndarray, np.ndarray]:
@@ -100,8 +100,7 @@ def pose_and_jacobian(robot: Robot, q) -> tuple[np.ndarray, np.ndarray]:
     """
     Q = robot.check_q(q)
     chain = robot.kinematic_chain
-    T, J = poses_and_jacobians(chain.origins, chain.joint_types,
-                               kernel_array(np.atleast_2d(Q)))
+    T, J = poses_and_jacobians(chain.origins, chain.joint_types, Q[None] if Q.ndim == 1 else Q)
     return (T[0], J[0]) if Q.ndim == 1 else (T, J)
 
 

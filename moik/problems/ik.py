@@ -25,7 +25,7 @@ import math
 import numpy as np
 from pymoo.core.problem import Problem
 
-from moik._jit import jit, kernel_array
+from moik._jit import jit
 from moik._validate import positive
 from moik.exceptions import NonFiniteError, ParameterError, TargetError
 from moik.kinematics.orientation import metric_code, metric_target, rotation_error
@@ -116,7 +116,7 @@ class _IKProblem(Problem):
 
     def _objectives(self, X, mode: int, weights: np.ndarray) -> np.ndarray:
         """One compiled call: the objectives ``(n, 1)`` or ``(n, 2)`` of a batch."""
-        Q = kernel_array(np.atleast_2d(X))
+        Q = self.robot.kernel_batch(np.atleast_2d(X))
         if not all_finite(Q.reshape(-1)):
             raise NonFiniteError(f"{type(self).__name__}: joint values contain NaN or inf")
         out = np.empty((Q.shape[0], 2 if mode == BI_OBJECTIVE else 1))

@@ -216,22 +216,37 @@ class Robot:
             raise NonFiniteError(f"{name} must be finite, got NaN or inf in {name}")
         return Q
 
+    def kernel_batch(self, q) -> np.ndarray:
+        """``q`` as the batched kernels take it: a C-contiguous, writeable float ``(n, dof)``.
+
+        Checks the shape only (a kernel given fewer columns would read past the
+        array; numba does not check bounds), not finiteness (hot path: NaN in, NaN out).
+
+        Raises:
+            ShapeError: if ``q`` is not 2-D with ``dof`` columns.
+        """
+        Q = kernel_array(q)
+        if Q.ndim != 2 or Q.shape[1] != self.dof:
+            raise ShapeError(f"a batch for robot {self.name!r} must have shape (n, {self.dof}), "
+                             f"got {Q.shape}")
+        return Q
+
     def fk_parts(self, q) -> tuple[np.ndarray, np.ndarray]:
         """Rotation ``(n, 3, 3)`` and position ``(n, 3)`` of the end effector.
 
         Cheaper than :meth:`fk` when the homogeneous matrix is not needed.
-        ``q`` must be 2-D ``(n, dof)``; no validation (hot path).
+        ``q`` must be 2-D ``(n, dof)``; no finiteness check (hot path).
         """
         chain = self.kinematic_chain
-        Q = kernel_array(q)
+        Q = self.kernel_batch(q)
         R, p = np.empty((Q.shape[0], 3, 3)), np.empty((Q.shape[0], 3))
         dh.fk_rotations_positions(chain.origins, chain.joint_types, Q, R, p)
         return R, p
 
     def fk_position(self, q) -> np.ndarray:
-        """End-effector positions ``(n, 3)`` of a 2-D batch (hot path, no validation)."""
+        """End-effector positions ``(n, 3)`` of a 2-D batch (hot path, no finiteness check)."""
         chain = self.kinematic_chain
-        Q = kernel_array(q)
+        Q = self.kernel_batch(q)
         p = np.empty((Q.shape[0], 3))
         dh.fk_positions(chain.origins, chain.joint_types, Q, p)
         return p

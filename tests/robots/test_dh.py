@@ -16,6 +16,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
+from moik.exceptions import ShapeError
 from moik.robots import Robot, available_robots, dh, fk_reference, get_robot
 from moik.robots.transforms import fk_general_reference
 from moik.robots.urdf import load_urdf
@@ -226,3 +227,14 @@ def test_reference_is_independent_of_general_form(name):
     np.testing.assert_allclose(
         fk_general_reference(robot.chain_origins(), robot.is_prismatic, Q),
         fk_reference(robot, Q), atol=_scale(robot))
+
+
+def test_hot_paths_check_the_batch_shape():
+    """No finiteness check on the hot paths, but the shape is checked: a kernel
+    given fewer columns would read past the array."""
+    robot = get_robot("eosma7")
+    for fn in (robot.fk_position, robot.fk_parts, robot.kernel_batch):
+        with pytest.raises(ShapeError, match=r"must have shape \(n, 7\), got \(4, 6\)"):
+            fn(np.zeros((4, 6)))
+        with pytest.raises(ShapeError, match=r"got \(7,\)"):
+            fn(np.zeros(7))

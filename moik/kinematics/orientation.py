@@ -37,7 +37,7 @@ from collections.abc import Callable
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from moik._jit import jit
+from moik._jit import jit, kernel_array
 from moik.exceptions import NonFiniteError, ShapeError, TargetError, UnknownNameError
 
 
@@ -167,7 +167,7 @@ def orientation_error(R, R_t, metric: str = "geodesic") -> np.ndarray:
     code = metric_code(metric)
     R = check_rotation(R, "R", batch=True)
     R_t = check_rotation(R_t, "R_t")
-    R3 = np.ascontiguousarray(R.reshape(-1, 3, 3))
+    R3 = kernel_array(R.reshape(-1, 3, 3))
     out = np.empty(R3.shape[0])
     rotation_errors(code, R3, R_t, metric_target(metric, R_t), out)
     return out[0] if R.ndim == 2 else out
@@ -224,7 +224,7 @@ def metric_target(name: str, R_t: np.ndarray) -> np.ndarray:
     vectorised ``arctan2`` may differ from it by an ulp).
     """
     out = np.zeros(3)
-    _target_angles(metric_code(name), np.array(R_t, dtype=np.float64, order="C"), out)
+    _target_angles(metric_code(name), kernel_array(R_t), out)
     return out
 
 

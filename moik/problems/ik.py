@@ -25,7 +25,7 @@ import math
 import numpy as np
 from pymoo.core.problem import Problem
 
-from moik._jit import jit
+from moik._jit import jit, kernel_array
 from moik._validate import positive
 from moik.exceptions import NonFiniteError, ParameterError, TargetError
 from moik.kinematics.orientation import metric_code, metric_target, rotation_error
@@ -109,7 +109,7 @@ class _IKProblem(Problem):
             raise ParameterError("displacement_weight > 0 needs q_start (Eq. 31)")
         super().__init__(n_var=robot.dof, n_obj=self.n_obj_ik, xl=robot.lower.copy(),
                          xu=robot.upper.copy(), vtype=float)
-        self._p_t = np.array(self.target.position, dtype=np.float64)
+        self._p_t = kernel_array(np.array(self.target.position))
         self._q_start = np.zeros(robot.dof) if self.q_start is None else self.q_start.copy()
         self._code, self._R_t, self._angles_t = -1, np.eye(3), np.zeros(3)
         self._weights = np.array([1.0, 0.0, self.displacement_weight])
@@ -158,7 +158,7 @@ class _OrientedIK(_IKProblem):
         super().__init__(robot, target, displacement_weight=displacement_weight,
                          q_start=q_start, needs_orientation=True)
         self._code = code
-        self._R_t = np.array(self.target.rotation, dtype=np.float64, order="C")
+        self._R_t = kernel_array(np.array(self.target.rotation))
         self._angles_t = metric_target(orientation, self._R_t)
 
     def errors(self, X: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -1,43 +1,89 @@
-"""Geometric Jacobian of a robot, batched, for local polishing.
+"""Geometric Jacobian of a robot, compiled, in the same pass as the pose.
 
 For joint ``j`` with unit axis ``z_j`` through the point ``o_j`` (base frame)
 and end-effector position ``p``: a revolute column is
 ``[z_j x (p - o_j); z_j]``, a prismatic column ``[z_j; 0]`` (Siciliano et al.,
-*Robotics*, Eq. 3.30). The axes come from the same FK kernel pass as the
-pose, so the Jacobian costs about one FK plus a cross product.
+*Robotics*, Eq. 3.30). Joint ``j`` moves along the local z axis of the chain
+``F_0 M_1 F_1 ... F_{j-1}``, so ``z_j`` and ``o_j`` are that partial product's z
+column and position, read while the FK kernel walks the chain: the Jacobian costs
+one FK plus a cross product per joint.
+
+:func:`pose_jacobian_into` (one joint vector, preallocated outputs) is callable
+from other compiled code; it takes the arrays of :attr:`Robot.kinematic_chain`.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from moik._jit import jit
 from moik.robots.chain import Robot
-from moik.robots.dh import assemble, run_steps
+from moik.robots.dh import PRISMATIC, compose, move_joint, pose_state, store_pose
 
 
-def kernel_jacobian(robot: Robot, Q: np.ndarray) -> tuple[np.ndarray, np.ndarray,
-                                                           np.ndarray, np.ndarray]:
-    """Kernel state and geometric Jacobians of a 2-D batch, without validation.
+@jit
+def pose_jacobian_into(F, types, q, T, J):
+    """Pose ``T (4, 4)`` and geometric Jacobian ``J (6, dof)`` of ``q (dof,)``, written in place.
+
+    ``F`` and ``types`` are ``KinematicChain.origins`` and ``.joint_types``.
+    """
+    t = pose_state(F, 0)
+    dof = types.size
+    for j in range(dof):  # the joint's axis point and direction, kept in J for now
+        J[0, j], J[1, j], J[2, j] = t[9], t[10], t[11]
+        J[3, j], J[4, j], J[5, j] = t[2], t[5], t[8]
+        t = compose(move_joint(t, types[j], q[j]), pose_state(F, j + 1))
+    px, py, pz = t[9], t[10], t[11]
+    for j in range(dof):
+        zx, zy, zz = J[3, j], J[4, j], J[5, j]
+        if types[j] == PRISMATIC:
+            J[0, j], J[1, j], J[2, j] = zx, zy, zz
+            J[3, j], J[4, j], J[5, j] = 0.0, 0.0, 0.0
+        else:  # z_j x (p - o_j)
+            ax, ay, az = px - J[0, j], py - J[1, j], pz - J[2, j]
+            J[0, j] = zy * az - zz * ay
+            J[1, j] = zz * ax - zx * az
+            J[2, j] = zx * ay - zy * ax
+    store_pose(t, T)
+
+
+@jit
+def poses_and_jacobians(F, types, Q):
+    """Poses ``(n, 4, 4)`` and Jacobians ``(n, 6, dof)`` of ``Q (n, dof)``."""
+    n = Q.shape[0]
+    T = np.empty((n, 4, 4))
+    J = np.empty((n, 6, types.size))
+    for i in range(n):
+        pose_jacobian_into(F, types, Q[i], T[i], J[i])
+    return T, J
+
+
+@jit
+def parts_and_jacobians(F, types, Q):
+    """Rotations ``(n, 3, 3)``, positions ``(n, 3)`` and Jacobians ``(n, 6, dof)`` of ``Q``."""
+    n = Q.shape[0]
+    R = np.empty((n, 3, 3))
+    p = np.empty((n, 3))
+    J = np.empty((n, 6, types.size))
+    T = np.empty((4, 4))
+    for i in range(n):
+        pose_jacobian_into(F, types, Q[i], T, J[i])
+        for a in range(3):
+            p[i, a] = T[a, 3]
+            for b in range(3):
+                R[i, a, b] = T[a, b]
+    return R, p, J
+
+
+def parts_and_jacobian(robot: Robot, Q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """End-effector rotations, positions and Jacobians of a 2-D batch (no finiteness check).
 
     Returns:
-        ``(xy, z, p, J)``: the FK kernel's x + i*y rotation columns (complex
-        ``(3, n)``), z column ``(3, n)``, position ``(3, n)`` and the Jacobians
-        ``(n, 6, dof)`` (see :func:`pose_and_jacobian`).
+        ``(R, p, J)``: ``(n, 3, 3)``, ``(n, 3)`` and ``(n, 6, dof)`` (see
+        :func:`pose_and_jacobian`).
     """
-    axes: list = []
-    xy, z, p, _ = run_steps(robot._steps, Q, robot._offsets, axes=axes)
-    zs = np.stack([a[0] for a in axes], axis=-1)  # (3, n, dof)
-    arm = p[:, :, None] - np.stack([a[1] for a in axes], axis=-1)
-    J = np.empty((Q.shape[0], 6, robot.dof))
-    J[:, 0] = zs[1] * arm[2] - zs[2] * arm[1]  # z_j x (p - o_j), written out
-    J[:, 1] = zs[2] * arm[0] - zs[0] * arm[2]
-    J[:, 2] = zs[0] * arm[1] - zs[1] * arm[0]
-    J[:, 3:] = zs.transpose(1, 0, 2)
-    prismatic = robot.is_prismatic
-    if prismatic.any():
-        J[:, :3, prismatic] = J[:, 3:, prismatic]
-        J[:, 3:, prismatic] = 0.0
-    return xy, z, p, J
+    chain = robot.kinematic_chain
+    return parts_and_jacobians(chain.origins, chain.joint_types, robot.kernel_batch(Q))
 
 
 def pose_and_jacobian(robot: Robot, q) -> tuple[np.ndarray, np.ndarray]:
@@ -53,10 +99,9 @@ def pose_and_jacobian(robot: Robot, q) -> tuple[np.ndarray, np.ndarray]:
         motion) then angular velocity (rad per unit joint motion), in the base frame.
     """
     Q = robot.check_q(q)
-    single = Q.ndim == 1
-    xy, z, p, J = kernel_jacobian(robot, Q[None] if single else Q)
-    T = assemble(xy, z, p)
-    return (T[0], J[0]) if single else (T, J)
+    chain = robot.kinematic_chain
+    T, J = poses_and_jacobians(chain.origins, chain.joint_types, Q[None] if Q.ndim == 1 else Q)
+    return (T[0], J[0]) if Q.ndim == 1 else (T, J)
 
 
 def jacobian(robot: Robot, q) -> np.ndarray:

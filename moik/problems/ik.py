@@ -1,13 +1,15 @@
 """Inverse kinematics as vectorized pymoo Problems.
 
-Decision variables are the joint values (bounds = the robot's joint limits);
-``_evaluate`` runs batched FK on the whole population at once.
+Decision variables are the joint values (bounds = the robot's joint limits).
+``_evaluate`` makes one compiled call per population, :func:`ik_objectives`:
+FK of every row, its error metric and the displacement term, fused, so no
+intermediate pose array is built.
 
 * :class:`PositionIK`: one objective, the position error (EOSMA Eq. 29; also
   the I-BES and MChOA Eq. 3 objective).
 * :class:`PoseIK`: one objective, ``w1 * position + w2 * orientation`` (EOSMA
-  Eq. 28 with the Eq. 26/30 Euler error by default; MChOA Eq. 6 with
-  ``orientation="frobenius"``).
+  Eq. 28 with ``orientation="eosma-euler"``, the Eq. 26/30 Euler error; MChOA
+  Eq. 6 with ``orientation="frobenius"``; the geodesic angle by default).
 * :class:`BiObjectiveIK`: two objectives (position error, orientation error),
   the MOEOSMA / MO-m-PSO formulation (MO-m-PSO Eq. 15).
 
@@ -18,13 +20,65 @@ move the arm least.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from pymoo.core.problem import Problem
 
+from moik._jit import jit, kernel_array
+from moik._validate import positive
 from moik.exceptions import NonFiniteError, ParameterError, TargetError
-from moik.kinematics.orientation import orientation_metric
+from moik.kinematics.orientation import metric_code, metric_target, rotation_error
 from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.chain import Robot
+from moik.robots.dh import BLOCK, all_finite, block_workspace, chain_block
+
+POSITION, WEIGHTED_POSE, BI_OBJECTIVE = 0, 1, 2  # what ik_objectives computes
+
+
+@jit
+def ik_objectives(F, types, Q, mode, p_t, code, R_t, angles_t, weights, q_start, out):
+    """The IK objectives of every row of ``Q (n, dof)``, into ``out``.
+
+    Args:
+        F, types: ``KinematicChain.origins`` and ``.joint_types``.
+        Q: Joint vectors ``(n, dof)``.
+        mode: :data:`POSITION` (``out (n, 1)``: position error), :data:`WEIGHTED_POSE`
+            (``out (n, 1)``: ``w_pos * position + w_ori * orientation``) or
+            :data:`BI_OBJECTIVE` (``out (n, 2)``: position, orientation).
+        p_t: Target position ``(3,)``.
+        code, R_t, angles_t: Orientation metric, as :func:`rotation_error` takes them.
+        weights: ``(w_pos, w_ori, w_disp)``; the displacement term
+            ``w_disp * ||q - q_start||`` (EOSMA Eq. 31) is added to every objective.
+        q_start: ``(dof,)``, read only when ``w_disp != 0``.
+        out: ``(n, 1)`` or ``(n, 2)``.
+    """
+    W = block_workspace(types.size)
+    for start in range(0, Q.shape[0], BLOCK):
+        m = min(BLOCK, Q.shape[0] - start)
+        chain_block(F, types, Q, start, m, W)
+        for b in range(m):
+            i = start + b
+            dx, dy, dz = W[9, b] - p_t[0], W[10, b] - p_t[1], W[11, b] - p_t[2]
+            pos = math.sqrt(dx * dx + dy * dy + dz * dz)
+            disp = 0.0
+            if weights[2] != 0.0:
+                acc = 0.0
+                for j in range(types.size):
+                    diff = Q[i, j] - q_start[j]
+                    acc += diff * diff
+                disp = weights[2] * math.sqrt(acc)
+            if mode == POSITION:
+                out[i, 0] = pos + disp
+                continue
+            rot = (W[0, b], W[1, b], W[2, b], W[3, b], W[4, b], W[5, b],
+                   W[6, b], W[7, b], W[8, b])
+            ori = rotation_error(code, rot, R_t, angles_t)
+            if mode == WEIGHTED_POSE:
+                out[i, 0] = weights[0] * pos + weights[1] * ori + disp
+            else:
+                out[i, 0] = pos + disp
+                out[i, 1] = ori + disp
 
 
 class _IKProblem(Problem):
@@ -44,11 +98,8 @@ class _IKProblem(Problem):
                 f"{type(self).__name__} needs a target with an orientation (a 4x4 pose or "
                 "(position, rotation)); got a position only"
             )
-        if not (np.isfinite(displacement_weight) and displacement_weight >= 0):
-            raise ParameterError(
-                f"displacement_weight must be finite and >= 0, got {displacement_weight}"
-            )
-        self.displacement_weight = float(displacement_weight)
+        self.displacement_weight = positive("displacement_weight", displacement_weight,
+                                            allow_zero=True)
         self.q_start = None
         if q_start is not None:
             self.q_start = robot.check_q(q_start, "q_start")
@@ -58,21 +109,28 @@ class _IKProblem(Problem):
             raise ParameterError("displacement_weight > 0 needs q_start (Eq. 31)")
         super().__init__(n_var=robot.dof, n_obj=self.n_obj_ik, xl=robot.lower.copy(),
                          xu=robot.upper.copy(), vtype=float)
+        self._p_t = kernel_array(np.array(self.target.position))
+        self._q_start = np.zeros(robot.dof) if self.q_start is None else self.q_start.copy()
+        self._code, self._R_t, self._angles_t = -1, np.eye(3), np.zeros(3)
+        self._weights = np.array([1.0, 0.0, self.displacement_weight])
 
-    def _check_X(self, X: np.ndarray) -> None:
-        if not np.isfinite(X).all():
+    def _objectives(self, X, mode: int, weights: np.ndarray) -> np.ndarray:
+        """One compiled call: the objectives ``(n, 1)`` or ``(n, 2)`` of a batch."""
+        Q = self.robot.kernel_batch(np.atleast_2d(X))
+        if not all_finite(Q.reshape(-1)):
             raise NonFiniteError(f"{type(self).__name__}: joint values contain NaN or inf")
-
-    def _displacement(self, X: np.ndarray) -> np.ndarray | float:
-        """EOSMA Eq. 31 penalty ``w * ||q - q_start||`` (0 when disabled)."""
-        if self.displacement_weight == 0.0:
-            return 0.0
-        return self.displacement_weight * np.linalg.norm(X - self.q_start, axis=1)
+        out = np.empty((Q.shape[0], 2 if mode == BI_OBJECTIVE else 1))
+        chain = self.robot.kinematic_chain
+        ik_objectives(chain.origins, chain.joint_types, Q, mode, self._p_t, self._code,
+                      self._R_t, self._angles_t, weights, self._q_start, out)
+        return out
 
     def position_error(self, X: np.ndarray) -> np.ndarray:
         """Euclidean position error (Eq. 29), shape ``(n,)``."""
-        diff = self.robot.fk_position(np.atleast_2d(X)) - self.target.position
-        return np.sqrt(np.einsum("ij,ij->i", diff, diff))
+        return self._objectives(X, POSITION, _NO_DISPLACEMENT)[:, 0]
+
+
+_NO_DISPLACEMENT = np.array([1.0, 0.0, 0.0])
 
 
 class PositionIK(_IKProblem):
@@ -90,24 +148,23 @@ class PositionIK(_IKProblem):
                          q_start=q_start)
 
     def _evaluate(self, X, out, *args, **kwargs):
-        self._check_X(X)
-        out["F"] = (self.position_error(X) + self._displacement(X))[:, None]
+        out["F"] = self._objectives(X, POSITION, self._weights)
 
 
 class _OrientedIK(_IKProblem):
     def __init__(self, robot, target, *, orientation: str, displacement_weight, q_start):
+        code = metric_code(orientation)
         self.orientation = orientation
-        target_repr, self._orientation_error = orientation_metric(orientation)
         super().__init__(robot, target, displacement_weight=displacement_weight,
                          q_start=q_start, needs_orientation=True)
-        self._target_repr = target_repr(self.target.rotation)
+        self._code = code
+        self._R_t = kernel_array(np.array(self.target.rotation))
+        self._angles_t = metric_target(orientation, self._R_t)
 
     def errors(self, X: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Position and orientation errors of a batch, each ``(n,)``."""
-        R, p = self.robot.fk_parts(np.atleast_2d(X))
-        diff = p - self.target.position
-        pos = np.sqrt(np.einsum("ij,ij->i", diff, diff))
-        return pos, self._orientation_error(R, self._target_repr)
+        F = self._objectives(X, BI_OBJECTIVE, _NO_DISPLACEMENT)
+        return F[:, 0], F[:, 1]
 
 
 class PoseIK(_OrientedIK):
@@ -117,13 +174,14 @@ class PoseIK(_OrientedIK):
         robot: The arm.
         target: Pose (4x4), ``(position, rotation)`` or :class:`Target` with rotation.
         weights: ``(w1, w2)``, non-negative, not both zero (paper: 0.5, 0.5).
-        orientation: Orientation metric name (``"eosma-euler"`` reproduces the paper).
+        orientation: Orientation metric name (default ``"geodesic"``;
+            ``"eosma-euler"`` reproduces EOSMA, ``"frobenius"`` MChOA).
         displacement_weight: Weight of EOSMA Eq. 31 (0 = off).
         q_start: Current joint vector for Eq. 31.
     """
 
     def __init__(self, robot: Robot, target, *, weights=(0.5, 0.5),
-                 orientation: str = "eosma-euler", displacement_weight: float = 0.0,
+                 orientation: str = "geodesic", displacement_weight: float = 0.0,
                  q_start=None):
         w = np.asarray(weights, dtype=float)
         if w.shape != (2,) or not np.all(np.isfinite(w)) or np.any(w < 0) or w.sum() == 0:
@@ -133,12 +191,10 @@ class PoseIK(_OrientedIK):
         self.weights = w
         super().__init__(robot, target, orientation=orientation,
                          displacement_weight=displacement_weight, q_start=q_start)
+        self._weights = np.array([w[0], w[1], self.displacement_weight])
 
     def _evaluate(self, X, out, *args, **kwargs):
-        self._check_X(X)
-        pos, ori = self.errors(X)
-        out["F"] = (self.weights[0] * pos + self.weights[1] * ori
-                    + self._displacement(X))[:, None]
+        out["F"] = self._objectives(X, WEIGHTED_POSE, self._weights)
 
 
 class BiObjectiveIK(_OrientedIK):
@@ -161,7 +217,4 @@ class BiObjectiveIK(_OrientedIK):
                          displacement_weight=displacement_weight, q_start=q_start)
 
     def _evaluate(self, X, out, *args, **kwargs):
-        self._check_X(X)
-        pos, ori = self.errors(X)
-        disp = self._displacement(X)
-        out["F"] = np.column_stack([pos + disp, ori + disp])
+        out["F"] = self._objectives(X, BI_OBJECTIVE, self._weights)

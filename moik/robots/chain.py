@@ -6,23 +6,28 @@ limits, length unit, name and source. ``robot.fk(Q)`` evaluates forward
 kinematics for one joint vector ``(dof,)`` or a batch ``(n, dof)`` with no
 Python loop over ``n``.
 
-The batched FK kernel and the straightforward reference live in
-:mod:`moik.robots.dh`.
+Every robot is evaluated in the general form ``F_0 M_1(q_1) F_1 ... M_n(q_n) F_n``
+(:attr:`Robot.kinematic_chain`) by the compiled kernels of :mod:`moik.robots.dh`;
+:func:`fk_reference` (plain numpy, textbook DH matrices or 4x4 products) is the
+oracle the tests compare them with.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from functools import cached_property
 from typing import Literal
 
 import numpy as np
 
+from moik._jit import kernel_array
 from moik.exceptions import LimitsError, NonFiniteError, ParameterError, ShapeError
 from moik.robots import dh
-from moik.robots.dh import assemble, compile_steps, run_steps
 from moik.robots.transforms import (
-    compile_general,
+    PRISMATIC,
+    REVOLUTE,
+    KinematicChain,
+    dh_link_frames,
     dh_to_origins,
     fk_general_reference,
     lock_joints,
@@ -77,9 +82,6 @@ class Robot:
     convention: Convention = "standard"
     unit: str = "m"
     source: str = ""
-    _steps: tuple = field(init=False, repr=False)
-    _joint_ends: tuple = field(init=False, repr=False)
-    _offsets: np.ndarray = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
         lower = np.asarray(self.lower, dtype=float)
@@ -122,17 +124,6 @@ class Robot:
                 f"robot {self.name!r}: lower limit > upper limit for joint(s) "
                 f"{(bad + 1).tolist()} (lower={cols['lower'][bad]}, upper={cols['upper'][bad]})"
             )
-        prismatic = [t == "prismatic" for t in types]
-        if self.origins is None:
-            steps, ends = compile_steps(self.a, self.alpha, self.d, self.theta, prismatic,
-                                        self.convention)
-            offsets = self.theta
-        else:
-            steps, ends = compile_general(self.origins, prismatic)
-            offsets = np.zeros(dof)
-        object.__setattr__(self, "_steps", steps)
-        object.__setattr__(self, "_joint_ends", ends)
-        object.__setattr__(self, "_offsets", offsets)
 
     # ------------------------------------------------------------------ properties
     @property
@@ -171,6 +162,23 @@ class Robot:
         return dh_to_origins(self.a, self.alpha, self.d, self.theta, self.is_prismatic,
                              self.convention)
 
+    @cached_property
+    def kinematic_chain(self) -> KinematicChain:
+        """The general-form constants the compiled FK kernels take (built once).
+
+        Pass its arrays to the kernels of :mod:`moik.robots.dh` (and
+        :mod:`moik.kinematics.jacobian`) from compiled code, e.g.
+        ``fk_pose_into(chain.origins, chain.joint_types, q, out)``.
+        """
+        if self.origins is None:
+            links = dh_link_frames(self.a, self.alpha, self.d, self.theta, self.is_prismatic,
+                                   self.convention)
+        else:
+            links = self.origins[1:]
+        types = np.where(self.is_prismatic, PRISMATIC, REVOLUTE)
+        return KinematicChain(origins=self.chain_origins(), joint_types=types,
+                              link_frames=links)
+
     def with_locked_joints(self, locked: dict[int, float]) -> Robot:
         """The robot with joints ``{index: value}`` fixed (0-based indices).
 
@@ -192,38 +200,56 @@ class Robot:
 
     # ------------------------------------------------------------------ FK
     def check_q(self, q, name: str = "q") -> np.ndarray:
-        """Validate a joint vector/batch; returns it as a float array.
+        """Validate a joint vector/batch; returns it as a C-contiguous, writeable float array.
 
         Raises:
             ShapeError: if the last axis is not ``dof`` or ndim is not 1 or 2.
             NonFiniteError: if it holds NaN or inf.
         """
-        Q = np.asarray(q, dtype=float)
+        Q = kernel_array(q)
         if Q.ndim not in (1, 2) or Q.shape[-1] != self.dof:
             raise ShapeError(
                 f"{name} for robot {self.name!r} must have shape ({self.dof},) or "
                 f"(n, {self.dof}), got {Q.shape}"
             )
-        if not np.all(np.isfinite(Q)):
+        if not dh.all_finite(Q.reshape(-1)):
             raise NonFiniteError(f"{name} must be finite, got NaN or inf in {name}")
+        return Q
+
+    def kernel_batch(self, q) -> np.ndarray:
+        """``q`` as the batched kernels take it: a C-contiguous, writeable float ``(n, dof)``.
+
+        Checks the shape only (a kernel given fewer columns would read past the
+        array; numba does not check bounds), not finiteness (hot path: NaN in, NaN out).
+
+        Raises:
+            ShapeError: if ``q`` is not 2-D with ``dof`` columns.
+        """
+        Q = kernel_array(q)
+        if Q.ndim != 2 or Q.shape[1] != self.dof:
+            raise ShapeError(f"a batch for robot {self.name!r} must have shape (n, {self.dof}), "
+                             f"got {Q.shape}")
         return Q
 
     def fk_parts(self, q) -> tuple[np.ndarray, np.ndarray]:
         """Rotation ``(n, 3, 3)`` and position ``(n, 3)`` of the end effector.
 
         Cheaper than :meth:`fk` when the homogeneous matrix is not needed.
-        ``q`` must be 2-D ``(n, dof)``; no validation (hot path).
+        ``q`` must be 2-D ``(n, dof)``; no finiteness check (hot path).
         """
-        xy, z, p, _ = run_steps(self._steps, q, self._offsets)
-        R = np.empty((q.shape[0], 3, 3))
-        R[:, :, 0] = xy.real.T
-        R[:, :, 1] = xy.imag.T
-        R[:, :, 2] = z.T
-        return R, p.T
+        chain = self.kinematic_chain
+        Q = self.kernel_batch(q)
+        R, p = np.empty((Q.shape[0], 3, 3)), np.empty((Q.shape[0], 3))
+        dh.fk_rotations_positions(chain.origins, chain.joint_types, Q, R, p)
+        return R, p
 
     def fk_position(self, q) -> np.ndarray:
-        """End-effector positions ``(n, 3)`` of a 2-D batch (hot path, no validation)."""
-        return run_steps(self._steps, q, self._offsets)[2].T
+        """End-effector positions ``(n, 3)`` of a 2-D batch (hot path, no finiteness check)."""
+        chain = self.kinematic_chain
+        Q = self.kernel_batch(q)
+        p = np.empty((Q.shape[0], 3))
+        dh.fk_positions(chain.origins, chain.joint_types, Q, p)
+        return p
 
     def fk(self, q) -> np.ndarray:
         """End-effector pose(s).
@@ -235,10 +261,11 @@ class Robot:
             ``(4, 4)`` homogeneous transform for 1-D ``q``, ``(n, 4, 4)`` for 2-D.
         """
         Q = self.check_q(q)
-        single = Q.ndim == 1
-        Q2 = Q[None] if single else Q
-        T = assemble(*run_steps(self._steps, Q2, self._offsets)[:3])
-        return T[0] if single else T
+        Q2 = Q[None] if Q.ndim == 1 else Q
+        chain = self.kinematic_chain
+        T = np.empty((Q2.shape[0], 4, 4))
+        dh.fk_poses(chain.origins, chain.joint_types, Q2, T)
+        return T[0] if Q.ndim == 1 else T
 
     def frames(self, q) -> np.ndarray:
         """Base frame and every joint frame, for plotting.
@@ -248,14 +275,11 @@ class Robot:
             the base (identity), frame ``dof`` the end effector.
         """
         Q = self.check_q(q)
-        single = Q.ndim == 1
-        Q2 = Q[None] if single else Q
+        Q2 = Q[None] if Q.ndim == 1 else Q
+        chain = self.kinematic_chain
         out = np.empty((Q2.shape[0], self.dof + 1, 4, 4))
-        out[:, 0] = np.eye(4)
-        states = run_steps(self._steps, Q2, self._offsets, self._joint_ends)[3]
-        for j, state in enumerate(states):
-            out[:, j + 1] = assemble(*state)
-        return out[0] if single else out
+        dh.fk_frames(chain.origins, chain.link_frames, chain.joint_types, Q2, out)
+        return out[0] if Q.ndim == 1 else out
 
     def random_q(self, n: int, *, rng: np.random.Generator) -> np.ndarray:
         """Uniform joint vectors within the limits, shape ``(n, dof)``."""
@@ -272,7 +296,11 @@ class Robot:
 
 
 def fk_reference(robot: Robot, q) -> np.ndarray:
-    """FK of ``robot`` by the straightforward per-joint 4x4 product (tests, benchmarks)."""
+    """FK of ``robot`` by the straightforward per-joint 4x4 product in numpy.
+
+    The oracle the compiled kernels are tested against, and the baseline of
+    ``benchmarks/fk.py``; not used at run time.
+    """
     Q = robot.check_q(q)
     Q2 = np.atleast_2d(Q)
     if robot.is_dh:

@@ -1,160 +1,315 @@
-"""Batched Denavit-Hartenberg forward kinematics: the fast kernel and a reference.
+"""Compiled forward kinematics of serial chains, and the plain-numpy DH reference.
 
-A DH joint transform is a product of elementary motions: standard DH
-``Rz(theta) Tz(d) Tx(a) Rx(alpha)``, modified (Craig) DH
-``Rx(alpha) Tx(a) Rz(theta) Tz(d)``. :func:`compile_steps` turns DH rows into
-that sequence once, dropping identities (``a = 0``, ``alpha = 0``, fixed
-``d = 0``) and using exact 0/+-1 cosines for twists that are multiples of pi/2.
-:func:`run_steps` applies the sequence to a whole batch at once.
+Every chain moik knows (standard or modified DH rows with angle offsets and
+prismatic joints, URDF chains, chains with locked joints) is evaluated in the
+general form ``F_0 M_1(q_1) F_1 ... M_n(q_n) F_n`` (:mod:`moik.robots.transforms`),
+given by a :class:`~moik.robots.transforms.KinematicChain`: the constants ``F_0 .. F_n``, the joint
+types and, for per-joint frames, the transforms ``P_j`` from each joint's motion
+frame to its displayed frame.
 
-Why it is fast: numpy costs ~0.3-0.9 us per call on a (3, 100) array, so the
-number of array operations decides the cost at the batch sizes metaheuristics
-use. Right-multiplying the accumulated pose by ``Rz(theta)`` changes only its
-x and y rotation columns and does so like a complex product,
-``(x + i y) * exp(-i theta)``; the kernel keeps those two columns as one
-complex ``(3, n)`` array, so a joint rotation is a single operation. The
-``exp(-i theta)`` factors come from one ``tan`` of the half angles,
-``(1 - i t) / (1 + i t)`` with ``t = tan(theta / 2)`` (numpy's float64 ``tan``
-is SIMD-vectorised, its ``sin``/``cos``/complex ``exp`` are not; the identity
-is exact to ~2 ulp). Positions from ``Tx`` accumulate in a complex array
-(only its real part is used) so no strided real-part views are read.
+The kernels are numba functions (:mod:`moik._jit`). The pose is kept as twelve
+scalars (rotation rows, then position) through the chain: a revolute joint
+right-multiplies by ``Rz(q)``, which mixes only the first two rotation columns
+(12 multiplications), a prismatic joint adds ``q`` times the z column, and each
+constant ``F_j`` is one 3x4 affine product. Single-configuration kernels
+(``*_into``: ``q (dof,)`` in, a preallocated ``out`` written) are meant to be
+called from other compiled code; the batched ones loop over the rows of
+``Q (n, dof)``, each row computed by the same code, so a row's result does not
+depend on the batch it is in.
+
+:func:`fk_reference` is the textbook per-joint DH matrix product in numpy, the
+oracle that tests compare the kernels with.
 """
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
+from moik._jit import jit
+from moik.robots.transforms import PRISMATIC
 
-def exact_cos_sin(angle: float) -> tuple[float, float]:
-    """cos/sin of ``angle`` with exact values at multiples of pi/2."""
-    quarter = angle / (np.pi / 2)
-    k = round(quarter)
-    if abs(quarter - k) < 1e-12:
-        return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[k % 4]
-    return float(np.cos(angle)), float(np.sin(angle))
+# sin and cos on [-pi/4, pi/4] (fdlibm k_sin.c / k_cos.c, error < 1 ulp) and the
+# Cody-Waite split of pi/2 (fdlibm e_rem_pio2.c): exact products for |n| < 2**20
+_S1, _S2, _S3 = -1.66666666666666324348e-01, 8.33333333332248946124e-03, -1.98412698298579493134e-04
+_S4, _S5, _S6 = 2.75573137070700676789e-06, -2.50507602534068634195e-08, 1.58969099521155010221e-10
+_C1, _C2, _C3 = 4.16666666666666019037e-02, -1.38888888888741095749e-03, 2.48015872894767294178e-05
+_C4, _C5, _C6 = -2.75573143513906633035e-07, 2.08757232129817482790e-09, -1.13596475577881948265e-11
+_INV_PIO2 = 6.36619772367581382433e-01
+_PIO2_1, _PIO2_2 = 1.57079632673412561417e+00, 6.07710050630396597660e-11
+_PIO2_2T = 2.02226624879595063154e-21
+TRIG_MAX = 8.0e5  # below 2**19 * pi/2: the inline reduction is good to 118 bits there
+BLOCK = 64  # rows per block of the batched kernels (their workspace stays in L1)
+_BLOCK_MIN = 4  # fewer rows than this go through the single-row kernel
 
 
-def compile_steps(a, alpha, d, theta, prismatic, convention: str) -> tuple[tuple, tuple]:
-    """Elementary motions of a DH chain, identities removed.
+@jit(inline=True)
+def _sin_cos_inline(x):
+    """``(sin(x), cos(x))`` within 1 ulp for ``|x| <= TRIG_MAX``, branch-free (vectorisable).
 
-    Returns:
-        ``(steps, joint_ends)``: the motions, each a tuple ``(kind, ...)``, and
-        the index of the last motion of each joint (every joint has one).
+    ``x = n pi/2 + (y0 + y1)`` by two Cody-Waite rounds, fdlibm's minimax
+    polynomials on ``|y| <= pi/4``, then the quadrant by selects.
     """
-    steps: list[tuple] = []
-    ends: list[int] = []
-    for j in range(len(a)):
-        if prismatic[j]:
-            rz = ("rz_fixed", np.exp(-1j * theta[j])) if theta[j] != 0.0 else None
-            tz = ("tz_var", j, d[j])
+    fn = np.rint(x * _INV_PIO2)
+    t = x - fn * _PIO2_1
+    r = t - fn * _PIO2_2
+    w = fn * _PIO2_2T - ((t - r) - fn * _PIO2_2)
+    y0 = r - w
+    y1 = (r - y0) - w
+    z = y0 * y0
+    zz = z * z
+    rs = _S2 + z * (_S3 + z * _S4) + z * zz * (_S5 + z * _S6)
+    sn = y0 - ((z * (0.5 * y1 - z * y0 * rs) - y1) - z * y0 * _S1)
+    rc = z * (_C1 + z * (_C2 + z * _C3)) + zz * zz * (_C4 + z * (_C5 + z * _C6))
+    hz = 0.5 * z
+    wc = 1.0 - hz
+    cs = wc + (((1.0 - wc) - hz) + (z * rc - y0 * y1))
+    quadrant = fn - 4.0 * np.floor(0.25 * fn)
+    odd = quadrant == 1.0 or quadrant == 3.0
+    s = cs if odd else sn
+    c = sn if odd else cs
+    s = -s if quadrant >= 2.0 else s
+    c = -c if quadrant == 1.0 or quadrant == 2.0 else c
+    return s, c
+
+
+@jit(inline=True)
+def sin_cos(x):
+    """``(sin(x), cos(x))`` within 1 ulp of libm.
+
+    Inline polynomials for ``|x| <= TRIG_MAX`` (every joint value in practice):
+    a libm call costs about 6 ns per function on the development machine, as
+    much as the rest of a joint's FK, and blocks vectorisation. Larger ``|x|``
+    and infinities go to libm; NaN propagates.
+    """
+    if abs(x) > TRIG_MAX:
+        return math.sin(x), math.cos(x)
+    return _sin_cos_inline(x)
+
+
+@jit(inline=True)
+def pose_state(F, k):
+    """``F[k]`` as the twelve-scalar pose state (rotation rows, then position)."""
+    return (F[k, 0, 0], F[k, 0, 1], F[k, 0, 2], F[k, 1, 0], F[k, 1, 1], F[k, 1, 2],
+            F[k, 2, 0], F[k, 2, 1], F[k, 2, 2], F[k, 0, 3], F[k, 1, 3], F[k, 2, 3])
+
+
+@jit(inline=True)
+def rotate_z(t, s, c):
+    """Pose state ``t`` right-multiplied by ``Rz(q)``, given ``s, c = sin q, cos q``."""
+    r00, r01, r02, r10, r11, r12, r20, r21, r22, px, py, pz = t
+    return (c * r00 + s * r01, c * r01 - s * r00, r02,
+            c * r10 + s * r11, c * r11 - s * r10, r12,
+            c * r20 + s * r21, c * r21 - s * r20, r22, px, py, pz)
+
+
+@jit(inline=True)
+def translate_z(t, q):
+    """Pose state ``t`` right-multiplied by ``Tz(q)``."""
+    r00, r01, r02, r10, r11, r12, r20, r21, r22, px, py, pz = t
+    return (r00, r01, r02, r10, r11, r12, r20, r21, r22,
+            px + q * r02, py + q * r12, pz + q * r22)
+
+
+@jit(inline=True)
+def compose(t, f):
+    """Pose state ``t`` right-multiplied by the constant pose state ``f``."""
+    r00, r01, r02, r10, r11, r12, r20, r21, r22, px, py, pz = t
+    f00, f01, f02, f10, f11, f12, f20, f21, f22, f03, f13, f23 = f
+    return (r00 * f00 + r01 * f10 + r02 * f20, r00 * f01 + r01 * f11 + r02 * f21,
+            r00 * f02 + r01 * f12 + r02 * f22,
+            r10 * f00 + r11 * f10 + r12 * f20, r10 * f01 + r11 * f11 + r12 * f21,
+            r10 * f02 + r11 * f12 + r12 * f22,
+            r20 * f00 + r21 * f10 + r22 * f20, r20 * f01 + r21 * f11 + r22 * f21,
+            r20 * f02 + r21 * f12 + r22 * f22,
+            px + r00 * f03 + r01 * f13 + r02 * f23, py + r10 * f03 + r11 * f13 + r12 * f23,
+            pz + r20 * f03 + r21 * f13 + r22 * f23)
+
+
+@jit(inline=True)
+def move_joint(t, kind, q):
+    """Pose state ``t`` right-multiplied by the joint motion ``Rz(q)`` or ``Tz(q)``."""
+    if kind == PRISMATIC:
+        return translate_z(t, q)
+    s, c = sin_cos(q)
+    return rotate_z(t, s, c)
+
+
+@jit(inline=True)
+def chain_pose(F, types, q):
+    """End-effector pose of one joint vector ``q (dof,)`` as the twelve-scalar state.
+
+    Returns ``(r00, r01, r02, r10, r11, r12, r20, r21, r22, px, py, pz)``.
+    """
+    t = pose_state(F, 0)
+    for j in range(types.size):
+        t = compose(move_joint(t, types[j], q[j]), pose_state(F, j + 1))
+    return t
+
+
+@jit(inline=True)
+def store_pose(t, out):
+    """Write the pose state ``t`` into the 4x4 ``out``."""
+    out[0, 0], out[0, 1], out[0, 2], out[0, 3] = t[0], t[1], t[2], t[9]
+    out[1, 0], out[1, 1], out[1, 2], out[1, 3] = t[3], t[4], t[5], t[10]
+    out[2, 0], out[2, 1], out[2, 2], out[2, 3] = t[6], t[7], t[8], t[11]
+    out[3, 0], out[3, 1], out[3, 2], out[3, 3] = 0.0, 0.0, 0.0, 1.0
+
+
+@jit
+def fk_pose_into(F, types, q, out):
+    """End-effector pose of ``q (dof,)`` written into ``out (4, 4)``."""
+    store_pose(chain_pose(F, types, q), out)
+
+
+@jit
+def fk_position_into(F, types, q, out):
+    """End-effector position of ``q (dof,)`` written into ``out (3,)``."""
+    t = chain_pose(F, types, q)
+    out[0], out[1], out[2] = t[9], t[10], t[11]
+
+
+# ---------------------------------------------------------------- batched, by blocks of rows
+@jit(inline=True)
+def block_state(W, b):
+    """Pose state of row ``b`` of a block workspace."""
+    return (W[0, b], W[1, b], W[2, b], W[3, b], W[4, b], W[5, b],
+            W[6, b], W[7, b], W[8, b], W[9, b], W[10, b], W[11, b])
+
+
+@jit(inline=True)
+def _set_block_state(W, b, t):
+    W[0, b], W[1, b], W[2, b], W[3, b], W[4, b], W[5, b] = t[0], t[1], t[2], t[3], t[4], t[5]
+    W[6, b], W[7, b], W[8, b], W[9, b], W[10, b], W[11, b] = t[6], t[7], t[8], t[9], t[10], t[11]
+
+
+@jit(inline=True)
+def block_workspace(dof):
+    """Scratch of :func:`chain_block`: the states, then joint values, sines, cosines."""
+    return np.empty((12 + 3 * dof, BLOCK))
+
+
+@jit
+def chain_block(F, types, Q, start, m, W):
+    """Poses of rows ``start .. start + m - 1`` of ``Q`` (``m <= BLOCK``) into ``W[:12, :m]``.
+
+    Joint by joint over the whole block (structure of arrays), so the compiler
+    vectorises the trigonometry and the products across rows. Each row gets the
+    same operations as :func:`chain_pose`, so the result is bit for bit that of
+    the single-row kernels (which also serve blocks of fewer than four rows); a
+    row with a joint value beyond ``TRIG_MAX`` is recomputed by :func:`chain_pose`
+    (libm trigonometry).
+    """
+    if m < _BLOCK_MIN:  # the block's loop set-up costs more than it saves
+        for b in range(m):
+            _set_block_state(W, b, chain_pose(F, types, Q[start + b]))
+        return
+    dof = types.size
+    QT, SN, CS = W[12:12 + dof], W[12 + dof:12 + 2 * dof], W[12 + 2 * dof:12 + 3 * dof]
+    for b in range(m):
+        for j in range(dof):
+            QT[j, b] = Q[start + b, j]
+    far = 0
+    for j in range(dof):
+        if types[j] != PRISMATIC:
+            qj, sj, cj = QT[j], SN[j], CS[j]
+            for b in range(m):
+                sj[b], cj[b] = _sin_cos_inline(qj[b])
+                far += abs(qj[b]) > TRIG_MAX
+    f = pose_state(F, 0)
+    for b in range(m):
+        _set_block_state(W, b, f)
+    for j in range(dof):
+        f = pose_state(F, j + 1)
+        if types[j] == PRISMATIC:
+            for b in range(m):
+                _set_block_state(W, b, compose(translate_z(block_state(W, b), QT[j, b]), f))
         else:
-            rz = ("rz", j)
-            tz = ("tz", d[j]) if d[j] != 0.0 else None
-        tx = ("tx", a[j]) if a[j] != 0.0 else None
-        ca, sa = exact_cos_sin(alpha[j])
-        rx = None if (ca, sa) == (1.0, 0.0) else ("rx", ca, sa)
-        order = [rz, tz, tx, rx] if convention == "standard" else [rx, tx, rz, tz]
-        steps.extend(s for s in order if s is not None)
-        ends.append(len(steps) - 1)
-    return tuple(steps), tuple(ends)
+            for b in range(m):
+                _set_block_state(W, b, compose(rotate_z(block_state(W, b), SN[j, b], CS[j, b]),
+                                               f))
+    if far:
+        for b in range(m):
+            for j in range(dof):
+                if types[j] != PRISMATIC and abs(QT[j, b]) > TRIG_MAX:
+                    _set_block_state(W, b, chain_pose(F, types, Q[start + b]))
+                    break
 
 
-def joint_rotations(Q: np.ndarray, theta: np.ndarray) -> np.ndarray:
-    """``exp(-i (q_j + theta_j))`` for every joint, shape ``(dof, n)``."""
-    t = np.tan(0.5 * Q.T + (0.5 * theta)[:, None])
-    it = 1j * t
-    return (1.0 - it) / (1.0 + it)
+@jit
+def fk_poses(F, types, Q, out):
+    """End-effector poses of ``Q (n, dof)`` written into ``out (n, 4, 4)``."""
+    W = block_workspace(types.size)
+    for start in range(0, Q.shape[0], BLOCK):
+        m = min(BLOCK, Q.shape[0] - start)
+        chain_block(F, types, Q, start, m, W)
+        for b in range(m):
+            store_pose(block_state(W, b), out[start + b])
 
 
-def run_steps(steps: tuple, Q: np.ndarray, theta: np.ndarray, joint_ends: tuple = (),
-              axes: list | None = None):
-    """Apply compiled motions to a batch of joint vectors ``Q (n, dof)``.
+@jit
+def fk_positions(F, types, Q, out):
+    """End-effector positions of ``Q (n, dof)`` written into ``out (n, 3)``."""
+    W = block_workspace(types.size)
+    for start in range(0, Q.shape[0], BLOCK):
+        m = min(BLOCK, Q.shape[0] - start)
+        chain_block(F, types, Q, start, m, W)
+        for b in range(m):
+            out[start + b, 0], out[start + b, 1], out[start + b, 2] = W[9, b], W[10, b], W[11, b]
 
-    Args:
-        steps: From :func:`compile_steps`.
-        Q: Joint values, 2-D.
-        theta: Joint angle offsets, added to revolute joint values.
-        joint_ends: If given, the state after each of these step indices is
-            recorded (for per-joint frames).
-        axes: If a list is given, ``(z, origin)`` of each joint's motion axis in
-            the base frame is appended to it, in joint order (for Jacobians).
 
-    Returns:
-        ``(xy, z, p, frames)``: x + i*y rotation columns (complex ``(3, n)``),
-        z column ``(3, n)``, position ``(3, n)`` and the recorded states.
+@jit
+def fk_rotations_positions(F, types, Q, R, p):
+    """End-effector rotations ``R (n, 3, 3)`` and positions ``p (n, 3)`` of ``Q``, in place."""
+    W = block_workspace(types.size)
+    for start in range(0, Q.shape[0], BLOCK):
+        m = min(BLOCK, Q.shape[0] - start)
+        chain_block(F, types, Q, start, m, W)
+        for b in range(m):
+            i = start + b
+            R[i, 0, 0], R[i, 0, 1], R[i, 0, 2] = W[0, b], W[1, b], W[2, b]
+            R[i, 1, 0], R[i, 1, 1], R[i, 1, 2] = W[3, b], W[4, b], W[5, b]
+            R[i, 2, 0], R[i, 2, 1], R[i, 2, 2] = W[6, b], W[7, b], W[8, b]
+            p[i, 0], p[i, 1], p[i, 2] = W[9, b], W[10, b], W[11, b]
+
+
+@jit
+def all_finite(x):
+    """Whether every entry of the 1-D float array ``x`` is finite."""
+    for v in x:  # noqa: SIM110 (a compiled early-exit loop)
+        if not math.isfinite(v):
+            return False
+    return True
+
+
+@jit
+def fk_frames_into(F, P, types, q, out):
+    """Base frame (identity) and every joint frame of ``q``, into ``out (dof + 1, 4, 4)``.
+
+    ``P`` is ``KinematicChain.link_frames``.
     """
-    n = Q.shape[0]
-    rot = joint_rotations(Q, theta)
-    xy = np.empty((3, n), dtype=complex)
-    xy[:] = ((1.0,), (1.0j,), (0.0,))
-    z = np.empty((3, n))
-    z[:] = ((0.0,), (0.0,), (1.0,))
-    p_xy = np.zeros((3, n), dtype=complex)  # Tx contributions (real part)
-    p_z = np.zeros((3, n))  # Tz contributions
-    tmp_c = np.empty((3, n), dtype=complex)
-    tmp_r = np.empty((3, n))
-    frames = []
-    for k, step in enumerate(steps):
-        kind = step[0]
-        if kind == "rz":
-            xy *= rot[step[1]]
-            if axes is not None:
-                axes.append((z.copy(), p_xy.real + p_z))
-        elif kind == "tx":  # p += a * Re(xy); a complex factor -i*y gives p += y * Im(xy)
-            np.multiply(xy, step[1], out=tmp_c)
-            p_xy += tmp_c
-        elif kind == "tz":
-            np.multiply(z, step[1], out=tmp_r)
-            p_z += tmp_r
-        elif kind == "rx":
-            _, ca, sa = step
-            if ca == 0.0:  # alpha = +-pi/2: y' = sa z, z' = -sa y
-                y = xy.imag.copy()
-                if sa > 0:
-                    xy.imag = z
-                    np.negative(y, out=y)
-                else:
-                    np.negative(z, out=xy.imag)
-                z = y
-            elif sa == 0.0:  # alpha = pi
-                np.negative(xy.imag, out=xy.imag)
-                np.negative(z, out=z)
-            else:
-                y = xy.imag.copy()
-                xy.imag = ca * y + sa * z
-                z = ca * z - sa * y
-        elif kind == "tz_var":
-            if axes is not None:
-                axes.append((z.copy(), p_xy.real + p_z))
-            p_z += (Q[:, step[1]] + step[2]) * z
-        elif kind == "rz_fixed":
-            xy *= step[1]
-        else:  # rot: right-multiply by a constant 3x3 rotation (columns c_xy, c_z)
-            _, c_xy, c_z = step
-            x, y = xy.real.copy(), xy.imag.copy()
-            xy = x * c_xy[0] + y * c_xy[1] + z * c_xy[2]
-            z = x * c_z[0] + y * c_z[1] + z * c_z[2]
-        if k in joint_ends:
-            frames.append((xy.copy(), z.copy(), p_xy.real + p_z))
-    return xy, z, p_xy.real + p_z, frames
+    out[0] = 0.0
+    for k in range(4):
+        out[0, k, k] = 1.0
+    t = pose_state(F, 0)
+    for j in range(types.size):
+        t = move_joint(t, types[j], q[j])
+        store_pose(compose(t, pose_state(P, j)), out[j + 1])
+        t = compose(t, pose_state(F, j + 1))
 
 
-def assemble(xy: np.ndarray, z: np.ndarray, p: np.ndarray) -> np.ndarray:
-    """Homogeneous transforms ``(n, 4, 4)`` from kernel state."""
-    n = p.shape[1]
-    T = np.empty((n, 4, 4))
-    T[:, :3, 0] = xy.real.T
-    T[:, :3, 1] = xy.imag.T
-    T[:, :3, 2] = z.T
-    T[:, :3, 3] = p.T
-    T[:, 3] = (0.0, 0.0, 0.0, 1.0)
-    return T
+@jit
+def fk_frames(F, P, types, Q, out):
+    """Frames of ``Q (n, dof)`` into ``out (n, dof + 1, 4, 4)`` (see :func:`fk_frames_into`)."""
+    for i in range(Q.shape[0]):
+        fk_frames_into(F, P, types, Q[i], out[i])
 
 
 def fk_reference(a, alpha, d, theta, prismatic, convention: str, Q: np.ndarray) -> np.ndarray:
-    """Straightforward FK: one 4x4 matrix per joint, multiplied in turn.
+    """Straightforward FK: one 4x4 matrix per joint, multiplied in turn (test oracle).
 
-    Independent of the kernel above (plain ``cos``/``sin`` of all joints at
+    Independent of the kernels above (plain ``cos``/``sin`` of all joints at
     once, the textbook DH matrices, then ``dof`` batched 4x4 products); the
     baseline for tests and ``benchmarks/fk.py``. ``Q`` is ``(n, dof)``.
     """

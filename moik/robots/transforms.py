@@ -4,21 +4,67 @@ Any serial chain of 1-DOF joints can be written as
 ``F_0 M_1(q_1) F_1 M_2(q_2) ... M_n(q_n) F_n`` where each ``F_j`` is a constant
 rigid transform and ``M_j`` is ``Rz(q_j)`` (revolute) or ``Tz(q_j)``
 (prismatic). URDF chains, DH chains and chains with locked joints all take this
-form. :func:`fixed_steps` decomposes a constant transform into the elementary
-motions of the FK kernel (:mod:`moik.robots.dh`): ``Tx Ty Tz`` then the
-rotation, as one ``Rz`` or ``Rx``, as an exact ZXZ product for axis-aligned
-rotations, or else as one general 3x3 step; identities are skipped, so
-axis-aligned URDF origins cost almost nothing.
+form, which the compiled FK kernels of :mod:`moik.robots.dh` evaluate. This
+module builds the constants (elementary transforms with exact values at
+multiples of pi/2, DH rows to origins, locked joints folded in), holds them as
+the kernels take them (:class:`KinematicChain`) and has the plain-numpy
+reference FK of a general chain.
 """
 
 from __future__ import annotations
 
-import warnings
+from dataclasses import dataclass
 
 import numpy as np
-from scipy.spatial.transform import Rotation
 
-from moik.robots.dh import exact_cos_sin
+REVOLUTE = 0
+PRISMATIC = 1
+
+
+@dataclass(frozen=True)
+class KinematicChain:
+    """The constants of ``F_0 M_1(q_1) F_1 ... M_n(q_n) F_n``, as the kernels take them.
+
+    All arrays are C-contiguous and read-only (one array type for the kernels).
+
+    Attributes:
+        origins: ``(dof + 1, 4, 4)`` fixed transforms ``F_0 .. F_n``.
+        joint_types: ``(dof,)`` int64, :data:`REVOLUTE` (``M = Rz(q)``) or
+            :data:`PRISMATIC` (``M = Tz(q)``).
+        link_frames: ``(dof, 4, 4)`` transforms ``P_j``: frame ``j`` (for plotting)
+            is ``F_0 M_1 F_1 ... M_j P_j``; the DH frames for DH robots, ``P_j = F_j``
+            for general chains.
+    """
+
+    origins: np.ndarray
+    joint_types: np.ndarray
+    link_frames: np.ndarray
+
+    def __post_init__(self) -> None:
+        for key, dtype in (("origins", np.float64), ("joint_types", np.int64),
+                           ("link_frames", np.float64)):
+            arr = np.array(getattr(self, key), dtype=dtype, order="C", copy=True)
+            arr.setflags(write=False)
+            object.__setattr__(self, key, arr)
+
+    def __reduce__(self):
+        # through the constructor, so unpickled arrays are read-only again (numpy
+        # pickles them writeable, which the kernels would see as another type)
+        return KinematicChain, (self.origins, self.joint_types, self.link_frames)
+
+    @property
+    def dof(self) -> int:
+        """Number of joints."""
+        return self.joint_types.size
+
+
+def exact_cos_sin(angle: float) -> tuple[float, float]:
+    """cos/sin of ``angle`` with exact values at multiples of pi/2."""
+    quarter = angle / (np.pi / 2)
+    k = round(quarter)
+    if abs(quarter - k) < 1e-12:
+        return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[k % 4]
+    return float(np.cos(angle)), float(np.sin(angle))
 
 
 def rot_x(angle: float) -> np.ndarray:
@@ -49,66 +95,11 @@ def joint_motion(q: float, prismatic: bool) -> np.ndarray:
     return translation(z=q) if prismatic else rot_z(q)
 
 
-def _rz_step(angle: float) -> tuple | None:
-    c, s = exact_cos_sin(angle)
-    if (c, s) == (1.0, 0.0):
-        return None
-    return ("rz_fixed", complex(c, -s))
-
-
-def fixed_steps(F: np.ndarray) -> list[tuple]:
-    """Kernel steps equal to right-multiplying by the constant transform ``F``."""
-    steps: list[tuple] = []
-    x, y, z = (float(v) for v in F[:3, 3])
-    if x != 0.0:
-        steps.append(("tx", x))
-    if y != 0.0:  # p += y * Im(xy) = Re(xy * (-i y)): a complex "tx" step
-        steps.append(("tx", complex(0.0, -y)))
-    if z != 0.0:
-        steps.append(("tz", z))
-    R = F[:3, :3]
-    if np.array_equal(R, np.eye(3)):
-        return steps
-    if R[2, 2] == 1.0 and not R[2, :2].any() and not R[:2, 2].any():  # pure Rz
-        steps.append(_rz_step(float(np.arctan2(R[1, 0], R[0, 0]))))
-    elif R[0, 0] == 1.0 and not R[0, 1:].any() and not R[1:, 0].any():  # pure Rx
-        steps.append(_rx_step(float(np.arctan2(R[2, 1], R[1, 1]))))
-    elif np.all(np.isin(R, (-1.0, 0.0, 1.0))):  # signed permutation: exact ZXZ angles
-        with warnings.catch_warnings():  # gimbal lock cases are exact here
-            warnings.simplefilter("ignore", UserWarning)
-            phi, theta, psi = Rotation.from_matrix(R).as_euler("ZXZ")
-        steps.extend(s for s in (_rz_step(phi), _rx_step(theta), _rz_step(psi)) if s is not None)
-    else:  # general rotation: one 3x3 step (Euler angles lose accuracy near gimbal lock)
-        steps.append(("rot", R[:, 0] + 1j * R[:, 1], R[:, 2].copy()))
-    return [s for s in steps if s is not None]
-
-
-def _rx_step(angle: float) -> tuple | None:
-    ca, sa = exact_cos_sin(angle)
-    return None if (ca, sa) == (1.0, 0.0) else ("rx", ca, sa)
-
-
-def compile_general(origins: np.ndarray, prismatic) -> tuple[tuple, tuple]:
-    """Kernel steps of ``F_0 M_1 F_1 ... M_n F_n``, and each joint's last step index."""
-    steps: list[tuple] = fixed_steps(origins[0])
-    ends: list[int] = []
-    for j, is_prismatic in enumerate(prismatic):
-        steps.append(("tz_var", j, 0.0) if is_prismatic else ("rz", j))
-        steps.extend(fixed_steps(origins[j + 1]))
-        ends.append(len(steps) - 1)
-    return tuple(steps), tuple(ends)
-
-
-def dh_to_origins(a, alpha, d, theta, prismatic, convention: str) -> np.ndarray:
-    """The fixed transforms ``F_0 .. F_n`` of a DH chain, shape ``(n + 1, 4, 4)``.
-
-    Standard row: ``Rz(theta) Rz(q) Tz(d) Tx(a) Rx(alpha)`` (revolute) or
-    ``Rz(theta) Tz(d) Tz(q) Tx(a) Rx(alpha)`` (prismatic); modified row:
-    ``Rx(alpha) Tx(a) Rz(theta) Rz(q) Tz(d)`` or ``... Rz(theta) Tz(d) Tz(q)``.
-    """
-    n = len(a)
+def _dh_pre_post(a, alpha, d, theta, prismatic, convention: str
+                 ) -> tuple[list[np.ndarray], list[np.ndarray]]:
+    """Each DH row as ``pre_j M_j(q_j) post_j``."""
     pre, post = [], []
-    for j in range(n):
+    for j in range(len(a)):
         if convention == "standard":
             if prismatic[j]:
                 pre.append(rot_z(theta[j]) @ translation(z=d[j]))
@@ -124,8 +115,30 @@ def dh_to_origins(a, alpha, d, theta, prismatic, convention: str) -> np.ndarray:
             else:
                 pre.append(head)
                 post.append(translation(z=d[j]))
+    return pre, post
+
+
+def dh_to_origins(a, alpha, d, theta, prismatic, convention: str) -> np.ndarray:
+    """The fixed transforms ``F_0 .. F_n`` of a DH chain, shape ``(n + 1, 4, 4)``.
+
+    Standard row: ``Rz(theta) Rz(q) Tz(d) Tx(a) Rx(alpha)`` (revolute) or
+    ``Rz(theta) Tz(d) Tz(q) Tx(a) Rx(alpha)`` (prismatic); modified row:
+    ``Rx(alpha) Tx(a) Rz(theta) Rz(q) Tz(d)`` or ``... Rz(theta) Tz(d) Tz(q)``.
+    """
+    pre, post = _dh_pre_post(a, alpha, d, theta, prismatic, convention)
+    n = len(a)
     origins = [pre[0]] + [post[j] @ pre[j + 1] for j in range(n - 1)] + [post[-1]]
     return np.array(origins)
+
+
+def dh_link_frames(a, alpha, d, theta, prismatic, convention: str) -> np.ndarray:
+    """``P_j`` with DH frame ``j`` = ``F_0 M_1 F_1 ... M_j P_j``, shape ``(n, 4, 4)``.
+
+    The DH frame of joint ``j`` is the product of the first ``j`` DH matrices:
+    the chain up to joint ``j``'s motion, then the rest of that row (``post_j``),
+    without the start of the next row that ``F_j`` also holds.
+    """
+    return np.array(_dh_pre_post(a, alpha, d, theta, prismatic, convention)[1])
 
 
 def lock_joints(origins: np.ndarray, prismatic, locked: dict[int, float]
@@ -147,7 +160,7 @@ def lock_joints(origins: np.ndarray, prismatic, locked: dict[int, float]
 
 
 def fk_general_reference(origins: np.ndarray, prismatic, Q: np.ndarray) -> np.ndarray:
-    """Straightforward FK of a general chain: 4x4 products, joint by joint."""
+    """Straightforward FK of a general chain: 4x4 products, joint by joint (test oracle)."""
     n = Q.shape[0]
     T = np.broadcast_to(origins[0], (n, 4, 4)).copy()
     for j, is_prismatic in enumerate(prismatic):

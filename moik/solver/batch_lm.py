@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from moik.kinematics.jacobian import kernel_jacobian
+from moik.kinematics.jacobian import parts_and_jacobian
 from moik.kinematics.so3 import pose_residual, pose_residual_jacobian
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
@@ -57,9 +57,8 @@ class BatchLMResult:
 
 def _residuals(robot: Robot, target: Target, length: float, Q: np.ndarray):
     """Residuals ``(n, m)`` and exact Jacobians ``(n, m, dof)`` of a batch."""
-    xy, z, p, J = kernel_jacobian(robot, Q)
-    R = None if target.rotation is None else np.stack([xy.real.T, xy.imag.T, z.T], axis=-1)
-    r = pose_residual(p.T, R, target.position, target.rotation, length)
+    R, p, J = parts_and_jacobian(robot, Q)
+    r = pose_residual(p, R, target.position, target.rotation, length)
     return r, pose_residual_jacobian(J, r, length)
 
 

@@ -1,0 +1,148 @@
+"""moik/_jit.py: input normalisation, one compiled version per kernel, the disk cache
+and the first-compile notice (in fresh interpreters), a read-only installation."""
+
+import os
+import shutil
+import stat
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import moik
+from moik._jit import COMPILE_NOTICE, kernel_array
+from moik.kinematics import jacobian as jac
+from moik.kinematics import orientation
+from moik.kinematics.jacobian import pose_and_jacobian
+from moik.kinematics.orientation import orientation_error
+from moik.problems import BiObjectiveIK, PoseIK, PositionIK, ik, random_reachable_targets
+from moik.robots import dh, get_robot
+
+# Runs in a fresh interpreter: FK through the kernels, checked against the oracle.
+SCRIPT = """
+import numpy as np
+import moik
+from moik.robots import fk_reference, get_robot
+robot = get_robot("eosma7")
+Q = robot.random_q(70, rng=np.random.default_rng(0))
+assert np.allclose(robot.fk(Q), fk_reference(robot, Q), rtol=0, atol=1e-10)
+print(moik.__file__)
+"""
+
+
+def test_kernel_array_normalises_only_when_needed():
+    good = np.zeros((3, 7))
+    assert kernel_array(good) is good
+    wide = np.arange(42.0).reshape(3, 14)
+    frozen = np.ones((3, 7))
+    frozen.setflags(write=False)
+    for value in (wide[:, ::2], frozen, np.ones((3, 7), dtype=np.float32), [[1, 2], [3, 4]],
+                  np.asfortranarray(np.ones((3, 7)))):
+        arr = kernel_array(value)
+        assert arr.dtype == np.float64 and arr.flags.c_contiguous and arr.flags.writeable
+        np.testing.assert_array_equal(arr, np.asarray(value, dtype=float))
+
+
+def test_one_compiled_version_per_kernel():
+    """Whatever array layout comes in, each public kernel sees one argument type."""
+    robot = get_robot("puma560")
+    target = random_reachable_targets(robot, 1, seed=0)[0]
+    X = robot.random_q(12, rng=np.random.default_rng(0))
+    wide = np.zeros((12, 12))
+    wide[:, ::2] = X
+    frozen = X.copy()
+    frozen.setflags(write=False)
+    layouts = [X, wide[:, ::2], frozen, X.astype(np.float32), X.tolist(), np.asfortranarray(X)]
+    for Q in layouts:
+        robot.fk(Q)
+        robot.fk(np.asarray(Q)[0])
+        robot.fk_position(Q)
+        robot.fk_parts(Q)
+        robot.frames(Q)
+        pose_and_jacobian(robot, Q)
+        jac.parts_and_jacobian(robot, Q)
+        for problem in (PositionIK(robot, target.position), PoseIK(robot, target),
+                        BiObjectiveIK(robot, target, orientation="zyx-euler")):
+            problem.evaluate(np.asarray(Q, dtype=float))
+        orientation_error(robot.fk_parts(Q)[0], target.rotation, "frobenius")
+    kernels = [dh.fk_poses, dh.fk_positions, dh.fk_rotations_positions, dh.fk_frames,
+               dh.all_finite, jac.poses_and_jacobians, jac.parts_and_jacobians,
+               ik.ik_objectives, orientation.rotation_errors]
+    for kernel in kernels:
+        assert len(kernel.signatures) == 1, (kernel.py_func.__name__, kernel.signatures)
+
+
+def _run(env: dict, cwd: Path) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-c", SCRIPT], env=env, cwd=cwd,
+                          capture_output=True, text=True, timeout=600)
+
+
+def _env(**changes) -> dict:
+    env = {k: v for k, v in os.environ.items()
+           if not k.startswith("NUMBA_") and k not in ("XDG_CACHE_HOME", "PYTHONPATH")}
+    env.update(PYTHONDONTWRITEBYTECODE="1", **changes)
+    return env
+
+
+def test_compiles_once_then_loads_from_the_cache(tmp_path):
+    """First run: one notice on stderr while numba compiles, cache files written.
+    Second run: loaded from the cache, no notice."""
+    cache = tmp_path / "cache"
+    root = Path(moik.__file__).parent
+    env = _env(NUMBA_CACHE_DIR=str(cache), PYTHONPATH=str(root.parent))
+    first = _run(env, tmp_path)
+    assert first.returncode == 0, first.stderr
+    assert first.stdout.strip() == str(root / "__init__.py")
+    assert first.stderr.count(COMPILE_NOTICE) == 1
+    assert list(cache.rglob("*.nbi"))
+    second = _run(env, tmp_path)
+    assert second.returncode == 0, second.stderr
+    assert COMPILE_NOTICE not in second.stderr
+
+
+def _read_only(path: Path) -> None:
+    for p in [path, *path.rglob("*")]:
+        p.chmod(p.stat().st_mode & ~(stat.S_IWUSR | stat.S_IWGRP | stat.S_IWOTH))
+
+
+def _writable(path: Path) -> None:
+    for p in [path, *path.rglob("*")]:
+        p.chmod(p.stat().st_mode | stat.S_IWUSR)
+
+
+def test_read_only_installation_compiles_without_cache(tmp_path):
+    """A package copy that cannot hold a cache (read-only, and for root, whose
+    writes permissions do not stop, every __pycache__ blocked by a file), a
+    read-only home and an unusable NUMBA_CACHE_DIR: import and FK still work."""
+    site = tmp_path / "site"
+    package = site / "moik"
+    shutil.copytree(Path(moik.__file__).parent, package,
+                    ignore=shutil.ignore_patterns("__pycache__"))
+    for folder in [package, *[p for p in package.rglob("*") if p.is_dir()]]:
+        (folder / "__pycache__").write_text("not a folder")
+    home = tmp_path / "home"
+    home.mkdir()
+    (home / ".cache").write_text("not a folder")
+    blocked = tmp_path / "blocked"
+    blocked.write_text("not a folder")
+    env = _env(PYTHONPATH=str(site), HOME=str(home), NUMBA_CACHE_DIR=str(blocked / "numba"),
+               XDG_CACHE_HOME=str(blocked / "xdg"))
+    _read_only(site)
+    _read_only(home)
+    try:
+        out = _run(env, tmp_path)
+    finally:
+        _writable(site)
+        _writable(home)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == str(package / "__init__.py")
+    assert out.stderr.count(COMPILE_NOTICE) == 1
+    assert not list(tmp_path.rglob("*.nbi"))
+
+
+@pytest.mark.parametrize("name", ["fk_poses", "chain_block", "sin_cos"])
+def test_kernels_are_numba_dispatchers(name):
+    kernel = getattr(dh, name)
+    assert hasattr(kernel, "py_func") and hasattr(kernel, "signatures")

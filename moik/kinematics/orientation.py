@@ -169,6 +169,26 @@ def orientation_error(R, R_t, metric: str = "geodesic") -> np.ndarray:
     return out[0] if R.ndim == 2 else out
 
 
+@jit
+def _all_rotations(R, atol):
+    """Whether every ``R[i]`` is orthonormal with det +1, by numpy.allclose's rule
+    (``|R^T R - I| <= atol + 1e-5 I`` entrywise, ``|det - 1| <= atol + 1e-5``)."""
+    for i in range(R.shape[0]):
+        M = R[i]
+        for a in range(3):
+            for b in range(3):
+                g = M[0, a] * M[0, b] + M[1, a] * M[1, b] + M[2, a] * M[2, b]
+                eye = 1.0 if a == b else 0.0
+                if not abs(g - eye) <= atol + 1e-5 * eye:
+                    return False
+        det = (M[0, 0] * (M[1, 1] * M[2, 2] - M[1, 2] * M[2, 1])
+               - M[0, 1] * (M[1, 0] * M[2, 2] - M[1, 2] * M[2, 0])
+               + M[0, 2] * (M[1, 0] * M[2, 1] - M[1, 1] * M[2, 0]))
+        if not abs(det - 1.0) <= atol + 1e-5:
+            return False
+    return True
+
+
 def check_rotation(
     R, name: str = "rotation", *, batch: bool = False, atol: float = 1e-6
 ) -> np.ndarray:
@@ -186,10 +206,7 @@ def check_rotation(
         raise ShapeError(f"{name} must have shape {want}, got {R.shape}")
     if not np.all(np.isfinite(R)):
         raise NonFiniteError(f"{name} must be finite, got NaN or inf")
-    gram = np.swapaxes(R, -1, -2) @ R
-    if not (
-        np.allclose(gram, np.eye(3), atol=atol) and np.allclose(np.linalg.det(R), 1.0, atol=atol)
-    ):
+    if not _all_rotations(R.reshape(-1, 3, 3), atol):
         raise TargetError(f"{name} must be a rotation matrix (orthonormal, det +1)")
     return R
 

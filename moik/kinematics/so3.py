@@ -14,8 +14,8 @@ convention).
 * log: ``theta = atan2(|v|, trace(R) - 1)`` with ``v = (R32 - R23, R13 - R31,
   R21 - R12)`` (``|v| = 2 sin theta``, ``trace - 1 = 2 cos theta``: accurate at
   small angles, unlike ``arccos``), ``log(R) = (theta / |v|) v`` (limit ``v / 2``).
-  Within 1e-3 rad of ``pi`` ``v`` loses the axis; those rows go to scipy's
-  ``Rotation.as_rotvec`` (which works from the symmetric part).
+  Within 1e-3 rad of ``pi`` ``v`` loses the axis; there the axis comes from
+  the symmetric part ``(M + M^T) / 2 = cos t I + (1 - cos t) a a^T``.
 * left Jacobian, ``d exp(phi) = [J_l(phi) d phi] exp(phi)``:
   ``J_l(phi) = I + ((1 - cos t) / t^2) [phi] + ((t - sin t) / t^3) [phi]^2``.
 * its inverse, ``d log(R) = J_l^{-1}(log R) w`` for ``dR = [w] R`` (a
@@ -34,10 +34,11 @@ orientation error is :func:`rotation_angle`.
 from __future__ import annotations
 
 import numpy as np
-from scipy.spatial.transform import Rotation
+
+from moik._jit import jit, kernel_array
 
 SMALL_ANGLE = 1e-6  # below it the Jacobians use their series limits
-LOG_NEAR_PI = 1e-3  # within it of pi the log map goes to scipy (the skew part loses the axis)
+LOG_NEAR_PI = 1e-3  # within it of pi the log map reads the axis from the symmetric part
 JACOBIAN_NEAR_PI = 1e-6  # within it of pi the inverse left Jacobian is the identity
 
 
@@ -87,22 +88,16 @@ def rotation_angle(R: np.ndarray) -> np.ndarray:
 
 
 def log(R: np.ndarray) -> np.ndarray:
-    """Rotation vectors ``(..., 3)`` of rotation matrices ``R (..., 3, 3)``.
+    """Rotation vectors ``(..., 3)`` of rotation matrices ``R (..., 3, 3)`` (:func:`log_into`).
 
-    ``(theta / |v|) v`` (limit ``v / 2`` at the identity); rows within
-    ``LOG_NEAR_PI`` of ``pi`` go to scipy's ``as_rotvec``. At exactly ``pi`` the
-    sign of the axis is arbitrary (both logs are the same rotation).
+    ``(theta / |v|) v`` (limit ``v / 2`` at the identity); within ``LOG_NEAR_PI``
+    of ``pi`` the axis comes from the symmetric part. At exactly ``pi`` the sign
+    of the axis is arbitrary (both logs are the same rotation).
     """
     R = np.asarray(R, dtype=float)
-    M = R.reshape(-1, 3, 3)
-    v, norm_v, theta = _skew_part_and_angle(M)
-    scale = np.full_like(theta, 0.5)
-    nonzero = norm_v > 0
-    scale[nonzero] = theta[nonzero] / norm_v[nonzero]
-    out = v * scale[:, None]
-    near_pi = theta > np.pi - LOG_NEAR_PI
-    if near_pi.any():
-        out[near_pi] = Rotation.from_matrix(M[near_pi]).as_rotvec()
+    M = kernel_array(R.reshape(-1, 3, 3))
+    out = np.empty((M.shape[0], 3))
+    _logs(M, out)
     return out.reshape(R.shape[:-2] + (3,))
 
 
@@ -131,30 +126,13 @@ def inverse_left_jacobian(phi: np.ndarray) -> np.ndarray:
     - t^2 I``); ``c = 1/12`` below ``SMALL_ANGLE``. Within ``JACOBIAN_NEAR_PI`` of
     ``pi``, where the log map it differentiates jumps (the axis flips sign) and
     ``(1 + cos t) / sin t`` is ``0 / 0`` in floating point, the identity is used.
+    Computed by :func:`inverse_left_jacobian_times` applied to the identity.
     """
     phi = np.asarray(phi, dtype=float)
-    shape = phi.shape
-    phi = phi.reshape(-1, 3)
-    t = np.sqrt(np.einsum("ij,ij->i", phi, phi))
-    small, near_pi = t < SMALL_ANGLE, t > np.pi - JACOBIAN_NEAR_PI
-    ts = np.where(small | near_pi, 1.0, t)
-    c = 1.0 / ts**2 - (1.0 + np.cos(ts)) / (2.0 * ts * np.sin(ts))
-    c[small] = 1.0 / 12.0
-    c[near_pi] = 0.0
-    out = c[:, None, None] * (phi[:, :, None] * phi[:, None, :])
-    diag = 1.0 - c * t**2
-    diag[near_pi] = 1.0
-    out[:, 0, 0] += diag
-    out[:, 1, 1] += diag
-    out[:, 2, 2] += diag
-    half = 0.5 * np.where(near_pi[:, None], 0.0, phi)
-    out[:, 0, 1] += half[:, 2]
-    out[:, 1, 0] -= half[:, 2]
-    out[:, 0, 2] -= half[:, 1]
-    out[:, 2, 0] += half[:, 1]
-    out[:, 1, 2] += half[:, 0]
-    out[:, 2, 1] -= half[:, 0]
-    return out.reshape(shape + (3,))
+    flat = kernel_array(phi.reshape(-1, 3))
+    out = np.empty((flat.shape[0], 3, 3))
+    _inverse_left_jacobians(flat, out)
+    return out.reshape(phi.shape + (3,))
 
 
 def pose_residual(p: np.ndarray, R: np.ndarray | None, p_target: np.ndarray,
@@ -196,3 +174,81 @@ def pose_residual_jacobian(J: np.ndarray, residual: np.ndarray, length: float) -
         return J_pos
     r_rot = np.ascontiguousarray(residual[:, 3:])
     return np.concatenate([J_pos, inverse_left_jacobian(r_rot) @ J[:, 3:]], axis=1)
+
+
+# ---------------------------------------------------------------- compiled kernels
+# One rotation at a time, callable from compiled code (the solver's Levenberg-Marquardt);
+# the batched functions above loop over them.
+
+
+@jit
+def log_into(M, out):
+    """``log(M)`` of one rotation matrix ``M (3, 3)`` into ``out (3,)``; returns the angle.
+
+    Away from ``pi`` the skew-part formula of the module docstring; within
+    ``LOG_NEAR_PI`` of ``pi`` the axis comes from the symmetric part
+    (``M + M^T = 2 (1 - cos t) a a^T + 2 cos t I``: the largest diagonal entry
+    gives the best-conditioned component) with its sign from the skew part.
+    """
+    v0, v1, v2 = M[2, 1] - M[1, 2], M[0, 2] - M[2, 0], M[1, 0] - M[0, 1]
+    nv = np.sqrt(v0 * v0 + v1 * v1 + v2 * v2)
+    theta = np.arctan2(nv, M[0, 0] + M[1, 1] + M[2, 2] - 1.0)
+    if theta > np.pi - LOG_NEAR_PI:
+        # (M + M^T) / 2 = cos t I + (1 - cos t) a a^T: a_i^2 from the diagonal (the largest
+        # one best conditioned), the other components from the off-diagonal sums
+        ct = np.cos(theta)
+        w = 1.0 - ct
+        d0, d1, d2 = M[0, 0], M[1, 1], M[2, 2]
+        if d0 >= d1 and d0 >= d2:
+            a0 = np.sqrt(max(0.0, (d0 - ct) / w))
+            a1, a2 = (M[0, 1] + M[1, 0]) / (2.0 * w * a0), (M[0, 2] + M[2, 0]) / (2.0 * w * a0)
+        elif d1 >= d2:
+            a1 = np.sqrt(max(0.0, (d1 - ct) / w))
+            a0, a2 = (M[0, 1] + M[1, 0]) / (2.0 * w * a1), (M[1, 2] + M[2, 1]) / (2.0 * w * a1)
+        else:
+            a2 = np.sqrt(max(0.0, (d2 - ct) / w))
+            a0, a1 = (M[0, 2] + M[2, 0]) / (2.0 * w * a2), (M[1, 2] + M[2, 1]) / (2.0 * w * a2)
+        na = np.sqrt(a0 * a0 + a1 * a1 + a2 * a2)
+        if a0 * v0 + a1 * v1 + a2 * v2 < 0.0:
+            na = -na
+        out[0], out[1], out[2] = a0 / na * theta, a1 / na * theta, a2 / na * theta
+        return theta
+    scale = 0.5 if nv == 0.0 else theta / nv
+    out[0], out[1], out[2] = v0 * scale, v1 * scale, v2 * scale
+    return theta
+
+
+@jit
+def inverse_left_jacobian_times(phi, A, out):
+    """``out (3, k) = J_l^{-1}(phi) A`` for ``A (3, k)`` (formula of the module docstring)."""
+    t2 = phi[0] * phi[0] + phi[1] * phi[1] + phi[2] * phi[2]
+    t = np.sqrt(t2)
+    if t < SMALL_ANGLE:
+        c, h = 1.0 / 12.0, 0.5
+    elif t > np.pi - JACOBIAN_NEAR_PI:
+        c, h, t2 = 0.0, 0.0, 0.0
+    else:
+        c, h = 1.0 / t2 - (1.0 + np.cos(t)) / (2.0 * t * np.sin(t)), 0.5
+    d = 1.0 - c * t2  # J_l^{-1} = d I - h [phi] + c phi phi^T
+    p0, p1, p2 = phi[0], phi[1], phi[2]
+    m00, m01, m02 = d + c * p0 * p0, c * p0 * p1 + h * p2, c * p0 * p2 - h * p1
+    m10, m11, m12 = c * p1 * p0 - h * p2, d + c * p1 * p1, c * p1 * p2 + h * p0
+    m20, m21, m22 = c * p2 * p0 + h * p1, c * p2 * p1 - h * p0, d + c * p2 * p2
+    for j in range(A.shape[1]):
+        a, b, e = A[0, j], A[1, j], A[2, j]
+        out[0, j] = m00 * a + m01 * b + m02 * e
+        out[1, j] = m10 * a + m11 * b + m12 * e
+        out[2, j] = m20 * a + m21 * b + m22 * e
+
+
+@jit
+def _logs(M, out):
+    for i in range(M.shape[0]):
+        log_into(M[i], out[i])
+
+
+@jit
+def _inverse_left_jacobians(phi, out):
+    eye = np.eye(3)
+    for i in range(phi.shape[0]):
+        inverse_left_jacobian_times(phi[i], eye, out[i])

@@ -26,6 +26,9 @@ EULER_CONVENTIONS = {"zyx-euler": rotation_from_zyx, "eosma-euler": rotation_fro
 UNIT_RANGE_FACTOR = 10.0
 
 
+_LAST_ROW = np.array([0.0, 0.0, 0.0, 1.0])
+
+
 @dataclass(frozen=True, eq=False)
 class Target:
     """A desired end-effector position and, optionally, orientation.
@@ -71,7 +74,7 @@ class Target:
         T = np.asarray(T, dtype=float)
         if T.shape != (4, 4):
             raise ShapeError(f"pose must have shape (4, 4), got {T.shape}")
-        if not np.allclose(T[3], [0, 0, 0, 1]):
+        if not np.all(np.abs(T[3] - _LAST_ROW) <= 1e-8 + 1e-5 * np.abs(_LAST_ROW)):
             raise TargetError(f"pose last row must be [0, 0, 0, 1], got {T[3]}")
         return cls(T[:3, 3], T[:3, :3])
 

@@ -8,6 +8,7 @@ before the search, whose options would otherwise never be looked at).
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -65,13 +66,21 @@ class SearchOptions:
         object.__setattr__(self, "polish", flag("polish", self.polish))
         object.__setattr__(self, "orientation",
                            choice("orientation metric", self.orientation, available_metrics()))
-        if is_multi_objective(self.method):  # also raises UnknownNameError for an unknown name
-            raise ParameterError(f"method must be a single-objective algorithm, got "
-                                 f"{self.method!r}")
-        if not is_multi_objective(self.front_method):
-            raise ParameterError(f"front_method must be a multi-objective algorithm, got "
-                                 f"{self.front_method!r}")
-        get_algorithm(self.method, pop_size=pop_size)  # the algorithm's own limits on pop_size
+        if isinstance(self.method, str) and isinstance(self.front_method, str):
+            _check_algorithms(self.method, self.front_method, pop_size)  # cached: a hot path
+        else:
+            _check_algorithms.__wrapped__(self.method, self.front_method, pop_size)
+
+
+@functools.lru_cache(maxsize=64)
+def _check_algorithms(method: str, front_method: str, pop_size: int) -> None:
+    """The kinds of ``method`` / ``front_method`` and ``method``'s own limits on ``pop_size``."""
+    if is_multi_objective(method):  # also raises UnknownNameError for an unknown name
+        raise ParameterError(f"method must be a single-objective algorithm, got {method!r}")
+    if not is_multi_objective(front_method):
+        raise ParameterError(f"front_method must be a multi-objective algorithm, got "
+                             f"{front_method!r}")
+    get_algorithm(method, pop_size=pop_size)
 
 
 def seed_sequence(seed) -> np.random.SeedSequence:

@@ -11,15 +11,18 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._jit import kernel_array
 from moik._validate import positive
 from moik.exceptions import ParameterError
-from moik.kinematics.orientation import geodesic_error
+from moik.kinematics.orientation import GEODESIC, rotation_errors
 from moik.problems.targets import Target
 from moik.robots.chain import Robot, fk_reference
-from moik.solver.batch_lm import batch_lm
+from moik.solver.lm import multistart
 from moik.solver.polish import polish as polish_q
 
-BATCH_ITERATIONS = 30  # Levenberg-Marquardt iterations of the first attempt
+_NO_ANGLES = np.zeros(3)  # the geodesic metric compares matrices, not angles
+LM_ITERATIONS = 30  # Levenberg-Marquardt iterations per start of the first attempt
+STOP_FRACTION = 0.1  # a start stops at this fraction of the tolerances (margin for the re-check)
 
 
 def tolerances(tol, robot: Robot) -> tuple[float, float]:
@@ -46,17 +49,29 @@ def tolerances(tol, robot: Robot) -> tuple[float, float]:
     raise ParameterError(f"tol must be a number or (position, orientation), got {tol!r}")
 
 
-def pose_errors(robot: Robot, target: Target, Q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def pose_errors(robot: Robot, target: Target, Q: np.ndarray, *, reference: bool = False
+                ) -> tuple[np.ndarray, np.ndarray]:
     """Position error (robot unit) and geodesic orientation error (rad), recomputed by FK.
 
-    Uses the straightforward reference FK (``fk_reference``), independent of the
-    kernel the optimizers ran on. Orientation error is 0 for position-only targets.
+    The honest re-check: the errors of the returned joint vectors, evaluated anew
+    by a forward kinematics pass of their own, never taken from an optimizer's
+    bookkeeping. By default the compiled FK (``robot.fk_parts``, tested equal to the
+    reference to 1e-12); with ``reference=True`` the plain-numpy ``fk_reference``,
+    independent of every kernel (used for the verdict on unsolved targets).
+    Orientation error is 0 for position-only targets.
     """
-    T = fk_reference(robot, np.atleast_2d(Q))
-    pos = np.linalg.norm(T[:, :3, 3] - target.position, axis=1)
+    Q = np.atleast_2d(Q)
+    if reference:
+        T = fk_reference(robot, Q)
+        R, p = np.ascontiguousarray(T[:, :3, :3]), T[:, :3, 3]
+    else:
+        R, p = robot.fk_parts(Q)
+    pos = np.linalg.norm(p - target.position, axis=1)
     if target.rotation is None:
         return pos, np.zeros_like(pos)
-    return pos, geodesic_error(T[:, :3, :3], target.rotation)
+    ori = np.empty(len(Q))
+    rotation_errors(GEODESIC, R, kernel_array(target.rotation), _NO_ANGLES, ori)
+    return pos, ori
 
 
 def joint_distance(robot: Robot, q: np.ndarray, others: np.ndarray) -> np.ndarray:
@@ -68,6 +83,25 @@ def joint_distance(robot: Robot, q: np.ndarray, others: np.ndarray) -> np.ndarra
     diff = np.atleast_2d(others) - q
     wrapped = (diff + np.pi) % (2 * np.pi) - np.pi
     return np.linalg.norm(np.where(robot.is_prismatic, diff, wrapped), axis=1)
+
+
+def nearest_copies(robot: Robot, Q: np.ndarray, q_ref: np.ndarray) -> np.ndarray:
+    """Each row of ``Q`` with its revolute joints shifted by multiples of 2 pi towards ``q_ref``.
+
+    ``q_j + 2 pi k`` is the same arm configuration; of the copies within the joint
+    limits, the one nearest to ``q_ref_j`` is taken (``q_j`` itself if no other copy
+    fits). Prismatic joints are left as they are.
+    """
+    Q = np.atleast_2d(np.asarray(Q, dtype=float))
+    two_pi = 2.0 * np.pi
+    k = np.round((q_ref - Q) / two_pi)
+    best = Q.copy()
+    for dk in (-1.0, 0.0, 1.0):  # the rounded shift or a neighbour may leave the limits
+        cand = Q + (k + dk) * two_pi
+        ok = (cand >= robot.lower) & (cand <= robot.upper) & ~robot.is_prismatic
+        better = ok & (np.abs(cand - q_ref) < np.abs(best - q_ref))
+        best = np.where(better, cand, best)
+    return best
 
 
 def is_distinct(robot: Robot, q: np.ndarray, others: list[np.ndarray], threshold: float) -> bool:
@@ -91,6 +125,7 @@ class SolveSession:
         self.wanted = wanted  # solutions asked for: no more are kept
         self.n_eval = 0
         self.found: list[np.ndarray] = []
+        self.found_errors: list[tuple[float, float]] = []  # (position, orientation) of each
         self.best: tuple[float, np.ndarray] | None = None  # (scaled error, q)
 
     def refine(self, q0: np.ndarray, do_polish: bool, max_nfev: int = 60) -> None:
@@ -106,16 +141,21 @@ class SolveSession:
             q = np.clip(q0, self.robot.lower, self.robot.upper)
         self.consider(q[None])
 
-    def local_batch(self, Q0: np.ndarray, stop_after: int | None) -> bool:
-        """Batched Levenberg-Marquardt from the rows of ``Q0``; whether any converged."""
-        out = batch_lm(self.robot, self.target, Q0, length=self.robot.reach,
-                       stop_position=1e-3 * self.tol_pos, stop_orientation=1e-3 * self.tol_ori,
-                       max_iter=BATCH_ITERATIONS, stop_after=stop_after)
+    def local_starts(self, Q0: np.ndarray, patient: bool = False) -> bool:
+        """Compiled Levenberg-Marquardt from the rows of ``Q0`` in turn, until
+        :attr:`wanted` distinct solutions are known; whether it found any new one.
+        ``patient``: no start is abandoned for slow progress (a start near a solution)."""
+        out = multistart(self.robot, self.target, Q0,
+                         stop_position=STOP_FRACTION * self.tol_pos,
+                         stop_orientation=STOP_FRACTION * self.tol_ori, want=self.wanted,
+                         distinct=self.distinct,
+                         known=np.array(self.found) if self.found else None,
+                         max_iter=LM_ITERATIONS, patient=patient)
         self.n_eval += out.n_eval
-        err = out.position_error / self.robot.reach + out.orientation_error
-        order = np.argsort(np.where(out.converged, -1.0, err), kind="stable")
-        self.consider(out.Q[order[: max(int(out.converged.sum()), 1)]])
-        return bool(out.converged.any())
+        n_before = len(self.found)
+        new = out.solutions[n_before:]
+        self.consider(new if len(new) else out.best_q[None])
+        return len(self.found) > n_before
 
     def consider(self, Q: np.ndarray) -> None:
         """Check candidates with the reference FK; keep the distinct solutions and the best."""
@@ -127,3 +167,4 @@ class SolveSession:
             if (len(self.found) < self.wanted and p <= self.tol_pos and o <= self.tol_ori
                     and is_distinct(self.robot, q, self.found, self.distinct)):
                 self.found.append(q)
+                self.found_errors.append((float(p), float(o)))

@@ -1,24 +1,28 @@
-"""``solve_ik``: the practical IK solver (global search + exact local polish).
+"""``solve_ik``: the practical IK solver (compiled local solver + global search fallback).
 
-First a fast attempt: batched Levenberg-Marquardt from ``q_current`` and from
-``starts`` seeded random configurations, all in one numpy pass
-(:mod:`moik.solver.batch_lm`); most reachable poses end there. Otherwise,
+First stage: the compiled multi-start Levenberg-Marquardt (:mod:`moik.solver.lm`)
+from ``q_current`` and then from seeded random configurations in turn, until
+``n_solutions`` distinct solutions (modulo 2 pi) are found; nearly every
+reachable pose ends there in well under a millisecond. The hard tail goes on to
 the memetic design of BioIK: a registered metaheuristic (EOSMA by default)
 searches the joint space with a small population for a few generations; the
 best distinct candidates are then refined with bounded least squares and the
 analytic Jacobian (:mod:`moik.solver.polish`). Rounds repeat with fresh
 derived seeds until enough distinct solutions are found or the budget is spent.
 
-Honesty rules: the returned errors are recomputed with the reference FK (never
-taken from an optimizer); ``q`` is always within the joint limits; a target is
-called ``"unreachable"`` when two independent global searches found nothing
-within tolerance: the single-objective rounds ran until ``patience`` rounds
-brought no progress (not until the budget ran out) and a multi-objective run
-(MOEOSMA) whose best member was refined as well; and the best error is more
-than 1000 tolerances away. It is the solver's verdict, not a proof; a near
-miss, or a search cut short by ``max_evals``, is ``"not-converged"``. The
-Pareto front of (position error, orientation error) is returned with its
-compromise, closest to the utopia point, as ``q``.
+Honesty rules: the returned errors are recomputed by FK (never taken from an
+optimizer; the plain-numpy reference FK for unsolved targets); ``q`` is always
+within the joint limits. A target is called ``"unreachable"`` either when it
+lies beyond the provable reach bound (:mod:`moik.solver.front`: a proof, no
+search needed), or when two independent global searches found nothing within
+tolerance: the single-objective rounds ran until ``patience`` rounds brought no
+progress (not until the budget ran out) and a multi-objective run (MOEOSMA)
+whose best member was refined as well; and the best error is more than 1000
+tolerances away. The latter is the solver's verdict, not a proof; a near miss,
+or a search cut short by ``max_evals``, is ``"not-converged"``. For a pose the
+Pareto front of (position error, orientation error) is returned, its ends and
+members polished by compiled weighted-sum scalarisations, with its compromise
+closest to the utopia point as ``q``.
 """
 
 from __future__ import annotations
@@ -30,16 +34,26 @@ import numpy as np
 from pymoo.optimize import minimize
 
 from moik.algorithms import get_algorithm
+from moik.exceptions import ShapeError
 from moik.metrics.compromise import closest_to_utopia
 from moik.problems.ik import BiObjectiveIK, PoseIK, PositionIK
 from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.chain import Robot
+from moik.solver.front import FRONT_STARTS, polished_front, reach_excess
+from moik.solver.lm import multistart
 from moik.solver.options import SearchOptions, seed_sequence
-from moik.solver.session import SolveSession, is_distinct, pose_errors, tolerances
+from moik.solver.session import (
+    SolveSession,
+    is_distinct,
+    nearest_copies,
+    pose_errors,
+    tolerances,
+)
 
 STATUSES = ("solved", "unreachable", "not-converged")
 UNREACHABLE_FACTOR = 1e3  # best error beyond this many tolerances after a full search
 FINAL_NFEV = 300  # extended refinement of the best candidate before giving up
+FIRST_STARTS = 8  # random starts drawn first; the remaining ``starts`` only when needed
 QUICK_NFEV = 12  # a good start converges in ~5-10 evaluations; a bad one is dropped early
 
 
@@ -92,7 +106,7 @@ def _population(algorithm) -> tuple[np.ndarray, np.ndarray]:
 
 def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = "geodesic",
              polish: bool = True, n_solutions: int = 1, q_current=None, seed=0,
-             tol=1e-9, max_evals: int = 50_000, starts: int = 16, pop_size: int | None = None,
+             tol=1e-9, max_evals: int = 50_000, starts: int = 100, pop_size: int | None = None,
              generations: int = 15,
              candidates_per_round: int = 3, distinct: float = 0.1,
              patience: int = 30, front_method: str = "moeosma",
@@ -107,15 +121,18 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
             front (reported errors are always geodesic).
         polish: Refine candidates with least squares (else search only).
         n_solutions: Number of distinct solutions wanted.
-        q_current: Current configuration: refined first, and the solution
-            nearest to it is returned (EOSMA Eq. 31 idea).
+        q_current: Current configuration: the first start, and the solutions
+            are returned nearest to it first, each revolute joint shifted by the
+            multiple of 2 pi (within the limits) that brings it nearest to
+            ``q_current`` (EOSMA Eq. 31 idea).
         seed: Seed (int or ``numpy.random.SeedSequence``) of every random
             choice: the same seed gives the same result bit for bit.
         tol: Tolerance: a number ``t`` means position <= ``t * robot.reach`` and
             orientation <= ``t`` rad; or a pair (position in robot unit, rad).
         max_evals: FK evaluation budget of search and polish.
-        starts: Random configurations of the first, batched Levenberg-Marquardt
-            attempt (0: go straight to the global search).
+        starts: Random configurations (seeded) from which the compiled
+            Levenberg-Marquardt first stage starts in turn, after ``q_current``,
+            until enough solutions are found (0: go straight to the global search).
         pop_size: Search population size (default 20, or 40 when several
             solutions are wanted: a wider population lands in more branches).
         generations: Search generations per round.
@@ -146,15 +163,27 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
                          patience=patience, front_method=front_method, front_evals=front_evals)
     seeds = seed_sequence(seed)
     q_current = None if q_current is None else robot.check_q(q_current, "q_current")
+    if q_current is not None and q_current.ndim != 1:
+        raise ShapeError(f"q_current must be one joint vector ({robot.dof},), got "
+                         f"{q_current.shape}")
     n_solutions, polish = opts.n_solutions, opts.polish
     session = SolveSession(robot, target, tol_pos, tol_ori, opts.distinct, n_solutions)
-    if q_current is not None and not (polish and session.local_batch(q_current[None],
-                                                                     stop_after=1)):
-        session.refine(q_current, polish)
-    if polish and opts.starts and len(session.found) < n_solutions:
-        Q0 = robot.random_q(opts.starts, rng=np.random.default_rng(seeds.spawn(1)[0]))
-        session.local_batch(Q0, stop_after=1 if n_solutions == 1 else None)
-    problem = _search_problem(robot, target, opts.orientation)
+    starts_rng = np.random.default_rng(seeds)  # the first stage's starts; later stages spawn
+    if polish and (q_current is not None or opts.starts):
+        if q_current is not None:  # the user's hint: never abandoned for slow progress
+            session.local_starts(q_current[None], patient=True)
+        first = min(opts.starts, FIRST_STARTS)  # most poses need one or two starts: draw
+        Q0 = robot.random_q(first, rng=starts_rng)  # the rest only when they are needed
+        if len(session.found) < n_solutions and first:
+            session.local_starts(Q0)
+        if len(session.found) < n_solutions and opts.starts > first:
+            session.local_starts(robot.random_q(opts.starts - first, rng=starts_rng))
+    elif q_current is not None:
+        session.consider(np.clip(q_current, robot.lower, robot.upper)[None])
+    if not session.found and reach_excess(robot, target) > 0:  # proven: no search can help
+        return _out_of_reach(session, opts, starts_rng, q_current, t0)
+    problem = None if len(session.found) >= n_solutions else _search_problem(
+        robot, target, opts.orientation)
     idle_rounds = 0
     while (len(session.found) < n_solutions and session.n_eval < opts.max_evals
            and idle_rounds < opts.patience):
@@ -167,7 +196,32 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     front = front_q = None
     if not session.found and target.rotation is not None:
         front, front_q = _front(session, opts, seeds)
+        if polish and not session.found:
+            front, front_q, n = polished_front(robot, target, opts.orientation,
+                                               robot.random_q(FRONT_STARTS, rng=starts_rng),
+                                               front_q)
+            session.n_eval += n
     return _result(session, q_current, t0, searched_out, front, front_q)
+
+
+def _out_of_reach(session: SolveSession, opts: SearchOptions, rng: np.random.Generator,
+                  q_current, t0: float) -> IKResult:
+    """The verdict for a target beyond the provable reach bound, with its polished front
+    (a pose) or the position-only optimum (a position target)."""
+    robot, target = session.robot, session.target
+    starts = robot.random_q(FRONT_STARTS, rng=rng)
+    if q_current is not None:
+        starts = np.vstack([q_current, starts])
+    front = front_q = None
+    if target.rotation is not None and opts.polish:
+        front, front_q, n = polished_front(robot, target, opts.orientation, starts)
+        session.n_eval += n
+    elif opts.polish:
+        out = multistart(robot, Target(target.position), starts, stop_position=-1.0,
+                         stop_orientation=-1.0, max_iter=FINAL_NFEV)
+        session.n_eval += out.n_eval
+        session.consider(out.best_q[None])
+    return _result(session, q_current, t0, True, front, front_q, proven=True)
 
 
 def _search_round(session: SolveSession, problem, opts: SearchOptions, run_seed: int) -> None:
@@ -214,23 +268,30 @@ def _front(session: SolveSession, opts: SearchOptions, seeds) -> tuple[np.ndarra
     return front, front_q
 
 
-def _result(session: SolveSession, q_current, t0: float, searched_out: bool, front, front_q
-            ) -> IKResult:
+def _result(session: SolveSession, q_current, t0: float, searched_out: bool, front, front_q,
+            proven: bool = False) -> IKResult:
     robot, target = session.robot, session.target
+    errors = None
     if session.found:
         sols = np.array(session.found)
-        if q_current is not None:
+        if q_current is not None:  # 2 pi copies nearest to the current configuration first
+            sols = nearest_copies(robot, sols, q_current)
             sols = sols[np.argsort(np.linalg.norm(sols - q_current, axis=1), kind="stable")]
+        else:
+            errors = session.found_errors[0]
         q, status, front, front_q = sols[0], "solved", None, None
     else:
         sols = np.empty((0, robot.dof))
         tol = session.tol_pos / robot.reach + session.tol_ori
         far = session.best[0] > UNREACHABLE_FACTOR * tol
-        status = "unreachable" if searched_out and far else "not-converged"
+        status = "unreachable" if proven or (searched_out and far) else "not-converged"
         q = session.best[1]
         if status == "unreachable" and front is not None:
             q = np.clip(front_q[closest_to_utopia(front)], robot.lower, robot.upper)
-    pos, ori = (float(v[0]) for v in pose_errors(robot, target, q))
+    if errors is None:  # unsolved: the independent reference FK has the last word
+        errors = tuple(float(v[0]) for v in pose_errors(robot, target, q,
+                                                         reference=status != "solved"))
+    pos, ori = errors
     return IKResult(q=q, position_error=pos, orientation_error=ori, success=status == "solved",
                     status=status, n_eval=session.n_eval, time=time.perf_counter() - t0,
                     solutions=sols, front=front, front_q=front_q)

@@ -1,8 +1,9 @@
 """moik: multi-objective inverse kinematics of robot arms with metaheuristics, on pymoo.
 
 Public API: :func:`get_robot` (the papers' arms), :func:`load_urdf`,
-:func:`solve_ik` and :func:`solve_path` (the practical solver), the IK problems
-in :mod:`moik.problems` and the algorithms in :mod:`moik.algorithms`.
+:func:`solve_ik`, :func:`solve_ik_batch` and :func:`solve_path` (the practical
+solver), the IK problems in :mod:`moik.problems` and the algorithms in
+:mod:`moik.algorithms`.
 """
 
 from moik import algorithms, problems
@@ -10,9 +11,10 @@ from moik._version import __version__
 from moik.exceptions import MoikError
 from moik.robots import Robot, available_robots, get_robot
 from moik.robots.urdf import load_urdf
-from moik.solver import IKResult, PathResult, solve_ik, solve_path
+from moik.solver import IKBatchResult, IKResult, PathResult, solve_ik, solve_ik_batch, solve_path
 
 __all__ = [
+    "IKBatchResult",
     "IKResult",
     "MoikError",
     "PathResult",
@@ -24,5 +26,6 @@ __all__ = [
     "load_urdf",
     "problems",
     "solve_ik",
+    "solve_ik_batch",
     "solve_path",
 ]

@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from moik.exceptions import UnknownNameError
+from moik.exceptions import ParameterError, UnknownNameError
 from moik.robots.chain import Robot
 from moik.robots.urdf import load_urdf
 
@@ -277,6 +277,21 @@ _CATALOG: dict[str, Callable[[], Robot]] = {
 def available_robots() -> list[str]:
     """Names accepted by :func:`get_robot`."""
     return list(_CATALOG)
+
+
+def as_robot(robot) -> Robot:
+    """``robot`` itself if it is a :class:`Robot`, the catalog robot if it is a name.
+
+    Raises:
+        UnknownNameError: An unknown name (lists the valid ones).
+        ParameterError: Anything else.
+    """
+    if isinstance(robot, Robot):
+        return robot
+    if isinstance(robot, str):
+        return get_robot(robot)
+    raise ParameterError(f"robot must be a moik Robot or a catalog robot name, got "
+                         f"{type(robot).__name__}")
 
 
 def get_robot(name: str) -> Robot:

@@ -232,21 +232,21 @@ def wrapped_distance(a, b, types):
 
 @jit
 def lm_multistart(F, types, lo, hi, Q0, Rt, pt, has_rot, inv_len, stop_pos, stop_ori,
-                  max_iter, n_known, distinct, stall_ratio, out_Q, best_q):
+                  max_iter, n_known, distinct, stall_ratio, max_evals, out_Q, best_q):
     """LM from the rows of ``Q0`` in turn until ``out_Q`` is full of distinct solutions.
 
     ``out_Q[:n_known]`` holds solutions known before; new ones (farther than
     ``distinct`` from every other, modulo 2 pi) are appended until
     ``len(out_Q)`` are known. The lowest-cost end of any start goes to ``best_q``.
     Returns ``(n_found, n_eval, starts_used, best_cost)`` (``n_found`` includes
-    the known ones).
+    the known ones). No new start begins once ``max_evals`` FK evaluations are spent.
     """
     n, dof = Q0.shape
     want = out_Q.shape[0]
     n_found, n_eval, used, best_cost = n_known, 0, 0, np.inf
     q = np.empty(dof)
     for s in range(n):
-        if n_found >= want:
+        if n_found >= want or n_eval >= max_evals:
             break
         used += 1
         q[:] = Q0[s]
@@ -321,7 +321,7 @@ def _target_arrays(target: Target) -> tuple[np.ndarray, np.ndarray, bool]:
 def multistart(robot: Robot, target: Target, Q0: np.ndarray, *, stop_position: float,
                stop_orientation: float, want: int = 1, distinct: float = 0.1,
                known: np.ndarray | None = None, max_iter: int = 30,
-               patient: bool = False) -> MultiStartResult:
+               patient: bool = False, max_evals: int = 2**62) -> MultiStartResult:
     """Levenberg-Marquardt from the rows of ``Q0`` until ``want`` distinct solutions are known.
 
     Args:
@@ -336,6 +336,7 @@ def multistart(robot: Robot, target: Target, Q0: np.ndarray, *, stop_position: f
         max_iter: Iterations per start (see the module docstring for the extensions).
         patient: Never abandon a start for slow progress (for starts known to be
             near a solution, such as the current configuration).
+        max_evals: No new start begins once this many FK evaluations are spent.
     """
     chain = robot.kinematic_chain
     Rt, pt, has_rot = _target_arrays(target)
@@ -347,7 +348,7 @@ def multistart(robot: Robot, target: Target, Q0: np.ndarray, *, stop_position: f
     n_found, n_eval, used, best_cost = lm_multistart(
         chain.origins, chain.joint_types, robot.lower, robot.upper, kernel_array(Q0), Rt, pt,
         has_rot, 1.0 / robot.reach, stop_position, stop_orientation, max_iter, n_known,
-        distinct, 1.0 if patient else STALL_RATIO, out, best)
+        distinct, 1.0 if patient else STALL_RATIO, max_evals, out, best)
     return MultiStartResult(out[:n_found], best, float(best_cost), int(n_eval), int(used))
 
 

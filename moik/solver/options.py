@@ -13,12 +13,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from moik._validate import choice, flag, integer, optional_integer, positive
+from moik._validate import choice, flag, integer, keywords, optional_integer, positive
 from moik._validate import seed as check_seed
 from moik.algorithms import get_algorithm
 from moik.algorithms.registry import is_multi_objective
 from moik.exceptions import ParameterError
 from moik.kinematics.orientation import available_metrics
+
+# solve_ik's search options and their defaults (solve_ik's signature repeats them; a test
+# keeps the two equal)
+SEARCH_DEFAULTS = {"method": "eosma", "orientation": "geodesic", "polish": True,
+                   "n_solutions": 1, "max_evals": 50_000, "starts": 100, "pop_size": None,
+                   "generations": 15, "candidates_per_round": 3, "distinct": 0.1,
+                   "patience": 30, "front_method": "moeosma", "front_evals": 10_000}
 
 # (name, smallest value) of the integer options
 _COUNTS = (("n_solutions", 1), ("max_evals", 1), ("starts", 0), ("generations", 1),
@@ -81,6 +88,16 @@ def _check_algorithms(method: str, front_method: str, pop_size: int) -> None:
         raise ParameterError(f"front_method must be a multi-objective algorithm, got "
                              f"{front_method!r}")
     get_algorithm(method, pop_size=pop_size)
+
+
+def search_options(owner: str, options: dict) -> SearchOptions:
+    """:class:`SearchOptions` from keyword ``options`` over :data:`SEARCH_DEFAULTS`.
+
+    Raises:
+        ParameterError: An unknown keyword (listing the accepted ones) or a bad value.
+    """
+    keywords(owner, options, SEARCH_DEFAULTS)
+    return SearchOptions(**{**SEARCH_DEFAULTS, **options})
 
 
 def seed_sequence(seed) -> np.random.SeedSequence:

@@ -11,16 +11,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from moik._jit import kernel_array
+from moik._jit import jit, kernel_array
 from moik._validate import positive
 from moik.exceptions import ParameterError
-from moik.kinematics.orientation import GEODESIC, rotation_errors
+from moik.kinematics.orientation import GEODESIC, rotation_error
 from moik.problems.targets import Target
 from moik.robots.chain import Robot, fk_reference
 from moik.solver.lm import multistart
 from moik.solver.polish import polish as polish_q
 
-_NO_ANGLES = np.zeros(3)  # the geodesic metric compares matrices, not angles
 LM_ITERATIONS = 30  # Levenberg-Marquardt iterations per start of the first attempt
 STOP_FRACTION = 0.1  # a start stops at this fraction of the tolerances (margin for the re-check)
 
@@ -70,8 +69,18 @@ def pose_errors(robot: Robot, target: Target, Q: np.ndarray, *, reference: bool 
     if target.rotation is None:
         return pos, np.zeros_like(pos)
     ori = np.empty(len(Q))
-    rotation_errors(GEODESIC, R, kernel_array(target.rotation), _NO_ANGLES, ori)
+    geodesic_errors(R, kernel_array(target.rotation[None]), ori)
     return pos, ori
+
+
+@jit
+def geodesic_errors(R, Rts, out):
+    """Geodesic angles between ``R[i]`` and ``Rts[i]`` (``Rts[0]`` for all if it has one row)."""
+    for i in range(R.shape[0]):
+        rot = (R[i, 0, 0], R[i, 0, 1], R[i, 0, 2], R[i, 1, 0], R[i, 1, 1], R[i, 1, 2],
+               R[i, 2, 0], R[i, 2, 1], R[i, 2, 2])
+        out[i] = rotation_error(GEODESIC, rot, Rts[0] if Rts.shape[0] == 1 else Rts[i],
+                                np.zeros(3))
 
 
 def joint_distance(robot: Robot, q: np.ndarray, others: np.ndarray) -> np.ndarray:
@@ -117,12 +126,15 @@ class SolveSession:
         tol_pos, tol_ori: Tolerances (robot unit, rad).
         distinct: Joint-space distance above which two solutions are distinct.
         wanted: Number of solutions asked for; no more are kept.
+        max_evals: FK evaluation budget (the first stage starts no start past it).
     """
 
-    def __init__(self, robot, target, tol_pos, tol_ori, distinct, wanted):
+    def __init__(self, robot, target, tol_pos, tol_ori, distinct, wanted,
+                 max_evals: int = 2**62):
         self.robot, self.target = robot, target
         self.tol_pos, self.tol_ori, self.distinct = tol_pos, tol_ori, distinct
         self.wanted = wanted  # solutions asked for: no more are kept
+        self.max_evals = max_evals  # FK budget: the first stage starts no start beyond it
         self.n_eval = 0
         self.found: list[np.ndarray] = []
         self.found_errors: list[tuple[float, float]] = []  # (position, orientation) of each
@@ -150,7 +162,8 @@ class SolveSession:
                          stop_orientation=STOP_FRACTION * self.tol_ori, want=self.wanted,
                          distinct=self.distinct,
                          known=np.array(self.found) if self.found else None,
-                         max_iter=LM_ITERATIONS, patient=patient)
+                         max_iter=LM_ITERATIONS, patient=patient,
+                         max_evals=max(self.max_evals - self.n_eval, 1))
         self.n_eval += out.n_eval
         n_before = len(self.found)
         new = out.solutions[n_before:]

@@ -38,9 +38,10 @@ from moik.exceptions import ShapeError
 from moik.metrics.compromise import closest_to_utopia
 from moik.problems.ik import BiObjectiveIK, PoseIK, PositionIK
 from moik.problems.targets import Target, as_target, check_unit_range
+from moik.robots.catalog import as_robot
 from moik.robots.chain import Robot
 from moik.solver.front import FRONT_STARTS, polished_front, reach_excess
-from moik.solver.lm import multistart
+from moik.solver.lm import front as lm_front
 from moik.solver.options import SearchOptions, seed_sequence
 from moik.solver.session import (
     SolveSession,
@@ -114,7 +115,7 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     """Solve IK for one target.
 
     Args:
-        robot: The arm.
+        robot: The arm (a Robot, or a catalog name such as ``"eosma7"``).
         target: 3-vector position, 4x4 pose, ``(position, rotation)`` or Target.
         method: Registered single-objective algorithm for the global search.
         orientation: Orientation metric of the search objective and of the
@@ -129,7 +130,10 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
             choice: the same seed gives the same result bit for bit.
         tol: Tolerance: a number ``t`` means position <= ``t * robot.reach`` and
             orientation <= ``t`` rad; or a pair (position in robot unit, rad).
-        max_evals: FK evaluation budget of search and polish.
+        max_evals: FK evaluation budget of the first stage, the search and the
+            polish (a started Levenberg-Marquardt run or search round is finished,
+            none begins past it); the front of an unsolved pose has its own,
+            ``front_evals``.
         starts: Random configurations (seeded) from which the compiled
             Levenberg-Marquardt first stage starts in turn, after ``q_current``,
             until enough solutions are found (0: go straight to the global search).
@@ -153,6 +157,7 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
         TargetError, ShapeError, NonFiniteError: A malformed target or ``q_current``.
     """
     t0 = time.perf_counter()
+    robot = as_robot(robot)
     target = as_target(target)
     check_unit_range(target, robot)
     tol_pos, tol_ori = tolerances(tol, robot)
@@ -167,7 +172,8 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
         raise ShapeError(f"q_current must be one joint vector ({robot.dof},), got "
                          f"{q_current.shape}")
     n_solutions, polish = opts.n_solutions, opts.polish
-    session = SolveSession(robot, target, tol_pos, tol_ori, opts.distinct, n_solutions)
+    session = SolveSession(robot, target, tol_pos, tol_ori, opts.distinct, n_solutions,
+                           opts.max_evals)
     starts_rng = np.random.default_rng(seeds)  # the first stage's starts; later stages spawn
     if polish and (q_current is not None or opts.starts):
         if q_current is not None:  # the user's hint: never abandoned for slow progress
@@ -191,7 +197,8 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
         _search_round(session, problem, opts, int(seeds.spawn(1)[0].generate_state(1)[0]))
         idle_rounds = 0 if len(session.found) > n_found else idle_rounds + 1
     searched_out = idle_rounds >= opts.patience  # ended for lack of progress, not for budget
-    if not session.found and polish:  # a near miss may only need more iterations
+    if not session.found and polish and session.n_eval < opts.max_evals:  # a near miss may
+        # only need more iterations
         session.refine(session.best[1], polish, max_nfev=FINAL_NFEV)
     front = front_q = None
     if not session.found and target.rotation is not None:
@@ -216,11 +223,10 @@ def _out_of_reach(session: SolveSession, opts: SearchOptions, rng: np.random.Gen
     if target.rotation is not None and opts.polish:
         front, front_q, n = polished_front(robot, target, opts.orientation, starts)
         session.n_eval += n
-    elif opts.polish:
-        out = multistart(robot, Target(target.position), starts, stop_position=-1.0,
-                         stop_orientation=-1.0, max_iter=FINAL_NFEV)
-        session.n_eval += out.n_eval
-        session.consider(out.best_q[None])
+    elif opts.polish:  # the position-only scalarisation (w = 1; the rotation is ignored)
+        Q, n = lm_front(robot, Target(target.position, np.eye(3)), starts, np.ones(1))
+        session.n_eval += n
+        session.consider(Q)
     return _result(session, q_current, t0, True, front, front_q, proven=True)
 
 

@@ -26,9 +26,9 @@ def test_reachable_poses_are_solved_exactly(name):
 
 
 def test_local_first_attempt_solves_most_reachable_poses():
-    """The batched Levenberg-Marquardt attempt (16 starts, <= 30 iterations:
-    at most 16 * 31 FK evaluations) ends most solves before any global search;
-    with starts=0 the global search alone still solves them."""
+    """The compiled Levenberg-Marquardt first stage ends most solves within
+    16 * 31 FK evaluations, before any global search; with starts=0 the global
+    search alone still solves them."""
     robot = get_robot("eosma7")
     targets = random_reachable_targets(robot, 20, seed=4)
     local = [solve_ik(robot, t, seed=i) for i, t in enumerate(targets)]
@@ -167,3 +167,82 @@ def test_orientation_metric_names_are_case_insensitive():
     a = solve_ik(robot, target, seed=0, starts=0, orientation="Geodesic")
     b = solve_ik(robot, target, seed=0, starts=0)
     np.testing.assert_array_equal(a.q, b.q)
+
+
+def test_solve_ik_defaults_are_the_search_defaults():
+    """solve_ik's signature and solve_ik_batch's defaults (SEARCH_DEFAULTS) agree."""
+    import inspect
+
+    from moik.solver.options import SEARCH_DEFAULTS
+    params = inspect.signature(solve_ik).parameters
+    assert {k: params[k].default for k in SEARCH_DEFAULTS} == SEARCH_DEFAULTS
+
+
+def test_q_current_gets_the_nearest_2pi_copy():
+    """UR5 joints span +-2 pi: a solution and its copy shifted by 2 pi are the same
+    configuration; the one nearest to q_current is returned."""
+    robot = get_robot("ur5")
+    target = random_reachable_targets(robot, 1, seed=3)[0]
+    q = solve_ik(robot, target.pose, seed=0).q
+    shift = np.where(q < 0, 2 * np.pi, -2 * np.pi)
+    shift[2] = 0.0  # the elbow spans +-pi only
+    current = q + shift + 0.01
+    assert robot.within_limits(current)[0]
+    res = solve_ik(robot, target.pose, seed=0, q_current=current)
+    assert res.success and robot.within_limits(res.q)[0]
+    assert np.abs(res.q - current).max() < 0.5  # not 2 pi away on any joint
+    for sol in res.solutions:  # every solution is its nearest copy
+        assert np.all(np.abs(sol - current) <= np.pi + 1e-9)
+
+
+def test_out_of_reach_is_proven_and_fast():
+    """Beyond the provable reach bound: 'unreachable' without any search, with a
+    polished front whose position-only end is at least the excess away."""
+    robot = get_robot("iiwa14")
+    pose = np.eye(4)
+    pose[:3, 3] = [0.0, 1.2 * robot.reach, 0.3]
+    res = solve_ik(robot, pose, seed=0)
+    assert res.status == "unreachable" and res.front is not None and len(res.front) >= 2
+    excess = np.linalg.norm(pose[:3, 3]) - robot.reach
+    assert res.front[:, 0].min() >= excess
+    assert res.n_eval < 50_000 / 2  # a fraction of the search budget: no search ran
+    assert np.all(np.diff(res.front[:, 0]) > 0) and np.all(np.diff(res.front[:, 1]) < 0)
+    position_only = solve_ik(robot, pose[:3, 3], seed=0)
+    assert position_only.status == "unreachable" and position_only.front is None
+    assert position_only.position_error == pytest.approx(res.front[0, 0], rel=1e-6)
+
+
+def test_unreachable_compromise_is_not_dominated_by_plain_least_squares():
+    """A 4-DOF SCARA cannot reach most full poses: the returned compromise lies on a
+    polished front that no bounded least-squares answer (16 starts) dominates."""
+    from scipy.optimize import least_squares
+    from scipy.spatial.transform import Rotation
+
+    from moik.solver.session import pose_errors
+
+    robot = get_robot("scara4")
+    rng = np.random.default_rng(0)
+    for k in range(2):
+        q = robot.random_q(1, rng=rng)[0]
+        target = Target(robot.fk(q)[:3, 3], Rotation.random(random_state=k).as_matrix())
+        res = solve_ik(robot, target, seed=k)
+        assert res.status == "unreachable"
+
+        def residual(x, target=target):
+            T = robot.fk(x)
+            return np.concatenate([(T[:3, 3] - target.position) / robot.reach,
+                                   Rotation.from_matrix(T[:3, :3] @ target.rotation.T).as_rotvec()])
+        for q0 in robot.random_q(16, rng=rng):
+            x = least_squares(residual, q0, bounds=(robot.lower, robot.upper)).x
+            pos, ori = (v[0] for v in pose_errors(robot, target, x, reference=True))
+            assert not (pos < res.position_error - 1e-12 and ori < res.orientation_error - 1e-12)
+
+
+def test_max_evals_is_honoured_by_the_first_stage():
+    robot = get_robot("puma560")
+    target = random_reachable_targets(robot, 1, seed=5, with_orientation=False)[0]
+    res = solve_ik(robot, target.position * 0.9 + 0.05, seed=0, max_evals=1, patience=1)
+    assert res.n_eval <= 400  # one Levenberg-Marquardt start at most, then no search round
+    assert res.status in ("solved", "not-converged")  # cut short by the budget: no verdict
+    full = solve_ik(robot, target.position * 0.9 + 0.05, seed=0)
+    assert full.n_eval >= res.n_eval

@@ -1,0 +1,194 @@
+"""``solve_ik_batch``: many targets in one call, each answered as ``solve_ik`` would.
+
+Target ``i`` is solved with its own seed, ``SeedSequence(seed).spawn(n)[i]``
+(``SeedSequence(entropy, spawn_key=(i,))``), so its answer depends on ``seed``
+and ``i`` only, never on the other targets of the batch: ``solve_ik_batch(robot,
+T, seed=s).q[i]`` equals ``solve_ik(robot, T[i], seed=child_i).q`` bit for bit
+(tested). The first stage of every target runs in one compiled loop
+(:func:`lm_batch`: the same Levenberg-Marquardt starts ``solve_ik`` makes, in the
+same order); a target it leaves unsolved goes through the whole of
+:func:`~moik.solver.solve_ik.solve_ik` (search fallback, front, verdict).
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from moik._jit import jit, kernel_array
+from moik._validate import finite_array
+from moik.exceptions import ParameterError, ShapeError, TargetError
+from moik.kinematics.orientation import check_rotation
+from moik.problems.targets import Target
+from moik.robots.catalog import as_robot
+from moik.solver.lm import STALL_RATIO, lm_multistart
+from moik.solver.options import search_options, seed_sequence
+from moik.solver.session import (
+    LM_ITERATIONS,
+    STOP_FRACTION,
+    geodesic_errors,
+    nearest_copies,
+    tolerances,
+)
+from moik.solver.solve_ik import solve_ik
+
+
+@dataclass(frozen=True)
+class IKBatchResult:
+    """Outcome of :func:`solve_ik_batch` (one row per target).
+
+    Attributes:
+        q: ``(n, dof)`` joint vectors within the limits (the solution, or the best
+            candidate / compromise of an unsolved target).
+        status: ``(n,)`` ``"solved"``, ``"unreachable"`` or ``"not-converged"``.
+        position_error: ``(n,)`` recomputed by FK (robot unit).
+        orientation_error: ``(n,)`` geodesic angle (rad), 0 for position targets.
+        success: ``(n,)`` whether each target was solved.
+        n_eval: ``(n,)`` FK evaluations spent on each target.
+        time: Wall time of the whole call (s).
+    """
+
+    q: np.ndarray
+    status: np.ndarray
+    position_error: np.ndarray
+    orientation_error: np.ndarray
+    success: np.ndarray
+    n_eval: np.ndarray
+    time: float
+
+
+def child_seeds(seed, n: int) -> list[np.random.SeedSequence]:
+    """The per-target seeds: ``SeedSequence(seed).spawn(n)`` (without spawning from ``seed``)."""
+    root = seed_sequence(seed)
+    return [np.random.SeedSequence(root.entropy, spawn_key=(*root.spawn_key, i),
+                                   pool_size=root.pool_size) for i in range(n)]
+
+
+def _targets(targets) -> tuple[np.ndarray, np.ndarray | None]:
+    """Positions ``(n, 3)`` and rotations ``(n, 3, 3)`` (or ``None``) of a batch."""
+    arr = finite_array("targets", targets, error=ShapeError)
+    if arr.ndim == 3 and arr.shape[1:] == (4, 4):
+        if not np.all(np.abs(arr[:, 3] - (0.0, 0.0, 0.0, 1.0)) <= 1e-8):
+            bad = int(np.flatnonzero(np.any(np.abs(arr[:, 3] - (0, 0, 0, 1)) > 1e-8, 1))[0])
+            raise TargetError(f"targets[{bad}]: pose last row must be [0, 0, 0, 1], got "
+                              f"{arr[bad, 3]}")
+        positions, rotations = arr[:, :3, 3].copy(), check_rotation(
+            np.ascontiguousarray(arr[:, :3, :3]), "target rotations", batch=True)
+    elif arr.ndim == 2 and arr.shape[1] == 3:
+        positions, rotations = arr, None
+    else:
+        raise ShapeError(f"targets must have shape (n, 4, 4) (poses) or (n, 3) (positions), "
+                         f"got {arr.shape}")
+    if len(positions) == 0:
+        raise ShapeError("targets is an empty batch: give at least one target")
+    return positions, rotations
+
+
+@jit
+def lm_batch(F, types, lo, hi, Q0, Rts, pts, has_rot, inv_len, stop_pos, stop_ori, max_iter,
+             q_current, use_current, max_evals, distinct, out_Q, solved, n_evals):
+    """The first stage of every target: ``q_current[i]`` (patient) then ``Q0[i]`` in turn."""
+    n, _, dof = Q0.shape
+    best = np.empty(dof)
+    one = np.empty((1, dof))
+    for i in range(n):
+        n_evals[i] = 0
+        solved[i] = False
+        if use_current:
+            k, ne, _, _ = lm_multistart(F, types, lo, hi, q_current[i:i + 1], Rts[i], pts[i],
+                                        has_rot, inv_len, stop_pos, stop_ori, max_iter, 0,
+                                        distinct, 1.0, max_evals, one, best)
+            n_evals[i] += ne
+            solved[i] = k > 0
+        if not solved[i]:
+            k, ne, _, _ = lm_multistart(F, types, lo, hi, Q0[i], Rts[i], pts[i], has_rot,
+                                        inv_len, stop_pos, stop_ori, max_iter, 0, distinct,
+                                        STALL_RATIO, max(max_evals - n_evals[i], 1), one, best)
+            n_evals[i] += ne
+            solved[i] = k > 0
+        out_Q[i] = one[0] if solved[i] else best
+
+
+def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, **options
+                   ) -> IKBatchResult:
+    """Solve IK for a batch of targets; each answer independent of the others.
+
+    Args:
+        robot: The arm (a Robot or a catalog name).
+        targets: Poses ``(n, 4, 4)`` or positions ``(n, 3)`` in the robot's unit.
+        seed: Root seed; target ``i`` uses ``child_seeds(seed, n)[i]``.
+        q_current: ``None``, one joint vector ``(dof,)`` for every target, or ``(n, dof)``.
+        tol: As in :func:`~moik.solver.solve_ik.solve_ik`.
+        **options: Any other keyword of ``solve_ik`` except ``n_solutions``.
+
+    Raises:
+        ShapeError, NonFiniteError, TargetError: Malformed targets (empty batch,
+            wrong shape, NaN, non-rotations) or ``q_current``.
+        ParameterError, UnknownNameError: As ``solve_ik`` for its options.
+    """
+    t0 = time.perf_counter()
+    robot = as_robot(robot)
+    if "n_solutions" in options:
+        raise ParameterError("solve_ik_batch returns one joint vector per target: n_solutions "
+                             "is not an option here (call solve_ik per target for branches)")
+    opts = search_options("solve_ik_batch", options)
+    tol_pos, tol_ori = tolerances(tol, robot)
+    positions, rotations = _targets(targets)
+    n = len(positions)
+    qc = None
+    if q_current is not None:
+        qc = robot.check_q(q_current, "q_current")
+        if qc.ndim == 1:
+            qc = np.tile(qc, (n, 1))
+        elif qc.shape[0] != n:
+            raise ShapeError(f"q_current must be ({robot.dof},) or ({n}, {robot.dof}), got "
+                             f"{qc.shape}")
+    seeds = child_seeds(seed, n)
+    out_Q, solved = np.empty((n, robot.dof)), np.zeros(n, dtype=np.bool_)
+    n_evals = np.zeros(n, dtype=np.int64)
+    if opts.polish and (qc is not None or opts.starts):
+        Q0 = np.stack([robot.random_q(opts.starts, rng=np.random.default_rng(s))
+                       for s in seeds])
+        chain = robot.kinematic_chain
+        Rts = np.tile(np.eye(3), (n, 1, 1)) if rotations is None else rotations
+        lm_batch(chain.origins, chain.joint_types, robot.lower, robot.upper, kernel_array(Q0),
+                 kernel_array(Rts), kernel_array(positions), rotations is not None,
+                 1.0 / robot.reach, STOP_FRACTION * tol_pos, STOP_FRACTION * tol_ori,
+                 LM_ITERATIONS, kernel_array(qc if qc is not None else np.zeros((n, robot.dof))),
+                 qc is not None, opts.max_evals, opts.distinct, out_Q, solved, n_evals)
+    if qc is not None:
+        out_Q[solved] = nearest_copies(robot, out_Q[solved], qc[solved])
+    status = np.full(n, "not-converged", dtype=object)
+    pos, ori = np.zeros(n), np.zeros(n)
+    targets_i = [Target(positions[i], None if rotations is None else rotations[i])
+                 for i in range(n)]
+    if solved.any():  # the honest re-check, as solve_ik does it
+        k = np.flatnonzero(solved)
+        p_k, o_k = _errors(robot, positions[k], None if rotations is None else rotations[k],
+                           out_Q[k])
+        ok = (p_k <= tol_pos) & (o_k <= tol_ori)
+        pos[k], ori[k], solved[k] = p_k, o_k, ok
+        status[k[ok]] = "solved"
+    for i in np.flatnonzero(~solved):  # the hard tail: the whole of solve_ik
+        res = solve_ik(robot, targets_i[i], seed=seeds[i], tol=tol,
+                       q_current=None if qc is None else qc[i], **options)
+        out_Q[i], status[i], pos[i], ori[i] = res.q, res.status, res.position_error, \
+            res.orientation_error
+        n_evals[i], solved[i] = res.n_eval, res.success
+    return IKBatchResult(q=out_Q, status=status.astype(str), position_error=pos,
+                         orientation_error=ori, success=solved, n_eval=n_evals,
+                         time=time.perf_counter() - t0)
+
+
+def _errors(robot, positions: np.ndarray, rotations: np.ndarray | None, Q: np.ndarray
+            ) -> tuple[np.ndarray, np.ndarray]:
+    """Per-row :func:`~moik.solver.session.pose_errors` (each target its own)."""
+    R, p = robot.fk_parts(Q)
+    pos = np.linalg.norm(p - positions, axis=1)
+    if rotations is None:
+        return pos, np.zeros(len(Q))
+    ori = np.empty(len(Q))
+    geodesic_errors(R, kernel_array(rotations), ori)
+    return pos, ori

@@ -1,0 +1,79 @@
+"""solve_ik_batch: one call, each target answered as solve_ik would, independent of the batch."""
+
+import numpy as np
+import pytest
+
+from moik import solve_ik, solve_ik_batch
+from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetError
+from moik.problems import random_reachable_targets
+from moik.robots import get_robot
+from moik.solver.batch import child_seeds
+
+
+@pytest.mark.parametrize("name", ["eosma7", "ur5", "scara4"])
+def test_batch_equals_one_by_one(name):
+    robot = get_robot(name)
+    poses = np.array([t.pose for t in random_reachable_targets(robot, 12, seed=4)])
+    res = solve_ik_batch(robot, poses, seed=3)
+    seeds = child_seeds(3, len(poses))
+    for i, pose in enumerate(poses):
+        one = solve_ik(robot, pose, seed=seeds[i])
+        np.testing.assert_array_equal(res.q[i], one.q)
+        assert res.status[i] == one.status and res.n_eval[i] == one.n_eval
+        assert res.position_error[i] == one.position_error
+        assert res.orientation_error[i] == one.orientation_error
+    assert res.success.all() and res.q.shape == (12, robot.dof)
+
+
+def test_a_targets_answer_does_not_depend_on_the_others():
+    robot = get_robot("puma560")
+    poses = np.array([t.pose for t in random_reachable_targets(robot, 10, seed=8)])
+    full = solve_ik_batch(robot, poses, seed=1)
+    other = poses.copy()
+    other[1:] = np.array([t.pose for t in random_reachable_targets(robot, 9, seed=9)])
+    mixed = solve_ik_batch(robot, other, seed=1)
+    np.testing.assert_array_equal(full.q[0], mixed.q[0])  # same index, same seed, same target
+
+
+def test_positions_q_current_and_the_hard_tail():
+    robot = get_robot("eosma7")
+    targets = random_reachable_targets(robot, 4, seed=2, with_orientation=False)
+    positions = np.array([t.position for t in targets])
+    far = np.array([[3.0 * robot.reach, 0.0, 0.0]])  # out of reach: solve_ik's verdict path
+    q_current = robot.random_q(1, rng=np.random.default_rng(0))[0]
+    res = solve_ik_batch(robot, np.vstack([positions, far]), seed=0, q_current=q_current)
+    assert list(res.status) == ["solved"] * 4 + ["unreachable"]
+    assert res.position_error[-1] >= 2.0 * robot.reach - 1e-9
+    seeds = child_seeds(0, 5)
+    for i in range(5):
+        one = solve_ik(robot, np.vstack([positions, far])[i], seed=seeds[i], q_current=q_current)
+        np.testing.assert_array_equal(res.q[i], one.q)
+    assert np.all(robot.within_limits(res.q))
+
+
+@pytest.mark.parametrize(("targets", "error", "match"), [
+    (np.zeros((0, 4, 4)), ShapeError, "empty batch"),
+    (np.zeros((3, 4)), ShapeError, r"\(n, 4, 4\) \(poses\) or \(n, 3\)"),
+    (np.array([[0.0, np.nan, 1.0]]), NonFiniteError, "finite"),
+    (np.ones((2, 4, 4)), TargetError, "last row"),
+    ([["a", "b", "c"]], ShapeError, "array of real numbers"),
+])
+def test_bad_batches_raise_clear_errors(targets, error, match):
+    with pytest.raises(error, match=match):
+        solve_ik_batch(get_robot("eosma7"), targets)
+
+
+def test_bad_options_and_q_current():
+    robot = get_robot("eosma7")
+    poses = np.array([t.pose for t in random_reachable_targets(robot, 2, seed=1)])
+    with pytest.raises(ParameterError, match="n_solutions"):
+        solve_ik_batch(robot, poses, n_solutions=2)
+    with pytest.raises(ParameterError, match=r"unknown parameter\(s\) pop_sise"):
+        solve_ik_batch(robot, poses, pop_sise=3)
+    with pytest.raises(ShapeError, match="q_current must be"):
+        solve_ik_batch(robot, poses, q_current=np.zeros((3, 7)))
+    rot = poses.copy()
+    rot[0, :3, :3] *= 2.0
+    with pytest.raises(TargetError, match="rotation"):
+        solve_ik_batch(robot, rot)
+    assert solve_ik_batch("eosma7", poses[:1]).success[0]  # a catalog name is accepted

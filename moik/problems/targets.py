@@ -26,7 +26,7 @@ EULER_CONVENTIONS = {"zyx-euler": rotation_from_zyx, "eosma-euler": rotation_fro
 UNIT_RANGE_FACTOR = 10.0
 
 
-_LAST_ROW = np.array([0.0, 0.0, 0.0, 1.0])
+_LAST_ROW = (0.0, 0.0, 0.0, 1.0)
 
 
 @dataclass(frozen=True, eq=False)
@@ -74,7 +74,9 @@ class Target:
         T = np.asarray(T, dtype=float)
         if T.shape != (4, 4):
             raise ShapeError(f"pose must have shape (4, 4), got {T.shape}")
-        if not np.all(np.abs(T[3] - _LAST_ROW) <= 1e-8 + 1e-5 * np.abs(_LAST_ROW)):
+        last = T[3].tolist()  # numpy.allclose's rule on plain floats (a hot path)
+        if not all(abs(a - b) <= 1e-8 + 1e-5 * abs(b) for a, b in zip(last, _LAST_ROW,
+                                                                        strict=True)):
             raise TargetError(f"pose last row must be [0, 0, 0, 1], got {T[3]}")
         return cls(T[:3, 3], T[:3, :3])
 

@@ -283,7 +283,9 @@ class Robot:
 
     def random_q(self, n: int, *, rng: np.random.Generator) -> np.ndarray:
         """Uniform joint vectors within the limits, shape ``(n, dof)``."""
-        return rng.uniform(self.lower, self.upper, size=(n, self.dof))
+        # lower + (upper - lower) * U[0, 1): Generator.uniform's own formula, bit for bit,
+        # without its broadcasting overhead (this is on solve_ik's hot path)
+        return self.lower + (self.upper - self.lower) * rng.random((n, self.dof))
 
     def within_limits(self, q, tol: float = 0.0) -> np.ndarray:
         """Boolean per row: all joints within ``[lower - tol, upper + tol]``."""

@@ -90,6 +90,21 @@ def _check_algorithms(method: str, front_method: str, pop_size: int) -> None:
     get_algorithm(method, pop_size=pop_size)
 
 
+def validated_options(**values) -> SearchOptions:
+    """:class:`SearchOptions` of ``values``, cached (solve_ik's hot path validates the same
+    options over and over). The key holds each value's type: ``True`` and ``1`` (or ``2.0``
+    and ``2``) are equal and hash alike, but must not share a validation."""
+    try:
+        return _cached_options(tuple((k, type(v), v) for k, v in values.items()))
+    except TypeError:  # an unhashable value: validate uncached (it raises)
+        return SearchOptions(**values)
+
+
+@functools.lru_cache(maxsize=256)
+def _cached_options(key: tuple) -> SearchOptions:
+    return SearchOptions(**{k: v for k, _, v in key})
+
+
 def search_options(owner: str, options: dict) -> SearchOptions:
     """:class:`SearchOptions` from keyword ``options`` over :data:`SEARCH_DEFAULTS`.
 
@@ -97,7 +112,7 @@ def search_options(owner: str, options: dict) -> SearchOptions:
         ParameterError: An unknown keyword (listing the accepted ones) or a bad value.
     """
     keywords(owner, options, SEARCH_DEFAULTS)
-    return SearchOptions(**{**SEARCH_DEFAULTS, **options})
+    return validated_options(**{**SEARCH_DEFAULTS, **options})
 
 
 def seed_sequence(seed) -> np.random.SeedSequence:

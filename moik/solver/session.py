@@ -65,7 +65,8 @@ def pose_errors(robot: Robot, target: Target, Q: np.ndarray, *, reference: bool 
         R, p = np.ascontiguousarray(T[:, :3, :3]), T[:, :3, 3]
     else:
         R, p = robot.fk_parts(Q)
-    pos = np.linalg.norm(p - target.position, axis=1)
+    d = p - target.position
+    pos = np.sqrt(np.einsum("ij,ij->i", d, d))
     if target.rotation is None:
         return pos, np.zeros_like(pos)
     ori = np.empty(len(Q))

@@ -42,7 +42,7 @@ from moik.robots.catalog import as_robot
 from moik.robots.chain import Robot
 from moik.solver.front import FRONT_STARTS, polished_front, reach_excess
 from moik.solver.lm import front as lm_front
-from moik.solver.options import SearchOptions, seed_sequence
+from moik.solver.options import SearchOptions, seed_sequence, validated_options
 from moik.solver.session import (
     SolveSession,
     is_distinct,
@@ -161,7 +161,7 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     target = as_target(target)
     check_unit_range(target, robot)
     tol_pos, tol_ori = tolerances(tol, robot)
-    opts = SearchOptions(method=method, orientation=orientation, polish=polish,
+    opts = validated_options(method=method, orientation=orientation, polish=polish,
                          n_solutions=n_solutions, max_evals=max_evals, starts=starts,
                          pop_size=pop_size, generations=generations,
                          candidates_per_round=candidates_per_round, distinct=distinct,
@@ -174,7 +174,7 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     n_solutions, polish = opts.n_solutions, opts.polish
     session = SolveSession(robot, target, tol_pos, tol_ori, opts.distinct, n_solutions,
                            opts.max_evals)
-    starts_rng = np.random.default_rng(seeds)  # the first stage's starts; later stages spawn
+    starts_rng = np.random.Generator(np.random.PCG64(seeds))  # first stage; later ones spawn
     if polish and (q_current is not None or opts.starts):
         if q_current is not None:  # the user's hint: never abandoned for slow progress
             session.local_starts(q_current[None], patient=True)

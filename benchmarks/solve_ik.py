@@ -18,12 +18,16 @@ shared: medians, same targets, same kinematics):
 ``ik_LM`` runs on an ETS built from moik's chain transforms, so both solve the
 same kinematics. roboticstoolbox-python is in the ``bench`` extra.
 
-Run: python benchmarks/solve_ik.py [--n 1000] [--robots eosma7,puma560,...]
+Run: python benchmarks/solve_ik.py [--n 1000] [--robots eosma7,puma560,...] [--out FILE]
+(``--out`` also writes the printed table to FILE, e.g. docs/results/solve_ik.txt, which
+docs/solver.md quotes).
 """
 
 from __future__ import annotations
 
 import argparse
+import builtins
+import platform
 import time
 
 import numpy as np
@@ -190,7 +194,19 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--n", type=int, default=1000, help="reachable poses per robot")
     parser.add_argument("--robots", default="eosma7,puma560,sawyer7,iiwa14,panda,ur5")
+    parser.add_argument("--out", help="also write the printed table to this file")
     args = parser.parse_args()
+    if args.out:
+        sink = open(args.out, "w")  # noqa: SIM115 (kept open for the whole run)
+        plain = builtins.print
+
+        def tee(*a, **k):
+            plain(*a, **k)
+            plain(*a, **{**k, "file": sink, "flush": True})
+        globals()["print"] = tee
+        print(f"# benchmarks/solve_ik.py --n {args.n} --robots {args.robots}; "
+              f"{time.strftime('%Y-%m-%d %H:%M')}, {platform.machine()}, "
+              f"{platform.python_version()}")
     try:
         import roboticstoolbox  # noqa: F401
         have_rtb = True

@@ -32,7 +32,7 @@ from moik.solver.session import (
     nearest_copies,
     tolerances,
 )
-from moik.solver.solve_ik import solve_ik
+from moik.solver.solve_ik import FIRST_STARTS, solve_ik
 
 
 @dataclass(frozen=True)
@@ -89,17 +89,17 @@ def _targets(targets) -> tuple[np.ndarray, np.ndarray | None]:
 @jit
 def lm_batch(F, types, lo, hi, Q0, Rts, pts, has_rot, inv_len, stop_pos, stop_ori, max_iter,
              q_current, use_current, max_evals, distinct, out_Q, solved, n_evals):
-    """The first stage of every target: ``q_current[i]`` (patient) then ``Q0[i]`` in turn."""
+    """The first stage of every target: ``q_current[i]`` (patient, if used) then the rows
+    of ``Q0[i]`` in turn, as ``solve_ik`` makes them; ``n_evals`` accumulates."""
     n, _, dof = Q0.shape
     best = np.empty(dof)
     one = np.empty((1, dof))
     for i in range(n):
-        n_evals[i] = 0
-        solved[i] = False
         if use_current:
             k, ne, _, _ = lm_multistart(F, types, lo, hi, q_current[i:i + 1], Rts[i], pts[i],
                                         has_rot, inv_len, stop_pos, stop_ori, max_iter, 0,
-                                        distinct, 1.0, max_evals, one, best)
+                                        distinct, 1.0, max(max_evals - n_evals[i], 1), one,
+                                        best)
             n_evals[i] += ne
             solved[i] = k > 0
         if not solved[i]:
@@ -108,7 +108,8 @@ def lm_batch(F, types, lo, hi, Q0, Rts, pts, has_rot, inv_len, stop_pos, stop_or
                                         STALL_RATIO, max(max_evals - n_evals[i], 1), one, best)
             n_evals[i] += ne
             solved[i] = k > 0
-        out_Q[i] = one[0] if solved[i] else best
+        if solved[i]:
+            out_Q[i] = one[0]
 
 
 def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, **options
@@ -149,15 +150,26 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, **option
     out_Q, solved = np.empty((n, robot.dof)), np.zeros(n, dtype=np.bool_)
     n_evals = np.zeros(n, dtype=np.int64)
     if opts.polish and (qc is not None or opts.starts):
-        Q0 = np.stack([robot.random_q(opts.starts, rng=np.random.default_rng(s))
-                       for s in seeds])
         chain = robot.kinematic_chain
-        Rts = np.tile(np.eye(3), (n, 1, 1)) if rotations is None else rotations
-        lm_batch(chain.origins, chain.joint_types, robot.lower, robot.upper, kernel_array(Q0),
-                 kernel_array(Rts), kernel_array(positions), rotations is not None,
-                 1.0 / robot.reach, STOP_FRACTION * tol_pos, STOP_FRACTION * tol_ori,
-                 LM_ITERATIONS, kernel_array(qc if qc is not None else np.zeros((n, robot.dof))),
+        args = (chain.origins, chain.joint_types, robot.lower, robot.upper)
+        Rts = kernel_array(np.tile(np.eye(3), (n, 1, 1)) if rotations is None else rotations)
+        pts = kernel_array(positions)
+        stops = (1.0 / robot.reach, STOP_FRACTION * tol_pos, STOP_FRACTION * tol_ori,
+                 LM_ITERATIONS)
+        current = kernel_array(qc if qc is not None else np.zeros((n, robot.dof)))
+        rngs = [np.random.Generator(np.random.PCG64(s)) for s in seeds]  # as solve_ik's
+        first = min(opts.starts, FIRST_STARTS)  # then the rest, for the unsolved only
+        Q0 = np.stack([robot.random_q(first, rng=g) for g in rngs])
+        lm_batch(*args, kernel_array(Q0), Rts, pts, rotations is not None, *stops, current,
                  qc is not None, opts.max_evals, opts.distinct, out_Q, solved, n_evals)
+        rest = np.flatnonzero(~solved)
+        if opts.starts > first and len(rest):
+            Q1 = np.stack([robot.random_q(opts.starts - first, rng=rngs[i]) for i in rest])
+            Q_r, ok_r, n_r = out_Q[rest], solved[rest], n_evals[rest]
+            lm_batch(*args, kernel_array(Q1), kernel_array(Rts[rest]), kernel_array(pts[rest]),
+                     rotations is not None, *stops, current[rest], False, opts.max_evals,
+                     opts.distinct, Q_r, ok_r, n_r)
+            out_Q[rest], solved[rest], n_evals[rest] = Q_r, ok_r, n_r
     if qc is not None:
         out_Q[solved] = nearest_copies(robot, out_Q[solved], qc[solved])
     status = np.full(n, "not-converged", dtype=object)

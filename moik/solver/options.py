@@ -23,7 +23,7 @@ from moik.kinematics.orientation import available_metrics
 # solve_ik's search options and their defaults (solve_ik's signature repeats them; a test
 # keeps the two equal)
 SEARCH_DEFAULTS = {"method": "eosma", "orientation": "geodesic", "polish": True,
-                   "n_solutions": 1, "max_evals": 50_000, "starts": 100, "pop_size": None,
+                   "n_solutions": 1, "max_evals": 50_000, "starts": 500, "pop_size": None,
                    "generations": 15, "candidates_per_round": 3, "distinct": 0.1,
                    "patience": 30, "front_method": "moeosma", "front_evals": 10_000}
 

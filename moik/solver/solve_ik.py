@@ -107,7 +107,7 @@ def _population(algorithm) -> tuple[np.ndarray, np.ndarray]:
 
 def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = "geodesic",
              polish: bool = True, n_solutions: int = 1, q_current=None, seed=0,
-             tol=1e-9, max_evals: int = 50_000, starts: int = 100, pop_size: int | None = None,
+             tol=1e-9, max_evals: int = 50_000, starts: int = 500, pop_size: int | None = None,
              generations: int = 15,
              candidates_per_round: int = 3, distinct: float = 0.1,
              patience: int = 30, front_method: str = "moeosma",

@@ -26,9 +26,10 @@ convention).
   length ``L`` of position error weighs like one radian), and its exact
   Jacobian from the geometric one ``[J_v; J_w]``: ``[J_v / L; J_l^{-1}(r_rot) J_w]``.
 
-The solver's Levenberg-Marquardt and least-squares polish both use these
-(:mod:`moik.solver.batch_lm`, :mod:`moik.solver.polish`); the geodesic
-orientation error is :func:`rotation_angle`.
+The solver's compiled Levenberg-Marquardt calls the compiled kernels
+(:func:`log_into`, :func:`inverse_left_jacobian_times`) and the least-squares
+polish the batched functions built on them (:mod:`moik.solver.lm`,
+:mod:`moik.solver.polish`); the geodesic orientation error is :func:`rotation_angle`.
 """
 
 from __future__ import annotations

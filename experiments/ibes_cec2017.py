@@ -1,6 +1,6 @@
 """I-BES paper, Tables 12-13: nine CEC2017 functions, six algorithms, rank-sum test.
 
-Zhang et al., Biomimetics 9, 627 (2024), Section 5.2: D=30, bounds [-100, 100],
+Zhao et al., Biomimetics 9, 627 (2024), Section 5.2: D=30, bounds [-100, 100],
 N=30, T=500, 30 independent runs, Table 1's parameters (PSO as the
 ``PSO.ibes()`` preset written as params, with N=30); best/mean/std (Table 12)
 and the Wilcoxon rank-sum test of I-BES vs each at alpha 5% (Table 13; the
@@ -48,7 +48,7 @@ _TABLE13 = {
 EXPERIMENT = {
     "name": "ibes-cec2017",
     "title": "I-BES: nine CEC2017 functions (D=30), six algorithms, 30 runs",
-    "source": "Zhang et al. 2024 (I-BES), Section 5.2, Tables 12-13 (Fig. 19)",
+    "source": "Zhao et al. 2024 (I-BES), Section 5.2, Tables 12-13 (Fig. 19)",
     "problem": {"kind": "benchmark", "names": [f"cec2017_F{i}" for i in _F],
                 "params": {"n_var": 30}},
     "requires": ["cec"],

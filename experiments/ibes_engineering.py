@@ -1,6 +1,6 @@
 """I-BES paper, Tables 14-17: the spring and pressure vessel design problems.
 
-Zhang et al., Biomimetics 9, 627 (2024), Section 5.3: N=30, T=500, 30 runs,
+Zhao et al., Biomimetics 9, 627 (2024), Section 5.3: N=30, T=500, 30 runs,
 Table 1's parameters. Constraints: every algorithm ranks by feasibility first
 (Deb's rules, :mod:`moik.problems.benchmarks.engineering`); a run whose best
 design violates a constraint counts as infeasible and is left out of the
@@ -29,7 +29,7 @@ def _rows(table):
 EXPERIMENT = {
     "name": "ibes-engineering",
     "title": "I-BES: tension/compression spring and pressure vessel design, 30 runs",
-    "source": "Zhang et al. 2024 (I-BES), Section 5.3, Tables 14-17",
+    "source": "Zhao et al. 2024 (I-BES), Section 5.3, Tables 14-17",
     "problem": {"kind": "benchmark", "names": ["spring", "pressure_vessel"]},
     "algorithms": [
         {"name": "ibes"},

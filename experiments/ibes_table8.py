@@ -1,6 +1,6 @@
 """I-BES paper, Table 8: position errors of six algorithms on the 2- to 7-DOF arms.
 
-Zhang et al., Biomimetics 9, 627 (2024), Section 5.1: N=150, T=500 (Section
+Zhao et al., Biomimetics 9, 627 (2024), Section 5.1: N=150, T=500 (Section
 5.1.1), 25 runs per arm (Section 5.1.2), the paper's target of each arm
 (Section 5.1.1), joint limits [-pi, pi] (prismatic [0, 1] m), error
 ||p_d - p(q)||_2 in m. Algorithms with Table 1's parameters: I-BES, BES, PSO
@@ -40,7 +40,7 @@ _TABLE8 = {
 EXPERIMENT = {
     "name": "ibes-table8",
     "title": "I-BES: position error on the 2- to 7-DOF arms, six algorithms, 25 runs",
-    "source": "Zhang et al. 2024 (I-BES), Section 5.1, Table 8 (Figs. 8-15)",
+    "source": "Zhao et al. 2024 (I-BES), Section 5.1, Table 8 (Figs. 8-15)",
     "robot": "planar2",
     "problem": {"kind": "position"},
     "targets": {"kind": "fixed", "points": [{"name": arm, "robot": arm, "position": p}

@@ -1,6 +1,6 @@
 """I-BES paper, Table 9: the four solution branches of the Puma 560 wrist position.
 
-Zhang et al., Biomimetics 9, 627 (2024), Section 5.1.3: the Puma 560 with
+Zhao et al., Biomimetics 9, 627 (2024), Section 5.1.3: the Puma 560 with
 joints 4-6 fixed (only the position matters, so the first three joints), the
 five targets of Kalra et al., I-BES with the Section 5.1.1 settings (N=150,
 T=500); each target has four geometric solutions. The arm is
@@ -44,7 +44,7 @@ _TABLE9 = [
 EXPERIMENT = {
     "name": "ibes-table9",
     "title": "I-BES: four solution branches of the Puma 560 wrist position (5 targets)",
-    "source": "Zhang et al. 2024 (I-BES), Section 5.1.3, Table 9 (targets of Kalra et al.)",
+    "source": "Zhao et al. 2024 (I-BES), Section 5.1.3, Table 9 (targets of Kalra et al.)",
     "robot": "puma560-kalra",
     "problem": {"kind": "position", "locked_joints_deg": [None, None, None, 0.0, 0.0, 0.0]},
     "targets": {"kind": "fixed", "points": [{"name": f"T{i + 1}", "position": p}

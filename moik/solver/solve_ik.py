@@ -175,6 +175,8 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     session = SolveSession(robot, target, tol_pos, tol_ori, opts.distinct, n_solutions,
                            opts.max_evals)
     starts_rng = np.random.Generator(np.random.PCG64(seeds))  # first stage; later ones spawn
+    if reach_excess(robot, target) > 0:  # proven out of reach: no start or search can help
+        return _out_of_reach(session, opts, starts_rng, q_current, t0)
     if polish and (q_current is not None or opts.starts):
         if q_current is not None:  # the user's hint: never abandoned for slow progress
             session.local_starts(q_current[None], patient=True)
@@ -186,8 +188,6 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
             session.local_starts(robot.random_q(opts.starts - first, rng=starts_rng))
     elif q_current is not None:
         session.consider(np.clip(q_current, robot.lower, robot.upper)[None])
-    if not session.found and reach_excess(robot, target) > 0:  # proven: no search can help
-        return _out_of_reach(session, opts, starts_rng, q_current, t0)
     problem = None if len(session.found) >= n_solutions else _search_problem(
         robot, target, opts.orientation)
     idle_rounds = 0
@@ -223,10 +223,13 @@ def _out_of_reach(session: SolveSession, opts: SearchOptions, rng: np.random.Gen
     if target.rotation is not None and opts.polish:
         front, front_q, n = polished_front(robot, target, opts.orientation, starts)
         session.n_eval += n
+        session.consider(front_q)
     elif opts.polish:  # the position-only scalarisation (w = 1; the rotation is ignored)
         Q, n = lm_front(robot, Target(target.position, np.eye(3)), starts, np.ones(1))
         session.n_eval += n
         session.consider(Q)
+    else:
+        session.consider(np.clip(starts, robot.lower, robot.upper))
     return _result(session, q_current, t0, True, front, front_q, proven=True)
 
 

@@ -30,25 +30,26 @@ radians, prismatic joint values in the robot's unit:
   [[position_error, orientation_error], ...] or null, "plots": [files]}``.
 
 Exit status: 0 done (``solve``: solved), 1 ``solve`` not solved, 2 bad input or an
-unusable file or folder (one line on stderr, never a traceback).
+unusable file or folder (one line on stderr, never a traceback). The printing
+itself (text and JSON) is :mod:`moik.cli_output`.
 """
 
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import sys
 from pathlib import Path
 
 import numpy as np
 
+from moik import cli_output as output
 from moik._validate import integer
 from moik._version import __version__
 from moik.algorithms import available, entry
 from moik.exceptions import MoikError, ParameterError, UnknownNameError
 from moik.experiments.commands import add_subcommands
-from moik.kinematics.orientation import eosma_euler, orientation_error, zyx_euler
+from moik.kinematics.orientation import orientation_error
 from moik.problems.targets import Target
 from moik.robots import Robot, available_robots, get_robot
 from moik.robots.urdf import load_urdf
@@ -72,82 +73,16 @@ def _robot(args: argparse.Namespace) -> Robot:
     raise err
 
 
-def _kind(robot: Robot) -> str:
-    return f"{robot.convention} DH" if robot.is_dh else "general chain"
-
-
-def _display_q(robot: Robot, q: np.ndarray) -> np.ndarray:
-    """Revolute joints in degrees, prismatic joints in the robot's unit."""
-    return np.where(robot.is_prismatic, q, np.degrees(q))
-
-
-def _q_units(robot: Robot) -> str:
-    if not robot.is_prismatic.any():
-        return "deg"
-    return f"deg; prismatic in {robot.unit}" if not robot.is_prismatic.all() else robot.unit
-
-
-def _print_json(obj) -> None:
-    print(json.dumps(obj))
-
-
 def _cmd_robots(args: argparse.Namespace) -> int:
     if args.robot is not None:
-        return _describe_robot(_robot(args), args.json)
-    robots = [get_robot(name) for name in available_robots()]
-    if args.json:
-        _print_json({"robots": [{"name": r.name, "dof": r.dof, "kind": _kind(r), "unit": r.unit,
-                                 "source": r.source} for r in robots]})
-        return 0
-    print(f"{'name':<18}{'dof':>4}  {'kind':<15}{'unit':<5} source")
-    for r in robots:
-        print(f"{r.name:<18}{r.dof:>4}  {_kind(r):<15}{r.unit:<5} {r.source}")
-    return 0
-
-
-def _describe_robot(robot: Robot, as_json: bool) -> int:
-    dh = {k: getattr(robot, k).tolist() for k in ("a", "alpha", "d", "theta")} if robot.is_dh \
-        else None
-    if as_json:
-        joints = [{"name": n, "type": t, "lower": float(lo), "upper": float(hi)} for n, t, lo, hi
-                  in zip(robot.joint_names, robot.joint_types, robot.lower, robot.upper,
-                         strict=True)]
-        _print_json({"name": robot.name, "dof": robot.dof, "kind": _kind(robot),
-                     "unit": robot.unit, "source": robot.source, "joints": joints, "dh": dh,
-                     "base": robot.base.tolist(), "tool": robot.tool.tolist()})
-        return 0
-    print(f"robot {robot.name}: {robot.dof} DOF, {_kind(robot)}, lengths in {robot.unit}")
-    print(f"source: {robot.source}")
-    width = max(5, *(len(n) for n in robot.joint_names)) + 2
-    lower, upper = _display_q(robot, robot.lower), _display_q(robot, robot.upper)
-    head = f"{'#':>3} {'name':<{width}}{'type':<11}{'lower':>12}{'upper':>12}"
-    if robot.is_dh:
-        head += f"{'a':>12}{'alpha(deg)':>12}{'d':>12}{'theta(deg)':>12}"
-    print(f"joints (limits in {_q_units(robot)}):")
-    print(head)
-    for j in range(robot.dof):
-        row = (f"{j + 1:>3} {robot.joint_names[j]:<{width}}{robot.joint_types[j]:<11}"
-               f"{lower[j]:>12.6g}{upper[j]:>12.6g}")
-        if robot.is_dh:
-            row += (f"{robot.a[j]:>12.6g}{np.degrees(robot.alpha[j]):>12.6g}"
-                    f"{robot.d[j]:>12.6g}{np.degrees(robot.theta[j]):>12.6g}")
-        print(row)
-    for key in ("base", "tool"):
-        T = getattr(robot, key)
-        if not np.array_equal(T, np.eye(4)):
-            print(f"{key}: " + "; ".join(" ".join(repr(float(v)) for v in row) for row in T[:3]))
+        output.print_robot(_robot(args), args.json)
+    else:
+        output.print_robot_list([get_robot(name) for name in available_robots()], args.json)
     return 0
 
 
 def _cmd_algorithms(args: argparse.Namespace) -> int:
-    entries = [entry(name) for name in available()]
-    if args.json:
-        _print_json({"algorithms": [{"name": e.name, "kind": e.kind, "source": e.source}
-                                    for e in entries]})
-        return 0
-    print(f"{'name':<10}{'kind':<18}source")
-    for e in entries:
-        print(f"{e.name:<10}{e.kind:<18}{e.source}")
+    output.print_algorithms([entry(name) for name in available()], args.json)
     return 0
 
 
@@ -159,30 +94,11 @@ def _joint_values(robot: Robot, values, degrees: bool, what: str) -> np.ndarray:
     return np.where(robot.is_prismatic, q, np.radians(q)) if degrees else q
 
 
-def _floats(values) -> str:
-    return "(" + ", ".join(repr(float(v) + 0.0) for v in values) + ")"  # no -0.0
-
-
 def _cmd_fk(args: argparse.Namespace) -> int:
     robot = _robot(args)
     q = _joint_values(robot, args.q, args.deg, "q")
-    T = robot.fk(q)
-    R = T[:3, :3]
     inside = bool(robot.within_limits(q)[0])
-    if args.json:
-        _print_json({"robot": robot.name, "unit": robot.unit, "joint_names": robot.joint_names,
-                     "q": q.tolist(), "pose": T.tolist(), "position": T[:3, 3].tolist(),
-                     "rotation": R.tolist(), "zyx_euler": zyx_euler(R).tolist(),
-                     "eosma_euler": eosma_euler(R).tolist(), "within_limits": inside})
-    else:
-        print(f"robot {robot.name} ({robot.dof} DOF, {_kind(robot)}, {robot.unit})")
-        print("pose T:")
-        for row in T:
-            print("  " + _floats(row))
-        print(f"position ({robot.unit}): {_floats(T[:3, 3])}")
-        print(f"ZYX Euler (alpha, beta, gamma) deg: {_floats(np.degrees(zyx_euler(R)))}")
-        print(f"EOSMA Eq. 26 Euler (alpha, beta, gamma) deg: "
-              f"{_floats(np.degrees(eosma_euler(R)))}")
+    output.print_pose(robot, q, robot.fk(q), inside, args.json)
     if not inside:
         print("warning: q is outside the joint limits", file=sys.stderr)
     return 0
@@ -251,52 +167,10 @@ def _cmd_solve(args: argparse.Namespace) -> int:
     if plots:
         _plot(robot, target, Q, res.status, plots)
     if args.json:
-        _print_json({
-            "robot": robot.name, "unit": robot.unit, "joint_names": robot.joint_names,
-            "target": {"position": target.position.tolist(),
-                       "rotation": None if target.rotation is None else target.rotation.tolist()},
-            "status": res.status, "success": res.success, "n_eval": res.n_eval,
-            "time_s": res.time, "q": res.q.tolist(), "position_error": res.position_error,
-            "orientation_error": res.orientation_error,
-            "solutions": [{"q": q.tolist(), "position_error": p, "orientation_error": o}
-                          for q, (p, o) in zip(res.solutions, errors, strict=False)],
-            "front": None if res.front is None else res.front.tolist(),
-            "plots": [str(p) for p in plots]})
+        output.print_solve_json(robot, target, res, errors, plots)
     else:
-        _print_solve(robot, target, res, Q, errors, plots)
+        output.print_solve(robot, target, res, Q, errors, plots)
     return 0 if res.success else 1
-
-
-def _print_solve(robot, target, res, Q, errors, plots) -> None:
-    kind = "pose" if target.has_orientation else "position"
-    print(f"robot {robot.name}: {kind} target {_floats(target.position)} {robot.unit}")
-    print(f"status: {res.status}  ({res.n_eval} FK evaluations, {res.time * 1e3:.1f} ms)")
-    print(f"joints: {' '.join(robot.joint_names)}  ({_q_units(robot)})")
-    if res.success:
-        labels = [f"solution {k}" for k in range(1, len(Q) + 1)]
-    elif res.status == "unreachable" and res.front is not None:
-        labels = ["compromise"]
-    else:
-        labels = ["best candidate"]
-    for label, q, (pos, ori) in zip(labels, Q, errors, strict=True):
-        print(f"{label}: " + " ".join(f"{v:.6f}" for v in _display_q(robot, q)))
-        line = f"  position error {pos:.3e} {robot.unit}"
-        if target.has_orientation:
-            line += f", orientation error {ori:.3e} rad (geodesic)"
-        print(line)
-    if res.status == "unreachable":
-        if res.front is not None:
-            print(f"Pareto front of (position, orientation) errors: {len(res.front)} points; "
-                  "the compromise above is the one closest to the utopia point")
-        else:
-            print("the target is out of reach; the best candidate above comes closest")
-    elif res.status == "not-converged":
-        front = "" if res.front is None else (f" (Pareto front of (position, orientation) "
-                                              f"errors: {len(res.front)} points)")
-        print(f"not converged: the best candidate above is the closest found{front}; more "
-              "--max-evals, --starts or another --seed may solve it")
-    if plots:
-        print("plot written to " + " and ".join(str(p) for p in plots))
 
 
 def _plot(robot: Robot, target: Target, Q: np.ndarray, status: str, files: list[Path]) -> None:

@@ -5,7 +5,8 @@ One rule each, everywhere (robots, problems, algorithms, solver, experiments, CL
 - an *integer* is a Python ``int`` or a numpy integer, never a ``bool`` and never
   a float (``2.0`` is refused: a count is not a measurement);
 - a *number* is a finite real (``int``/``float``/numpy scalar), never a ``bool``;
-- an *array* is converted to contiguous, writeable ``float64`` and must be finite;
+- an *array* holds real numbers (no strings, complex numbers, bools or ragged rows),
+  is converted to contiguous, writeable ``float64`` and must be finite;
 - a *seed* is ``None``, a non-negative integer or a ``numpy.random.SeedSequence``;
 - a *name* is one of a listed set (case-insensitive), else
   :class:`~moik.exceptions.UnknownNameError` listing the valid names.
@@ -145,10 +146,7 @@ def finite_array(name: str, values: Any, *, shape: tuple[int | None, ...] | None
         error: Wrong shape or not numeric.
         NonFiniteError: NaN or infinite entries (the first one is located).
     """
-    try:
-        arr = np.array(values, dtype=np.float64, order="C", copy=True)
-    except (TypeError, ValueError):
-        raise error(f"{name} must be an array of real numbers, got {values!r}") from None
+    arr = real_array(name, values, error=error)
     if shape is not None:
         ok = arr.ndim == len(shape) and all(
             s is None or s == n for s, n in zip(shape, arr.shape, strict=True))
@@ -163,6 +161,41 @@ def finite_array(name: str, values: Any, *, shape: tuple[int | None, ...] | None
         where = f" at index {tuple(int(i) for i in bad)}" if arr.ndim else ""
         raise NonFiniteError(f"{name} must hold finite values only; got {arr[tuple(bad)]}{where}")
     return arr
+
+
+def real_array(name: str, values: Any, *, error: type[MoikError] = ShapeError) -> np.ndarray:
+    """``values`` as a contiguous, writeable ``float64`` array of real numbers (any shape).
+
+    Refuses what ``numpy.asarray(values, dtype=float)`` would convert silently or
+    fail on with a bare ``ValueError``/``TypeError``: strings (numeric ones such as
+    ``"1.5"`` too), complex numbers, bools, ``None``, mappings, ragged nested
+    lists and other objects. Finiteness is not checked (see :func:`finite_array`).
+
+    Raises:
+        error: ``values`` is not an array of real numbers; the message says what came.
+    """
+    arr = values
+    if type(values) is not np.ndarray:
+        if isinstance(values, (str, bytes, Mapping)):
+            raise error(f"{name} must be an array of real numbers, got a "
+                        f"{type(values).__name__} {_short(values)}")
+        try:
+            arr = np.asarray(values)
+        except (TypeError, ValueError):  # ragged rows (numpy refuses inhomogeneous shapes)
+            raise error(f"{name} must be an array of real numbers with rows of equal length, "
+                        f"got {_short(values)}") from None
+    kind = arr.dtype.kind
+    if kind not in "iuf":
+        what = {"U": "strings", "S": "bytes", "c": "complex numbers", "b": "booleans"}.get(
+            kind, f"a {type(values).__name__}" if arr.ndim == 0 else f"{arr.dtype} entries")
+        raise error(f"{name} must be an array of real numbers, got {what}: {_short(values)}")
+    return np.array(arr, dtype=np.float64, order="C", copy=True)
+
+
+def _short(value: object) -> str:
+    """A repr of ``value`` cut to 80 characters, for messages."""
+    text = repr(value)
+    return text if len(text) <= 80 else text[:77] + "..."
 
 
 def seed(name: str, value: object, *, error: type[MoikError] = ParameterError

@@ -2,7 +2,8 @@
 
 Every error is a :class:`MoikError`; the subclasses say which kind of input was
 wrong. Messages name the bad value, what was expected and, for unknown names,
-the valid names.
+the valid names. Suspicious input that is still accepted (angles that look
+like degrees) gets a :class:`MoikWarning` instead.
 """
 
 from __future__ import annotations
@@ -49,9 +50,25 @@ class TargetError(MoikError, ValueError):
     """A target pose or position is malformed or in the wrong unit range."""
 
 
+class URDFError(MoikError, ValueError):
+    """A URDF file is malformed or does not describe the requested chain."""
+
+
 class ConfigError(MoikError, ValueError):
     """An experiment configuration is malformed (names the file, the key and the problem)."""
 
 
 class ResultsError(MoikError, OSError):
     """A results folder cannot be used as asked (exists without --resume, other config...)."""
+
+
+class MoikWarning(UserWarning):
+    """Base class of the warnings moik issues about suspicious but accepted input."""
+
+
+class DegreesWarning(MoikWarning):
+    """Angles given to moik (joint limits, DH twists or offsets) look like degrees.
+
+    moik takes angles in radians; a value beyond a full turn (two turns for joint
+    limits, which multi-turn joints exceed legitimately) is most likely in degrees.
+    """

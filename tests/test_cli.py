@@ -1,38 +1,267 @@
 """The moik command line."""
 
+import json
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from moik import __version__, get_robot
 from moik.cli import main
+from moik.robots.catalog import DATA
+
+FLOAT = r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?"
+
+
+def _numbers(line: str) -> np.ndarray:
+    """The numbers inside the parentheses of a printed line."""
+    inside = line[line.rindex("(") + 1:line.rindex(")")]
+    return np.array([float(v) for v in inside.split(",")])
+
+
+def _tokens(line: str) -> list[str]:
+    """The numbers inside the parentheses of a printed line, as printed."""
+    return [v.strip() for v in line[line.rindex("(") + 1:line.rindex(")")].split(",")]
+
+
+def _args(values) -> list[str]:
+    return [repr(float(v)) for v in values]
+
+
+def _line(out: str, start: str) -> str:
+    return next(line for line in out.splitlines() if line.startswith(start))
+
+
+def _json(capsys) -> dict:
+    return json.loads(capsys.readouterr().out)
 
 
 def test_robots_lists_catalog(capsys):
     assert main(["robots"]) == 0
     out = capsys.readouterr().out
     assert "eosma7" in out and "irb2600" in out and "modified" in out
+    assert re.search(r"panda\s+7\s+general chain", out)
+
+
+def test_robots_json_lists_every_catalog_robot(capsys):
+    assert main(["robots", "--json"]) == 0
+    robots = {r["name"]: r for r in _json(capsys)["robots"]}
+    assert {"iiwa14", "panda", "ur5", "puma560-urdf", "eosma7"} <= set(robots)
+    assert robots["irb2600"] == {"name": "irb2600", "dof": 6, "kind": "modified DH",
+                                 "unit": "mm", "source": get_robot("irb2600").source}
+
+
+def test_robots_name_prints_dh_rows_and_units(capsys):
+    assert main(["robots", "scara4"]) == 0
+    out = capsys.readouterr().out
+    assert "scara4: 4 DOF, standard DH, lengths in m" in out and "I-BES paper" in out
+    assert "limits in deg; prismatic in m" in out and "alpha(deg)" in out
+    assert re.search(r"3 q3\s+prismatic\s+0\s+1\s+0\s+0\s+0\s+0", out)  # limits in m
+    assert re.search(r"2 q2\s+revolute\s+-180\s+180\s+0.4\s+180\s+0\s+0", out)
+
+
+def test_robots_name_json_has_joint_names_and_radians(capsys):
+    assert main(["robots", "ur5", "--json"]) == 0
+    info = _json(capsys)
+    assert info["kind"] == "general chain" and info["dh"] is None and info["unit"] == "m"
+    assert [j["name"] for j in info["joints"]][:2] == ["shoulder_pan_joint",
+                                                       "shoulder_lift_joint"]
+    assert info["joints"][2] == {"name": "elbow_joint", "type": "revolute",
+                                 "lower": -3.14159265359, "upper": 3.14159265359}  # as in the file
+    assert main(["robots", "rokbani5", "--json"]) == 0
+    info = _json(capsys)
+    np.testing.assert_array_equal(info["dh"]["alpha"], get_robot("rokbani5").alpha)
+    assert info["base"] == np.eye(4).tolist()
+
+
+def test_robots_urdf_file_with_base_and_tip(capsys):
+    urdf = str(DATA / "ur5_robot.urdf")
+    assert main(["robots", urdf, "--base", "base_link", "--tip", "wrist_3_link"]) == 0
+    out = capsys.readouterr().out
+    assert "6 DOF, general chain" in out and "base_link -> wrist_3_link" in out
+    assert "wrist_3_joint" in out
+
+
+def test_algorithms_lists_registry(capsys):
+    assert main(["algorithms"]) == 0
+    out = capsys.readouterr().out
+    assert "eosma" in out.split() and "multi-objective" in out
+    assert main(["algorithms", "--json"]) == 0
+    kinds = {a["name"]: a["kind"] for a in _json(capsys)["algorithms"]}
+    assert kinds["eosma"] == "single-objective" and kinds["moeosma"] == "multi-objective"
+
+
+def test_version_and_python_dash_m(capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["--version"])
+    assert exc.value.code == 0 and capsys.readouterr().out.strip() == f"moik {__version__}"
+    done = subprocess.run([sys.executable, "-m", "moik", "fk", "planar2", "0", "0"],
+                          capture_output=True, text=True, timeout=300,
+                          cwd=Path(__file__).parents[1])
+    assert done.returncode == 0, done.stderr
+    assert "position (m): (0.6499999999999999, 0.0, 0.0)" in done.stdout  # 0.35 + 0.30
 
 
 def test_fk_prints_paper_pose(capsys):
+    """Full precision (repr of floats): the printed pose is the computed one."""
     assert main(["fk", "eosma7", "45", "0", "45", "0", "45", "0", "0", "--deg"]) == 0
     out = capsys.readouterr().out
-    assert "(-24.748737, 100.961941, 50.000000)" in out
-    assert "(90.0000, -45.0000, 0.0000)" in out
+    position = _numbers(_line(out, "position (cm):"))
+    np.testing.assert_allclose(position, [-24.748737, 100.961941, 50.0], atol=5e-7)
+    T = get_robot("eosma7").fk(np.radians([45, 0, 45, 0, 45, 0, 0]))
+    np.testing.assert_array_equal(position, T[:3, 3])  # every digit printed
+    np.testing.assert_allclose(_numbers(_line(out, "EOSMA Eq. 26 Euler")), [90, -45, 0],
+                               atol=1e-9)
+    np.testing.assert_allclose(_numbers(_line(out, "ZYX Euler")), [135, 0, -90], atol=1e-9)
+
+
+def test_fk_json(capsys):
+    assert main(["fk", "scara4", "0.1", "0.2", "0.3", "0.4", "--json"]) == 0
+    info = _json(capsys)
+    robot = get_robot("scara4")
+    T = robot.fk([0.1, 0.2, 0.3, 0.4])
+    np.testing.assert_array_equal(info["pose"], T)
+    np.testing.assert_array_equal(info["position"], T[:3, 3])
+    assert info["q"] == [0.1, 0.2, 0.3, 0.4] and info["within_limits"] is True
+    assert info["joint_names"] == ["q1", "q2", "q3", "q4"] and info["unit"] == "m"
+
+
+def test_fk_deg_keeps_prismatic_joints_in_the_unit(capsys):
+    assert main(["fk", "scara4", "90", "0", "0.25", "0", "--deg", "--json"]) == 0
+    assert _json(capsys)["q"] == [np.pi / 2, 0.0, 0.25, 0.0]
 
 
 def test_fk_errors_are_reported(capsys):
     assert main(["fk", "eosma7", "1", "2"]) == 2
     assert "needs 7 joint values, got 2" in capsys.readouterr().err
     assert main(["fk", "nope", "1"]) == 2
-    assert "unknown robot 'nope'" in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert "unknown robot 'nope'" in err and "or a URDF file" in err
+    assert main(["fk", "planar2", "0", "nan"]) == 2
+    assert "must be finite" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("q", [["30", "60", "45", "60", "60"], ["100", "20", "70", "150", "10"]])
+def test_fk_text_round_trips_to_solve_on_a_5dof_arm(capsys, q):
+    """A 5-DOF arm reaches only a 5-D set of poses: printed to 4 decimals, the
+    pose of `moik fk` is off that set and cannot be solved; printed in full it is."""
+    assert main(["fk", "rokbani5", *q, "--deg"]) == 0
+    out = capsys.readouterr().out
+    position = _tokens(_line(out, "position (cm):"))
+    euler = _tokens(_line(out, "ZYX Euler"))
+    args = ["solve", "rokbani5", "--target", *position, "--euler", *euler, "--deg"]
+    assert main(args) == 0
+    out = capsys.readouterr().out
+    assert "status: solved" in out
+    first = _line(out, "solution 1:").split(":")[1].split()
+    np.testing.assert_allclose([float(v) for v in first], [float(v) for v in q], atol=1e-5)
+    if q[0] == "30":  # the pose rounded to 4 decimals, as `moik fk` printed it before
+        rounded = [f"{float(v):.4f}" for v in position + euler]
+        assert main(["solve", "rokbani5", "--target", *rounded[:3], "--euler", *rounded[3:],
+                     "--deg"]) == 1
+        assert "status: not-converged" in capsys.readouterr().out
+
+
+def test_fk_json_round_trips_to_solve(capsys):
+    assert main(["fk", "rokbani5", "0.4", "1.1", "0.9", "0.7", "1.3", "--json"]) == 0
+    pose = _json(capsys)
+    args = ["solve", "rokbani5", "--target", *_args(pose["position"]), "--euler",
+            *_args(pose["zyx_euler"]), "--json"]
+    assert main(args) == 0
+    res = _json(capsys)
+    assert res["status"] == "solved" and res["success"] is True
+    assert res["position_error"] < 1e-8 and res["orientation_error"] < 1e-8
 
 
 def test_solve_reachable_pose(capsys, tmp_path):
     """The README's main command: the pose of (45,0,45,0,45,0,0) deg (ZYX angles
-    printed by `moik fk`) is solved exactly, with three distinct solutions."""
-    plot = tmp_path / "sol.png"
+    printed by `moik fk`) is solved exactly, with three distinct solutions; a plot
+    path without extension gives the .png and the .pdf."""
+    plot = tmp_path / "sol"
     args = ["solve", "eosma7", "--target", "-24.748737", "100.961941", "50", "--euler", "135",
             "0", "-90", "--deg", "--n-solutions", "3", "--plot", str(plot)]
     assert main(args) == 0
     out = capsys.readouterr().out
     assert "status: solved" in out and "solution 3:" in out and "solution 4:" not in out
     assert (tmp_path / "sol.png").exists() and (tmp_path / "sol.pdf").exists()
+    # every solution prints its errors
+    assert len(re.findall(rf"position error {FLOAT} cm, orientation error {FLOAT} rad", out)) == 3
+
+
+def test_solve_json_lists_every_solution_with_errors(capsys):
+    args = ["solve", "eosma7", "--target", "-24.748737", "100.961941", "50", "--euler", "135",
+            "0", "-90", "--deg", "--n-solutions", "2", "--json"]
+    assert main(args) == 0
+    res = _json(capsys)
+    assert res["status"] == "solved" and res["unit"] == "cm" and len(res["solutions"]) == 2
+    assert res["q"] == res["solutions"][0]["q"] and res["front"] is None
+    robot = get_robot("eosma7")
+    for sol in res["solutions"]:
+        T = robot.fk(sol["q"])  # radians
+        err = np.linalg.norm(T[:3, 3] - res["target"]["position"])
+        assert err == pytest.approx(sol["position_error"], abs=1e-12)
+        assert sol["position_error"] < 1e-6 and sol["orientation_error"] < 1e-8
+
+
+def test_prismatic_joints_are_printed_in_the_unit(capsys):
+    """Every solution prints prismatic joints in metres, never through degrees."""
+    args = ["solve", "scara4", "--target", "0.3", "0.2", "0.5", "--n-solutions", "2"]
+    assert main(args) == 0
+    out = capsys.readouterr().out
+    assert "(deg; prismatic in m)" in out
+    for k in (1, 2):
+        q = [float(v) for v in _line(out, f"solution {k}:").split(":")[1].split()]
+        assert q[2] == pytest.approx(0.1, abs=1e-6)  # z = 0.8 - d3 - 0.2
+    assert len(re.findall(r"position error", out)) == 2
+
+
+def test_solve_urdf_path_with_tip(capsys):
+    urdf = str(DATA / "panda.urdf")
+    robot = get_robot("panda")
+    q = np.array([0.1, -0.4, 0.2, -1.8, 0.3, 1.4, 0.5])
+    T = robot.fk(q)
+    assert main(["fk", urdf, *_args(q), "--tip", "panda_hand_tcp", "--json"]) == 0
+    np.testing.assert_array_equal(_json(capsys)["pose"], T)
+    args = ["solve", urdf, "--tip", "panda_hand_tcp", "--target", *_args(T[:3, 3]),
+            "--json"]
+    assert main(args) == 0
+    res = _json(capsys)
+    assert res["status"] == "solved" and res["joint_names"][0] == "panda_joint1"
+    assert main(["solve", urdf, "--tip", "nope", "--target", "0", "0", "0.5"]) == 2
+    assert "unknown link 'nope'" in capsys.readouterr().err
+
+
+def test_solve_q_current_tol_and_max_evals(capsys):
+    robot = get_robot("eosma7")
+    q0 = np.radians([40.0, -10, 30, 20, 40, 10, 5])
+    p = robot.fk(q0)[:3, 3]
+    args = ["solve", "eosma7", "--target", *_args(p), "--q-current", "40", "-10", "30", "20",
+            "40", "10", "5", "--deg", "--tol", "1e-6", "1e-6", "--max-evals", "2000", "--json"]
+    assert main(args) == 0
+    res = _json(capsys)
+    assert res["status"] == "solved" and res["position_error"] <= 1e-6
+    np.testing.assert_allclose(res["q"], q0, atol=1e-6)  # q_current already solves it
+    assert main(args[:-1] + ["--tol", "1", "2", "3"]) == 2
+    assert "--tol takes 1 number" in capsys.readouterr().err
+
+
+def test_unsolved_wording_is_honest(capsys):
+    """not-converged: the best candidate; unreachable pose: the utopia compromise."""
+    pose = ["--target", "-25", "100", "50", "--euler", "0", "0", "0", "--deg"]
+    assert main(["solve", "eosma7", *pose, "--max-evals", "300", "--starts", "0"]) == 1
+    out = capsys.readouterr().out
+    assert "status: not-converged" in out and "best candidate:" in out
+    assert "utopia" not in out and "not converged: the best candidate" in out
+    assert main(["solve", "eosma7", "--target", "200", "0", "0", "--euler", "0", "0", "0"]) == 1
+    out = capsys.readouterr().out
+    assert "status: unreachable" in out and "compromise:" in out
+    assert "the compromise above is the one closest to the utopia point" in out
+    assert main(["solve", "eosma7", "--target", "200", "0", "0"]) == 1
+    out = capsys.readouterr().out
+    assert "status: unreachable" in out and "out of reach" in out and "utopia" not in out
 
 
 def test_solve_with_the_global_search_only(capsys):
@@ -50,9 +279,47 @@ def test_solve_errors_are_one_line(capsys):
     assert err.startswith("moik: error:") and "expected a position in cm" in err
 
 
-def test_algorithms_lists_registry(capsys):
-    assert main(["algorithms"]) == 0
-    assert "eosma" in capsys.readouterr().out.split()
+@pytest.mark.parametrize("seed", ["-1", "-7"])
+def test_negative_seed_is_a_one_line_error(capsys, seed):
+    assert main(["solve", "planar2", "--target", "0.3", "0.2", "0", "--seed", seed]) == 2
+    captured = capsys.readouterr()
+    assert captured.err == f"moik: error: --seed must be an integer >= 0, got {seed}\n"
+    assert captured.out == ""
+
+
+@pytest.mark.parametrize("plot, written", [
+    ("out.d/fig", ["out.d/fig.png", "out.d/fig.pdf"]),
+    ("sub/p2.svg", ["sub/p2.svg"]),
+    ("sub/p2.PDF", ["sub/p2.PDF"]),
+    ("sub/v1.0", None),  # an unknown extension is refused, not cut off
+])
+def test_plot_paths(capsys, tmp_path, monkeypatch, plot, written):
+    (tmp_path / "out.d").mkdir()
+    (tmp_path / "sub").mkdir()
+    monkeypatch.chdir(tmp_path / "sub")
+    args = ["solve", "planar2", "--target", "0.3", "0.2", "0", "--plot", f"../{plot}"]
+    if written is None:
+        assert main(args) == 2
+        assert "--plot file must end in .png, .pdf, .svg" in capsys.readouterr().err
+        return
+    assert main(args) == 0
+    files = sorted(str(p.relative_to(tmp_path)) for p in tmp_path.rglob("*") if p.is_file())
+    assert files == sorted(written)
+    assert "plot written to ../" in capsys.readouterr().out
+
+
+def test_plot_folder_is_checked_before_solving(capsys, tmp_path):
+    args = ["solve", "eosma7", "--target", "10", "10", "10", "--plot", str(tmp_path / "no" / "x")]
+    assert main(args) == 2
+    captured = capsys.readouterr()
+    assert captured.out == ""  # nothing solved
+    assert captured.err.startswith("moik: error: --plot folder") and "does not exist" in \
+        captured.err and captured.err.count("\n") == 1
+    (tmp_path / "file").write_text("")
+    assert main(args[:-1] + [str(tmp_path / "file" / "x.png")]) == 2
+    assert "is a file, not a folder" in capsys.readouterr().err
+    assert main(args[:-1] + [str(tmp_path)]) == 2
+    assert "--plot needs a file name" in capsys.readouterr().err
 
 
 def test_experiment_list(capsys):
@@ -60,6 +327,16 @@ def test_experiment_list(capsys):
     out = capsys.readouterr().out
     for name in ("eosma-table5", "eosma-table8", "mpso-circle", "mpso-table5"):
         assert name in out
+
+
+def test_unwritable_out_is_a_one_line_error(capsys, tmp_path):
+    (tmp_path / "file").write_text("")
+    args = ["experiment", "run", "mpso-single", "--quick", "--workers", "1", "--no-progress",
+            "--out", str(tmp_path / "file" / "r")]
+    assert main(args) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("moik: error: cannot use ") and err.count("\n") == 1
+    assert "Not a directory" in err
 
 
 def test_experiment_errors_are_one_line(capsys, tmp_path):

@@ -90,3 +90,32 @@ def test_seed_choice_flag_keywords():
     with pytest.raises(ParameterError, match=r"unknown parameter\(s\) pop_sise for EOSMA; "
                                              r"accepted: a1, pop_size"):
         v.keywords("EOSMA", {"pop_sise": 50}, ["pop_size", "a1"])
+
+
+@pytest.mark.parametrize(("bad", "what"), [
+    (["1.5", "2"], "got strings"),
+    ("1 2 3", "got a str"),
+    (b"12", "got a bytes"),
+    ([1 + 2j, 0.0], "got complex numbers"),
+    (np.array([1.0, 2.0]) + 0j, "got complex numbers"),
+    ([True, False], "got booleans"),
+    ({"x": 1.0}, "got a dict"),
+    (None, "got a NoneType"),
+    ([1.0, None], "got object entries"),
+    ([[1.0, 2.0], [3.0]], "with rows of equal length"),
+])
+def test_real_array_refuses_what_is_not_real_numbers(bad, what):
+    with pytest.raises(ShapeError, match=f"q must be an array of real numbers.*{what}"):
+        v.real_array("q", bad)
+    with pytest.raises(ConfigError, match="x must be an array of real numbers"):
+        v.finite_array("x", bad, error=ConfigError)
+
+
+def test_real_array_normalises_without_checking_finiteness():
+    a = v.real_array("q", [1, 2, np.inf])
+    assert a.dtype == np.float64 and a.flags.c_contiguous and a.flags.writeable
+    b = v.real_array("q", np.arange(3, dtype=np.int32))
+    np.testing.assert_array_equal(b, [0.0, 1.0, 2.0])
+    frozen = np.zeros(2)
+    frozen.flags.writeable = False
+    assert v.real_array("q", frozen).flags.writeable  # a copy

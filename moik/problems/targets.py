@@ -1,18 +1,27 @@
 """IK targets: a position with an optional orientation, random reachable sets, paths.
 
 Positions are in the robot's length unit; angles are radians unless a function
-takes ``degrees=True`` explicitly.
+takes ``degrees=True`` explicitly. Every array must hold real numbers: strings,
+complex numbers, mappings and ragged lists are refused with a message that says
+what a target may be.
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
 
-from moik._validate import integer, positive
+from moik._validate import flag, integer, positive, real_array
 from moik._validate import seed as seed_value
-from moik.exceptions import NonFiniteError, ShapeError, TargetError, UnknownNameError
+from moik.exceptions import (
+    NonFiniteError,
+    ParameterError,
+    ShapeError,
+    TargetError,
+    UnknownNameError,
+)
 from moik.kinematics.orientation import (
     check_rotation,
     rotation_from_eosma_euler,
@@ -27,6 +36,18 @@ UNIT_RANGE_FACTOR = 10.0
 
 
 _LAST_ROW = (0.0, 0.0, 0.0, 1.0)
+TARGET_FORMS = ("a 3-vector position, a (4, 4) pose, a (position, rotation) pair with a (3, 3) "
+                "rotation, or a Target")
+
+
+def _vector3(name: str, values) -> np.ndarray:
+    """``values`` as a finite ``(3,)`` float array (real numbers only)."""
+    v = real_array(name, values)
+    if v.shape != (3,):
+        raise ShapeError(f"{name} must have shape (3,), got {v.shape}")
+    if not np.all(np.isfinite(v)):
+        raise NonFiniteError(f"{name} must be finite, got {v}")
+    return v
 
 
 @dataclass(frozen=True, eq=False)
@@ -44,14 +65,15 @@ class Target:
     q_source: np.ndarray | None = None
 
     def __post_init__(self) -> None:
-        p = np.asarray(self.position, dtype=float)
-        if p.shape != (3,):
-            raise ShapeError(f"target position must have shape (3,), got {p.shape}")
-        if not np.all(np.isfinite(p)):
-            raise NonFiniteError(f"target position must be finite, got {p}")
-        object.__setattr__(self, "position", p)
+        object.__setattr__(self, "position", _vector3("target position", self.position))
         if self.rotation is not None:
-            object.__setattr__(self, "rotation", check_rotation(self.rotation, "target rotation"))
+            R = real_array("target rotation", self.rotation)
+            object.__setattr__(self, "rotation", check_rotation(R, "target rotation"))
+        if self.q_source is not None:
+            q = real_array("target q_source", self.q_source)
+            if q.ndim != 1 or not np.all(np.isfinite(q)):
+                raise ShapeError(f"target q_source must be a finite joint vector, got {q}")
+            object.__setattr__(self, "q_source", q)
 
     @property
     def has_orientation(self) -> bool:
@@ -71,7 +93,7 @@ class Target:
     @classmethod
     def from_pose(cls, T) -> Target:
         """From a ``(4, 4)`` homogeneous transform."""
-        T = np.asarray(T, dtype=float)
+        T = real_array("pose", T)
         if T.shape != (4, 4):
             raise ShapeError(f"pose must have shape (4, 4), got {T.shape}")
         last = T[3].tolist()  # numpy.allclose's rule on plain floats (a hot path)
@@ -93,12 +115,8 @@ class Target:
         """
         if convention not in EULER_CONVENTIONS:
             raise UnknownNameError("Euler convention", convention, EULER_CONVENTIONS)
-        ang = np.asarray(angles, dtype=float)
-        if ang.shape != (3,):
-            raise ShapeError(f"Euler angles must have shape (3,), got {ang.shape}")
-        if not np.all(np.isfinite(ang)):
-            raise NonFiniteError(f"Euler angles must be finite, got {ang}")
-        if degrees:
+        ang = _vector3("Euler angles", angles)
+        if flag("degrees", degrees, error=TargetError):
             ang = np.radians(ang)
         elif np.any(np.abs(ang) > 2 * np.pi + 1e-9):
             raise TargetError(
@@ -113,20 +131,43 @@ def as_target(spec) -> Target:
 
     Accepts a ``Target``, a 3-vector (position only), a ``(4, 4)`` pose, or a
     ``(position, rotation)`` pair with a ``(3, 3)`` rotation.
+
+    Raises:
+        TargetError: ``spec`` is none of these (a mapping, a string, ``None``, an
+            array of something other than real numbers...); the message lists the
+            accepted forms.
+        ShapeError: An array of real numbers of another shape.
     """
     if isinstance(spec, Target):
         return spec
     if isinstance(spec, tuple) and len(spec) == 2:
         return Target(spec[0], spec[1])
-    arr = np.asarray(spec, dtype=float)
+    if spec is None or isinstance(spec, (str, bytes, Mapping)):
+        raise TargetError(f"target must be {TARGET_FORMS}; got a {type(spec).__name__}: "
+                          f"{spec!r:.80}")
+    try:
+        arr = real_array("target", spec, error=TargetError)
+    except TargetError as exc:
+        raise TargetError(f"target must be {TARGET_FORMS}; {exc}") from None
     if arr.shape == (3,):
         return Target(arr)
     if arr.shape == (4, 4):
         return Target.from_pose(arr)
-    raise ShapeError(
-        "target must be a 3-vector position, a (4, 4) pose, a (position, rotation) "
-        f"pair or a Target, got an array of shape {arr.shape}"
-    )
+    raise ShapeError(f"target must be {TARGET_FORMS}, got an array of shape {arr.shape}")
+
+
+def check_robot(robot) -> Robot:
+    """``robot`` if it is a :class:`~moik.robots.chain.Robot`.
+
+    Raises:
+        ParameterError: Anything else; a catalog name is pointed to ``get_robot``.
+    """
+    if isinstance(robot, Robot):
+        return robot
+    hint = (f" (for the catalog robot call moik.get_robot({robot!r}))"
+            if isinstance(robot, str) else "")
+    raise ParameterError(f"robot must be a moik Robot{hint}, got {type(robot).__name__} "
+                         f"{robot!r:.60}")
 
 
 def check_unit_range(target: Target, robot: Robot) -> None:
@@ -136,6 +177,7 @@ def check_unit_range(target: Target, robot: Robot) -> None:
     unreachable); one beyond ``UNIT_RANGE_FACTOR`` times the reach is almost
     surely in the wrong unit (m vs cm vs mm).
     """
+    robot = check_robot(robot)
     dist = float(np.linalg.norm(target.position))
     if dist > UNIT_RANGE_FACTOR * robot.reach:
         raise TargetError(
@@ -155,7 +197,9 @@ def random_reachable_targets(robot: Robot, n: int, *, seed, with_orientation: bo
         seed: Seed (int or ``numpy.random.SeedSequence``) of the joint sampling.
         with_orientation: Keep the FK orientation (pose targets) or not.
     """
+    robot = check_robot(robot)
     n = integer("n", n, minimum=1, error=TargetError)
+    with_orientation = flag("with_orientation", with_orientation, error=TargetError)
     rng = np.random.default_rng(seed_value("seed", seed))
     Q = robot.random_q(n, rng=rng)
     T = robot.fk(Q)
@@ -169,9 +213,7 @@ def circle_path(center, radius: float, n_points: int, *, rotation=None) -> list[
     ``y = y0 + r cos(theta_s p)``, ``z = z0 + r sin(theta_s p)``,
     ``theta_s = 2 pi / n_points``, ``p = 0 .. n_points - 1``.
     """
-    c = np.asarray(center, dtype=float)
-    if c.shape != (3,):
-        raise ShapeError(f"circle center must have shape (3,), got {c.shape}")
+    c = _vector3("circle center", center)
     radius = positive("circle radius", radius, error=TargetError)
     n_points = integer("n_points", n_points, minimum=2, error=TargetError)
     step = 2 * np.pi / n_points  # Eq. 18

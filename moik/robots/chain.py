@@ -1,19 +1,24 @@
 """Serial robot chains described by Denavit-Hartenberg rows, with batched FK.
 
 A :class:`Robot` is a frozen description: DH rows in the standard (Denavit-
-Hartenberg) or modified (Craig) convention, joint types, joint offsets, joint
-limits, length unit, name and source. ``robot.fk(Q)`` evaluates forward
-kinematics for one joint vector ``(dof,)`` or a batch ``(n, dof)`` with no
-Python loop over ``n``.
+Hartenberg) or modified (Craig) convention, joint types, names, offsets and
+limits, base and tool transforms, length unit, name and source. ``robot.fk(Q)``
+evaluates forward kinematics for one joint vector ``(dof,)`` or a batch
+``(n, dof)`` with no Python loop over ``n``.
 
 Every robot is evaluated in the general form ``F_0 M_1(q_1) F_1 ... M_n(q_n) F_n``
-(:attr:`Robot.kinematic_chain`) by the compiled kernels of :mod:`moik.robots.dh`;
-:func:`fk_reference` (plain numpy, textbook DH matrices or 4x4 products) is the
+(:attr:`Robot.kinematic_chain`, the base folded into ``F_0`` and the tool into
+``F_n``) by the compiled kernels of :mod:`moik.robots.dh`; :func:`fk_reference`
+(plain numpy, textbook DH matrices or 4x4 products, then base and tool) is the
 oracle the tests compare them with.
+
+Angles are radians: joint limits beyond two turns, or DH twists and offsets
+beyond one turn, look like degrees and raise a :class:`~moik.exceptions.DegreesWarning`.
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Literal
@@ -21,8 +26,9 @@ from typing import Literal
 import numpy as np
 
 from moik._jit import kernel_array
-from moik.exceptions import LimitsError, NonFiniteError, ParameterError, ShapeError
-from moik.robots import dh
+from moik._validate import integer, is_integer, number, real_array
+from moik.exceptions import NonFiniteError, ParameterError, ShapeError
+from moik.robots import checks, dh
 from moik.robots.transforms import (
     PRISMATIC,
     REVOLUTE,
@@ -31,18 +37,14 @@ from moik.robots.transforms import (
     dh_to_origins,
     fk_general_reference,
     lock_joints,
+    with_base_tool,
 )
 
 Convention = Literal["standard", "modified"]
-UNITS = ("m", "cm", "mm")
-JOINT_TYPES = ("revolute", "prismatic")
-
-
-def _as_vector(name: str, values, dof: int) -> np.ndarray:
-    arr = np.asarray(values, dtype=float)
-    if arr.shape != (dof,):
-        raise ShapeError(f"{name} must have shape ({dof},), got {arr.shape}")
-    return arr
+UNITS = checks.UNITS
+JOINT_TYPES = checks.JOINT_TYPES
+_IDENTITY = np.eye(4)
+_IDENTITY.setflags(write=False)
 
 
 @dataclass(frozen=True, eq=False, kw_only=True)
@@ -65,9 +67,26 @@ class Robot:
         lower: Lower joint limits (rad for revolute, ``unit`` for prismatic).
         upper: Upper joint limits.
         joint_types: ``"revolute"`` or ``"prismatic"`` per joint; default all revolute.
+        joint_names: One name per joint (default ``"q1" .. "qn"``; URDF robots
+            get their joint names), to map a solution to e.g. ROS ``joint_states``.
+        base: ``(4, 4)`` rigid transform from the world frame to the chain's base
+            frame (default identity): FK returns ``base @ T_chain(q) @ tool``.
+        tool: ``(4, 4)`` rigid transform from the last joint frame to the tool
+            frame (default identity).
         convention: ``"standard"`` or ``"modified"`` (Craig) DH.
         unit: Length unit of lengths and of FK positions: "m", "cm" or "mm".
         source: Where the parameters come from (paper + table, or file).
+
+    Raises:
+        ShapeError, NonFiniteError: Arrays of the wrong shape, not real numbers
+            (strings, complex numbers, ragged lists) or not finite.
+        LimitsError: A lower limit above its upper limit.
+        ParameterError: Bad joint types, names, convention, unit, or a base/tool
+            that is not a rigid transform.
+
+    Warns:
+        DegreesWarning: Joint limits beyond two turns, or DH twists/offsets
+            beyond one turn (they look like degrees).
     """
 
     name: str
@@ -79,51 +98,36 @@ class Robot:
     theta: np.ndarray | None = None
     origins: np.ndarray | None = None
     joint_types: tuple[str, ...] = ()
+    joint_names: tuple[str, ...] = ()
+    base: np.ndarray | None = None
+    tool: np.ndarray | None = None
     convention: Convention = "standard"
     unit: str = "m"
     source: str = ""
 
     def __post_init__(self) -> None:
-        lower = np.asarray(self.lower, dtype=float)
-        if lower.ndim != 1 or lower.size == 0:
-            raise ShapeError(f"lower limits must be a non-empty 1-D array, got {lower.shape}")
-        dof = lower.size
-        dh_given = [k for k in ("a", "alpha", "d", "theta") if getattr(self, k) is not None]
-        if self.origins is None and len(dh_given) != 4:
-            raise ParameterError("a robot needs DH rows (a, alpha, d, theta) or origins")
-        if self.origins is not None and dh_given:
-            raise ParameterError(f"give DH rows or origins, not both (got origins and {dh_given})")
-        cols = {"lower": lower, "upper": _as_vector("upper", self.upper, dof)}
-        for key in dh_given:
-            cols[key] = _as_vector(key, getattr(self, key), dof)
-        if self.origins is not None:
-            origins = np.asarray(self.origins, dtype=float)
-            if origins.shape != (dof + 1, 4, 4):
-                raise ShapeError(f"origins must have shape ({dof + 1}, 4, 4), got {origins.shape}")
-            cols["origins"] = origins
+        if not isinstance(self.name, str) or not self.name:
+            raise ParameterError(f"robot name must be a non-empty string, got {self.name!r}")
+        dh_rows = {k: getattr(self, k) for k in checks.DH_KEYS if getattr(self, k) is not None}
+        cols = checks.columns(self.name, self.lower, self.upper, dh_rows, self.origins)
         for key, arr in cols.items():
-            if not np.all(np.isfinite(arr)):
-                raise NonFiniteError(f"robot {self.name!r}: {key} must be finite, got {arr}")
-            arr.setflags(write=False)
             object.__setattr__(self, key, arr)
-        types = tuple(self.joint_types) or ("revolute",) * dof
-        if len(types) != dof or any(t not in JOINT_TYPES for t in types):
-            raise ParameterError(
-                f"joint_types must be {dof} entries from {JOINT_TYPES}, got {types}"
-            )
+        dof = cols["lower"].size
+        types = checks.joint_types(self.joint_types, dof)
         object.__setattr__(self, "joint_types", types)
+        object.__setattr__(self, "joint_names", checks.joint_names(self.joint_names, dof))
+        for key in ("base", "tool"):
+            value = getattr(self, key)
+            object.__setattr__(self, key, _IDENTITY if value is None
+                               else checks.rigid_transform(f"robot {self.name!r} {key}", value))
         if self.convention not in ("standard", "modified"):
             raise ParameterError(
                 f"convention must be 'standard' or 'modified', got {self.convention!r}"
             )
         if self.unit not in UNITS:
             raise ParameterError(f"unit must be one of {UNITS}, got {self.unit!r}")
-        bad = np.flatnonzero(cols["lower"] > cols["upper"])
-        if bad.size:
-            raise LimitsError(
-                f"robot {self.name!r}: lower limit > upper limit for joint(s) "
-                f"{(bad + 1).tolist()} (lower={cols['lower'][bad]}, upper={cols['upper'][bad]})"
-            )
+        checks.warn_if_degrees(self.name, cols, np.array([t == "prismatic" for t in types]),
+                               stacklevel=3)
 
     # ------------------------------------------------------------------ properties
     @property
@@ -150,13 +154,21 @@ class Robot:
 
     @cached_property
     def reach(self) -> float:
-        """Upper bound on the distance from the base to the end effector (computed once)."""
+        """Upper bound on ``|p(q)|``, the distance of the tool from the world origin.
+
+        The sum of the translations of every constant (base and tool included)
+        and of the prismatic strokes (computed once).
+        """
         stroke = np.where(self.is_prismatic, np.maximum(abs(self.lower), abs(self.upper)), 0.0)
         links = np.linalg.norm(self.chain_origins()[:, :3, 3], axis=1)
         return float(np.sum(links) + np.sum(stroke))
 
     def chain_origins(self) -> np.ndarray:
-        """The fixed transforms ``F_0 .. F_n`` (converted from DH if needed)."""
+        """The fixed transforms ``F_0 .. F_n`` the kernels evaluate, base and tool included."""
+        return with_base_tool(self._own_origins(), self.base, self.tool)
+
+    def _own_origins(self) -> np.ndarray:
+        """``F_0 .. F_n`` of the chain itself (from DH if needed), without base and tool."""
         if self.origins is not None:
             return np.array(self.origins)
         return dh_to_origins(self.a, self.alpha, self.d, self.theta, self.is_prismatic,
@@ -174,7 +186,9 @@ class Robot:
             links = dh_link_frames(self.a, self.alpha, self.d, self.theta, self.is_prismatic,
                                    self.convention)
         else:
-            links = self.origins[1:]
+            links = np.array(self.origins[1:])
+        if not np.array_equal(self.tool, _IDENTITY):  # the last frame is the tool frame
+            links[-1] = links[-1] @ self.tool
         types = np.where(self.is_prismatic, PRISMATIC, REVOLUTE)
         return KinematicChain(origins=self.chain_origins(), joint_types=types,
                               link_frames=links)
@@ -184,18 +198,28 @@ class Robot:
 
         Example: the I-BES Table 9 Puma 560 position problem is
         ``get_robot("puma560").with_locked_joints({3: 0.0, 4: 0.0, 5: 0.0})``.
+        The free joints keep their names, the robot its base and tool.
+
+        Raises:
+            ParameterError: ``locked`` is not a mapping of joint indices to finite
+                numbers, or it leaves no joint free.
         """
-        bad = [j for j in locked if not (isinstance(j, int | np.integer) and 0 <= j < self.dof)]
+        if not isinstance(locked, Mapping):
+            raise ParameterError(f"locked must be a dict {{joint index: value}}, got "
+                                 f"{type(locked).__name__}")
+        bad = [j for j in locked if not (is_integer(j) and 0 <= j < self.dof)]
         if bad:
             raise ParameterError(f"locked joint indices must be in 0..{self.dof - 1}, got {bad}")
         if len(locked) >= self.dof:
             raise ParameterError("at least one joint must stay free")
-        origins, free = lock_joints(self.chain_origins(), self.is_prismatic,
-                                    {int(j): float(v) for j, v in locked.items()})
-        desc = ", ".join(f"q{j + 1}={v:g}" for j, v in sorted(locked.items()))
+        values = {int(j): number(f"locked value of joint {j}", v) for j, v in locked.items()}
+        origins, free = lock_joints(self._own_origins(), self.is_prismatic, values)
+        desc = ", ".join(f"q{j + 1}={v:g}" for j, v in sorted(values.items()))
         return Robot(name=f"{self.name}[{desc}]", origins=origins, lower=self.lower[free],
                      upper=self.upper[free],
-                     joint_types=tuple(self.joint_types[j] for j in free), unit=self.unit,
+                     joint_types=tuple(self.joint_types[j] for j in free),
+                     joint_names=tuple(self.joint_names[j] for j in free),
+                     base=self.base, tool=self.tool, unit=self.unit,
                      source=f"{self.source}; joints locked: {desc}")
 
     # ------------------------------------------------------------------ FK
@@ -203,10 +227,11 @@ class Robot:
         """Validate a joint vector/batch; returns it as a C-contiguous, writeable float array.
 
         Raises:
-            ShapeError: if the last axis is not ``dof`` or ndim is not 1 or 2.
+            ShapeError: if it is not an array of real numbers (strings, complex
+                numbers, ragged lists), the last axis is not ``dof`` or ndim is not 1 or 2.
             NonFiniteError: if it holds NaN or inf.
         """
-        Q = kernel_array(q)
+        Q = self._joint_array(q, name)
         if Q.ndim not in (1, 2) or Q.shape[-1] != self.dof:
             raise ShapeError(
                 f"{name} for robot {self.name!r} must have shape ({self.dof},) or "
@@ -219,23 +244,34 @@ class Robot:
     def kernel_batch(self, q) -> np.ndarray:
         """``q`` as the batched kernels take it: a C-contiguous, writeable float ``(n, dof)``.
 
-        Checks the shape only (a kernel given fewer columns would read past the
-        array; numba does not check bounds), not finiteness (hot path: NaN in, NaN out).
+        Checks the type and shape only (a kernel given fewer columns would read past
+        the array; numba does not check bounds), not finiteness (hot path: NaN in,
+        NaN out). A single joint vector ``(dof,)`` is refused: pass ``q[None]``
+        (or use :meth:`fk`, which takes both).
 
         Raises:
-            ShapeError: if ``q`` is not 2-D with ``dof`` columns.
+            ShapeError: if ``q`` is not 2-D with ``dof`` columns of real numbers.
         """
-        Q = kernel_array(q)
+        Q = self._joint_array(q, "a batch")
         if Q.ndim != 2 or Q.shape[1] != self.dof:
+            hint = ("; for one joint vector pass q[None] or use robot.fk(q)"
+                    if Q.shape == (self.dof,) else "")
             raise ShapeError(f"a batch for robot {self.name!r} must have shape (n, {self.dof}), "
-                             f"got {Q.shape}")
+                             f"got {Q.shape}{hint}")
         return Q
+
+    def _joint_array(self, q, name: str) -> np.ndarray:
+        """``q`` as the kernels' float64 array; anything but real numbers is refused."""
+        if type(q) is np.ndarray and q.dtype == np.float64:
+            return kernel_array(q)
+        return real_array(f"{name} for robot {self.name!r}", q)
 
     def fk_parts(self, q) -> tuple[np.ndarray, np.ndarray]:
         """Rotation ``(n, 3, 3)`` and position ``(n, 3)`` of the end effector.
 
         Cheaper than :meth:`fk` when the homogeneous matrix is not needed.
-        ``q`` must be 2-D ``(n, dof)``; no finiteness check (hot path).
+        ``q`` must be 2-D ``(n, dof)`` (a single vector is refused with a hint:
+        pass ``q[None]``); no finiteness check (hot path).
         """
         chain = self.kinematic_chain
         Q = self.kernel_batch(q)
@@ -244,7 +280,8 @@ class Robot:
         return R, p
 
     def fk_position(self, q) -> np.ndarray:
-        """End-effector positions ``(n, 3)`` of a 2-D batch (hot path, no finiteness check)."""
+        """End-effector positions ``(n, 3)`` of a 2-D batch ``(n, dof)`` (hot path, no
+        finiteness check; a single vector is refused with a hint: pass ``q[None]``)."""
         chain = self.kinematic_chain
         Q = self.kernel_batch(q)
         p = np.empty((Q.shape[0], 3))
@@ -272,24 +309,28 @@ class Robot:
 
         Returns:
             ``(dof + 1, 4, 4)`` for 1-D ``q`` or ``(n, dof + 1, 4, 4)``; frame 0 is
-            the base (identity), frame ``dof`` the end effector.
+            the base (:attr:`base`), frame ``dof`` the tool (the pose :meth:`fk` returns).
         """
         Q = self.check_q(q)
         Q2 = Q[None] if Q.ndim == 1 else Q
         chain = self.kinematic_chain
         out = np.empty((Q2.shape[0], self.dof + 1, 4, 4))
         dh.fk_frames(chain.origins, chain.link_frames, chain.joint_types, Q2, out)
+        out[:, 0] = self.base
         return out[0] if Q.ndim == 1 else out
 
     def random_q(self, n: int, *, rng: np.random.Generator) -> np.ndarray:
         """Uniform joint vectors within the limits, shape ``(n, dof)``."""
+        n = integer("n", n, minimum=0)
+        if not isinstance(rng, np.random.Generator):
+            raise ParameterError(f"rng must be a numpy.random.Generator, got {type(rng).__name__}")
         # lower + (upper - lower) * U[0, 1): Generator.uniform's own formula, bit for bit,
         # without its broadcasting overhead (this is on solve_ik's hot path)
         return self.lower + (self.upper - self.lower) * rng.random((n, self.dof))
 
     def within_limits(self, q, tol: float = 0.0) -> np.ndarray:
         """Boolean per row: all joints within ``[lower - tol, upper + tol]``."""
-        Q = np.atleast_2d(np.asarray(q, dtype=float))
+        Q = np.atleast_2d(self._joint_array(q, "q"))
         return np.all((self.lower - tol <= Q) & (self.upper + tol >= Q), axis=1)
 
     def __repr__(self) -> str:
@@ -301,7 +342,8 @@ def fk_reference(robot: Robot, q) -> np.ndarray:
     """FK of ``robot`` by the straightforward per-joint 4x4 product in numpy.
 
     The oracle the compiled kernels are tested against, and the baseline of
-    ``benchmarks/fk.py``; not used at run time.
+    ``benchmarks/fk.py``. Base and tool are applied here as separate products
+    (``base @ T @ tool``), not folded into the constants as the kernels have them.
     """
     Q = robot.check_q(q)
     Q2 = np.atleast_2d(Q)
@@ -310,4 +352,8 @@ def fk_reference(robot: Robot, q) -> np.ndarray:
                             robot.convention, Q2)
     else:
         T = fk_general_reference(robot.origins, robot.is_prismatic, Q2)
+    if not np.array_equal(robot.base, _IDENTITY):
+        T = robot.base @ T
+    if not np.array_equal(robot.tool, _IDENTITY):
+        T = T @ robot.tool
     return T if Q.ndim == 2 else T[0]

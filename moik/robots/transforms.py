@@ -6,9 +6,9 @@ rigid transform and ``M_j`` is ``Rz(q_j)`` (revolute) or ``Tz(q_j)``
 (prismatic). URDF chains, DH chains and chains with locked joints all take this
 form, which the compiled FK kernels of :mod:`moik.robots.dh` evaluate. This
 module builds the constants (elementary transforms with exact values at
-multiples of pi/2, DH rows to origins, locked joints folded in), holds them as
-the kernels take them (:class:`KinematicChain`) and has the plain-numpy
-reference FK of a general chain.
+multiples of pi/2, DH rows to origins, locked joints, base and tool transforms
+folded in), holds them as the kernels take them (:class:`KinematicChain`) and
+has the plain-numpy reference FK of a general chain.
 """
 
 from __future__ import annotations
@@ -56,6 +56,20 @@ class KinematicChain:
     def dof(self) -> int:
         """Number of joints."""
         return self.joint_types.size
+
+
+def with_base_tool(origins: np.ndarray, base: np.ndarray, tool: np.ndarray) -> np.ndarray:
+    """``origins`` with ``F_0 <- base F_0`` and ``F_n <- F_n tool`` (a copy).
+
+    An identity ``base`` or ``tool`` leaves its constant untouched (bit for bit).
+    """
+    out = np.array(origins, dtype=float)
+    eye = np.eye(4)
+    if not np.array_equal(base, eye):
+        out[0] = base @ out[0]
+    if not np.array_equal(tool, eye):
+        out[-1] = out[-1] @ tool
+    return out
 
 
 def exact_cos_sin(angle: float) -> tuple[float, float]:

@@ -21,6 +21,8 @@ Rules:
 * ``<origin xyz rpy>`` (fixed-axis roll-pitch-yaw, ``R = Rz(y) Ry(p) Rx(r)``)
   and ``<axis xyz>`` (any unit vector; default x as the URDF spec says) are
   honoured. Lengths are metres.
+* The robot keeps the names of its movable joints (``robot.joint_names``), in
+  chain order, so a solution maps back to the URDF's ``joint_states``.
 """
 
 from __future__ import annotations
@@ -31,13 +33,11 @@ from pathlib import Path
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from moik.exceptions import MoikError, UnknownNameError
+from moik.exceptions import UnknownNameError, URDFError
 from moik.robots.chain import Robot
 from moik.robots.transforms import rot_x, translation
 
-
-class URDFError(MoikError, ValueError):
-    """A URDF file is malformed or does not describe the requested chain."""
+__all__ = ["URDFError", "load_urdf"]
 
 
 def _floats(text: str | None, default, what: str) -> np.ndarray:
@@ -207,6 +207,9 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
         tip_link: Last link (default: follow the chain as the module doc says).
         name: Robot name (default: the URDF's robot name).
 
+    Returns:
+        The chain with ``joint_names`` the URDF names of its movable joints.
+
     Raises:
         URDFError: malformed file (not a tree, undeclared link, duplicate joint
             name, xacro), unsupported or mimic joint, branching chain without tip.
@@ -224,7 +227,7 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
             raise URDFError(f"expected one root link, found {roots}; pass base_link=")
         base_link = roots[0]
     chain = _chain_joints(links, joints, base_link, tip_link)
-    origins, lower, upper, types = [np.eye(4)], [], [], []
+    origins, lower, upper, types, names = [np.eye(4)], [], [], [], []
     for el in chain:
         jname, jtype = el.get("name"), el.get("type")
         T = origins[-1] @ _origin(el, jname)
@@ -255,6 +258,7 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
         lower.append(lo)
         upper.append(hi)
         types.append("prismatic" if jtype == "prismatic" else "revolute")
+        names.append(jname)
     if not types:
         end = tip_link if tip_link is not None else (chain[-1].find("child").get("link")
                                                      if chain else base_link)
@@ -263,7 +267,8 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
     stem = Path(label).stem if label != "<URDF string>" else "urdf"
     return Robot(name=name or root.get("name", stem),
                  origins=np.array(origins), lower=lower, upper=upper, joint_types=tuple(types),
-                 unit="m", source=f"URDF {Path(label).name}: {base_link} -> {tip}")
+                 joint_names=tuple(names), unit="m",
+                 source=f"URDF {Path(label).name}: {base_link} -> {tip}")
 
 
 def _limits(el: ET.Element, name: str, jtype: str) -> tuple[float, float]:

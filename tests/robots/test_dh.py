@@ -4,10 +4,12 @@ Every kernel (4x4 poses, positions, rotations + positions, per-joint frames, the
 single-row kernels) on every catalog robot, on robots with locked joints, on DH
 chains with offsets and prismatic joints in both conventions, and on general
 chains loaded from URDF text written here (non-z axes, rpy origins, fixed and
-prismatic joints). Tolerance: 1e-12 relative to the robot's size.
+prismatic joints), and on robots with base and tool transforms. Tolerance: 1e-12
+relative to the robot's size.
 """
 
 import pickle
+from dataclasses import replace
 
 import numba
 import numpy as np
@@ -70,12 +72,29 @@ def dh_variants() -> list[Robot]:
     return [Robot(name="dh-std", **rows), Robot(name="dh-mod", convention="modified", **rows)]
 
 
+def rigid(seed: int, scale: float) -> np.ndarray:
+    """A random rigid transform with a translation of about ``scale``."""
+    T = np.eye(4)
+    T[:3, :3] = Rotation.random(random_state=seed).as_matrix()
+    T[:3, 3] = np.random.default_rng(seed).normal(scale=scale, size=3)
+    return T
+
+
+def with_base_tool(robot: Robot, seed: int) -> Robot:
+    """``robot`` mounted on a random base, with a random tool frame."""
+    return replace(robot, name=f"{robot.name}+base+tool", base=rigid(seed, robot.reach / 4),
+                   tool=rigid(seed + 1, robot.reach / 10))
+
+
 def all_robots(tmp_path) -> list[Robot]:
     robots = [get_robot(name) for name in available_robots()]
     robots += [get_robot("puma560").with_locked_joints({1: 0.3, 4: -0.2}),
                get_robot("scara4").with_locked_joints({2: 0.15}),
                get_robot("irb2600").with_locked_joints({0: 1.0})]
-    return robots + dh_variants() + [urdf_robot(tmp_path)]
+    robots += dh_variants() + [urdf_robot(tmp_path)]
+    mounted = [with_base_tool(robots[k], k) for k in (0, 5, 10, len(robots) - 1)]
+    mounted.append(with_base_tool(robots[-1], 7).with_locked_joints({2: 0.1}))
+    return robots + mounted
 
 
 def _scale(robot: Robot) -> float:

@@ -1,0 +1,8 @@
+"""``python -m moik``: the ``moik`` command line (:mod:`moik.cli`)."""
+
+import sys
+
+from moik.cli import main
+
+if __name__ == "__main__":
+    sys.exit(main())

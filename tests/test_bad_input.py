@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 from pymoo.optimize import minimize
 
-from moik import MoikError, get_robot, load_urdf, solve_ik, solve_path
+from moik import MoikError, get_robot, load_urdf, solve_ik, solve_ik_batch, solve_path
 from moik.algorithms import get_algorithm
 from moik.cli import main
 from moik.exceptions import (
@@ -320,11 +320,6 @@ KNOWN_FAILURES = [  # in files this corpus does not own (the solver, problems, a
     _case(_minimize_seed, 1.5, ParameterError, "seed", "minimize-seed-float"),
     _case(_minimize_seed, "a", ParameterError, "seed", "minimize-seed-string"),
     _case(_minimize_seed, True, ParameterError, "seed", "minimize-seed-bool"),
-    _case(_pose_weights, ("a", "b"), ParameterError, "weights", "PoseIK-weights-strings"),
-    _case(_pose_weights, (1j, 1.0), ParameterError, "weights", "PoseIK-weights-complex"),
-    _case(lambda X: PositionIK(ARM, POSITION).evaluate(X), np.zeros((2, 6)), ShapeError,
-          r"\(n, 7\)", "evaluate-wrong-width"),
-    _case(lambda robot: solve_ik(robot, POSE), "eosma7", None, "", "solve_ik-robot-name"),
 ]
 
 
@@ -337,3 +332,27 @@ def test_known_failures(call, bad, error, message):
         return
     with pytest.raises(error, match=message):
         call(bad)
+
+
+FIXED_IN_THE_SOLVER_AND_PROBLEMS = [
+    _case(_pose_weights, ("a", "b"), ParameterError, "weights", "PoseIK-weights-strings"),
+    _case(_pose_weights, (1j, 1.0), ParameterError, "weights", "PoseIK-weights-complex"),
+    _case(lambda X: PositionIK(ARM, POSITION).evaluate(X), np.zeros((2, 6)), ShapeError,
+          r"\(n, 7\)", "evaluate-wrong-width"),
+    _case(lambda targets: solve_path(ARM, targets), "abc", TargetError, "sequence of targets",
+          "solve_path-string"),
+    _case(lambda targets: solve_ik_batch(ARM, targets), np.zeros((0, 3)), ShapeError,
+          "empty batch", "solve_ik_batch-empty"),
+    _case(lambda targets: solve_ik_batch(ARM, targets), [[1.0, "x", 2.0]], ShapeError,
+          "real numbers", "solve_ik_batch-strings"),
+]
+
+
+@pytest.mark.parametrize(("call", "bad", "error", "message"), FIXED_IN_THE_SOLVER_AND_PROBLEMS)
+def test_solver_and_problem_inputs(call, bad, error, message):
+    with pytest.raises(error, match=message):
+        call(bad)
+
+
+def test_a_robot_name_is_accepted_where_a_robot_is_expected():
+    assert solve_ik("eosma7", POSE).success

@@ -26,8 +26,8 @@ import numpy as np
 from pymoo.core.problem import Problem
 
 from moik._jit import jit, kernel_array
-from moik._validate import positive
-from moik.exceptions import NonFiniteError, ParameterError, TargetError
+from moik._validate import positive, real_array
+from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetError
 from moik.kinematics.orientation import metric_code, metric_target, rotation_error
 from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.chain import Robot
@@ -83,6 +83,14 @@ def ik_objectives(F, types, Q, mode, p_t, code, R_t, angles_t, weights, q_start,
 
 class _IKProblem(Problem):
     """Shared set-up: robot, target, bounds, displacement term."""
+
+    def evaluate(self, X, *args, **kwargs):
+        """pymoo's ``evaluate``, after checking that ``X`` has one column per joint."""
+        shape = np.shape(X)
+        if len(shape) not in (1, 2) or shape[-1] != self.n_var:
+            raise ShapeError(f"X must have shape (n, {self.n_var}) or ({self.n_var},) (one "
+                             f"column per joint), got {shape}")
+        return super().evaluate(X, *args, **kwargs)
 
     n_obj_ik = 1
 
@@ -183,7 +191,7 @@ class PoseIK(_OrientedIK):
     def __init__(self, robot: Robot, target, *, weights=(0.5, 0.5),
                  orientation: str = "geodesic", displacement_weight: float = 0.0,
                  q_start=None):
-        w = np.asarray(weights, dtype=float)
+        w = real_array("weights", weights, error=ParameterError)
         if w.shape != (2,) or not np.all(np.isfinite(w)) or np.any(w < 0) or w.sum() == 0:
             raise ParameterError(
                 f"weights must be two finite non-negative numbers, not both zero; got {weights}"

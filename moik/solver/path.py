@@ -21,7 +21,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from moik._validate import integer, keywords, positive
-from moik.exceptions import ParameterError
+from moik.exceptions import ParameterError, TargetError
 from moik.problems.targets import as_target, check_unit_range
 from moik.robots.chain import Robot
 from moik.solver.options import SearchOptions, seed_sequence
@@ -90,6 +90,9 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
         UnknownNameError: An unknown algorithm or orientation metric.
     """
     t0 = time.perf_counter()
+    if isinstance(targets, str | bytes | dict) or not hasattr(targets, "__iter__"):
+        raise TargetError(f"targets must be a sequence of targets (positions, poses or "
+                          f"Targets), got {type(targets).__name__}")
     targets = [as_target(t) for t in targets]
     if not targets:
         raise ParameterError("targets must hold at least one target")

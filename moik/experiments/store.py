@@ -115,9 +115,9 @@ class ResultStore:
         except (OSError, ValueError) as exc:
             raise ResultsError(f"{str(folder)!r} is not a moik results folder (meta.json: "
                                f"{exc.__class__.__name__})") from None
-        if meta.get("format") != FORMAT:
-            raise ResultsError(f"{folder}/meta.json has format {meta.get('format')!r}, "
-                               f"expected {FORMAT!r}")
+        found = meta.get("format") if isinstance(meta, dict) else type(meta).__name__
+        if found != FORMAT:
+            raise ResultsError(f"{folder}/meta.json has format {found!r}, expected {FORMAT!r}")
         store = cls(folder, meta)
         if flag("verify", verify):
             store.damaged = store.check_arrays()

@@ -72,14 +72,26 @@ def drop_lines(ax, points: np.ndarray, *, z: float = 0.0):
     return coll
 
 
-def finish_3d(ax, unit: str | None, *, ticks: int = 5) -> None:
-    """Axis labels with ``unit``, equal scales, at most ``ticks`` ticks per axis."""
+def finish_3d(ax, unit: str | None, *, ticks: int = 5, min_fraction: float = 0.3) -> None:
+    """Axis labels with ``unit``, equal scales, short axes lengthened, few ticks.
+
+    Equal scales squash an axis whose data spread is small (targets at nearly one
+    height) into a sliver with unreadable ticks: each axis is widened about its
+    centre to at least ``min_fraction`` of the longest one (the scales stay equal),
+    and gets at most ``ticks`` ticks, fewer in proportion when it is shorter.
+    """
     from matplotlib.ticker import MaxNLocator
 
     sfx = f" ({unit})" if unit else ""
-    ax.set_xlabel(f"x{sfx}")
-    ax.set_ylabel(f"y{sfx}")
-    ax.set_zlabel(f"z{sfx}")
+    ax.set_xlabel(f"x{sfx}", labelpad=8)
+    ax.set_ylabel(f"y{sfx}", labelpad=8)
+    ax.set_zlabel(f"z{sfx}", labelpad=10)
+    limits = [ax.get_xlim(), ax.get_ylim(), ax.get_zlim()]
+    longest = max(hi - lo for lo, hi in limits)
+    setters = (ax.set_xlim, ax.set_ylim, ax.set_zlim)
+    for (lo, hi), set_lim, axis in zip(limits, setters, (ax.xaxis, ax.yaxis, ax.zaxis),
+                                       strict=True):
+        half = max(hi - lo, min_fraction * longest) / 2
+        set_lim((lo + hi) / 2 - half, (lo + hi) / 2 + half)
+        axis.set_major_locator(MaxNLocator(max(3, round(ticks * 2 * half / longest))))
     ax.set_aspect("equal")
-    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):  # equal aspect squeezes short axes
-        axis.set_major_locator(MaxNLocator(ticks))

@@ -130,9 +130,10 @@ def plot_robot(robot: Robot, Q, *, ax=None, target=None, target_rotation=None, l
     scale = float(max(np.max(np.linalg.norm(every, axis=1)), 1e-9))
     side = None
     if ax is None:
-        fig = plt.figure(figsize=(12.5, 6.0) if side_view else (7.0, 6.0))
-        ax = fig.add_subplot(1, 2 if side_view else 1, 1, projection="3d")
-        side = fig.add_subplot(1, 2, 2) if side_view else None
+        fig = plt.figure(figsize=(13.0, 6.0) if side_view else (7.0, 6.0))
+        grid = fig.add_gridspec(1, 2 if side_view else 1, wspace=0.3)  # room for the z label
+        ax = fig.add_subplot(grid[0, 0], projection="3d")
+        side = fig.add_subplot(grid[0, 1]) if side_view else None
     ax.view_init(elev=20, azim=-60)
     ground_grid(ax, every)
     styles = []
@@ -155,7 +156,11 @@ def plot_robot(robot: Robot, Q, *, ax=None, target=None, target_rotation=None, l
     base_marker(ax)
     finish_3d(ax, robot.unit)
     ax.set_title(f"{robot.name}: 3-D view")
-    legend_outside(ax, loc="below", ncol=1, below=0.0)
+    if side is not None:  # below the whole figure: clear of the 3-D tick labels in any view
+        ax.legend(loc="upper left", bbox_to_anchor=(0.03, 0.02),
+                  bbox_transform=ax.figure.transFigure, fontsize="small")
+    else:
+        legend_outside(ax, loc="below", ncol=1, below=-0.06)
     if side is not None:
         _side_view(side, robot, frames, joints, p_t, styles, scale,
                    has_target_frame=R_t is not None)
@@ -178,8 +183,11 @@ def _side_view(ax, robot: Robot, frames, joints, p_t, styles, scale: float, *,
         h = flat(F[:, :3, 3])
         ax.plot(h[:, 0], h[:, 1], **st)
     _joint_numbers(ax, flat(joints), [s["color"] for s in styles], scale, dims=2)
+    z = np.concatenate([frames[..., 2, 3].ravel()] + ([[p_t[2]]] if p_t is not None else []))
     ax.axhline(0.0, color="0.3", linewidth=1.0)
-    ax.axhspan(-0.04 * scale, 0.0, color="0.85", zorder=0)
+    on_the_ground = z.min() > -1e-9 * scale  # else the base frame is not on the floor
+    if on_the_ground:
+        ax.axhspan(-0.04 * scale, 0.0, color="0.85", zorder=0)
     ax.plot([0.0], [0.0], "ks", markersize=8, zorder=10)
     if p_t is not None:
         t = flat(p_t)
@@ -188,13 +196,15 @@ def _side_view(ax, robot: Robot, frames, joints, p_t, styles, scale: float, *,
     unit = robot.unit
     ax.set_xlabel(f"horizontal distance from the base toward azimuth {azimuth:.0f} deg ({unit})")
     ax.set_ylabel(f"height z ({unit})")
-    z = np.concatenate([frames[..., 2, 3].ravel()] + ([[p_t[2]]] if p_t is not None else []))
-    ax.set_ylim(min(z.min(), 0.0) - 0.06 * scale, z.max() + 0.1 * scale)
+    low, high = min(z.min(), 0.0) - 0.06 * scale, z.max() + 0.1 * scale
+    ax.set_ylim(low, max(high, low + 0.4 * scale))  # a flat arm keeps a readable panel
     ax.set_aspect("equal", adjustable="box")
     ax.grid(True, alpha=0.3)
     ax.set_title("side view: true heights (vertical plane through base and target)")
     shared = " (black where solutions share them)" if len(frames) > 1 else ""
     oriented = ", target dashed" if has_target_frame else ""
-    ax.text(0.0, -0.2, f"frame axes (3-D view): x red, y green, z blue; end effector solid"
-            f"{oriented}\nnumbers: joints{shared}; black square: base; grey: the ground z = 0",
-            transform=ax.transAxes, fontsize=8, color="0.3", va="top")
+    plane = "the ground z = 0" if on_the_ground else "the base frame's plane z = 0"
+    ax.annotate(f"frame axes (3-D view): x red, y green, z blue; end effector solid{oriented}"
+                f"\nnumbers: joints{shared}; black square: base; grey: {plane}",
+                xy=(0.0, 0.0), xycoords="axes fraction", xytext=(0, -48),
+                textcoords="offset points", fontsize=8, color="0.3", va="top")

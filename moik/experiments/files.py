@@ -27,6 +27,30 @@ _NPZ_ERRORS = (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile)
 """What reading a damaged ``.npz`` raises (emptied: EOFError; garbage: ValueError ...)."""
 
 
+def make_folders(folder: Path) -> Path | None:
+    """Create ``folder`` and missing parents; the topmost one this call created (or None).
+
+    Raises:
+        ResultsError: If a folder cannot be created.
+    """
+    made = None
+    for p in [*folder.parents][::-1] + [folder]:
+        if p.is_dir():
+            continue
+        try:
+            p.mkdir()
+        except FileExistsError:
+            if not p.is_dir():
+                raise ResultsError(f"cannot create the results folder {str(folder)!r}: "
+                                   f"{str(p)!r} is a file") from None
+        except OSError as exc:
+            raise ResultsError(f"cannot create the results folder {str(folder)!r}: {exc}"
+                               ) from None
+        else:
+            made = p if made is None else made
+    return made
+
+
 def atomic_write_bytes(path: Path, data: bytes) -> None:
     """Write ``data`` to ``path`` atomically (temporary file + ``os.replace``)."""
     tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")

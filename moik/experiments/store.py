@@ -50,6 +50,7 @@ from moik.exceptions import ResultsError
 from moik.experiments.files import (
     atomic_write_bytes,
     environment,
+    make_folders,
     read_npz,
     remove_stale_temporaries,
 )
@@ -138,13 +139,7 @@ class ResultStore:
                 stored configuration differs.
         """
         folder = Path(folder)
-        try:
-            folder.mkdir(parents=True)
-            made = True
-        except FileExistsError:
-            made = False
-        except OSError as exc:
-            raise ResultsError(f"cannot create the results folder {str(folder)!r}: {exc}") from None
+        made = make_folders(folder)
         lock = None
         try:
             lock = RunLock.acquire(folder)
@@ -155,8 +150,8 @@ class ResultStore:
             store = cls._prepare(folder, config=config, targets=targets, trials=trials,
                                  resume=resume, session=session)
         except BaseException:
-            if made:
-                shutil.rmtree(folder, ignore_errors=True)
+            if made is not None and lock is not None:  # made here, and no other run got in
+                shutil.rmtree(made, ignore_errors=True)
             if lock is not None:
                 lock.release()
             raise

@@ -170,7 +170,7 @@ def test_a_failed_start_leaves_no_folder(tmp_path, tiny_config, monkeypatch):
     monkeypatch.setattr(ResultStore, "_prepare", classmethod(broken))
     with pytest.raises(ResultsError, match="disk full"):
         run_experiment(tiny_config, out=tmp_path / "new" / "r")
-    assert not (tmp_path / "new" / "r").exists()
+    assert not (tmp_path / "new").exists()
     (tmp_path / "old").mkdir()
     with pytest.raises(ResultsError, match="disk full"):
         run_experiment(tiny_config, out=tmp_path / "old")

@@ -6,7 +6,8 @@ validated into :class:`ExperimentConfig` by their kind
 (:mod:`moik.experiments.kinds`: IK problems on robot arms, benchmark
 functions); :func:`run_experiment` runs their trials (serially, in a process
 pool or on Dask) and stores each as it finishes in a :class:`ResultStore`;
-:func:`write_report` writes the Markdown report.
+:func:`write_report` writes the Markdown report; :func:`load_results` returns
+the stored trials as records (or a pandas DataFrame).
 :func:`solve_until_success` is the EOSMA paper's re-solve protocol.
 """
 
@@ -14,6 +15,7 @@ from moik.experiments.config import ExperimentConfig, load_config
 from moik.experiments.protocol import ProtocolResult, solve_until_success
 from moik.experiments.registry import available_experiments, get_experiment
 from moik.experiments.report import write_report
+from moik.experiments.results import load_results
 from moik.experiments.runner import RunSummary, run_experiment
 from moik.experiments.store import ResultStore
 
@@ -24,6 +26,7 @@ __all__ = [
     "RunSummary",
     "available_experiments",
     "get_experiment",
+    "load_results",
     "load_config",
     "run_experiment",
     "solve_until_success",

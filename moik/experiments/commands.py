@@ -9,7 +9,7 @@ from moik._validate import integer
 from moik.exceptions import MoikError
 from moik.experiments.config import load_config
 from moik.experiments.registry import ENV_VAR, experiment_files, get_experiment
-from moik.experiments.report import write_report
+from moik.experiments.report import make_report
 from moik.experiments.runner import default_out, run_experiment
 
 
@@ -44,6 +44,8 @@ def cmd_run(args: argparse.Namespace) -> int:
               f"`moik experiment run {what}{' --quick' if args.quick else ''} --out {out} "
               "--resume`", file=sys.stderr)
         return 130
+    for note in summary.notes:
+        print(f"moik: note: {note}", file=sys.stderr)
     print(f"{config.name}: ran {summary.ran} trial(s) ({summary.failed} failed), "
           f"{summary.skipped} already finished, {summary.total} in all, "
           f"{summary.wall_time:.1f} s; results in {summary.folder}")
@@ -55,10 +57,16 @@ def cmd_run(args: argparse.Namespace) -> int:
 
 
 def cmd_report(args: argparse.Namespace) -> int:
-    """Write the Markdown report of a results folder."""
-    path = write_report(args.folder, figures=not args.no_figures, output=args.output)
-    print(f"report written to {path}")
-    return 0
+    """Write the Markdown report of a results folder (1 if a folder could not be reported)."""
+    report = make_report(args.folder, figures=not args.no_figures, output=args.output)
+    print(f"report written to {report.path}")
+    if report.warnings:
+        print(f"{len(report.warnings)} folder(s) with damaged or missing trials (left out; "
+              "see the warnings)")
+    if report.failed:
+        print(f"{len(report.failed)} folder(s) could not be reported: "
+              + "; ".join(report.failed))
+    return 1 if report.failed else 0
 
 
 def _positive_int(text: str) -> int:

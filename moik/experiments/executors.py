@@ -8,8 +8,9 @@ the results folder (remote Dask workers need no shared file system).
 - ``pool``: ``multiprocessing.Pool(workers)`` with ``imap_unordered`` (chunks
   of one trial); workers ignore SIGINT, so Ctrl-C reaches only the parent, which
   terminates the pool: the trials in flight are lost, the stored ones are not.
-- ``dask``: ``distributed.Client(address)``; ``client.map(run_trial, specs)``
-  and ``distributed.as_completed``; on interrupt the futures are cancelled.
+- ``dask``: ``distributed.Client(address)`` (connected before the results folder
+  is made); ``client.map(run_trial, specs)`` and ``distributed.as_completed``;
+  on interrupt the futures are cancelled.
   Needs the optional extra ``moik[dask]`` and moik installed on the workers.
 
 :class:`Progress` is a tqdm bar when tqdm is installed, else a plain line on
@@ -54,23 +55,31 @@ def run_pool(specs: Sequence[TrialSpec], workers: int) -> Iterator[tuple[dict, d
         pool.join()
 
 
-def run_dask(specs: Sequence[TrialSpec], address: str, *,
-             timeout: float = 20.0) -> Iterator[tuple[dict, dict]]:
-    """Run the trials on the Dask scheduler at ``address`` (connecting for ``timeout`` s).
+def connect_dask(address: str, *, timeout: float = 20.0):
+    """A ``distributed.Client`` of the scheduler at ``address`` (connecting for ``timeout`` s).
+
+    The runner connects before it creates the results folder, so an unreachable
+    scheduler leaves nothing behind.
 
     Raises:
         ParameterError: If ``dask.distributed`` is not installed or the scheduler
             cannot be reached.
     """
     try:
-        from distributed import Client, as_completed
+        from distributed import Client
     except ImportError:
         raise ParameterError("--dask-scheduler needs dask.distributed: "
                              "pip install 'moik[dask]'") from None
     try:
-        client = Client(address, timeout=timeout)
+        return Client(address, timeout=timeout)
     except (OSError, TimeoutError, ValueError) as exc:
         raise ParameterError(f"cannot connect to the Dask scheduler {address!r}: {exc}") from None
+
+
+def run_on_client(specs: Sequence[TrialSpec], client) -> Iterator[tuple[dict, dict]]:
+    """Run the trials on a connected Dask ``client`` (cancelled on interrupt, not closed)."""
+    from distributed import as_completed
+
     futures = []
     try:
         futures = client.map(run_trial, list(specs), pure=False)
@@ -79,12 +88,24 @@ def run_dask(specs: Sequence[TrialSpec], address: str, *,
     finally:
         if futures:
             client.cancel(futures)
+
+
+def run_dask(specs: Sequence[TrialSpec], address: str, *,
+             timeout: float = 20.0) -> Iterator[tuple[dict, dict]]:
+    """Run the trials on the Dask scheduler at ``address`` (see :func:`connect_dask`)."""
+    client = connect_dask(address, timeout=timeout)
+    try:
+        yield from run_on_client(specs, client)
+    finally:
         client.close()
 
 
-def execute(specs: Sequence[TrialSpec], *, workers: int = 1,
-            dask_scheduler: str | None = None) -> Iterator[tuple[dict, dict]]:
-    """Pick the executor: Dask if an address is given, a pool if ``workers > 1``, else serial."""
+def execute(specs: Sequence[TrialSpec], *, workers: int = 1, dask_scheduler: str | None = None,
+            dask_client=None) -> Iterator[tuple[dict, dict]]:
+    """Pick the executor: Dask if a client or an address is given, a pool if ``workers > 1``,
+    else serial."""
+    if dask_client is not None:
+        return run_on_client(specs, dask_client)
     if dask_scheduler:
         return run_dask(specs, dask_scheduler)
     if workers > 1 and len(specs) > 1:

@@ -9,10 +9,17 @@ circle (MO-m-PSO Fig. 7) or the front with its compromise (Fig. 5a);
 ``signed-rank`` convergence and errors (MO-m-PSO Fig. 8). Files go to
 ``OUT/figures/NAME.png`` and ``.pdf``. A figure that cannot be drawn is skipped
 with a note; drawing never fails the report.
+
+Every axis says its unit: objective values carry the objective's formula and
+units (:func:`objective_label`; Eq. 28 adds metres to radians, and the label says
+so), orientation errors the metric's unit. The config's ``proposed`` algorithm
+(else its first one: the configs list the paper's method first) is emphasised
+in every figure that compares algorithms.
 """
 
 from __future__ import annotations
 
+import textwrap
 from collections.abc import Callable
 from pathlib import Path
 
@@ -42,11 +49,42 @@ def _per_target(res: Results, lab: str, key: str) -> np.ndarray:
     return np.array([np.mean(v) if v else np.nan for v in vals])
 
 
+def orientation_unit(metric: str) -> str:
+    """Unit of an orientation metric's values (the Frobenius norm has none)."""
+    return "dimensionless" if metric == "frobenius" else "rad"
+
+
+def objective_label(problem: dict, unit: str) -> tuple[str, str]:
+    """``(units, formula)`` of a single-objective IK problem's objective value.
+
+    E.g. ``("m", "position error (m)")`` or ``("m and rad added", "0.5 x position
+    error (m) + 0.5 x eosma-euler orientation error (rad)")``.
+    """
+    kind, metric = problem["kind"], problem.get("orientation", "geodesic")
+    o_unit = orientation_unit(metric)
+    if kind == "pose":
+        w1, w2 = problem.get("weights", (0.5, 0.5))
+        formula = (f"{w1:g} x position error ({unit}) + {w2:g} x {metric} orientation error "
+                   f"({o_unit})")
+        units = {unit, o_unit}
+    else:
+        formula, units = f"position error ({unit})", {unit}
+    w = float(problem.get("displacement_weight", 0.0))
+    if w > 0:
+        formula += f" + {w:g} x joint distance (rad)"
+        units.add("rad")
+    units.discard("dimensionless")
+    text = " and ".join(sorted(units)) + (" added" if len(units) > 1 else "")
+    return text, formula
+
+
 def _plans(res: Results) -> list[tuple[str, str, Callable]]:
     """(file stem, caption, draw(save_stem)) of every figure that applies."""
     cfg, labels, plans = res.config, res.labels, []
     robot = get_robot(cfg["robot"])
     unit = robot.unit
+    proposed = cfg.get("proposed") or (res.meta.get("algorithms") or [None])[0]
+    units, formula = objective_label(cfg["problem"], unit)
     analyses = cfg.get("analyses", [])
     targets = res.meta["targets"]
     pos = np.array([t["position"] for t in targets])
@@ -59,14 +97,17 @@ def _plans(res: Results) -> list[tuple[str, str, Callable]]:
         curves = _curves(res, labels)
         if curves:
             plans.append(("convergence", "Mean convergence curves", lambda s: mp.plot_convergence(
-                curves, ylabel="mean best objective", save=s)))
+                curves, ylabel=f"mean best objective ({units})", proposed=proposed,
+                title="Mean convergence\n" + textwrap.fill(f"f = {formula}", 56), save=s)))
         errors = {lab: np.nan_to_num(res.values(lab, "best_f"), posinf=1e300) for lab in labels}
         plans.append(("errors", "Final objective values", lambda s: mp.plot_error_boxes(
-            errors, ylabel="final objective value", save=s)))
+            errors, ylabel=f"final objective ({units})", proposed=proposed,
+            title="Final objective values\n" + textwrap.fill(f"f = {formula}", 56), save=s)))
     if "summary" in analyses and len(targets) > 1:
         times = {lab: _per_target(res, lab, "time") for lab in labels}
         plans.append(("times", "Solve time per target", lambda s: mp.plot_solve_times(
-            times, save=s)))
+            times, ylabel="solve time per target, mean over runs (s)", proposed=proposed,
+            save=s)))
     if "ranksum" in analyses:
         samples = {lab: np.nan_to_num(res.values(lab, "best_f"), posinf=1e300) for lab in labels}
         if cfg["proposed"] in samples and len(samples) > 1:
@@ -86,10 +127,13 @@ def _plans(res: Results) -> list[tuple[str, str, Callable]]:
                 r0 = [r for r in res.by_label[labels[0]] if r["target"] == ti][0]
                 comp = [r0["position_error"], r0["orientation_error"]]
             if fronts:
+                metric = cfg["problem"].get("orientation", "geodesic")
+                ylabel = f"{metric} orientation error ({orientation_unit(metric)})"
                 plans.append((f"front-{ti}", f"Pareto fronts at {t['name']} (first run)",
-                              lambda s, f=fronts, c=comp, n=t["name"]: mp.plot_pareto_fronts(
-                                  f, compromise=c, xlabel=f"position error ({unit})",
-                                  title=f"PF at {n}", save=s)))
+                              lambda s, f=fronts, c=comp, n=t["name"], y=ylabel:
+                              mp.plot_pareto_fronts(
+                                  f, compromise=c, xlabel=f"position error ({unit})", ylabel=y,
+                                  title=f"PF at {n}", proposed=proposed, save=s)))
     if "joint-motion" in analyses and labels:
         best = {lab: min(res.by_label[lab], key=lambda r: r["best_f"])["best_x"]
                 for lab in labels}
@@ -97,13 +141,16 @@ def _plans(res: Results) -> list[tuple[str, str, Callable]]:
         first, others = labels[0], {lab: best[lab] for lab in labels[1:]}
         plans.append(("motion", "Motion from the start to the solutions", lambda s:
                       mp.plot_motion(robot, q0, best[first], label=first, others=others or None,
-                                     target=pos[0], save=s)))
+                                     target=pos[0], proposed=proposed, save=s)))
         best_run = min(res.by_label[first], key=lambda r: r["best_f"])
         history = res.store.load_arrays(best_run["trial"]).get("best_x_history")
         if history is not None and len(history):
+            values = np.where(robot.is_prismatic, history, np.degrees(history))
+            ylabel = (f"joint value (deg | {unit} for prismatic joints)"
+                      if np.any(robot.is_prismatic) else "joint angle (deg)")
             plans.append(("joint-history", f"Best candidate joint angles of {first} per "
-                          "iteration (its best run)", lambda s, h=history: mp.plot_joint_history(
-                              np.degrees(h), ylabel="joint angle (deg)",
+                          "iteration (its best run)", lambda s, h=values: mp.plot_joint_history(
+                              h, ylabel=ylabel,
                               title=f"Best candidate joint angles ({first})", save=s)))
     if "compromise" in analyses and cfg["targets"]["kind"] == "circle" and labels:
         lab = labels[0]

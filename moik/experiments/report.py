@@ -6,15 +6,23 @@ folders (``results/`` after several ``moik experiment run``). The report,
 metadata (versions, commit, machine, executors), the tables of its analyses
 with the paper's numbers side by side, and the figures (``figures/`` beside
 each results folder) when :mod:`moik.plotting` can draw them.
+
+Damaged results do not stop a report: trials whose arrays are damaged or
+missing are left out (the counts say what is really there) with a warning in
+the section and on stderr, and a folder that cannot be read at all gets a
+section saying why while the others are reported.
 """
 
 from __future__ import annotations
 
+import sys
+from dataclasses import dataclass, field
 from pathlib import Path
 
-from moik.exceptions import ResultsError
+from moik.exceptions import MoikError, ResultsError
 from moik.experiments.analysis import analyze
 from moik.experiments.figures import make_figures
+from moik.experiments.files import atomic_write_bytes
 from moik.experiments.store import ResultStore
 from moik.experiments.tables import Results, Table
 
@@ -22,13 +30,17 @@ from moik.experiments.tables import Results, Table
 def result_folders(folder: str | Path) -> list[Path]:
     """``folder`` itself if it is a results folder, else its results sub-folders.
 
+    A sub-folder counts if it has a ``meta.json`` or a ``results.jsonl`` (a results
+    folder that lost its metadata is reported as unreadable, not silently skipped).
+
     Raises:
         ResultsError: If neither holds a ``meta.json``.
     """
     folder = Path(folder)
     if (folder / "meta.json").is_file():
         return [folder]
-    subs = sorted(p.parent for p in folder.glob("*/meta.json")) if folder.is_dir() else []
+    subs = sorted({p.parent for name in ("meta.json", "results.jsonl")
+                   for p in folder.glob(f"*/{name}")}) if folder.is_dir() else []
     if not subs:
         raise ResultsError(f"{str(folder)!r} holds no moik results (no meta.json in it or in "
                            "its sub-folders); run `moik experiment run NAME --out DIR` first")
@@ -73,7 +85,10 @@ def _section(store: ResultStore, base: Path, *, figures: bool) -> str:
              "- sessions: " + "; ".join(f"{s['started']} ({s.get('executor', '?')})"
                                         for s in sess),
              f"- results folder: `{store.folder}`"]
-    lines += [f"- {n}" for n in res.notes()] + [""]
+    lines += [f"- {n}" for n in res.notes()]
+    if store.damaged:
+        lines.append(f"- **warning**: {damaged_warning(store)}")
+    lines.append("")
     lines += [table_markdown(t) for t in tables]
     if figures:
         made, notes = _figures(res, store.folder / "figures")
@@ -92,25 +107,82 @@ def _figures(res: Results, folder: Path):
     return make_figures(res, folder)
 
 
-def write_report(folder: str | Path, *, figures: bool = True,
-                 output: str | Path | None = None) -> Path:
-    """Write the Markdown report of ``folder`` and return its path.
+def damaged_warning(store: ResultStore) -> str:
+    """One sentence naming the trials of ``store`` left out for damaged or missing arrays."""
+    n = len(store.damaged)
+    shown = "; ".join(list(store.damaged.values())[:5]) + ("; ..." if n > 5 else "")
+    return (f"{n} trial(s) left out: their arrays are damaged or missing ({shown}); "
+            f"`moik experiment run {store.meta.get('experiment', 'NAME')}"
+            f"{' --quick' if store.meta.get('quick') else ''} --out {store.folder} --resume` "
+            "runs them again")
+
+
+@dataclass
+class Report:
+    """What :func:`make_report` wrote.
+
+    Attributes:
+        path: The report file.
+        warnings: Damaged or missing trials, per folder (the report goes on without them).
+        failed: Folders that could not be reported, each with the reason.
+    """
+
+    path: Path
+    warnings: list[str] = field(default_factory=list)
+    failed: list[str] = field(default_factory=list)
+
+
+_FOLDER_ERRORS = (MoikError, OSError, ValueError, KeyError, TypeError, IndexError)
+"""What reading or analysing one damaged folder may raise (a report goes on past it)."""
+
+
+def make_report(folder: str | Path, *, figures: bool = True,
+                output: str | Path | None = None) -> Report:
+    """Write the Markdown report of ``folder``; one bad results folder does not stop it.
 
     Args:
         folder: A results folder or a folder of results folders.
         figures: Draw the figures (needs matplotlib).
         output: Report file (default ``folder/report.md``).
 
+    Returns:
+        A :class:`Report` (warnings and failed folders are also printed on stderr).
+
     Raises:
-        ResultsError: If ``folder`` holds no results.
+        ResultsError: If ``folder`` holds no results, or no folder in it can be read.
     """
     base = Path(folder)
-    stores = [ResultStore.open(p) for p in result_folders(base)]
     out = Path(output) if output is not None else base / "report.md"
+    report = Report(out)
     parts = ["# moik reproduction report", "",
              "Tables put moik's numbers (source `moik`) beside the paper's (source = the "
              "paper's table). Times are wall-clock seconds per trial on the machine named in "
              "each section; the papers' times are MATLAB times on theirs.", ""]
-    parts += [_section(s, out.parent, figures=figures) for s in stores]
-    out.write_text("\n".join(parts))
-    return out
+    subs = result_folders(base)
+    for sub in subs:
+        try:
+            store = ResultStore.open(sub, verify=True)
+            if store.damaged:
+                report.warnings.append(f"{sub}: {damaged_warning(store)}")
+                print(f"moik: warning: {sub}: {damaged_warning(store)}", file=sys.stderr)
+            parts.append(_section(store, out.parent, figures=figures))
+        except _FOLDER_ERRORS as exc:
+            why = f"{exc.__class__.__name__}: {exc}"
+            report.failed.append(f"{sub}: {why}")
+            print(f"moik: warning: {sub} not reported: {why}", file=sys.stderr)
+            parts.append(f"## {sub.name}: not reported\n\n- `{sub}` could not be read or "
+                         f"analysed: {why}\n")
+    if len(report.failed) == len(subs):
+        raise ResultsError("no results folder could be reported: " + "; ".join(report.failed))
+    atomic_write_bytes(out, "\n".join(parts).encode())
+    return report
+
+
+def write_report(folder: str | Path, *, figures: bool = True,
+                 output: str | Path | None = None) -> Path:
+    """Write the Markdown report of ``folder`` and return its path (see :func:`make_report`).
+
+    Raises:
+        ResultsError: If ``folder`` holds no results, or no folder in it can be read.
+    """
+    return make_report(folder, figures=figures, output=output).path

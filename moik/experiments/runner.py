@@ -9,7 +9,7 @@ from pathlib import Path
 
 from moik._validate import integer, optional_integer
 from moik.experiments.config import ExperimentConfig
-from moik.experiments.executors import Progress, execute
+from moik.experiments.executors import Progress, connect_dask, execute
 from moik.experiments.kinds.functions import check_requirements
 from moik.experiments.spec import spec_summary
 from moik.experiments.store import ResultStore
@@ -27,6 +27,10 @@ class RunSummary:
         ran: Trials run in this call.
         failed: Of those, trials that ended with ``status="error"``.
         wall_time: Seconds this call took.
+        rerun_damaged: Of ``ran``, stored trials run again because their arrays were
+            damaged or missing.
+        notes: What preparing the folder did or found (a stale lock taken over, stale
+            temporary files removed, damaged trials run again), one sentence each.
     """
 
     folder: Path
@@ -35,6 +39,8 @@ class RunSummary:
     ran: int
     failed: int
     wall_time: float
+    rerun_damaged: int = 0
+    notes: tuple[str, ...] = ()
 
 
 def default_out(config: ExperimentConfig) -> Path:
@@ -55,6 +61,11 @@ def run_experiment(config: ExperimentConfig, *, out: str | Path | None = None,
                    limit: int | None = None) -> RunSummary:
     """Run ``config`` (or its quick size) and store every trial as it finishes.
 
+    A Dask scheduler is connected before the folder is made; the folder's run
+    lock is held from the start to the end of the run (a second live run into it
+    is refused). On resume every stored trial's arrays are read back; a trial
+    whose arrays are damaged or missing runs again (said in the summary's notes).
+
     Args:
         config: The experiment.
         out: Results folder (default :func:`default_out`).
@@ -69,7 +80,8 @@ def run_experiment(config: ExperimentConfig, *, out: str | Path | None = None,
         A :class:`RunSummary`.
 
     Raises:
-        ResultsError: If ``out`` holds other results (see :meth:`ResultStore.create`).
+        ResultsError: If ``out`` holds other results, or another live run holds it
+            (see :meth:`ResultStore.create`).
         ConfigError: If an optional extra the experiment ``requires`` is missing.
         ParameterError: For bad ``workers``/``limit`` or an unreachable scheduler.
     """
@@ -83,25 +95,50 @@ def run_experiment(config: ExperimentConfig, *, out: str | Path | None = None,
     folder = Path(out) if out is not None else default_out(cfg)
     executor = f"dask:{dask_scheduler}" if dask_scheduler else (
         f"pool:{workers}" if workers > 1 else "serial")
+    client = connect_dask(dask_scheduler) if dask_scheduler else None
+    try:
+        return _run(cfg, specs, targets, folder, executor, client=client, workers=workers,
+                    dask_scheduler=dask_scheduler, resume=resume, progress=progress,
+                    limit=limit, t0=t0)
+    finally:
+        if client is not None:
+            client.close()
+
+
+def _run(cfg: ExperimentConfig, specs, targets, folder: Path, executor: str, *, client,
+         workers: int, dask_scheduler: str | None, resume: bool, progress: bool,
+         limit: int | None, t0: float) -> RunSummary:
+    """The run under the folder's lock (see :func:`run_experiment`)."""
     store = ResultStore.create(folder, config=cfg, targets=[t.as_dict() for t in targets],
                                trials=[spec_summary(s) for s in specs], resume=resume,
                                session={"executor": executor})
-    done = store.finished_ids()
-    pending = [s for s in specs if s.trial_id not in done]
-    skipped = len(specs) - len(pending)
-    if limit is not None:
-        pending = pending[:limit]
-    bar = Progress(total=len(pending), done=skipped, label=cfg.name,
-                   enabled=progress)
     failed = 0
     try:
-        for record, arrays in execute(pending, workers=workers, dask_scheduler=dask_scheduler):
-            store.append(record, arrays)
-            ok = record.get("status") == "ok"
-            failed += not ok
-            bar.update(ok)
+        records = store.records()
+        damaged = store.check_arrays(records)
+        ok = {r["trial"] for r in records if r.get("status") == "ok"}
+        done = ok - set(damaged)
+        notes = list(store.notes)
+        if damaged:
+            notes.append(f"{len(damaged)} stored trial(s) have damaged or missing arrays, so "
+                         "they count as not finished and run again: "
+                         + "; ".join(damaged.values()))
+        pending = [s for s in specs if s.trial_id not in done]
+        skipped = len(specs) - len(pending)
+        if limit is not None:
+            pending = pending[:limit]
+        bar = Progress(total=len(pending), done=skipped, label=cfg.name, enabled=progress)
+        try:
+            for record, arrays in execute(pending, workers=workers,
+                                          dask_scheduler=dask_scheduler, dask_client=client):
+                store.append(record, arrays)
+                failed += record.get("status") != "ok"
+                bar.update(record.get("status") == "ok")
+        finally:
+            bar.close()
     finally:
-        bar.close()
         store.close()
     return RunSummary(folder=folder, total=len(specs), skipped=skipped, ran=len(pending),
-                      failed=failed, wall_time=time.perf_counter() - t0)
+                      failed=failed, wall_time=time.perf_counter() - t0,
+                      rerun_damaged=sum(s.trial_id in damaged for s in pending),
+                      notes=tuple(notes))

@@ -7,6 +7,7 @@ Layout (format ``moik-results/1``)::
                           targets, every planned trial with its seeds, one entry per session
     OUT/results.jsonl     one JSON object per finished trial (scalars, seeds, status)
     OUT/arrays/ID.npz     that trial's arrays (convergence curve, front, best x)
+    OUT/run.lock          while a run writes: its PID and host (see :mod:`moik.experiments.lock`)
 
 Why JSON lines + .npz: both are standard (``pandas.read_json(lines=True)``,
 ``numpy.load``), append-friendly and human-readable where it matters.
@@ -18,6 +19,17 @@ descriptor followed by ``fsync``: the line is the commit mark of the trial. A
 line torn by a crash (no trailing newline, or not valid JSON) is ignored when
 reading and cut off before the next append, so an interruption loses at most
 the trials in flight. Non-finite floats are stored as ``null``.
+
+One writer at a time: :meth:`ResultStore.create` takes the folder's run lock
+(:mod:`moik.experiments.lock`; a second live run is refused, a stale lock taken
+over) and removes the temporary files an interrupted write left behind.
+
+Damaged arrays: a trial counts as stored only if its ``.npz`` is there and
+every array in it reads back (zip CRC checked). :meth:`ResultStore.check_arrays`
+names the ok trials whose file is missing or unreadable; a resumed run runs
+them again, and a store opened with ``verify=True`` (the report,
+:func:`~moik.experiments.results.load_results`) leaves them out of
+:meth:`ResultStore.records`.
 """
 
 from __future__ import annotations
@@ -27,20 +39,25 @@ import io
 import json
 import math
 import os
-import platform
-import socket
-import subprocess
+import shutil
 import sys
 from pathlib import Path
 
 import numpy as np
-import pymoo
-import scipy
 
-from moik._version import __version__
+from moik._validate import flag
 from moik.exceptions import ResultsError
+from moik.experiments.files import (
+    atomic_write_bytes,
+    environment,
+    make_folders,
+    read_npz,
+    remove_stale_temporaries,
+)
+from moik.experiments.lock import RunLock
 
 FORMAT = "moik-results/1"
+
 
 
 def _now() -> str:
@@ -62,45 +79,6 @@ def _clean(value):
     return value
 
 
-def atomic_write_bytes(path: Path, data: bytes) -> None:
-    """Write ``data`` to ``path`` atomically (temporary file + ``os.replace``)."""
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    with open(tmp, "wb") as fh:
-        fh.write(data)
-        fh.flush()
-        os.fsync(fh.fileno())
-    os.replace(tmp, path)
-
-
-def environment() -> dict:
-    """Versions, git commit and machine description for the metadata.
-
-    The commit is that of the git checkout holding this moik (None for an installed wheel).
-    """
-    commit = None
-    try:
-        root = Path(__file__).resolve().parents[2]
-        out = subprocess.run(["git", "-C", str(root), "rev-parse", "HEAD"], capture_output=True,
-                             text=True, timeout=5, check=False)
-        if out.returncode == 0:
-            commit = out.stdout.strip()
-            dirty = subprocess.run(["git", "-C", str(root), "status", "--porcelain", "-uno"],
-                                   capture_output=True, text=True, timeout=5, check=False)
-            if dirty.stdout.strip():
-                commit += "-dirty"
-    except (OSError, subprocess.SubprocessError):
-        commit = None
-    return {
-        "versions": {"moik": __version__, "pymoo": pymoo.__version__,
-                     "numpy": np.__version__, "scipy": scipy.__version__,
-                     "python": platform.python_version()},
-        "git_commit": commit,
-        "machine": {"hostname": socket.gethostname(), "platform": platform.platform(),
-                    "processor": platform.processor() or platform.machine(),
-                    "cpu_count": os.cpu_count()},
-    }
-
-
 class ResultStore:
     """Reader/writer of one results folder (see the module docstring).
 
@@ -110,7 +88,10 @@ class ResultStore:
     def __init__(self, folder: Path, meta: dict):
         self.folder = Path(folder)
         self.meta = meta
+        self.damaged: dict[str, str] = {}
+        self.notes: list[str] = []
         self._fd: int | None = None
+        self._lock: RunLock | None = None
 
     @property
     def results_path(self) -> Path:
@@ -118,8 +99,13 @@ class ResultStore:
         return self.folder / "results.jsonl"
 
     @classmethod
-    def open(cls, folder: str | Path) -> ResultStore:
+    def open(cls, folder: str | Path, *, verify: bool = False) -> ResultStore:
         """Open an existing results folder for reading.
+
+        Args:
+            folder: The results folder.
+            verify: Check every stored trial's arrays now; the damaged or missing ones
+                (:attr:`damaged`: trial id -> what is wrong) are left out of :meth:`records`.
 
         Raises:
             ResultsError: If ``folder`` has no readable ``meta.json``.
@@ -130,21 +116,52 @@ class ResultStore:
         except (OSError, ValueError) as exc:
             raise ResultsError(f"{str(folder)!r} is not a moik results folder (meta.json: "
                                f"{exc.__class__.__name__})") from None
-        if meta.get("format") != FORMAT:
-            raise ResultsError(f"{folder}/meta.json has format {meta.get('format')!r}, "
-                               f"expected {FORMAT!r}")
-        return cls(folder, meta)
+        found = meta.get("format") if isinstance(meta, dict) else type(meta).__name__
+        if found != FORMAT:
+            raise ResultsError(f"{folder}/meta.json has format {found!r}, expected {FORMAT!r}")
+        store = cls(folder, meta)
+        if flag("verify", verify):
+            store.damaged = store.check_arrays()
+        return store
 
     @classmethod
     def create(cls, folder: str | Path, *, config, targets: list[dict], trials: list[dict],
                resume: bool, session: dict) -> ResultStore:
         """Prepare ``folder`` for a run of ``config`` (a new one, or a resumed one).
 
+        Takes the folder's run lock (released by :meth:`close`) and removes stale
+        temporary files; what it did is in :attr:`notes`. A folder this call made
+        is removed again if preparing it fails.
+
         Raises:
-            ResultsError: If the folder holds results and ``resume`` is False, or
-                ``resume`` is True and the stored configuration differs.
+            ResultsError: If another live run holds the folder's lock, the folder
+                holds results and ``resume`` is False, or ``resume`` is True and the
+                stored configuration differs.
         """
         folder = Path(folder)
+        made = make_folders(folder)
+        lock = None
+        try:
+            lock = RunLock.acquire(folder)
+            notes = [f"took over a stale run lock: {lock.replaced}"] if lock.replaced else []
+            removed = remove_stale_temporaries(folder)
+            if removed:
+                notes.append(f"removed {removed} stale temporary file(s) of interrupted writes")
+            store = cls._prepare(folder, config=config, targets=targets, trials=trials,
+                                 resume=resume, session=session)
+        except BaseException:
+            if made is not None and lock is not None:  # made here, and no other run got in
+                shutil.rmtree(made, ignore_errors=True)
+            if lock is not None:
+                lock.release()
+            raise
+        store._lock, store.notes = lock, notes
+        return store
+
+    @classmethod
+    def _prepare(cls, folder: Path, *, config, targets: list[dict], trials: list[dict],
+                 resume: bool, session: dict) -> ResultStore:
+        """The body of :meth:`create`, run under the lock."""
         env = environment()
         entry = {"started": _now(), **session, **env}
         if (folder / "meta.json").exists():
@@ -165,8 +182,7 @@ class ResultStore:
                 return old
         (folder / "arrays").mkdir(parents=True, exist_ok=True)
         if not resume:
-            for stale in (folder / "results.jsonl",):
-                stale.unlink(missing_ok=True)
+            (folder / "results.jsonl").unlink(missing_ok=True)
         meta = {"format": FORMAT, "experiment": config.name, "quick": config.is_quick,
                 "config_path": config.path, "config": config.raw,
                 "config_fingerprint": config.fingerprint(), "algorithms": config.labels,
@@ -196,7 +212,8 @@ class ResultStore:
 
     def append(self, record: dict, arrays: dict) -> None:
         """Store one finished trial: its arrays (atomic), then its line (commit mark)."""
-        record = dict(record, finished_at=_now(), has_arrays=bool(arrays))
+        record = dict(record, finished_at=_now(), has_arrays=bool(arrays),
+                      **({"arrays": sorted(arrays)} if arrays else {}))
         if arrays:
             buf = io.BytesIO()
             np.savez(buf, **{k: np.asarray(v) for k, v in arrays.items()})
@@ -209,13 +226,19 @@ class ResultStore:
         os.fsync(self._fd)
 
     def close(self) -> None:
-        """Close the append descriptor (appending reopens it)."""
+        """Close the append descriptor and release the run lock."""
         if self._fd is not None:
             os.close(self._fd)
             self._fd = None
+        if self._lock is not None:
+            self._lock.release()
+            self._lock = None
 
     def records(self) -> list[dict]:
-        """The stored trial records, the last one per trial id, in file order."""
+        """The stored trial records, the last one per trial id, in file order.
+
+        A store opened with ``verify=True`` leaves out the trials in :attr:`damaged`.
+        """
         if not self.results_path.exists():
             return []
         by_id: dict[str, dict] = {}
@@ -228,18 +251,41 @@ class ResultStore:
                 continue
             by_id.pop(rec["trial"], None)
             by_id[rec["trial"]] = rec
-        return list(by_id.values())
+        return [r for r in by_id.values() if r["trial"] not in self.damaged]
+
+    def check_arrays(self, records: list[dict] | None = None) -> dict[str, str]:
+        """Trial id -> what is wrong, for each ok trial whose arrays are missing or damaged.
+
+        Every array of every stored ``.npz`` is read back (and, where the record lists
+        its array names, each is checked to be there).
+        """
+        bad = {}
+        for r in self.records() if records is None else records:
+            if r.get("status") != "ok" or not r.get("has_arrays"):
+                continue
+            try:
+                got = read_npz(self.folder / "arrays" / self.array_name(r["trial"]))
+            except ResultsError as exc:
+                bad[r["trial"]] = str(exc)
+                continue
+            lost = sorted(set(r.get("arrays", ())) - set(got))
+            if lost:
+                bad[r["trial"]] = f"arrays file of {r['trial']!r} lacks {', '.join(lost)}"
+        return bad
 
     def finished_ids(self) -> set[str]:
-        """Ids of trials stored with status ``ok`` and their arrays in place."""
-        return {r["trial"] for r in self.records() if r.get("status") == "ok" and (
-            not r.get("has_arrays") or (self.folder / "arrays" / self.array_name(r["trial"])
-                                        ).exists())}
+        """Ids of trials stored with status ``ok`` and their arrays intact."""
+        records = self.records()
+        bad = self.check_arrays(records)
+        return {r["trial"] for r in records if r.get("status") == "ok" and r["trial"] not in bad}
 
     def load_arrays(self, trial_id: str) -> dict[str, np.ndarray]:
-        """The arrays of a trial (empty dict if it stored none)."""
+        """The arrays of a trial (empty dict if it stored none).
+
+        Raises:
+            ResultsError: If its arrays file is damaged.
+        """
         path = self.folder / "arrays" / self.array_name(trial_id)
         if not path.exists():
             return {}
-        with np.load(path) as data:
-            return {k: data[k] for k in data.files}
+        return read_npz(path)

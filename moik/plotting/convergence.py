@@ -14,8 +14,12 @@ from moik.plotting._common import (
     check_floor,
     check_mapping,
     floored,
+    integer_ticks,
+    legend_outside,
     new_axes,
     save_figure,
+    series_style,
+    sparse_markers,
 )
 
 
@@ -30,6 +34,7 @@ def plot_convergence(
     xlabel: str = "iteration",
     ylabel: str = "mean best fitness",
     title: str = "Mean convergence curves",
+    proposed: str | None = None,
     save: str | None = None,
 ):
     """Mean best-so-far value per generation, one line per algorithm.
@@ -53,7 +58,12 @@ def plot_convergence(
         xlabel: X label (say ``"function evaluations"`` when ``x`` holds them).
         ylabel: Y label with the quantity and unit.
         title: Axes title.
+        proposed: The paper's proposed algorithm: drawn thicker, on top, bold in the legend.
         save: Path stem; writes ``save.png`` and ``save.pdf``.
+
+    Each algorithm has its own colour, marker and line style (distinct up to 20
+    algorithms); the legend is beside the axes; without ``x`` the iteration axis
+    has integer ticks.
 
     Returns:
         The Axes (one line per algorithm, one filled band each when ``band``).
@@ -70,9 +80,9 @@ def plot_convergence(
                                  f"got {band}")
     if log:
         floor = check_floor(floor)
-        ylabel = f"{ylabel} [< {floor:g} shown at {floor:g}]"
+        ylabel = f"{ylabel}\n[< {floor:g} shown at {floor:g}]"
     ax = new_axes(ax)
-    for name, C in curves.items():
+    for i, (name, C) in enumerate(curves.items()):
         C = np.atleast_2d(as_array(C, f"curves of {name!r}"))
         if C.ndim != 2 or C.shape[1] == 0:
             raise ShapeError(f"curves of {name!r} must be (runs, generations), got {C.shape}")
@@ -83,7 +93,9 @@ def plot_convergence(
         mean = C.mean(axis=0)
         if log:
             mean = floored(mean, floor, f"curves of {name!r}")
-        (line,) = ax.plot(xs, mean, label=f"{name} (n={C.shape[0]})")
+        (line,) = ax.plot(xs, mean, label=f"{name} (n={C.shape[0]})",
+                          markevery=sparse_markers(i, len(xs)),
+                          **series_style(i, emphasis=name == proposed))
         if band is not None:
             low, high = np.percentile(C, [lo, hi], axis=0)
             if log:
@@ -98,7 +110,9 @@ def plot_convergence(
         title = f"{title} (band: {lo:g}-{hi:g} percentile over runs)"
     ax.set_title(title)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize="small")
+    if x is None:
+        integer_ticks(ax.xaxis)
+    legend_outside(ax, proposed=proposed)
     save_figure(ax.figure, save)
     return ax
 
@@ -141,11 +155,13 @@ def plot_joint_history(
     ax = new_axes(ax)
     it = np.arange(1, H.shape[0] + 1)
     for j in range(dof):
-        ax.plot(it, H[:, j], label=str(labels[j]))
+        ax.plot(it, H[:, j], label=str(labels[j]), markevery=sparse_markers(j, len(it)),
+                **series_style(j))
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.set_title(title)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize="small", ncol=2)
+    integer_ticks(ax.xaxis)
+    legend_outside(ax)
     save_figure(ax.figure, save)
     return ax

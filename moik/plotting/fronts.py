@@ -13,8 +13,10 @@ from moik.plotting._common import (
     check_floor,
     check_mapping,
     floored,
+    legend_outside,
     new_axes,
     save_figure,
+    series_style,
 )
 
 
@@ -29,6 +31,7 @@ def plot_pareto_fronts(
     title: str = "Pareto fronts",
     log: bool = False,
     floor: float = LOG_FLOOR,
+    proposed: str | None = None,
     save: str | None = None,
 ):
     """Two-objective fronts, one marker series per algorithm, sorted by f1.
@@ -48,7 +51,12 @@ def plot_pareto_fronts(
         log: Log scale on both axes; values below ``floor`` are drawn at
             ``floor`` and the axis labels say so.
         floor: Smallest value shown on log axes.
+        proposed: The paper's proposed algorithm: larger markers with a black edge,
+            on top, bold in the legend.
         save: Path stem; writes ``save.png`` and ``save.pdf``.
+
+    Each algorithm has its own colour and marker (distinct up to 20 algorithms);
+    the legend is beside the axes.
 
     Returns:
         The Axes (one line per algorithm, then the compromise line if given).
@@ -70,13 +78,16 @@ def plot_pareto_fronts(
         xlabel = f"{xlabel} [< {floor:g} shown at {floor:g}]"
         ylabel = f"{ylabel} [< {floor:g} shown at {floor:g}]"
     ax = new_axes(ax)
-    for name, F in arrays.items():
+    for i, (name, F) in enumerate(arrays.items()):
         F = F[np.argsort(F[:, 0], kind="stable")]
-        ax.plot(F[:, 0], F[:, 1], marker="o", markersize=4, linestyle="none",
-                label=f"{name} ({len(F)})")
+        style = series_style(i, emphasis=name == proposed) | {"linestyle": "none"}
+        style["markersize"] += 1.0
+        if i >= 10:  # the second ten: hollow markers as well as other colours
+            style["markerfacecolor"] = "none"
+        ax.plot(F[:, 0], F[:, 1], label=f"{name} ({len(F)})", **style)
     if point is not None:
-        ax.plot([point[0]], [point[1]], marker="*", markersize=14, linestyle="none",
-                color="red", label=compromise_label)
+        ax.plot([point[0]], [point[1]], marker="*", markersize=16, linestyle="none",
+                color="red", markeredgecolor="black", zorder=10, label=compromise_label)
     if log:
         ax.set_xscale("log")
         ax.set_yscale("log")
@@ -84,7 +95,7 @@ def plot_pareto_fronts(
     ax.set_ylabel(ylabel)
     ax.set_title(title)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize="small")
+    legend_outside(ax, proposed=proposed)
     save_figure(ax.figure, save)
     return ax
 

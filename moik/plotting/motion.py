@@ -9,7 +9,16 @@ import numpy as np
 
 from moik.exceptions import ParameterError, ShapeError
 from moik.kinematics.trajectory import quintic_trajectory
-from moik.plotting._common import as_array, check_mapping, new_axes, save_figure, unit_suffix
+from moik.plotting._common import (
+    as_array,
+    check_mapping,
+    legend_outside,
+    new_axes,
+    save_figure,
+    series_style,
+    sparse_markers,
+)
+from moik.plotting._scene import base_marker, finish_3d, ground_grid
 from moik.robots.chain import Robot
 
 
@@ -29,6 +38,7 @@ def plot_end_effector_paths(
     show_arm: bool = True,
     ax=None,
     title: str = "End-effector trajectories",
+    proposed: str | None = None,
     save: str | None = None,
 ):
     """End-effector paths of quintic joint motions from ``q_start`` to each goal.
@@ -48,7 +58,12 @@ def plot_end_effector_paths(
         show_arm: Also draw the arm (grey) at the start and at each goal.
         ax: A 3-D Axes to draw in (a new figure otherwise).
         title: Axes title.
+        proposed: The paper's proposed algorithm's goal label: its path thicker, on top.
         save: Path stem; writes ``save.png`` and ``save.pdf``.
+
+    The scene has the ground grid at ``z = 0`` and the base (black square) for
+    reference, each path its own colour, marker and line style; the legend is
+    beside the axes.
 
     Returns:
         The Axes: one path line per goal (labelled), then grey arm lines when
@@ -71,26 +86,32 @@ def plot_end_effector_paths(
         ends[name] = q1
     t_pos = None if target is None else as_array(target, "target position", shape=(3,))
     ax = new_axes(ax, figsize=(6.0, 5.0), projection="3d")
-    for name, q1 in ends.items():
+    drawn = []
+    for i, (name, q1) in enumerate(ends.items()):
         _, Q, _, _ = quintic_trajectory(q0, q1, duration, n)
         p = robot.fk(Q)[:, :3, 3]
-        ax.plot(p[:, 0], p[:, 1], p[:, 2], linewidth=2, label=name)
+        style = series_style(i, emphasis=name == proposed)
+        style["linewidth"] += 0.7
+        style["markersize"] -= 2.0
+        ax.plot(p[:, 0], p[:, 1], p[:, 2], label=name, markevery=sparse_markers(i, n, 6),
+                **style)
+        drawn.append(p)
     if show_arm:
         for q in (q0, *ends.values()):
             pts = robot.frames(q)[:, :3, 3]
             ax.plot(pts[:, 0], pts[:, 1], pts[:, 2], "-o", color="0.6", markersize=2, linewidth=1)
+            drawn.append(pts)
+    ground_grid(ax, np.vstack(drawn))
+    base_marker(ax, label=None)
     p0 = robot.fk(q0)[:3, 3]
-    ax.plot([p0[0]], [p0[1]], [p0[2]], "ko", markersize=5, label="start")
+    ax.plot([p0[0]], [p0[1]], [p0[2]], "o", color="white", markeredgecolor="black",
+            markersize=7, label="start", zorder=8)
     if t_pos is not None:
         ax.scatter([t_pos[0]], [t_pos[1]], [t_pos[2]], marker="*", s=120, color="red",
                    label="target")
-    sfx = unit_suffix(robot.unit)
-    ax.set_xlabel(f"x{sfx}")
-    ax.set_ylabel(f"y{sfx}")
-    ax.set_zlabel(f"z{sfx}")
-    ax.set_aspect("equal")
+    finish_3d(ax, robot.unit)
     ax.set_title(title)
-    ax.legend(loc="upper left", fontsize="small")
+    legend_outside(ax, proposed=proposed, below=0.0, loc="below")
     save_figure(ax.figure, save)
     return ax
 
@@ -105,6 +126,7 @@ def plot_motion(
     label: str = "solution",
     others: Mapping[str, np.ndarray] | None = None,
     target=None,
+    proposed: str | None = None,
     save: str | None = None,
 ):
     """Quintic motion from ``q_start`` to ``q_goal``: path plus joint curves.
@@ -123,6 +145,7 @@ def plot_motion(
         label: Legend text of ``q_goal``'s path (e.g. ``"EOSMA"``).
         others: Optional label -> configuration ``(dof,)`` for more paths in (a).
         target: Optional desired position ``(3,)`` drawn as a star in (a).
+        proposed: The paper's proposed algorithm's label: its path thicker, on top.
         save: Path stem; writes ``save.png`` and ``save.pdf``.
 
     Returns:
@@ -146,10 +169,12 @@ def plot_motion(
         raise ShapeError(f"q_start and q_goal must have shape ({robot.dof},), "
                          f"got {q0.shape} and {q1.shape}")
     t, Q, Qd, Qdd = quintic_trajectory(q0, q1, duration, n)
-    fig = plt.figure(figsize=(11.0, 8.0))
+    fig = plt.figure(figsize=(12.0, 8.5), layout="constrained")
     ax3 = fig.add_subplot(2, 2, 1, projection="3d")
     plot_end_effector_paths(robot, q0, goals, duration=duration, n=n, target=target, ax=ax3,
-                            title="(a) end-effector trajectory")
+                            title="(a) end-effector trajectory\n(grey: arm at start and goals; "
+                                  "black square: base)",
+                            proposed=proposed)
     u = _joint_units(robot)
     panels = (
         (Q, "(b) joint angle", f"angle ({u})"),
@@ -159,14 +184,14 @@ def plot_motion(
     for k, (Y, ttl, ylabel) in enumerate(panels):
         ax = fig.add_subplot(2, 2, k + 2)
         for j in range(robot.dof):
-            ax.plot(t, Y[:, j], label=f"q{j + 1}")
+            ax.plot(t, Y[:, j], label=f"q{j + 1}", markevery=sparse_markers(j, len(t)),
+                    **series_style(j))
         ax.set_xlabel("time (s)")
         ax.set_ylabel(ylabel)
         ax.set_title(ttl)
         ax.grid(True, alpha=0.3)
         if k == 0:
-            ax.legend(fontsize="small", ncol=2)
+            legend_outside(ax)
     fig.suptitle(f"{robot.name}: quintic motion to {label} in {float(duration):g} s")
-    fig.tight_layout()
     save_figure(fig, save)
     return fig

@@ -11,9 +11,12 @@ from moik.plotting._common import (
     as_array,
     check_floor,
     floored,
+    integer_ticks,
     save_figure,
+    series_style,
     unit_suffix,
 )
+from moik.plotting._scene import finish_3d
 
 
 def plot_path_tracking(
@@ -60,6 +63,7 @@ def plot_path_tracking(
             optional array with another number of points.
     """
     import matplotlib.pyplot as plt
+    from mpl_toolkits.mplot3d.art3d import Line3DCollection
 
     D = as_array(desired, "desired points", shape=(None, 3))
     R = as_array(reached, "reached points", shape=(None, 3))
@@ -86,20 +90,21 @@ def plot_path_tracking(
         note = f" [< {floor:g} shown at {floor:g}]"
 
     n_right = 1 + (ori is not None) + (joints is not None)
-    fig = plt.figure(figsize=(11.0, 3.2 * max(n_right, 2)))
-    grid = fig.add_gridspec(n_right, 2)
+    fig = plt.figure(figsize=(12.5, 3.0 * max(n_right, 2)), layout="constrained")
+    fig.get_layout_engine().set(wspace=0.12)  # room for the 3-D z label beside the panels
+    grid = fig.add_gridspec(n_right, 2, width_ratios=(1.1, 1.0))
     ax3 = fig.add_subplot(grid[:, 0], projection="3d")
     ax3.plot(D[:, 0], D[:, 1], D[:, 2], "r-o", markersize=3, label="desired")
-    ax3.plot(R[:, 0], R[:, 1], R[:, 2], "k--x", markersize=3, label="reached")
-    sfx = unit_suffix(unit)
-    ax3.set_xlabel(f"x{sfx}")
-    ax3.set_ylabel(f"y{sfx}")
-    ax3.set_zlabel(f"z{sfx}")
-    ax3.set_aspect("equal")
-    ax3.set_title("(a) desired and reached path")
-    ax3.legend(loc="upper left", fontsize="small")
+    ax3.plot(R[:, 0], R[:, 1], R[:, 2], "k--x", markersize=4, label="reached")
+    ax3.add_collection3d(Line3DCollection(np.stack([D, R], axis=1), colors="0.5",
+                                          linewidths=0.7))
+    finish_3d(ax3, unit)
+    ax3.set_title("(a) desired and reached path\n(grey: each desired point to its reached one)")
+    ax3.legend(loc="upper left", bbox_to_anchor=(0.0, 1.0), fontsize="small")
 
     idx = np.arange(1, npts + 1)
+    sfx = unit_suffix(unit)
+    note = f"\n{note.strip()}" if note else ""  # own line: keeps the labels short
     row = 0
     ax = fig.add_subplot(grid[row, 1])
     ax.plot(idx, pos_err, "b.-", label=f"mean {pos_err.mean():.3g} {unit or ''}".rstrip())
@@ -116,20 +121,24 @@ def plot_path_tracking(
     for ax in panels:
         if log:
             ax.set_yscale("log")
-        ax.legend(fontsize="small")
+        ax.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.01, 1.0),
+                  borderaxespad=0)
     if joints is not None:
         row += 1
         ax = fig.add_subplot(grid[row, 1], sharex=panels[0])
         for j in range(joints.shape[1]):
-            ax.plot(idx, joints[:, j], ".-", markersize=3, label=f"q{j + 1}")
+            ax.plot(idx, joints[:, j], label=f"q{j + 1}",
+                    **(series_style(j) | {"markersize": 3, "linewidth": 1.0}))
         ax.set_ylabel("joint angle (rad)")
         ax.set_title("(b) joint angles per point")
-        ax.legend(fontsize="small", ncol=2)
+        ax.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.01, 1.0),
+                  borderaxespad=0)
         panels.append(ax)
     for ax in panels:
         ax.grid(True, alpha=0.3)
+    integer_ticks(panels[-1].xaxis)
     panels[-1].set_xlabel("path point index")
+    fig.align_ylabels(panels)
     fig.suptitle(f"{title} ({npts} points)")
-    fig.tight_layout()
     save_figure(fig, save)
     return fig

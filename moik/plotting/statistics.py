@@ -14,8 +14,12 @@ from moik.plotting._common import (
     check_floor,
     check_mapping,
     floored,
+    integer_ticks,
+    legend_outside,
     new_axes,
     save_figure,
+    series_style,
+    sparse_markers,
 )
 
 
@@ -27,6 +31,7 @@ def plot_solve_times(
     xlabel: str = "target index",
     ylabel: str = "solve time (s)",
     title: str = "Solve time per target",
+    proposed: str | None = None,
     save: str | None = None,
 ):
     """Wall time of every algorithm at every target, one line per algorithm.
@@ -41,10 +46,12 @@ def plot_solve_times(
         xlabel: X label.
         ylabel: Y label with unit.
         title: Axes title.
+        proposed: The paper's proposed algorithm: drawn thicker, on top, bold in the legend.
         save: Path stem; writes ``save.png`` and ``save.pdf``.
 
     Returns:
-        The Axes (one line per algorithm, x = 1..targets).
+        The Axes (one line per algorithm, x = 1..targets, integer ticks; the legend
+        beside the axes).
 
     Raises:
         ParameterError: empty ``times``, negative times, or zero times on a log axis.
@@ -60,16 +67,18 @@ def plot_solve_times(
             need = "> 0 on a log axis" if log else ">= 0"
             raise ParameterError(f"times of {name!r} must be {need}, got min {t.min():g}")
     ax = new_axes(ax, figsize=(7.0, 4.5))
-    for name, t in arrays.items():
-        ax.plot(np.arange(1, len(t) + 1), t, marker=".", linewidth=1,
-                label=f"{name} (mean {t.mean():.3g} s)")
+    for i, (name, t) in enumerate(arrays.items()):
+        ax.plot(np.arange(1, len(t) + 1), t, label=f"{name} (mean {t.mean():.3g} s)",
+                markevery=sparse_markers(i, len(t), 25),
+                **series_style(i, emphasis=name == proposed))
     if log:
         ax.set_yscale("log")
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.set_title(title)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize="small", ncol=2)
+    integer_ticks(ax.xaxis)
+    legend_outside(ax, proposed=proposed)
     save_figure(ax.figure, save)
     return ax
 
@@ -82,6 +91,7 @@ def plot_error_boxes(
     ax=None,
     ylabel: str = "final error",
     title: str = "Final errors",
+    proposed: str | None = None,
     save: str | None = None,
 ):
     """Box plot of final errors, one box per algorithm.
@@ -98,6 +108,8 @@ def plot_error_boxes(
         ax: Axes to draw in (a new figure otherwise).
         ylabel: Y label with the quantity and unit.
         title: Axes title.
+        proposed: The paper's proposed algorithm: its box drawn thicker in colour,
+            its name in bold.
         save: Path stem; writes ``save.png`` and ``save.pdf``.
 
     Returns:
@@ -112,10 +124,19 @@ def plot_error_boxes(
     if log:
         floor = check_floor(floor)
         arrays = {n: floored(e, floor, f"errors of {n!r}") for n, e in arrays.items()}
-        ylabel = f"{ylabel} [< {floor:g} shown at {floor:g}]"
+        sep = "\n" if len(ylabel) > 30 else " "  # a long label keeps the note on its own line
+        ylabel = f"{ylabel}{sep}[< {floor:g} shown at {floor:g}]"
     ax = new_axes(ax, figsize=(max(5.0, 0.6 * len(arrays) + 2), 4.5))
-    ax.boxplot(list(arrays.values()), showfliers=True)
+    parts = ax.boxplot(list(arrays.values()), showfliers=True)
     ax.set_xticks(np.arange(1, len(arrays) + 1), list(arrays))  # works on matplotlib >= 3.7
+    if proposed in arrays:
+        k = list(arrays).index(proposed)
+        for key in ("boxes", "medians", "whiskers", "caps"):
+            per_box = len(parts[key]) // len(arrays)
+            for line in parts[key][k * per_box:(k + 1) * per_box]:
+                line.set_linewidth(2.4)
+                line.set_color(series_style(0)["color"] if key != "medians" else "black")
+        ax.get_xticklabels()[k].set_fontweight("bold")
     if log:
         ax.set_yscale("log")
     ax.tick_params(axis="x", labelrotation=45 if len(arrays) > 5 else 0)
@@ -162,6 +183,8 @@ def plot_wilcoxon(
         ParameterError: empty ``p_values``, a p-value outside ``[0, 1]``, bad ``alpha``.
         ShapeError: a value that is not a scalar.
     """
+    from matplotlib.patches import Patch
+
     p_values = check_mapping(p_values, "p_values")
     alpha = float(alpha)
     if not 0 < alpha < 1:
@@ -182,13 +205,19 @@ def plot_wilcoxon(
     ax = new_axes(ax, figsize=(max(5.0, 0.6 * len(names) + 2), 4.5))
     colors = np.where(p < alpha, "tab:blue", "tab:orange")
     ax.bar(names, p, color=colors)
-    ax.axhline(alpha, color="red", linestyle="--", label=f"p = {alpha:g}")
+    level = ax.axhline(alpha, color="red", linestyle="--", label=f"p = {alpha:g}")
+    keys = [level] + [Patch(color=c, label=t) for c, t in (
+        ("tab:blue", f"p < {alpha:g}: significant difference"),
+        ("tab:orange", f"p >= {alpha:g}: no significant difference"))]
     if log:
-        ax.set_yscale("log")
+        ax.set_yscale("log")  # from a decade below the smallest p (or alpha) up to p = 1
+        ax.set_ylim(min(float(p.min()), alpha) / 10.0, 1.0)
+    else:
+        ax.set_ylim(0.0, 1.0)
     ax.tick_params(axis="x", labelrotation=45 if len(names) > 5 else 0)
     ax.set_xlabel("baseline algorithm")
     ax.set_ylabel(ylabel)
     ax.set_title(title if title is not None else f"Wilcoxon rank-sum test: {proposed} vs baselines")
-    ax.legend(fontsize="small")
+    legend_outside(ax, loc="below", below=-0.3 if len(names) > 5 else -0.15, handles=keys)
     save_figure(ax.figure, save)
     return ax

@@ -7,6 +7,7 @@ import numpy as np
 
 from moik.exceptions import ParameterError, ShapeError
 from moik.plotting._common import as_array, new_axes, save_figure, unit_suffix
+from moik.plotting._scene import finish_3d
 
 _AXIS_NAMES = ("x", "y", "z")
 
@@ -71,12 +72,8 @@ def plot_targets(
         ax.quiver(P[:, 0], P[:, 1], P[:, 2], d[:, 0], d[:, 1], d[:, 2],
                   length=arrow_length, normalize=True, color="tab:red", linewidth=0.8,
                   label=f"target {_AXIS_NAMES[axis]} axis")
-    sfx = unit_suffix(unit)
-    ax.set_xlabel(f"x{sfx}")
-    ax.set_ylabel(f"y{sfx}")
-    ax.set_zlabel(f"z{sfx}")
-    ax.set_aspect("equal")
+    finish_3d(ax, unit)
     ax.set_title(title)
-    ax.legend(loc="upper left", fontsize="small")
+    ax.legend(loc="upper left", bbox_to_anchor=(0.0, -0.14), fontsize="small", ncol=2)
     save_figure(ax.figure, save)
     return ax

@@ -10,8 +10,9 @@ from pathlib import Path
 
 PACKAGE = Path(__file__).resolve().parents[2] / "moik" / "experiments"
 
-LAZY = {"distributed", "tqdm", "matplotlib", "matplotlib.pyplot"}
-"""Dask (optional extra, only ``--dask-scheduler``), tqdm (optional), matplotlib (only drawing)."""
+LAZY = {"distributed", "tqdm", "matplotlib", "matplotlib.pyplot", "pandas"}
+"""Dask (optional extra, only ``--dask-scheduler``), tqdm (optional), matplotlib (only drawing),
+pandas (optional, only ``load_results(..., as_frame=True)``)."""
 
 
 def _modules() -> dict[str, Path]:

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import moik.experiments.runner as runner_mod
-from moik.exceptions import ResultsError
+from moik.exceptions import ParameterError, ResultsError
 from moik.experiments.runner import run_experiment
 from moik.experiments.store import ResultStore, atomic_write_bytes
 
@@ -96,3 +96,91 @@ def test_failed_trials_are_stored_and_retried_on_resume(tmp_path, tiny_config, m
     s = run_experiment(tiny_config, out=out, resume=True)
     assert s.ran == 1 and s.failed == 0
     assert all(r["status"] == "ok" for r in ResultStore.open(out).records())
+
+
+def _damage(out, trials):
+    """Empty the first trial's arrays, overwrite the second's with garbage, delete the third's."""
+    paths = [out / "arrays" / ResultStore.array_name(t) for t in trials]
+    paths[0].write_bytes(b"")
+    paths[1].write_bytes(b"not an npz at all")
+    paths[2].unlink()
+    return paths
+
+
+def test_damaged_or_missing_arrays_run_again_on_resume(tmp_path, tiny_config):
+    out = tmp_path / "r"
+    run_experiment(tiny_config, out=out)
+    trials = [r["trial"] for r in ResultStore.open(out).records()][:3]
+    _damage(out, trials)
+    store = ResultStore.open(out)
+    assert set(store.check_arrays()) == set(trials)
+    assert "an empty file" in store.check_arrays()[trials[0]]
+    assert "not an .npz archive" in store.check_arrays()[trials[1]]
+    assert "is missing" in store.check_arrays()[trials[2]]
+    with pytest.raises(ResultsError, match="is damaged"):
+        store.load_arrays(trials[0])
+    assert store.finished_ids() == {r["trial"] for r in store.records()} - set(trials)
+    s = run_experiment(tiny_config, out=out, resume=True)
+    assert (s.ran, s.skipped, s.rerun_damaged, s.failed) == (3, 5, 3, 0)
+    assert any("3 stored trial(s) have damaged or missing arrays" in n for n in s.notes)
+    store = ResultStore.open(out, verify=True)
+    assert store.damaged == {} and len(store.records()) == 8
+    assert all(store.load_arrays(t)["convergence"].size for t in trials)
+
+
+def test_a_flipped_byte_is_caught_by_the_zip_checksum(tmp_path, tiny_config):
+    out = tmp_path / "r"
+    run_experiment(tiny_config, out=out, limit=1)
+    trial = ResultStore.open(out).records()[0]["trial"]
+    path = out / "arrays" / ResultStore.array_name(trial)
+    data = bytearray(path.read_bytes())
+    data[60] ^= 0xFF  # inside the first array's data
+    path.write_bytes(bytes(data))
+    store = ResultStore.open(out, verify=True)
+    assert "CRC" in store.damaged[trial] and store.records() == []
+
+
+def test_arrays_named_in_the_record_must_all_be_there(tmp_path, tiny_config):
+    out = tmp_path / "r"
+    run_experiment(tiny_config, out=out, limit=1)
+    rec = ResultStore.open(out).records()[0]
+    assert rec["arrays"] == ["best_x", "convergence"]
+    path = out / "arrays" / ResultStore.array_name(rec["trial"])
+    np.savez(path, best_x=np.zeros(2))
+    assert "lacks convergence" in ResultStore.open(out).check_arrays()[rec["trial"]]
+
+
+def test_stale_temporaries_are_removed_at_the_start(tmp_path, tiny_config):
+    out = tmp_path / "r"
+    run_experiment(tiny_config, out=out, limit=1)
+    stale = [out / ".meta.json.4242.tmp", out / "arrays" / ".eosma__0__0.npz.4242.tmp"]
+    for p in stale:
+        p.write_bytes(b"half")
+    keep = out / "notes.tmp"  # not a temporary of moik's (no leading dot): kept
+    keep.write_text("mine")
+    s = run_experiment(tiny_config, out=out, resume=True)
+    assert not any(p.exists() for p in stale) and keep.exists()
+    assert "removed 2 stale temporary file(s) of interrupted writes" in s.notes
+
+
+def test_a_failed_start_leaves_no_folder(tmp_path, tiny_config, monkeypatch):
+    def broken(*args, **kwargs):
+        raise ResultsError("disk full")
+
+    monkeypatch.setattr(ResultStore, "_prepare", classmethod(broken))
+    with pytest.raises(ResultsError, match="disk full"):
+        run_experiment(tiny_config, out=tmp_path / "new" / "r")
+    assert not (tmp_path / "new").exists()
+    (tmp_path / "old").mkdir()
+    with pytest.raises(ResultsError, match="disk full"):
+        run_experiment(tiny_config, out=tmp_path / "old")
+    assert (tmp_path / "old").is_dir() and not any((tmp_path / "old").iterdir())
+
+
+def test_an_unreachable_dask_scheduler_leaves_no_folder(tmp_path, tiny_config, monkeypatch):
+    pytest.importorskip("distributed")
+    real = runner_mod.connect_dask
+    monkeypatch.setattr(runner_mod, "connect_dask", lambda a: real(a, timeout=1))
+    with pytest.raises(ParameterError, match="cannot connect to the Dask scheduler"):
+        run_experiment(tiny_config, out=tmp_path / "r", dask_scheduler="tcp://127.0.0.1:1")
+    assert not (tmp_path / "r").exists()

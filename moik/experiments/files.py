@@ -1,0 +1,125 @@
+"""Files of a results folder: atomic writes, stale temporaries, reading ``.npz`` arrays back,
+and the description of the run's environment that ``meta.json`` records.
+
+Every file a run writes goes to ``.NAME.PID.tmp`` first and is moved into place
+with ``os.replace`` (atomic on POSIX and Windows), so a reader never sees half a
+file; a crash leaves at most such a temporary, which the next run removes
+(:func:`remove_stale_temporaries`, under the folder's run lock).
+"""
+
+from __future__ import annotations
+
+import os
+import platform
+import socket
+import subprocess
+import zipfile
+from pathlib import Path
+
+import numpy as np
+import pymoo
+import scipy
+
+from moik._version import __version__
+from moik.exceptions import ResultsError
+
+_NPZ_ERRORS = (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile)
+"""What reading a damaged ``.npz`` raises (emptied: EOFError; garbage: ValueError ...)."""
+
+
+def make_folders(folder: Path) -> Path | None:
+    """Create ``folder`` and missing parents; the topmost one this call created (or None).
+
+    Raises:
+        ResultsError: If a folder cannot be created.
+    """
+    made = None
+    for p in [*folder.parents][::-1] + [folder]:
+        if p.is_dir():
+            continue
+        try:
+            p.mkdir()
+        except FileExistsError:
+            if not p.is_dir():
+                raise ResultsError(f"cannot create the results folder {str(folder)!r}: "
+                                   f"{str(p)!r} is a file") from None
+        except OSError as exc:
+            raise ResultsError(f"cannot create the results folder {str(folder)!r}: {exc}"
+                               ) from None
+        else:
+            made = p if made is None else made
+    return made
+
+
+def atomic_write_bytes(path: Path, data: bytes) -> None:
+    """Write ``data`` to ``path`` atomically (temporary file + ``os.replace``)."""
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    with open(tmp, "wb") as fh:
+        fh.write(data)
+        fh.flush()
+        os.fsync(fh.fileno())
+    os.replace(tmp, path)
+
+
+def remove_stale_temporaries(folder: Path) -> int:
+    """Delete the ``.NAME.PID.tmp`` files interrupted atomic writes left in ``folder``.
+
+    Only safe while holding the folder's run lock (no other writer). Returns the count.
+    """
+    removed = 0
+    for where in (folder, folder / "arrays"):
+        for tmp in where.glob(".*.tmp"):
+            tmp.unlink(missing_ok=True)
+            removed += 1
+    return removed
+
+
+def read_npz(path: Path) -> dict[str, np.ndarray]:
+    """Every array of the ``.npz`` at ``path``, read in full (so the zip CRCs are checked).
+
+    Raises:
+        ResultsError: If the file is missing or damaged (names the file and what is wrong).
+    """
+    try:
+        size = path.stat().st_size
+    except FileNotFoundError:
+        raise ResultsError(f"arrays file {str(path)!r} is missing") from None
+    if size == 0 or not zipfile.is_zipfile(path):
+        why = "an empty file" if size == 0 else f"{size} bytes that are not an .npz archive"
+        raise ResultsError(f"arrays file {str(path)!r} is damaged ({why})")
+    try:
+        with np.load(path, allow_pickle=False) as data:
+            return {k: data[k] for k in data.files}
+    except _NPZ_ERRORS as exc:
+        msg = str(exc).split(". ")[0]
+        raise ResultsError(f"arrays file {str(path)!r} is damaged "
+                           f"({exc.__class__.__name__}: {msg})") from None
+
+
+def environment() -> dict:
+    """Versions, git commit and machine description for the metadata.
+
+    The commit is that of the git checkout holding this moik (None for an installed wheel).
+    """
+    commit = None
+    try:
+        root = Path(__file__).resolve().parents[2]
+        out = subprocess.run(["git", "-C", str(root), "rev-parse", "HEAD"], capture_output=True,
+                             text=True, timeout=5, check=False)
+        if out.returncode == 0:
+            commit = out.stdout.strip()
+            dirty = subprocess.run(["git", "-C", str(root), "status", "--porcelain", "-uno"],
+                                   capture_output=True, text=True, timeout=5, check=False)
+            if dirty.stdout.strip():
+                commit += "-dirty"
+    except (OSError, subprocess.SubprocessError):
+        commit = None
+    return {
+        "versions": {"moik": __version__, "pymoo": pymoo.__version__,
+                     "numpy": np.__version__, "scipy": scipy.__version__,
+                     "python": platform.python_version()},
+        "git_commit": commit,
+        "machine": {"hostname": socket.gethostname(), "platform": platform.platform(),
+                    "processor": platform.processor() or platform.machine(),
+                    "cpu_count": os.cpu_count()},
+    }

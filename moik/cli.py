@@ -180,9 +180,9 @@ def _plot(robot: Robot, target: Target, Q: np.ndarray, status: str, files: list[
 
     labels = ([f"solution {k}" for k in range(1, len(Q) + 1)] if status == "solved"
               else [f"best ({status})"])
-    ax = plot_robot(robot, Q, labels=labels, target=target.position)
+    ax = plot_robot(robot, Q, labels=labels, target=target)
     for path in files:
-        ax.figure.savefig(path, dpi=120)
+        ax.figure.savefig(path, dpi=120, bbox_inches="tight")  # the legend sits outside
     plt.close(ax.figure)
 
 

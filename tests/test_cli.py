@@ -335,8 +335,8 @@ def test_unwritable_out_is_a_one_line_error(capsys, tmp_path):
             "--out", str(tmp_path / "file" / "r")]
     assert main(args) == 2
     err = capsys.readouterr().err
-    assert err.startswith("moik: error: cannot use ") and err.count("\n") == 1
-    assert "Not a directory" in err
+    assert err.startswith("moik: error: cannot ") and err.count("\n") == 1
+    assert "is a file" in err or "Not a directory" in err  # the results store says which
 
 
 def test_experiment_errors_are_one_line(capsys, tmp_path):

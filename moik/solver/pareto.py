@@ -109,16 +109,24 @@ class ParetoIKResult:
             raise ParameterError("no exact solution was found: no best member")
         return int(np.argmin(self.F_min[:, self.objectives.index(criterion)]))
 
-    def compromise(self) -> tuple[np.ndarray, np.ndarray]:
-        """The member closest to the utopia point (criteria scaled to [0, 1] over the set),
-        as ``(q, f)`` with ``f`` in natural signs.
+    def compromise_index(self) -> int:
+        """Index of the member closest to the utopia point (criteria scaled to [0, 1] over
+        the set; the MO-m-PSO paper's Eq. 8 pick).
 
         Raises:
             ShapeError: No solution was found.
         """
         if not len(self.X):
             raise ShapeError("no exact solution was found: nothing to pick a compromise from")
-        i = closest_to_utopia(self.F_min)
+        return closest_to_utopia(self.F_min)
+
+    def compromise(self) -> tuple[np.ndarray, np.ndarray]:
+        """The member of :meth:`compromise_index` as ``(q, f)`` copies (``f`` in natural signs).
+
+        Raises:
+            ShapeError: No solution was found.
+        """
+        i = self.compromise_index()
         return self.X[i].copy(), self.F[i].copy()
 
 

@@ -69,7 +69,8 @@ def test_same_seed_same_result_bit_for_bit(iiwa_result):
 
 def test_compromise_is_a_member(iiwa_result):
     q, f = iiwa_result.compromise()
-    i = int(np.flatnonzero(np.all(iiwa_result.X == q, axis=1))[0])
+    i = iiwa_result.compromise_index()
+    np.testing.assert_array_equal(iiwa_result.X[i], q)
     np.testing.assert_array_equal(iiwa_result.F[i], f)
 
 

@@ -105,7 +105,8 @@ def iiwa(args) -> None:
     print(f"  mutually non-dominated (independent)   {'met' if nd.all() else 'NOT met'}"
           f"  ({nd.sum()}/{len(nd)} poses)")
     print(f"  nearest <= ik_LM from q_current        {'met' if np.all(d <= d_lm) else 'NOT met'}"
-          f"  ({np.sum(d <= d_lm)}/{len(d)}; median ratio {np.median(d / d_lm):.3f})")
+          f"  ({np.sum(d <= d_lm)}/{len(d)}; median ratio {np.median(d / d_lm):.4f}, "
+          f"smallest margin {np.min(d_lm - d):.2e} rad)")
     ratio = m / b
     print(f"  most manipulable >= 0.99x best of 64   {'met' if ratio.min() >= 0.99 else 'NOT met'}"
           f"  (min ratio {ratio.min():.3f}, median {np.median(ratio):.3f})")

@@ -6,6 +6,8 @@
 - :func:`mo_search`: a registered multi-objective algorithm on the projected
   criteria (:class:`ProjectedCriteria`, unconstrained: a candidate whose
   projection fails gets a penalty every exact point dominates).
+- :class:`ProjectionRepair`: the projection as a pymoo ``Repair``, for any pymoo
+  algorithm on the constrained :class:`~moik.problems.pareto_ik.ParetoIK`.
 - :func:`local_search`: steps along the null space of the task Jacobian, each
   projected back, for weighted sums of the (scaled) criteria.
 - :func:`enumerate_branches`: the isolated solutions of a non-redundant arm.
@@ -16,6 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 from pymoo.core.problem import Problem
+from pymoo.core.repair import Repair
 from pymoo.core.sampling import Sampling
 
 from moik._jit import jit, kernel_array
@@ -164,6 +167,23 @@ class ProjectedCriteria(Problem):
         out["F"] = F if F.shape[1] > 1 else np.hstack([F, F])
 
 
+class ProjectionRepair(Repair):
+    """A pymoo repair that moves each candidate onto the target's exact solutions (LM,
+    as :class:`Projector`); candidates that do not converge are left as they are.
+
+    With it any pymoo algorithm on :class:`~moik.problems.pareto_ik.ParetoIK` becomes a
+    Lamarckian memetic search: ``NSGA2(repair=ProjectionRepair(problem))``.
+    """
+
+    def __init__(self, problem: ParetoIK):
+        super().__init__()
+        self.projector = Projector(problem)
+
+    def _do(self, problem, X, **kwargs):
+        P, ok, _ = self.projector.project(X)
+        return np.where(ok[:, None], P, X)
+
+
 class SeededSampling(Sampling):
     """pymoo's initial sampling: the rows of ``X0`` first, the rest uniform within the bounds
     (drawn from the algorithm's random state)."""
@@ -295,12 +315,13 @@ def local_search_starts(projector: Projector, per_extreme: int = 4
 
 def _distinct_best(robot, X: np.ndarray, score: np.ndarray, count: int) -> list[np.ndarray]:
     """The ``count`` rows of ``X`` lowest in ``score``, each ``START_DISTINCT`` from the others."""
+    order = np.argsort(score, kind="stable")
+    free = np.ones(len(order), dtype=bool)  # far enough from every row picked so far
     picked: list[np.ndarray] = []
-    for i in np.argsort(score, kind="stable"):
-        if len(picked) == count:
-            break
-        if not picked or np.all(joint_distance(robot, X[i], np.array(picked)) > START_DISTINCT):
-            picked.append(X[i])
+    while len(picked) < count and free.any():
+        q = X[order[int(np.argmax(free))]]
+        picked.append(q)
+        free &= joint_distance(robot, q, X[order]) > START_DISTINCT
     return picked
 
 

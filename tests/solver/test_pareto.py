@@ -2,13 +2,15 @@
 
 import numpy as np
 import pytest
+from pymoo.algorithms.moo.nsga2 import NSGA2
+from pymoo.optimize import minimize
 
 from moik import solve_ik, solve_ik_pareto
 from moik.exceptions import MoikError, NonFiniteError, ParameterError, ShapeError, UnknownNameError
 from moik.kinematics.criteria import Criterion
 from moik.problems import ParetoIK, random_reachable_targets
 from moik.robots import fk_reference, get_robot
-from moik.solver.pareto_search import spread_subset
+from moik.solver.pareto_search import ProjectionRepair, spread_subset
 
 IIWA = get_robot("iiwa14")
 POSE = random_reachable_targets(IIWA, 1, seed=11)[0]
@@ -145,3 +147,10 @@ def test_bad_input_raises_a_moik_error(kwargs, error, match):
     with pytest.raises(error, match=match) as info:
         solve_ik_pareto(IIWA, POSE, **options)
     assert isinstance(info.value, MoikError)
+
+
+def test_projection_repair_makes_a_pymoo_algorithm_memetic():
+    problem = ParetoIK(IIWA, POSE, q_current=Q_CURRENT)
+    run = minimize(problem, NSGA2(pop_size=20, repair=ProjectionRepair(problem)), ("n_gen", 3),
+                   seed=2)
+    assert run.F is not None and np.all(np.atleast_2d(run.CV) <= 0)  # every member exact

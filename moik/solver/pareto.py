@@ -8,7 +8,9 @@ manipulability, limit margin, ...). A memetic search finds the Pareto set:
 
 1. Levenberg-Marquardt (:func:`moik.solver.lm.lm_start`, compiled) from
    ``q_current`` and from seeded random configurations: exact solutions on
-   several branches.
+   several branches (with the ``orientation`` criterion, some of them first
+   driven towards the preferred rotation: where that pose is reachable its
+   solutions are the criterion's optimum).
 2. A registered multi-objective algorithm (MOEOSMA by default, any of the
    registry's) searches the joint space; each candidate it proposes is projected
    onto the target's solution set by the same LM (Marquardt's damped steps end at
@@ -16,13 +18,16 @@ manipulability, limit margin, ...). A memetic search finds the Pareto set:
    kept) and evaluated there. Candidates that do not converge get a penalty that
    every exact point dominates; the algorithm sees the criteria of the
    projections (Baldwinian learning), the pose constraint stays out of its sight.
-3. Local search on the solution set: from the best members of the archive, for
-   each criterion and a few weighted sums of them, steps along the null space of
+3. Local search on the solution set: from each criterion's best exact points
+   (a few, apart in joint space: other branches' optima) and from the archive
+   members best in a few weighted sums of the criteria, steps along the null space of
    the task Jacobian (directional derivatives by central differences, any
    criterion including the user's), each step projected back, several step
-   lengths at once (:mod:`moik.solver.pareto_local`).
+   lengths at once (:mod:`moik.solver.pareto_search` holds the machinery).
 
-Every exact point goes into an archive that keeps the non-dominated ones. A
+Every exact point (revolute joints shifted by 2 pi to the copy nearest
+``q_current`` within the limits, when it is given) goes into an archive that keeps
+the non-dominated ones. A
 non-redundant arm (a 6-DOF arm at a pose) has isolated branches only: they are
 enumerated by LM from many seeded starts (distinct modulo 2 pi) and the
 non-dominated ones are returned. Either way the returned set is thinned to
@@ -39,6 +44,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from moik._validate import integer, positive
+from moik.algorithms import get_algorithm
 from moik.algorithms.registry import is_multi_objective
 from moik.exceptions import ParameterError, ShapeError
 from moik.metrics.compromise import closest_to_utopia
@@ -130,8 +136,6 @@ class ParetoIKResult:
         return self.X[i].copy(), self.F[i].copy()
 
 
-
-
 def solve_ik_pareto(robot, target, *, objectives=DEFAULT_OBJECTIVES, q_current=None,
                     n_solutions: int = 20, tol=1e-9, seed=0, method: str = "moeosma",
                     rotation=None, starts: int = 128, pop_size: int = 30,
@@ -167,10 +171,10 @@ def solve_ik_pareto(robot, target, *, objectives=DEFAULT_OBJECTIVES, q_current=N
         A :class:`ParetoIKResult` (empty ``X`` when no exact solution was found).
 
     Raises:
-        ParameterError: A bad count, tolerance or criterion list (an unknown
-            keyword of a callable, ``joint_motion`` without ``q_current``, a
-            criterion given twice, ``orientation`` with a pose target), or a
-            single-objective ``method``.
+        ParameterError: A bad count, step, tolerance or criterion list
+            (``joint_motion`` without ``q_current``, a criterion given twice,
+            ``orientation`` with a pose target or without ``rotation``), a
+            single-objective ``method`` or a ``pop_size`` it refuses.
         UnknownNameError: An unknown criterion or algorithm name.
         ShapeError, NonFiniteError: A criterion returning the wrong shape or a
             non-finite value; a malformed ``q_current`` or target.
@@ -187,6 +191,7 @@ def solve_ik_pareto(robot, target, *, objectives=DEFAULT_OBJECTIVES, q_current=N
     local_step = positive("local_step", local_step)
     if not is_multi_objective(method):
         raise ParameterError(f"method must be a multi-objective algorithm, got {method!r}")
+    get_algorithm(method, pop_size=pop_size)  # the algorithm's own limits on pop_size
     seeds = seed_sequence(seed)
     rng = np.random.default_rng(seeds.spawn(1)[0])
     projector = Projector(problem)

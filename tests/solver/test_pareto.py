@@ -138,6 +138,8 @@ def test_spread_subset_keeps_each_criterions_best():
     ({"method": "eosma"}, ParameterError, "multi-objective algorithm"),
     ({"method": "nope"}, UnknownNameError, "unknown algorithm"),
     ({"n_solutions": 2.0}, ParameterError, "n_solutions"),
+    ({"pop_size": 1}, ParameterError, "pop_size"),
+    ({"local_step": 0.0}, ParameterError, "local_step"),
     ({"tol": -1.0}, ParameterError, "tol"),
     ({"seed": -1}, ParameterError, "seed"),
     ({"q_current": np.zeros(3)}, ShapeError, "q_current"),

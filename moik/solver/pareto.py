@@ -23,7 +23,8 @@ manipulability, limit margin, ...). A memetic search finds the Pareto set:
    members best in a few weighted sums of the criteria, steps along the null space of
    the task Jacobian (directional derivatives by central differences, any
    criterion including the user's), each step projected back, several step
-   lengths at once (:mod:`moik.solver.pareto_search` holds the machinery).
+   lengths at once (:mod:`moik.solver.pareto_local`; the projection, archive and
+   search are in :mod:`moik.solver.pareto_search`).
 
 Every exact point (revolute joints shifted by 2 pi to the copy nearest
 ``q_current`` within the limits, when it is given) goes into an archive that keeps
@@ -51,12 +52,11 @@ from moik.metrics.compromise import closest_to_utopia
 from moik.problems.pareto_ik import ParetoIK
 from moik.robots.catalog import as_robot
 from moik.solver.options import seed_sequence
+from moik.solver.pareto_local import local_search, local_search_starts
 from moik.solver.pareto_search import (
     BRANCH_STARTS,
     Projector,
     enumerate_branches,
-    local_search,
-    local_search_starts,
     mo_search,
     spread_subset,
 )

@@ -100,13 +100,15 @@ def as_json(robot, target: Target, res: ParetoIKResult, compromise: int | None) 
             "X": res.X.tolist(), "F": res.F.tolist(),
             "position_errors": res.position_errors.tolist(),
             "orientation_errors": res.orientation_errors.tolist(), "compromise": compromise,
-            "redundant": res.redundant, "n_eval": res.n_eval, "time": res.time}
+            "redundant": res.redundant, "n_exact": res.n_exact, "n_eval": res.n_eval,
+            "time": res.time}
 
 
 def format_result(robot, target: Target, res: ParetoIKResult, compromise: int | None) -> str:
     """The members as a table: criteria, then joint values in degrees."""
     kind = "pose" if target.rotation is not None else "position"
-    how = "memetic search" if res.redundant else "branch enumeration"
+    how = (f"memetic search over {res.n_exact} exact points" if res.redundant
+           else f"the non-dominated of {res.n_exact} branches")
     lines = [f"robot {robot.name}: {kind} target {np.round(target.position, 6).tolist()} "
              f"{robot.unit}",
              f"{len(res.X)} exact solutions, mutually non-dominated ({how}, {res.n_eval} FK "

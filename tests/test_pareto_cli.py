@@ -46,7 +46,7 @@ def test_text_output_lists_the_members_and_the_compromise(capsys, tmp_path):
                       "--plot", str(tmp_path / "front.png"))
     assert run_pareto(args) == 0
     out = capsys.readouterr().out
-    assert "8 exact solutions, mutually non-dominated (memetic search" in out
+    assert "8 exact solutions, mutually non-dominated (memetic search over" in out
     assert "joint_motion (min)" in out and "manipulability (max)" in out
     assert out.count("\n*") == 2  # the compromise member and the legend line
     assert "* compromise (closest to the utopia point)" in out

@@ -83,6 +83,8 @@ class ParetoIKResult:
             recomputed by the reference FK (robot unit; geodesic angle, rad).
         redundant: Whether the arm is redundant for the target (memetic search)
             or not (branch enumeration).
+        n_exact: Exact solutions evaluated (non-redundant arm: the distinct branches
+            found, modulo 2 pi).
         n_eval: FK (+ Jacobian) evaluations.
         time: Wall time in seconds.
     """
@@ -94,6 +96,7 @@ class ParetoIKResult:
     position_errors: np.ndarray
     orientation_errors: np.ndarray
     redundant: bool
+    n_exact: int
     n_eval: int
     time: float
 
@@ -229,4 +232,5 @@ def _result(problem: ParetoIK, projector: Projector, n_solutions: int, redundant
     return ParetoIKResult(X=X[order], F=F[order], objectives=problem.names,
                           senses=problem.senses, position_errors=pos[order],
                           orientation_errors=ori[order], redundant=redundant,
-                          n_eval=projector.n_eval, time=time.perf_counter() - t0)
+                          n_exact=projector.n_exact, n_eval=projector.n_eval,
+                          time=time.perf_counter() - t0)

@@ -58,6 +58,7 @@ class Projector:
         X, F: The archive: exact, mutually non-dominated points and their criteria
             in minimisation form.
         n_eval: FK (+ Jacobian) evaluations so far.
+        n_exact: Exact points evaluated so far.
     """
 
     def __init__(self, problem: ParetoIK):
@@ -68,7 +69,7 @@ class Projector:
         self._pt = kernel_array(target.position)
         self._stops = (STOP_FRACTION * problem.tol_position,
                        STOP_FRACTION * problem.tol_orientation)
-        self.n_eval = 0
+        self.n_eval = self.n_exact = 0
         self.X = np.empty((0, self.robot.dof))
         self.F = np.empty((0, problem.n_obj))
         self.worst = np.zeros(problem.n_obj)  # of every exact point seen
@@ -124,6 +125,7 @@ class Projector:
         if len(P):
             self.worst = np.maximum(self.worst, F.max(axis=0))
             self._seen.append((P, F))
+            self.n_exact += len(P)
             X, Fa = np.concatenate([self.X, P]), np.concatenate([self.F, F])
             keep = nondominated_mask(Fa)
             X, Fa = X[keep], Fa[keep]

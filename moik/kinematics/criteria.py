@@ -171,13 +171,16 @@ class Criterion:
         return 1.0 if self.sense == MINIMIZE else -1.0
 
     def __call__(self, Q: np.ndarray) -> np.ndarray:
-        """The values ``(n,)`` on ``Q (n, dof)``, in the natural sign.
+        """The values ``(n,)`` on ``Q (n, dof)``, in the natural sign (the function gets a
+        read-only view of ``Q``).
 
         Raises:
             ShapeError: The function returned something else than ``n`` numbers.
             NonFiniteError: It returned NaN or infinite values.
         """
-        values = self.function(Q)
+        view = np.asarray(Q).view()
+        view.flags.writeable = False
+        values = self.function(view)
         try:
             out = np.asarray(values, dtype=np.float64)
         except (TypeError, ValueError):

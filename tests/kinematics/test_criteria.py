@@ -112,6 +112,8 @@ def test_user_callables_are_checked_for_shape_and_finiteness():
         Criterion("text", lambda Q: ["a"] * len(Q))(Q)
     with pytest.raises(NonFiniteError, match="'nan' returned a non-finite value"):
         Criterion("nan", lambda Q: np.full(len(Q), np.nan))(Q)
+    with pytest.raises(ValueError, match="read-only"):
+        Criterion("writer", lambda Q: Q.__setitem__((0, 0), 1.0))(Q)
     with pytest.raises(ParameterError, match="must be callable"):
         Criterion("x", 3.0)
     with pytest.raises(UnknownNameError, match="criterion sense"):

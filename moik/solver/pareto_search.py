@@ -99,7 +99,7 @@ class Projector:
             chain.origins, chain.joint_types, robot.lower, robot.upper, P, self._Rt, self._pt,
             self._has_rot, 1.0 / robot.reach, self._stops[0], self._stops[1], LM_ITERATIONS,
             1.0 if patient else STALL_RATIO, ok, cost))
-        return self._copies(P), ok, cost
+        return self.copies(P), ok, cost
 
     def project_via_pose(self, X, rotation: np.ndarray
                          ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -114,7 +114,9 @@ class Projector:
             self._stops[1], LM_ITERATIONS, STALL_RATIO, ok, cost))
         return self.project(P)
 
-    def _copies(self, P: np.ndarray) -> np.ndarray:
+    def copies(self, P: np.ndarray) -> np.ndarray:
+        """``P`` with revolute joints shifted by 2 pi to the copies nearest ``q_current``
+        within the limits (``P`` itself without ``q_current``)."""
         if self.problem.q_current is None or not len(P):
             return P
         return np.ascontiguousarray(nearest_copies(self.robot, P, self.problem.q_current))
@@ -219,7 +221,7 @@ def enumerate_branches(projector: Projector, starts: np.ndarray) -> None:
                      stop_orientation=STOP_FRACTION * problem.tol_orientation,
                      want=MAX_BRANCHES, distinct=BRANCH_DISTINCT, max_iter=LM_ITERATIONS)
     projector.n_eval += res.n_eval
-    projector.objectives(projector._copies(res.solutions))
+    projector.objectives(projector.copies(res.solutions))
 
 
 def spread_subset(F: np.ndarray, n: int) -> np.ndarray:

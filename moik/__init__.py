@@ -11,12 +11,22 @@ from moik._version import __version__
 from moik.exceptions import MoikError
 from moik.robots import Robot, available_robots, get_robot
 from moik.robots.urdf import load_urdf
-from moik.solver import IKBatchResult, IKResult, PathResult, solve_ik, solve_ik_batch, solve_path
+from moik.solver import (
+    IKBatchResult,
+    IKResult,
+    ParetoIKResult,
+    PathResult,
+    solve_ik,
+    solve_ik_batch,
+    solve_ik_pareto,
+    solve_path,
+)
 
 __all__ = [
     "IKBatchResult",
     "IKResult",
     "MoikError",
+    "ParetoIKResult",
     "PathResult",
     "Robot",
     "__version__",
@@ -27,5 +37,6 @@ __all__ = [
     "problems",
     "solve_ik",
     "solve_ik_batch",
+    "solve_ik_pareto",
     "solve_path",
 ]

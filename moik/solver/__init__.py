@@ -11,7 +11,9 @@ Modules: :mod:`~moik.solver.solve_ik` (the stages and the verdict),
 """
 
 from moik.solver.batch import IKBatchResult, solve_ik_batch
+from moik.solver.pareto import ParetoIKResult, solve_ik_pareto
 from moik.solver.path import PathResult, solve_path
 from moik.solver.solve_ik import IKResult, solve_ik
 
-__all__ = ["IKBatchResult", "IKResult", "PathResult", "solve_ik", "solve_ik_batch", "solve_path"]
+__all__ = ["IKBatchResult", "IKResult", "ParetoIKResult", "PathResult", "solve_ik",
+           "solve_ik_batch", "solve_ik_pareto", "solve_path"]

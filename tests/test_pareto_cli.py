@@ -1,0 +1,80 @@
+"""``moik solve ... --pareto``: the command's functions, on a parser like ``solve``'s."""
+
+import argparse
+import json
+
+import matplotlib
+import numpy as np
+import pytest
+
+from moik.exceptions import ParameterError
+from moik.kinematics.orientation import zyx_euler
+from moik.pareto_cli import add_pareto_arguments, parse_criteria, run_pareto
+from moik.problems import random_reachable_targets
+from moik.robots import get_robot
+
+matplotlib.use("Agg")
+
+IIWA = get_robot("iiwa14")
+POSE = random_reachable_targets(IIWA, 1, seed=11)[0]
+
+
+def _solve_parser() -> argparse.ArgumentParser:
+    """The arguments of ``moik solve`` that the Pareto command reads, plus its own."""
+    p = argparse.ArgumentParser()
+    p.add_argument("robot")
+    p.add_argument("--target", nargs=3, type=float, required=True)
+    p.add_argument("--euler", nargs=3, type=float)
+    p.add_argument("--convention", default="zyx-euler")
+    p.add_argument("--deg", action="store_true")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--plot")
+    add_pareto_arguments(p)
+    return p
+
+
+def _pose_args(*extra: str) -> argparse.Namespace:
+    euler = np.degrees(zyx_euler(POSE.rotation))
+    q = np.degrees(POSE.q_source + 0.1)
+    return _solve_parser().parse_args(["iiwa14", "--target", *map(str, POSE.position),
+                                       "--euler", *map(str, euler), "--deg",
+                                       "--q-current", *map(str, q), *extra])
+
+
+def test_text_output_lists_the_members_and_the_compromise(capsys, tmp_path):
+    args = _pose_args("--pareto", "joint_motion,manipulability", "--pareto-size", "8",
+                      "--plot", str(tmp_path / "front.png"))
+    assert run_pareto(args) == 0
+    out = capsys.readouterr().out
+    assert "8 exact solutions, mutually non-dominated (memetic search over" in out
+    assert "joint_motion (min)" in out and "manipulability (max)" in out
+    assert out.count("\n*") == 2  # the compromise member and the legend line
+    assert "* compromise (closest to the utopia point)" in out
+    assert (tmp_path / "front.png").exists() and (tmp_path / "front.pdf").exists()
+
+
+def test_json_output(capsys):
+    assert run_pareto(_pose_args("--pareto", "manipulability,limit_margin", "--json",
+                                 "--pareto-size", "5")) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["objectives"] == ["manipulability", "limit_margin"]
+    assert data["senses"] == ["max", "max"] and len(data["X"]) == len(data["F"]) <= 5
+    assert max(data["position_errors"]) <= 1e-9 * IIWA.reach and data["redundant"] is True
+    assert 0 <= data["compromise"] < len(data["X"])
+
+
+def test_no_solution_exits_1(capsys):
+    args = _solve_parser().parse_args(["iiwa14", "--target", "2", "0", "0", "--pareto",
+                                       "manipulability", "--pareto-size", "3"])
+    assert run_pareto(args) == 1
+    assert "no exact solution found" in capsys.readouterr().out
+
+
+def test_bad_criteria_and_q_current():
+    assert parse_criteria(" joint_motion , limit_margin ") == ("joint_motion", "limit_margin")
+    with pytest.raises(ParameterError, match="comma-separated"):
+        parse_criteria(" , ")
+    args = _pose_args("--pareto", "joint_motion")
+    args.q_current = [0.0, 1.0]
+    with pytest.raises(ParameterError, match="--q-current needs 7 joint values"):
+        run_pareto(args)

@@ -50,6 +50,7 @@ from moik.algorithms import available, entry
 from moik.exceptions import MoikError, ParameterError, UnknownNameError
 from moik.experiments.commands import add_subcommands
 from moik.kinematics.orientation import orientation_error
+from moik.pareto_cli import add_pareto_arguments, run_pareto
 from moik.problems.targets import Target
 from moik.robots import Robot, available_robots, get_robot
 from moik.robots.urdf import load_urdf
@@ -149,6 +150,8 @@ def _tol(values: list[float] | None):
 
 
 def _cmd_solve(args: argparse.Namespace) -> int:
+    if args.pareto:
+        return run_pareto(args, robot=_robot(args))
     seed = integer("--seed", args.seed, minimum=0)
     plots = _plot_files(args.plot)
     robot = _robot(args)
@@ -230,13 +233,14 @@ def build_parser() -> argparse.ArgumentParser:
                    help="FK evaluation budget (default 50000)")
     p.add_argument("--algorithm", default="eosma",
                    help="global search algorithm, used when the local starts fail (default eosma)")
-    p.add_argument("--starts", type=int, default=16,
-                   help="random starts of the Levenberg-Marquardt first attempt "
-                        "(default 16; 0: the global search only)")
+    p.add_argument("--starts", type=int, default=500,
+                   help="random starts of the compiled Levenberg-Marquardt first stage, tried "
+                        "in turn until solved (default 500; 0: the global search only)")
     p.add_argument("--seed", type=int, default=0, help="random seed, an integer >= 0 (default 0)")
     p.add_argument("--n-solutions", type=int, default=1, help="distinct solutions wanted")
     p.add_argument("--plot", metavar="FILE",
                    help="save a 3-D drawing: FILE.png, .pdf or .svg (no extension: .png and .pdf)")
+    add_pareto_arguments(p)
     p.set_defaults(func=_cmd_solve)
     add_subcommands(sub)
     return parser

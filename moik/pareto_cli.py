@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import json
+from pathlib import Path
 
 import numpy as np
 
@@ -25,16 +26,19 @@ from moik.solver.pareto import ParetoIKResult, solve_ik_pareto
 
 
 def add_pareto_arguments(parser: argparse.ArgumentParser) -> None:
-    """Register ``--pareto``, ``--json``, ``--q-current``, ``--preferred-euler``,
-    ``--pareto-size`` and ``--pareto-method`` on the ``solve`` parser."""
+    """Register ``--pareto``, ``--preferred-euler``, ``--pareto-size`` and ``--pareto-method``
+    on the ``solve`` parser, and ``--json`` / ``--q-current`` unless it has them already."""
+    known = parser._option_string_actions  # argparse's registry of option strings
     parser.add_argument("--pareto", metavar="CRITERIA",
                         help="the Pareto set of exact solutions over these comma-separated "
                              f"criteria ({', '.join(CRITERIA)})")
-    parser.add_argument("--json", action="store_true",
-                        help="with --pareto: print one JSON object (joint values in rad)")
-    parser.add_argument("--q-current", nargs="+", type=float, metavar="Q",
-                        help="current configuration (rad, deg with --deg; needed by "
-                             "joint_motion)")
+    if "--json" not in known:
+        parser.add_argument("--json", action="store_true",
+                            help="with --pareto: print one JSON object (joint values in rad)")
+    if "--q-current" not in known:
+        parser.add_argument("--q-current", nargs="+", type=float, metavar="Q",
+                            help="current configuration (rad, deg with --deg; needed by "
+                                 "joint_motion)")
     parser.add_argument("--preferred-euler", nargs=3, type=float, metavar=("A", "B", "C"),
                         help="preferred orientation of a position target (the 'orientation' "
                              "criterion), Euler angles as --euler")
@@ -69,9 +73,12 @@ def _q_current(args: argparse.Namespace, robot) -> np.ndarray | None:
     return np.where(robot.is_prismatic, q, np.radians(q)) if args.deg else q
 
 
-def run_pareto(args: argparse.Namespace) -> int:
-    """Solve, print (text or JSON) and optionally plot the Pareto set; the exit status."""
-    robot = get_robot(args.robot)
+def run_pareto(args: argparse.Namespace, robot=None) -> int:
+    """Solve, print (text or JSON) and optionally plot the Pareto set; the exit status.
+
+    ``robot``: the arm the command line named (a catalog name or a URDF file); by
+    default the catalog robot ``args.robot``."""
+    robot = get_robot(args.robot) if robot is None else robot
     target = _target(args)
     rotation = None
     if args.preferred_euler is not None:
@@ -84,7 +91,8 @@ def run_pareto(args: argparse.Namespace) -> int:
     print(json.dumps(as_json(robot, target, res, index)) if args.json
           else format_result(robot, target, res, index))
     if args.plot and len(res.X):
-        stem = args.plot.rsplit(".", 1)[0]
+        path = Path(args.plot)  # a path's dots are not an extension (out.d/fig, ../x/p)
+        stem = str(path.with_suffix("") if path.suffix in (".png", ".pdf", ".svg") else path)
         plot_pareto_ik(robot, res.X, res.F, objectives=res.objectives, senses=res.senses,
                        target=target.position, compromise=index, save=stem)
         if not args.json:

@@ -45,6 +45,15 @@ Deviations and readings:
 - W uses ``log10`` and ``eps`` as the SMA code (Eq. 4 prints ``log``).
 - Constrained problems: comparisons are feasibility-first (see base.py).
 
+Compiled (:mod:`moik.algorithms.soo.eosma_kernels`): each generation of the class is
+three compiled calls (draw, candidates, remember; a fourth for the mutation batch is
+folded into the first remember). All of a generation's random numbers are drawn at its
+start on ``self.random_state`` in the order Algorithm 1 uses them, including the line-22
+test and the Eq. 16 numbers; nothing else draws from the generator in between, so the
+stream and the results are bit for bit those of drawing each number where it is used.
+The functions below (:func:`eosma_update`, :func:`random_difference_mutation`, also
+used by MOEOSMA) draw with the Generator's methods and call the same compiled operators.
+
 Reproducing Tables 5 and 7 on the 7-DOF arm: tests/algorithms/soo/test_eosma.py
 (Table 7 is reproduced with Table 1's lengths in metres, not in cm).
 """
@@ -53,47 +62,25 @@ from __future__ import annotations
 
 import numpy as np
 
-from moik._jit import jit, kernel_array
+from moik._jit import kernel_array
 from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
-from moik.algorithms.mechanics import greedy_step, midpoint_coordinate, ranking_into
-from moik.algorithms.soo.eo import (
-    eo_coordinate,
-    eo_schedule,
-    generation_control,
-    pool_update,
-    pool_with_mean,
-    select_pool,
+from moik.algorithms.soo.eo import eo_schedule, pool_update, pool_with_mean, select_pool
+from moik.algorithms.soo.eosma_kernels import (
+    POOL_SIZE,
+    difference_rows,
+    eosma_rows,
+    generation_candidates,
+    generation_draws,
+    remember,
 )
-from moik.algorithms.soo.sma import sma_coordinate, sma_schedule, weight_arguments, weights_into
+from moik.algorithms.soo.sma import sma_schedule
 from moik.exceptions import ParameterError
 
 SCENARIOS = {
     1: {"pop_size": 50, "q": 0.0, "a1": 1.0},
     2: {"pop_size": 100, "q": 1.0, "a1": 2.0},
 }
-POOL_SIZE = 4  # Eq. 7
-
-
-@jit
-def eosma_rows(P, g_best, pool, W, lam, E, r, idx, r1, r2, vb, A, B, u, z, a1, GP, V, out):
-    """Eq. 15 on every agent from its drawn numbers, into ``out``: the EO operator on
-    ``pBest`` (Eqs. 6, 8, 9, ``E = exp(-lam t1)``) where ``u < z``, else the SMA operator.
-    ``g_best`` is (1, d), or (n, d) with one leader per agent (MOEOSMA)."""
-    n, d = P.shape
-    for i in range(n):
-        g = i if g_best.shape[0] == n else 0
-        if u[i] < z:
-            gcp = generation_control(r1[i], r2[i], GP)
-            for j in range(d):
-                out[i, j] = eo_coordinate(P[i, j], pool[idx[i], j], lam[i, j], E[i, j],
-                                          r[i, j], gcp, a1, V)
-        else:
-            for j in range(d):
-                out[i, j] = sma_coordinate(g_best[g, j], vb[i, j], W[i, j], P[A[i], j],
-                                           P[B[i], j])
-    return out
-
 
 def eosma_update(P, g_best, pool, W, t1: float, a: float, *, z: float, a1: float, GP: float,
                  V: float, rng: np.random.Generator) -> np.ndarray:
@@ -135,22 +122,6 @@ def update_distinct_pool(PX, PF, PCV, X, F, CV, k: int = POOL_SIZE):
     return select_pool(PX, PF, PCV, X, F, CV, k, True)
 
 
-@jit(inline=True)
-def difference_coordinate(p1: float, p2: float, p3: float, sf: float) -> float:
-    """Eq. 16 for one coordinate: ``pBest_R1 + SF (pBest_R2 - pBest_R3)``."""
-    return p1 + sf * (p2 - p3)
-
-
-@jit
-def difference_rows(P, R, SF, out):
-    """Eq. 16 on every agent from its drawn indices ``R`` (3, n) and factors ``SF`` (n,)."""
-    n, d = out.shape
-    for i in range(n):
-        for j in range(d):
-            out[i, j] = difference_coordinate(P[R[0, i], j], P[R[1, i], j], P[R[2, i], j], SF[i])
-    return out
-
-
 def random_difference_mutation(P: np.ndarray, *, rng: np.random.Generator) -> np.ndarray:
     """Eq. 16: ``pBest_R1 + SF (pBest_R2 - pBest_R3)`` with ``SF ~ U[0.3, 0.6]``.
 
@@ -161,86 +132,6 @@ def random_difference_mutation(P: np.ndarray, *, rng: np.random.Generator) -> np
     R = np.asarray(rng.integers(n, size=(3, n)), dtype=np.int64)
     SF = kernel_array(rng.uniform(0.3, 0.6, (n, 1))).reshape(n)
     return difference_rows(P, R, SF, np.empty(P.shape))
-
-
-# ---- one generation of the EOSMA class, compiled -------------------------------------------
-# Scratch rows: U (5, n, d) holds r of Eq. 4 (per rank), lam, exp(-lam t1), r of Eq. 8 and vb;
-# S (5, n) the Eq. 4 log10 (per rank), r1, r2, the operator test and SF; I (7, n) the ranking,
-# the pool index, A, B and R1..R3.
-
-@jit(inline=True)
-def fill_random(rng, A):
-    """``A`` (2-D) filled with ``rng.random()`` in C order, as ``rng.random(A.shape)``."""
-    for i in range(A.shape[0]):
-        for j in range(A.shape[1]):
-            A[i, j] = rng.random()
-
-
-@jit
-def generation_draws(rng, F, CV, n_pool, t1, a, q, U, S, I):
-    """Every random number of one generation, in Algorithm 1's order; the mutation test.
-
-    Ranks the personal bests (Eq. 5) and fills the Eq. 4 log10 argument into ``S[0]`` and
-    ``-lam t1`` into ``U[2]`` (the caller applies numpy's log10 and exp). Draws: r (n, d)
-    of Eq. 4; lam, r (n, d), the pool index, r1, r2 (n,) of Eqs. 8-9; vb (n, d); A, B;
-    the operator test (n,); the mutation test of line 22 and, when it passes, R1..R3 and
-    SF of Eq. 16. Returns whether the mutation runs.
-    """
-    n = U.shape[1]
-    weight_arguments(ranking_into(F, CV, np.empty(n)), I[0], S[0])
-    fill_random(rng, U[0])
-    fill_random(rng, U[1])
-    U[2] = -U[1] * t1  # numpy's exp follows in the caller
-    fill_random(rng, U[3])
-    I[1] = rng.integers(0, n_pool, size=n)
-    fill_random(rng, S[1:3])
-    for i in range(n):
-        for j in range(U.shape[2]):
-            U[4, i, j] = rng.uniform(-a, a)
-    I[2:4] = rng.integers(0, n, size=(2, n))
-    for i in range(n):
-        S[3, i] = rng.random()
-    mutate = rng.random() < q
-    if mutate:
-        I[4:7] = rng.integers(0, n, size=(3, n))
-        for i in range(n):
-            S[4, i] = rng.uniform(0.3, 0.6)
-    return mutate
-
-
-@jit
-def repaired(X, P, xl, xu):
-    """Eq. 17 in place against the personal bests ``P``."""
-    n, d = X.shape
-    for i in range(n):
-        for j in range(d):
-            X[i, j] = midpoint_coordinate(X[i, j], P[i, j], xl[j], xu[j])
-    return X
-
-
-@jit
-def generation_candidates(P, g_best, pool, U, S, I, z, a1, GP, V, xl, xu):
-    """Eqs. 4, 15 and 17: the repaired candidates of a generation from its drawn numbers."""
-    n, d = P.shape
-    W = weights_into(I[0], S[0], U[0], np.empty((n, d)))
-    X = eosma_rows(P, g_best, pool, W, U[1], U[2], U[3], I[1], S[1], S[2], U[4], I[2], I[3],
-                   S[3], z, a1, GP, V, np.empty((n, d)))
-    return repaired(X, P, xl, xu)
-
-
-@jit
-def remember(X, F, CV, PX, PF, PCV, QX, QF, QCV, mutate, S, I, xl, xu):
-    """Eqs. 18 and 7 after an evaluation, and the Eq. 16 candidates when ``mutate``.
-
-    Returns the new personal bests ``(PX, PF, PCV)``, the pool with its mean as a last
-    row, its ``(F, CV)``, and the repaired mutation candidates (no rows unless ``mutate``).
-    """
-    PX, PF, PCV = greedy_step(X, F, CV, PX, PF, PCV)
-    QX, QF, QCV = pool_update(QX, QF, QCV, X, F, CV, POOL_SIZE, True)
-    X_mut = np.empty((PX.shape[0] if mutate else 0, PX.shape[1]))
-    if mutate:
-        repaired(difference_rows(PX, I[4:7], S[4], X_mut), PX, xl, xu)
-    return PX, PF, PCV, pool_with_mean(QX), QF, QCV, X_mut
 
 
 class EOSMA(ArrayAlgorithm):
@@ -288,7 +179,9 @@ class EOSMA(ArrayAlgorithm):
 
     def _initialize_state(self) -> None:
         n, d = self.pop_size, self.problem.n_var
-        self._U, self._S, self._I = np.empty((5, n, d)), np.empty((5, n)), np.empty((7, n), int)
+        # scratch of the generation kernels (see eosma_kernels)
+        self._cells, self._rows = np.empty((5, n, d)), np.empty((5, n))
+        self._picks = np.empty((7, n), dtype=np.int64)
         self._zeros = np.zeros(n)  # the violation of unconstrained rows
         self._bounds = kernel_array(self.xl), kernel_array(self.xu)
         F, CV = kernel_array(self.F), self._violation(self.CV)
@@ -314,7 +207,7 @@ class EOSMA(ArrayAlgorithm):
         qcv = self._violation(self.pool_CV)[: len(self.pool_F)]
         PX, PF, PCV, pool, QF, QCV, X_mut = remember(
             X, F, CV, self.pbest_X, self.pbest_F, pcv, self.pool_X, self.pool_F, qcv, mutate,
-            self._S, self._I, *self._bounds)
+            self._rows, self._picks, *self._bounds)
         self._set_memory(PX, PF, PCV, pool, QF, QCV)
         return X_mut
 
@@ -328,13 +221,15 @@ class EOSMA(ArrayAlgorithm):
         of drawing each number where it is used."""
         t1 = eo_schedule(self.t, self.max_iter, self.a2)
         a, _ = sma_schedule(self.t, self.max_iter)
-        U, S, I = self._U, self._S, self._I
-        mutate = generation_draws(self.random_state, self.pbest_F, self._violation(self.pbest_CV),
-                                  len(self._pool), t1, a, self.q, U, S, I)
-        np.log10(S[0], out=S[0])  # Eq. 4
-        np.exp(U[2], out=U[2])  # Eq. 8
-        X = generation_candidates(self.pbest_X, kernel_array(self.best_x)[None], self._pool, U, S, I,
-                                  self.z, self.a1, self.GP, self.V, *self._bounds)
+        cells, rows, picks = self._cells, self._rows, self._picks
+        mutate = generation_draws(self.random_state, self.pbest_F,
+                                  self._violation(self.pbest_CV), len(self._pool), t1, a,
+                                  self.q, cells, rows, picks)
+        np.log10(rows[0], out=rows[0])  # Eq. 4
+        np.exp(cells[2], out=cells[2])  # Eq. 8
+        X = generation_candidates(self.pbest_X, kernel_array(self.best_x)[None], self._pool,
+                                  cells, rows, picks, self.z, self.a1, self.GP, self.V,
+                                  *self._bounds)
         F, CV = yield X
         X = self._remember(X, F, CV, mutate)
         if mutate:  # Algorithm 1, line 22 (Eq. 16)

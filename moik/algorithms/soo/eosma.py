@@ -65,6 +65,7 @@ import numpy as np
 from moik._jit import kernel_array
 from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
+from moik.algorithms.generator_handle import GeneratorHandles
 from moik.algorithms.soo.eo import eo_schedule, pool_update, pool_with_mean, select_pool
 from moik.algorithms.soo.eosma_kernels import (
     POOL_SIZE,
@@ -183,6 +184,7 @@ class EOSMA(ArrayAlgorithm):
         self._cells, self._rows = np.empty((5, n, d)), np.empty((5, n))
         self._picks = np.empty((7, n), dtype=np.int64)
         self._zeros = np.zeros(n)  # the violation of unconstrained rows
+        self._handles = GeneratorHandles()
         self._bounds = kernel_array(self.xl), kernel_array(self.xu)
         F, CV = kernel_array(self.F), self._violation(self.CV)
         pool_X, pool_F, pool_CV = pool_update(np.empty((0, d)), np.empty(0), np.empty(0),
@@ -222,7 +224,7 @@ class EOSMA(ArrayAlgorithm):
         t1 = eo_schedule(self.t, self.max_iter, self.a2)
         a, _ = sma_schedule(self.t, self.max_iter)
         cells, rows, picks = self._cells, self._rows, self._picks
-        mutate = generation_draws(self.random_state, self.pbest_F,
+        mutate = generation_draws(self._handles.of(self.random_state), self.pbest_F,
                                   self._violation(self.pbest_CV), len(self._pool), t1, a,
                                   self.q, cells, rows, picks)
         np.log10(rows[0], out=rows[0])  # Eq. 4

@@ -4,8 +4,9 @@ Yin et al., Sci. Rep. 12, 9421 (2022), DOI 10.1038/s41598-022-13516-3 (see
 :mod:`moik.algorithms.soo.eosma` for the equations and the readings). The operators take
 their random numbers as arrays (:func:`eosma_rows`, :func:`difference_rows`); the
 generation kernels used by the ``EOSMA`` class draw them on the algorithm's numpy
-``Generator`` inside the kernel (:func:`generation_draws`, the same stream as numpy's
-``Generator`` methods), rank, build the candidates (:func:`generation_candidates`) and
+``Generator`` inside the kernel (:func:`generation_draws`, through a
+:class:`~moik.algorithms.generator_handle.GeneratorHandle`; numba's Generator methods
+give the same stream as numpy's), rank, build the candidates (:func:`generation_candidates`) and
 remember an evaluated batch (:func:`remember`). The per-coordinate rules are EO's, SMA's
 and the shared mechanics', inlined (one implementation each).
 
@@ -82,15 +83,17 @@ def fill_random(rng, A):
 
 
 @jit
-def generation_draws(rng, F, CV, n_pool, t1, a, q, cells, rows, picks):
+def generation_draws(handle, F, CV, n_pool, t1, a, q, cells, rows, picks):
     """Every random number of one generation, in Algorithm 1's order; the mutation test.
 
     Ranks the personal bests (Eq. 5) and fills the Eq. 4 log10 argument into ``rows[0]``
     and ``-lam t1`` into ``cells[2]`` (the caller applies numpy's log10 and exp). Draws: r (n, d)
     of Eq. 4; lam, r (n, d), the pool index, r1, r2 (n,) of Eqs. 8-9; vb (n, d); A, B;
     the operator test (n,); the mutation test of line 22 and, when it passes, R1..R3 and
-    SF of Eq. 16. Returns whether the mutation runs.
+    SF of Eq. 16, all on ``handle.rng`` (a :class:`~moik.algorithms.generator_handle.
+    GeneratorHandle`). Returns whether the mutation runs.
     """
+    rng = handle.rng
     n = cells.shape[1]
     weight_arguments(ranking_into(F, CV, np.empty(n)), picks[0], rows[0])
     fill_random(rng, cells[0])

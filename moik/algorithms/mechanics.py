@@ -113,7 +113,8 @@ def greedy_step(X, F, CV, PX, PF, PCV):
     PX, PF, PCV = PX.copy(), PF.copy(), PCV.copy()
     for i in range(F.size):
         if is_better_scalar(F[i], CV[i], PF[i], PCV[i]):
-            PX[i] = X[i]
+            for j in range(X.shape[1]):
+                PX[i, j] = X[i, j]
             PF[i], PCV[i] = F[i], CV[i]
     return PX, PF, PCV
 

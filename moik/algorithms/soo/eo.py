@@ -99,10 +99,20 @@ def best_rows(X, S, k, distinct):
 def pool_update(PX, PF, PCV, X, F, CV, k, distinct):
     """Eq. 7: the ``k`` best rows of the pool and a batch, feasibility-first (zeros CV
     when unconstrained), as new arrays ``(PX, PF, PCV)``."""
-    X_all = np.concatenate((PX, X))
-    F_all, CV_all = np.concatenate((PF, F)), np.concatenate((PCV, CV))
-    top = best_rows(X_all, ranking_into(F_all, CV_all, np.empty(F_all.size)), k, distinct)
-    return X_all[top], F_all[top], CV_all[top]
+    m0, m, d = PF.size, PF.size + F.size, X.shape[1]
+    X_all, F_all, CV_all = np.empty((m, d)), np.empty(m), np.empty(m)
+    for i in range(m):
+        src, r = (PX, i) if i < m0 else (X, i - m0)
+        for j in range(d):
+            X_all[i, j] = src[r, j]
+        F_all[i], CV_all[i] = (PF[i], PCV[i]) if i < m0 else (F[r], CV[r])
+    top = best_rows(X_all, ranking_into(F_all, CV_all, np.empty(m)), k, distinct)
+    QX, QF, QCV = np.empty((top.size, d)), np.empty(top.size), np.empty(top.size)
+    for b in range(top.size):
+        for j in range(d):
+            QX[b, j] = X_all[top[b], j]
+        QF[b], QCV[b] = F_all[top[b]], CV_all[top[b]]
+    return QX, QF, QCV
 
 
 def select_pool(PX, PF, PCV, X, F, CV, k: int, distinct: bool):

@@ -185,32 +185,30 @@ class EOSMA(ArrayAlgorithm):
         self._picks = np.empty((7, n), dtype=np.int64)
         self._zeros = np.zeros(n)  # the violation of unconstrained rows
         self._handles = GeneratorHandles()
-        self._bounds = kernel_array(self.xl), kernel_array(self.xu)
-        F, CV = kernel_array(self.F), self._violation(self.CV)
-        pool_X, pool_F, pool_CV = pool_update(np.empty((0, d)), np.empty(0), np.empty(0),
-                                              kernel_array(self.X), F, CV, POOL_SIZE, True)
-        self._set_memory(kernel_array(self.X), F, CV, pool_with_mean(pool_X), pool_F, pool_CV)
+        self._bounds = np.stack([self.xl, self.xu]).astype(float)
+        X, F, CV = kernel_array(self.X), kernel_array(self.F), self._violation(self.CV)
+        QX, QF, QCV = pool_update(np.empty((0, d)), np.empty(0), np.empty(0), X, F, CV,
+                                  POOL_SIZE, True)
+        self._set_memory(X, np.stack([F, CV]), pool_with_mean(QX), np.stack([QF, QCV]))
 
     def _violation(self, CV):
         return self._zeros if CV is None else kernel_array(CV)
 
-    def _set_memory(self, PX, PF, PCV, pool, QF, QCV) -> None:
-        self.pbest_X, self.pbest_F = PX, PF
-        self.pbest_CV = PCV if self._constrained else None
-        self._pool = pool  # the pool and its mean (Eq. 7) as a last row
-        self.pool_X, self.pool_F = pool[:-1], QF
-        self.pool_CV = QCV if self._constrained else None
+    def _set_memory(self, PX, PM, pool, QM) -> None:
+        """The memory: kernels use the packed arrays (pbest F and CV in ``_PM`` (2, n), the
+        pool with its mean as a last row in ``_pool``, its F and CV in ``_QM``); the
+        public attributes are views of them."""
+        self.pbest_X, self._PM, self._pool, self._QM = PX, PM, pool, QM
+        self.pbest_F, self.pool_X, self.pool_F = PM[0], pool[:-1], QM[0]
+        self.pbest_CV, self.pool_CV = (PM[1], QM[1]) if self._constrained else (None, None)
 
     def _remember(self, X, F, CV, mutate: bool) -> np.ndarray:
         """Eqs. 18 and 7 after an evaluation; returns the Eq. 16 candidates if ``mutate``."""
         self.X, self.F, self.CV = X, F, CV
-        F, CV = kernel_array(F), self._violation(CV)
-        pcv = self._violation(self.pbest_CV)
-        qcv = self._violation(self.pool_CV)[: len(self.pool_F)]
-        PX, PF, PCV, pool, QF, QCV, X_mut = remember(
-            X, F, CV, self.pbest_X, self.pbest_F, pcv, self.pool_X, self.pool_F, qcv, mutate,
-            self._rows, self._picks, *self._bounds)
-        self._set_memory(PX, PF, PCV, pool, QF, QCV)
+        *memory, X_mut = remember(X, kernel_array(F), self._violation(CV), self.pbest_X,
+                                  self._PM, self._pool, self._QM, mutate, self._rows,
+                                  self._picks, self._bounds)
+        self._set_memory(*memory)
         return X_mut
 
     def _population_arrays(self):
@@ -224,14 +222,13 @@ class EOSMA(ArrayAlgorithm):
         t1 = eo_schedule(self.t, self.max_iter, self.a2)
         a, _ = sma_schedule(self.t, self.max_iter)
         cells, rows, picks = self._cells, self._rows, self._picks
-        mutate = generation_draws(self._handles.of(self.random_state), self.pbest_F,
-                                  self._violation(self.pbest_CV), len(self._pool), t1, a,
-                                  self.q, cells, rows, picks)
+        mutate = generation_draws(self._handles.of(self.random_state), self._PM,
+                                  len(self._pool), t1, a, self.q, cells, rows, picks)
         np.log10(rows[0], out=rows[0])  # Eq. 4
         np.exp(cells[2], out=cells[2])  # Eq. 8
         X = generation_candidates(self.pbest_X, kernel_array(self.best_x)[None], self._pool,
                                   cells, rows, picks, self.z, self.a1, self.GP, self.V,
-                                  *self._bounds)
+                                  self._bounds)
         F, CV = yield X
         X = self._remember(X, F, CV, mutate)
         if mutate:  # Algorithm 1, line 22 (Eq. 16)

@@ -83,19 +83,20 @@ def fill_random(rng, A):
 
 
 @jit
-def generation_draws(handle, F, CV, n_pool, t1, a, q, cells, rows, picks):
+def generation_draws(handle, PM, n_pool, t1, a, q, cells, rows, picks):
     """Every random number of one generation, in Algorithm 1's order; the mutation test.
 
-    Ranks the personal bests (Eq. 5) and fills the Eq. 4 log10 argument into ``rows[0]``
-    and ``-lam t1`` into ``cells[2]`` (the caller applies numpy's log10 and exp). Draws: r (n, d)
-    of Eq. 4; lam, r (n, d), the pool index, r1, r2 (n,) of Eqs. 8-9; vb (n, d); A, B;
-    the operator test (n,); the mutation test of line 22 and, when it passes, R1..R3 and
-    SF of Eq. 16, all on ``handle.rng`` (a :class:`~moik.algorithms.generator_handle.
-    GeneratorHandle`). Returns whether the mutation runs.
+    Ranks the personal bests by ``PM = (F, CV)`` (Eq. 5) and fills the Eq. 4 log10
+    argument into ``rows[0]`` and ``-lam t1`` into ``cells[2]`` (the caller applies numpy's
+    log10 and exp). Draws: r (n, d) of Eq. 4; lam, r (n, d), the pool index, r1, r2 (n,)
+    of Eqs. 8-9; vb (n, d); A, B; the operator test (n,); the mutation test of line 22
+    and, when it passes, R1..R3 and SF of Eq. 16, all on ``handle.rng`` (a
+    :class:`~moik.algorithms.generator_handle.GeneratorHandle`). Returns whether the
+    mutation runs.
     """
     rng = handle.rng
     n = cells.shape[1]
-    weight_arguments(ranking_into(F, CV, np.empty(n)), picks[0], rows[0])
+    weight_arguments(ranking_into(PM[0], PM[1], np.empty(n)), picks[0], rows[0])
     fill_random(rng, cells[0])
     fill_random(rng, cells[1])
     cells[2] = -cells[1] * t1  # numpy's exp follows in the caller
@@ -117,36 +118,48 @@ def generation_draws(handle, F, CV, n_pool, t1, a, q, cells, rows, picks):
 
 
 @jit
-def repaired(X, P, xl, xu):
-    """Eq. 17 in place against the personal bests ``P``."""
+def repaired(X, P, bounds):
+    """Eq. 17 in place against the personal bests ``P``; ``bounds`` is ``(xl, xu)`` (2, d)."""
     n, d = X.shape
     for i in range(n):
         for j in range(d):
-            X[i, j] = midpoint_coordinate(X[i, j], P[i, j], xl[j], xu[j])
+            X[i, j] = midpoint_coordinate(X[i, j], P[i, j], bounds[0, j], bounds[1, j])
     return X
 
 
 @jit
-def generation_candidates(P, g_best, pool, cells, rows, picks, z, a1, GP, V, xl, xu):
+def generation_candidates(P, g_best, pool, cells, rows, picks, z, a1, GP, V, bounds):
     """Eqs. 4, 15 and 17: the repaired candidates of a generation from its drawn numbers."""
     n, d = P.shape
     W = weights_into(picks[0], rows[0], cells[0], np.empty((n, d)))
     X = eosma_rows(P, g_best, pool, W, cells[1], cells[2], cells[3], picks[1], rows[1],
                    rows[2], cells[4], picks[2], picks[3], rows[3], z, a1, GP, V,
                    np.empty((n, d)))
-    return repaired(X, P, xl, xu)
+    return repaired(X, P, bounds)
 
 
 @jit
-def remember(X, F, CV, PX, PF, PCV, QX, QF, QCV, mutate, rows, picks, xl, xu):
+def remember(X, F, CV, PX, PM, pool, QM, mutate, rows, picks, bounds):
     """Eqs. 18 and 7 after an evaluation, and the Eq. 16 candidates when ``mutate``.
 
-    Returns the new personal bests ``(PX, PF, PCV)``, the pool with its mean as a last
-    row, its ``(F, CV)``, and the repaired mutation candidates (no rows unless ``mutate``).
+    The memory: personal bests ``PX`` (n, d) and their ``PM = (F, CV)`` (2, n); the pool
+    with its mean as a last row, ``pool`` (k + 1, d), and its ``QM = (F, CV)`` (2, k).
+    Returns the new ``(PX, PM, pool, QM)`` and the repaired mutation candidates (no rows
+    unless ``mutate``).
     """
-    PX, PF, PCV = greedy_step(X, F, CV, PX, PF, PCV)
-    QX, QF, QCV = pool_update(QX, QF, QCV, X, F, CV, POOL_SIZE, True)
+    PX, PF, PCV = greedy_step(X, F, CV, PX, PM[0], PM[1])
+    k = QM.shape[1]
+    QX, QF, QCV = pool_update(pool[:k], QM[0], QM[1], X, F, CV, POOL_SIZE, True)
     X_mut = np.empty((PX.shape[0] if mutate else 0, PX.shape[1]))
     if mutate:
-        repaired(difference_rows(PX, picks[4:7], rows[4], X_mut), PX, xl, xu)
-    return PX, PF, PCV, pool_with_mean(QX), QF, QCV, X_mut
+        repaired(difference_rows(PX, picks[4:7], rows[4], X_mut), PX, bounds)
+    return PX, pack(PF, PCV), pool_with_mean(QX), pack(QF, QCV), X_mut
+
+
+@jit(inline=True)
+def pack(F, CV):
+    """``(F, CV)`` as one (2, n) array."""
+    out = np.empty((2, F.size))
+    for i in range(F.size):
+        out[0, i], out[1, i] = F[i], CV[i]
+    return out

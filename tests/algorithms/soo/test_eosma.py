@@ -210,8 +210,8 @@ def test_generation_draws_follow_the_numpy_stream():
     picks = np.empty((7, n), dtype=np.int64)
     rng = np.random.default_rng(4)
     F = np.arange(n, 0, -1.0)
-    assert generation_draws(GeneratorHandles().of(rng), F, np.zeros(n), n_pool, 0.25, 0.5,
-                            1.0, cells, rows, picks)
+    assert generation_draws(GeneratorHandles().of(rng), np.stack([F, np.zeros(n)]), n_pool,
+                            0.25, 0.5, 1.0, cells, rows, picks)
     after = rng.random()
     ref = np.random.default_rng(4)
     np.testing.assert_array_equal(cells[0], ref.random((n, d)))

@@ -153,6 +153,43 @@ def ranking_into(F, CV, out):
     return out
 
 
+@jit(inline=True)
+def ranks_before(a: float, b: float) -> bool:
+    """Whether ``a`` sorts strictly before ``b`` in numpy's order (nan last)."""
+    return a < b or (b != b and a == a)
+
+
+@jit
+def stable_order(S, order):
+    """``np.argsort(S, kind="stable")`` (nan last) into ``order``: a bottom-up merge sort
+    (numba's own ``argsort`` gives the same order but takes seconds to compile)."""
+    n = S.size
+    for i in range(n):
+        order[i] = i
+    buf = np.empty(n, np.int64)
+    width = 1
+    while width < n:
+        for lo in range(0, n, 2 * width):
+            mid, hi = min(lo + width, n), min(lo + 2 * width, n)
+            i, j, k = lo, mid, lo
+            while i < mid and j < hi:
+                if ranks_before(S[order[j]], S[order[i]]):  # strictly: ties keep the left
+                    buf[k] = order[j]
+                    j += 1
+                else:
+                    buf[k] = order[i]
+                    i += 1
+                k += 1
+            while i < mid:
+                buf[k], i, k = order[i], i + 1, k + 1
+            while j < hi:
+                buf[k], j, k = order[j], j + 1, k + 1
+        for i in range(n):
+            order[i] = buf[i]
+        width *= 2
+    return order
+
+
 def ranking_fitness(F: np.ndarray, CV: np.ndarray | None) -> np.ndarray:
     """A scalar with the feasibility-first order: F if feasible, else worst feasible F + CV."""
     if CV is None:

@@ -13,6 +13,7 @@ from moik.algorithms.mechanics import (
     mantegna_sigma,
     midpoint_repair,
     ranking_fitness,
+    stable_order,
     uniform_population,
 )
 from moik.testing import ScriptedRng
@@ -90,3 +91,16 @@ def test_compiled_mechanics_equal_the_numpy_formulas(seed):
     feas = CV <= 0.0
     expected = np.where(feas, F, (F[feas].max() if feas.any() else 0.0) + CV)
     np.testing.assert_array_equal(ranking_fitness(F, CV), expected)
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_stable_order_is_numpys_stable_argsort(seed):
+    """Ties keep their order, nan sorts last, -0.0 ties with 0.0, any length."""
+    rng = np.random.default_rng(seed)
+    n = int(rng.integers(1, 130))
+    S = rng.integers(0, 6, n).astype(float)
+    S[rng.random(n) < 0.1] = np.nan
+    S[rng.random(n) < 0.05] = -np.inf
+    S[rng.random(n) < 0.05] = -0.0
+    order = stable_order(S, np.empty(n, dtype=np.int64))
+    np.testing.assert_array_equal(order, np.argsort(S, kind="stable"))

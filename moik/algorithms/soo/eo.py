@@ -46,13 +46,8 @@ from moik.algorithms.mechanics import (
     greedy_memory,
     ieee_divide,
     ranking_into,
+    ranks_before,
 )
-
-
-@jit(inline=True)
-def ranks_before(a: float, b: float) -> bool:
-    """Whether ``a`` sorts strictly before ``b`` in numpy's order (nan last)."""
-    return a < b or (b != b and a == a)
 
 
 @jit
@@ -101,11 +96,14 @@ def pool_update(PX, PF, PCV, X, F, CV, k, distinct):
     when unconstrained), as new arrays ``(PX, PF, PCV)``."""
     m0, m, d = PF.size, PF.size + F.size, X.shape[1]
     X_all, F_all, CV_all = np.empty((m, d)), np.empty(m), np.empty(m)
-    for i in range(m):
-        src, r = (PX, i) if i < m0 else (X, i - m0)
+    for i in range(m0):
         for j in range(d):
-            X_all[i, j] = src[r, j]
-        F_all[i], CV_all[i] = (PF[i], PCV[i]) if i < m0 else (F[r], CV[r])
+            X_all[i, j] = PX[i, j]
+        F_all[i], CV_all[i] = PF[i], PCV[i]
+    for i in range(F.size):
+        for j in range(d):
+            X_all[m0 + i, j] = X[i, j]
+        F_all[m0 + i], CV_all[m0 + i] = F[i], CV[i]
     top = best_rows(X_all, ranking_into(F_all, CV_all, np.empty(m)), k, distinct)
     QX, QF, QCV = np.empty((top.size, d)), np.empty(top.size), np.empty(top.size)
     for b in range(top.size):
@@ -139,11 +137,13 @@ def pool_with_mean(PX):
     """Eq. 7: the pool rows and their mean (Ceq_ave) as a last row, summed row by row."""
     k, d = PX.shape
     out = np.empty((k + 1, d))
-    out[:k] = PX
-    out[k] = PX[0]
-    for i in range(1, k):
-        out[k] += PX[i]
-    out[k] /= k
+    for j in range(d):
+        acc = PX[0, j]
+        out[0, j] = acc
+        for i in range(1, k):
+            out[i, j] = PX[i, j]
+            acc += PX[i, j]
+        out[k, j] = acc / k
     return out
 
 

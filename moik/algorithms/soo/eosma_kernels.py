@@ -82,6 +82,15 @@ def fill_random(rng, A):
             A[i, j] = rng.random()
 
 
+@jit(inline=True)
+def fill_integers(rng, high, A):
+    """``A`` (2-D) filled as ``rng.integers(high, size=A.shape)``."""
+    values = rng.integers(0, high, size=A.size)
+    for i in range(A.shape[0]):
+        for j in range(A.shape[1]):
+            A[i, j] = values[i * A.shape[1] + j]
+
+
 @jit
 def generation_draws(handle, PM, n_pool, t1, a, q, cells, rows, picks):
     """Every random number of one generation, in Algorithm 1's order; the mutation test.
@@ -95,23 +104,25 @@ def generation_draws(handle, PM, n_pool, t1, a, q, cells, rows, picks):
     mutation runs.
     """
     rng = handle.rng
-    n = cells.shape[1]
+    n, d = cells.shape[1], cells.shape[2]
     weight_arguments(ranking_into(PM[0], PM[1], np.empty(n)), picks[0], rows[0])
     fill_random(rng, cells[0])
     fill_random(rng, cells[1])
-    cells[2] = -cells[1] * t1  # numpy's exp follows in the caller
+    for i in range(n):
+        for j in range(d):
+            cells[2, i, j] = -cells[1, i, j] * t1  # numpy's exp follows in the caller
     fill_random(rng, cells[3])
-    picks[1] = rng.integers(0, n_pool, size=n)
+    fill_integers(rng, n_pool, picks[1:2])
     fill_random(rng, rows[1:3])
     for i in range(n):
-        for j in range(cells.shape[2]):
+        for j in range(d):
             cells[4, i, j] = rng.uniform(-a, a)
-    picks[2:4] = rng.integers(0, n, size=(2, n))
+    fill_integers(rng, n, picks[2:4])
     for i in range(n):
         rows[3, i] = rng.random()
     mutate = rng.random() < q
     if mutate:
-        picks[4:7] = rng.integers(0, n, size=(3, n))
+        fill_integers(rng, n, picks[4:7])
         for i in range(n):
             rows[4, i] = rng.uniform(0.3, 0.6)
     return mutate

@@ -52,6 +52,7 @@ from moik.algorithms.mechanics import (
     clip_to_bounds,
     ieee_divide,
     ranking_fitness,
+    stable_order,
     uniform_population,
 )
 
@@ -65,7 +66,7 @@ def weight_arguments(S, order, arg):
     ``order`` is numpy's stable ranking of ``S``; ``arg[i] = (bF - S_(i)) / (bF - wF -
     eps) + 1`` for the i-th best fitness ``S_(i)``.
     """
-    order[:] = np.argsort(S, kind="mergesort")  # stable, as numpy's kind="stable"
+    stable_order(S, order)
     bF, wF = S[order[0]], S[order[-1]]
     den = bF - wF - EPS
     for i in range(S.size):

@@ -93,7 +93,8 @@ def best_rows(X, S, k, distinct):
 @jit
 def pool_update(PX, PF, PCV, X, F, CV, k, distinct):
     """Eq. 7: the ``k`` best rows of the pool and a batch, feasibility-first (zeros CV
-    when unconstrained), as new arrays ``(PX, PF, PCV)``."""
+    when unconstrained), as new arrays ``(PX, PF, PCV)``. The pool is the first ``PF.size``
+    rows of ``PX`` (a row after them, such as the pool mean, is ignored)."""
     m0, m, d = PF.size, PF.size + F.size, X.shape[1]
     X_all, F_all, CV_all = np.empty((m, d)), np.empty(m), np.empty(m)
     for i in range(m0):

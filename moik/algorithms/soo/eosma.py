@@ -66,11 +66,12 @@ from moik._jit import kernel_array
 from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.generator_handle import GeneratorHandles
-from moik.algorithms.soo.eo import eo_schedule, pool_update, pool_with_mean, select_pool
+from moik.algorithms.soo.eo import eo_schedule, select_pool
 from moik.algorithms.soo.eosma_kernels import (
     POOL_SIZE,
     difference_rows,
     eosma_rows,
+    first_pool,
     generation_candidates,
     generation_draws,
     remember,
@@ -187,9 +188,7 @@ class EOSMA(ArrayAlgorithm):
         self._handles = GeneratorHandles()
         self._bounds = np.stack([self.xl, self.xu]).astype(float)
         X, F, CV = kernel_array(self.X), kernel_array(self.F), self._violation(self.CV)
-        QX, QF, QCV = pool_update(np.empty((0, d)), np.empty(0), np.empty(0), X, F, CV,
-                                  POOL_SIZE, True)
-        self._set_memory(X, np.stack([F, CV]), pool_with_mean(QX), np.stack([QF, QCV]))
+        self._set_memory(X, np.stack([F, CV]), *first_pool(X, F, CV))
 
     def _violation(self, CV):
         return self._zeros if CV is None else kernel_array(CV)

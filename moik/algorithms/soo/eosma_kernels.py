@@ -150,6 +150,16 @@ def generation_candidates(P, g_best, pool, cells, rows, picks, z, a1, GP, V, bou
 
 
 @jit
+def first_pool(X, F, CV):
+    """Eq. 7 on the initial population: the pool with its mean as a last row, its F and CV
+    (2, k). (Called with the same constant arguments as :func:`remember`, so that
+    ``pool_update`` compiles once.)"""
+    QX, QF, QCV = pool_update(np.empty((0, X.shape[1])), np.empty(0), np.empty(0), X, F, CV,
+                              POOL_SIZE, True)
+    return pool_with_mean(QX), pack(QF, QCV)
+
+
+@jit
 def remember(X, F, CV, PX, PM, pool, QM, mutate, rows, picks, bounds):
     """Eqs. 18 and 7 after an evaluation, and the Eq. 16 candidates when ``mutate``.
 
@@ -159,8 +169,7 @@ def remember(X, F, CV, PX, PM, pool, QM, mutate, rows, picks, bounds):
     unless ``mutate``).
     """
     PX, PF, PCV = greedy_step(X, F, CV, PX, PM[0], PM[1])
-    k = QM.shape[1]
-    QX, QF, QCV = pool_update(pool[:k], QM[0], QM[1], X, F, CV, POOL_SIZE, True)
+    QX, QF, QCV = pool_update(pool, QM[0], QM[1], X, F, CV, POOL_SIZE, True)  # not its mean
     X_mut = np.empty((PX.shape[0] if mutate else 0, PX.shape[1]))
     if mutate:
         repaired(difference_rows(PX, picks[4:7], rows[4], X_mut), PX, bounds)

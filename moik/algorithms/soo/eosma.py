@@ -45,12 +45,13 @@ Deviations and readings:
 - W uses ``log10`` and ``eps`` as the SMA code (Eq. 4 prints ``log``).
 - Constrained problems: comparisons are feasibility-first (see base.py).
 
-Compiled (:mod:`moik.algorithms.soo.eosma_kernels`): each generation of the class is
-three compiled calls (draw, candidates, remember; a fourth for the mutation batch is
-folded into the first remember). All of a generation's random numbers are drawn at its
-start on ``self.random_state`` in the order Algorithm 1 uses them, including the line-22
-test and the Eq. 16 numbers; nothing else draws from the generator in between, so the
-stream and the results are bit for bit those of drawing each number where it is used.
+Compiled (:mod:`moik.algorithms.soo.eosma_kernels`): a generation of the class is three
+compiled calls (the draws, the candidates, the memory update, which also builds the
+Eq. 16 batch when the mutation fires) and one more memory update after that batch. All
+of a generation's random numbers are drawn at its start on ``self.random_state`` in the
+order Algorithm 1 uses them, including the line-22 test and the Eq. 16 numbers; nothing
+else draws from the generator in between, so the stream and the results are bit for
+bit those of drawing each number where it is used.
 The functions below (:func:`eosma_update`, :func:`random_difference_mutation`, also
 used by MOEOSMA) draw with the Generator's methods and call the same compiled operators.
 
@@ -83,6 +84,7 @@ SCENARIOS = {
     1: {"pop_size": 50, "q": 0.0, "a1": 1.0},
     2: {"pop_size": 100, "q": 1.0, "a1": 2.0},
 }
+
 
 def eosma_update(P, g_best, pool, W, t1: float, a: float, *, z: float, a1: float, GP: float,
                  V: float, rng: np.random.Generator) -> np.ndarray:

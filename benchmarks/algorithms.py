@@ -1,23 +1,31 @@
 """Speed of moik's algorithms, printed side by side.
 
-Run: ``.venv/bin/python benchmarks/algorithms.py [--quick]``
+Run: ``.venv/bin/python benchmarks/algorithms.py [--quick] [a] [b] [c] [d]`` (the letters
+pick sections; all by default)
 
 (a) Per-generation cost of each algorithm run through ``pymoo.optimize.minimize``
     against a plain numpy loop of the same update rule (the same kernel
     functions, a raw vectorized sphere, no pymoo), N=100, dim=7. Goal: ratio <= 1.3.
-(b) Seconds per IK solve with EOSMA on the ``eosma7`` arm: scenario 1 (position,
-    N=50, T=500) and scenario 2 (pose with the Eq. 26 Euler error, N=100,
-    T=1000), one run and with the paper's re-solve protocol; scenario 2 both
-    with the catalog arm (cm) and with Table 1's lengths in metres (the unit
-    that reproduces Table 7, see tests/algorithms/soo/test_eosma.py). The
-    paper's MATLAB figures: 0.0567 s and 0.3608 s; goals 0.015 s and 0.08 s.
-(c) moik EO/SMA/PSO against mealpy 3.0.3 OriginalEO/OriginalSMA/OriginalPSO,
+(b) One EOSMA run of the paper's scenario 1 (position, N=50, T=500, Table 5) and
+    scenario 2 (pose with the Eq. 26 Euler error, N=100, T=1000, Table 7) on the
+    ``eosma7-m`` arm, against forward kinematics of as many poses as the run
+    evaluates (its n_eval, in batches of N): moik's compiled FK (``robot.fk_position``
+    / ``robot.fk``) and the plain batched numpy DH chain (``moik.robots.fk_reference``).
+    Interleaved repeats, medians. Goal: run / numpy FK <= 0.8 (the whole run, update
+    rule and bookkeeping included, costs less than numpy FK of its poses alone). The
+    paper's MATLAB times (i7-9700): 0.0567 s and 0.3608 s.
+(c) Seconds per IK solve with the paper's re-solve protocol: scenario 1 and
+    scenario 2, the latter both with the catalog arm (cm) and with Table 1's lengths
+    in metres (the unit that reproduces Table 7, see tests/algorithms/soo/test_eosma.py).
+(d) moik EO/SMA/PSO against mealpy 3.0.3 OriginalEO/OriginalSMA/OriginalPSO,
     N=100, 1000 iterations, on the 7-D sphere and on eosma7 position IK
-    (``pip install mealpy==3.0.3``, the ``bench`` extra).
+    (``pip install mealpy==3.0.3``, the ``bench-mealpy`` extra).
 """
 
 from __future__ import annotations
 
+import os
+import platform
 import sys
 import time
 
@@ -43,6 +51,9 @@ from moik.algorithms.soo.eosma import (
 from moik.algorithms.soo.modified_pso import mpso_velocity
 from moik.algorithms.soo.pso import clamp_velocity, pso_velocity
 from moik.algorithms.soo.sma import sma_schedule, sma_update, sma_weights
+from moik.experiments.protocol import solve_until_success
+from moik.problems import PoseIK, PositionIK, random_reachable_targets
+from moik.robots import fk_reference, get_robot
 
 N, D, LO, HI = 100, 7, -10.0, 10.0
 
@@ -171,17 +182,51 @@ def section_a(T: int, repeats: int) -> None:
               f"{setup * 1e3:15.2f}")
 
 
-def section_b(n_targets: int) -> None:
-    print(f"\n(b) seconds per IK solve, EOSMA on eosma7, {n_targets} random reachable targets; "
+def section_b(repeats: int, n_targets: int = 5) -> None:
+    robot = get_robot("eosma7-m")
+    targets = random_reachable_targets(robot, n_targets, seed=2022)
+    cases = [  # label, scenario, T, problem, compiled FK, paper s
+        ("1 position", 1, 500, lambda t: PositionIK(robot, t.position), robot.fk_position,
+         0.0567),
+        ("2 pose Eq. 26", 2, 1000,
+         lambda t: PoseIK(robot, t, weights=(0.5, 0.5), orientation="eosma-euler"), robot.fk,
+         0.3608),
+    ]
+    print(f"\n(b) one EOSMA run vs FK of the run's poses, eosma7-m, {n_targets} random targets, "
+          f"{repeats} interleaved repeats, medians")
+    print(f"{'scenario':<16}{'N':>5}{'T':>6}{'poses':>8}{'run s':>9}{'moik FK s':>11}"
+          f"{'numpy FK s':>12}{'run/numpy':>11}{'goal':>6}{'per N*T':>9}{'paper s':>9}")
+    for label, number, T, make, fk, paper in cases:
+        problems = [make(t) for t in targets]
+        N = EOSMA.scenario(number).pop_size
+        res = minimize(problems[0], EOSMA.scenario(number), ("n_gen", T), seed=0)
+        n_eval, n_batches = res.algorithm.evaluator.n_eval, -(-res.algorithm.evaluator.n_eval // N)
+        Q = robot.random_q(N, rng=np.random.default_rng(0))
+        times = {"run": [], "fk": [], "numpy": []}
+        for r in range(repeats):
+            t0 = time.perf_counter()
+            minimize(problems[r % n_targets], EOSMA.scenario(number), ("n_gen", T), seed=r)
+            times["run"].append(time.perf_counter() - t0)
+            t0 = time.perf_counter()
+            for _ in range(n_batches):
+                fk(Q)
+            times["fk"].append(time.perf_counter() - t0)
+            t0 = time.perf_counter()
+            for _ in range(n_batches):
+                fk_reference(robot, Q)
+            times["numpy"].append(time.perf_counter() - t0)
+        run, t_fk, t_np = (float(np.median(times[k])) for k in ("run", "fk", "numpy"))
+        per_nt = run / (t_np * N * T / (n_batches * N))
+        print(f"{label:<16}{N:5d}{T:6d}{n_eval:8d}{run:9.4f}{t_fk:11.4f}{t_np:12.4f}"
+              f"{run / t_np:11.2f}{0.8:6.1f}{per_nt:9.2f}{paper:9.4f}")
+    print("    'poses': the run's evaluations (scenario 2's mutation doubles them: 2 N per "
+          "iteration);\n    'per N*T': run / numpy FK of N*T poses instead.")
+
+
+def section_c(n_targets: int) -> None:
+    print(f"\n(c) seconds per IK solve, EOSMA on eosma7, {n_targets} random reachable targets; "
           "'s/run': one run; 's/solve': the paper's protocol (re-run until f < 1e-6, at most "
           "10 runs)")
-    try:
-        from moik.experiments.protocol import solve_until_success
-        from moik.problems import PoseIK, PositionIK, random_reachable_targets
-        from moik.robots import get_robot
-    except ImportError as exc:  # robots/problems not installed in this checkout
-        print(f"    skipped: {exc}")
-        return
     cm = get_robot("eosma7")
     m = get_robot("eosma7-m")  # Table 1 as printed (m): the unit of Tables 5 and 7
     print(f"{'scenario':<30}{'s/run':>8}{'s/solve':>9}{'paper s':>9}{'goal s':>8}{'eval ms':>9}"
@@ -195,6 +240,7 @@ def section_b(n_targets: int) -> None:
          lambda r, t: PoseIK(r, t, weights=(0.5, 0.5), orientation="eosma-euler")),
     ]:
         targets = random_reachable_targets(robot, n_targets, seed=2022)
+        minimize(make(robot, targets[0]), EOSMA.scenario(number), ("n_gen", 5), seed=0)  # warm
         run_t, solve_t, first, final = [], [], [], []
         for i, target in enumerate(targets):
             problem = make(robot, target)
@@ -228,23 +274,17 @@ def _mealpy_run(name: str, f, lb, ub, epochs: int, seed: int) -> float:
     return time.perf_counter() - t0
 
 
-def section_c(epochs: int) -> None:
-    print(f"\n(c) moik vs mealpy 3.0.3, N={N}, {epochs} iterations, one run each")
+def section_d(epochs: int) -> None:
+    print(f"\n(d) moik vs mealpy 3.0.3, N={N}, {epochs} iterations, one run each")
     try:
         import mealpy  # noqa: F401
     except ImportError:
-        print("    skipped: mealpy is not installed; pip install mealpy==3.0.3 (extra 'bench')")
+        print("    skipped: mealpy is not installed; pip install mealpy==3.0.3 (extra 'bench-mealpy')")
         return
-    problems = [("sphere 7-D", Sphere())]
-    try:
-        from moik.problems import PositionIK, random_reachable_targets
-        from moik.robots import get_robot
-
-        robot = get_robot("eosma7")
-        problems.append(("eosma7 position IK",
-                         PositionIK(robot, random_reachable_targets(robot, 1, seed=5)[0].position)))
-    except ImportError as exc:
-        print(f"    IK problem skipped: {exc}")
+    robot = get_robot("eosma7")
+    problems = [("sphere 7-D", Sphere()),
+                ("eosma7 position IK",
+                 PositionIK(robot, random_reachable_targets(robot, 1, seed=5)[0].position))]
     print(f"{'problem':<20}{'algorithm':<10}{'moik s':>9}{'mealpy s':>10}{'speed-up':>10}")
     for label, problem in problems:
         def f(x, p=problem):
@@ -260,9 +300,18 @@ def section_c(epochs: int) -> None:
 
 def main() -> None:
     quick = "--quick" in sys.argv
-    section_a(T=300 if quick else 1000, repeats=3 if quick else 7)
-    section_b(n_targets=5 if quick else 20)
-    section_c(epochs=100 if quick else 1000)
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+    print(f"numpy {np.__version__}, {platform.processor() or platform.machine()}, "
+          f"{os.cpu_count()} CPUs, load average {load:.2f}, {time.strftime('%Y-%m-%d %H:%M')}")
+    only = [a for a in sys.argv[1:] if a in ("a", "b", "c", "d")]
+    if not only or "a" in only:
+        section_a(T=300 if quick else 1000, repeats=3 if quick else 7)
+    if not only or "b" in only:
+        section_b(repeats=5 if quick else 21)
+    if not only or "c" in only:
+        section_c(n_targets=5 if quick else 20)
+    if not only or "d" in only:
+        section_d(epochs=100 if quick else 1000)
 
 
 if __name__ == "__main__":

@@ -1,26 +1,56 @@
 """moik: multi-objective inverse kinematics of robot arms with metaheuristics, on pymoo.
 
 Public API: :func:`get_robot` (the papers' arms), :func:`load_urdf`,
-:func:`solve_ik`, :func:`solve_ik_batch` and :func:`solve_path` (the practical
-solver), the IK problems in :mod:`moik.problems` and the algorithms in
-:mod:`moik.algorithms`.
+:func:`solve_ik`, :func:`solve_ik_batch`, :func:`solve_ik_pareto` and
+:func:`solve_path` (the practical solver), the IK problems in :mod:`moik.problems`
+and the algorithms in :mod:`moik.algorithms`.
+
+``import moik`` loads only the exceptions and the version; each name below loads its
+module at first use (``moik.solve_ik``, ``from moik import get_robot``). numba, pymoo
+and scipy take about half a second to import, which a script that only reads
+``moik.__version__`` or a ``--help`` need not pay.
 """
 
-from moik import algorithms, problems
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
 from moik._version import __version__
 from moik.exceptions import MoikError
-from moik.robots import Robot, available_robots, get_robot
-from moik.robots.urdf import load_urdf
-from moik.solver import (
-    IKBatchResult,
-    IKResult,
-    ParetoIKResult,
-    PathResult,
-    solve_ik,
-    solve_ik_batch,
-    solve_ik_pareto,
-    solve_path,
-)
+
+if TYPE_CHECKING:
+    from moik import algorithms, problems
+    from moik.robots import Robot, available_robots, get_robot
+    from moik.robots.urdf import load_urdf
+    from moik.solver import (
+        IKBatchResult,
+        IKResult,
+        ParetoIKResult,
+        PathResult,
+        solve_ik,
+        solve_ik_batch,
+        solve_ik_pareto,
+        solve_path,
+    )
+
+_LAZY: dict[str, tuple[str, str | None]] = {
+    "IKBatchResult": ("moik.solver", "IKBatchResult"),
+    "IKResult": ("moik.solver", "IKResult"),
+    "ParetoIKResult": ("moik.solver", "ParetoIKResult"),
+    "PathResult": ("moik.solver", "PathResult"),
+    "Robot": ("moik.robots", "Robot"),
+    "algorithms": ("moik.algorithms", None),
+    "available_robots": ("moik.robots", "available_robots"),
+    "get_robot": ("moik.robots", "get_robot"),
+    "load_urdf": ("moik.robots.urdf", "load_urdf"),
+    "problems": ("moik.problems", None),
+    "solve_ik": ("moik.solver", "solve_ik"),
+    "solve_ik_batch": ("moik.solver", "solve_ik_batch"),
+    "solve_ik_pareto": ("moik.solver", "solve_ik_pareto"),
+    "solve_path": ("moik.solver", "solve_path"),
+}
+"""Public name -> (module, attribute); None: the module itself."""
 
 __all__ = [
     "IKBatchResult",
@@ -40,3 +70,18 @@ __all__ = [
     "solve_ik_pareto",
     "solve_path",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    """Load a public name's module at its first use (start-up time, see the docstring)."""
+    if name not in _LAZY:
+        raise AttributeError(f"module 'moik' has no attribute {name!r}")
+    module_name, attribute = _LAZY[name]
+    module = importlib.import_module(module_name)
+    value = module if attribute is None else getattr(module, attribute)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *__all__})

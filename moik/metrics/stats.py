@@ -21,13 +21,22 @@ For minimized errors, R+ = 0 means the first algorithm was better in every pair.
 
 from __future__ import annotations
 
+import importlib
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import stats
 
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError
+
+
+def _scipy_stats():
+    """``scipy.stats``, imported at the first test that needs it.
+
+    Importing it takes about 0.45 s, which would be most of moik's start-up time, and
+    only the rank tests below use it: deferred for start-up time (not for an import cycle).
+    """
+    return importlib.import_module("scipy.stats")
 
 
 def _sample(name: str, values: object, *, min_size: int = 1) -> np.ndarray:
@@ -139,7 +148,7 @@ def ranksum_pvalues(samples: Mapping[str, Sequence[float]], proposed: str) -> di
         if np.ptp(np.concatenate([x, y])) == 0:
             out[name] = 1.0
             continue
-        out[name] = float(stats.mannwhitneyu(x, y, alternative="two-sided").pvalue)
+        out[name] = float(_scipy_stats().mannwhitneyu(x, y, alternative="two-sided").pvalue)
     return out
 
 
@@ -184,6 +193,7 @@ def signed_rank(a: Sequence[float], b: Sequence[float]) -> SignedRank:
     n = int(np.count_nonzero(d))
     if n == 0:
         return SignedRank(r_plus=0.0, r_minus=0.0, p_value=1.0, n=0)
+    stats = _scipy_stats()
     r_plus = float(stats.wilcoxon(d, zero_method="wilcox", alternative="greater").statistic)
     p = float(stats.wilcoxon(d, zero_method="wilcox", alternative="two-sided").pvalue)
     return SignedRank(r_plus=r_plus, r_minus=n * (n + 1) / 2 - r_plus, p_value=p, n=n)
@@ -234,6 +244,7 @@ def friedman_ranks(samples: Mapping[str, Sequence[float]], *,
         raise ShapeError("every sample must have the same number of blocks; got "
                          + ", ".join(f"{k}: {c.size}" for k, c in zip(names, cols, strict=True)))
     table = np.column_stack(cols)
+    stats = _scipy_stats()
     ranks = stats.rankdata(-table if higher_is_better else table, axis=1)
     mean = ranks.mean(axis=0)
     order_ranks = stats.rankdata(mean, method="min")

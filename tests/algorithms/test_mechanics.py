@@ -13,6 +13,7 @@ from moik.algorithms.mechanics import (
     mantegna_sigma,
     midpoint_repair,
     ranking_fitness,
+    stable_order,
     uniform_population,
 )
 from moik.testing import ScriptedRng
@@ -66,3 +67,40 @@ def test_mantegna_sigma_and_levy_step():
     assert mantegna_sigma(1.5) == pytest.approx(0.696574502, rel=1e-8)
     step = mantegna_levy((1, 1), 1.5, rng=ScriptedRng([[1.0]], [[-4.0]]))
     assert step[0, 0] == pytest.approx(mantegna_sigma(1.5) / 4.0 ** (2 / 3))
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_compiled_mechanics_equal_the_numpy_formulas(seed):
+    """Eq. 17, Eq. 18 and the ranking value against their numpy formulas (nan included)."""
+    rng = np.random.default_rng(seed)
+    n = 15
+    X_new, X_old = rng.uniform(-2, 2, (n, 2)), rng.uniform(0, 1, (n, 2))
+    X_new[0, 0] = np.nan
+    expected = np.where(X_new > XU, (X_old + XU) / 2.0, X_new)
+    expected = np.where(X_new < XL, (X_old + XL) / 2.0, expected)
+    np.testing.assert_array_equal(midpoint_repair(X_new, X_old, XL, XU), expected)
+    F, PF = rng.integers(0, 3, n).astype(float), rng.integers(0, 3, n).astype(float)
+    CV, PCV = rng.integers(0, 2, n).astype(float), rng.integers(0, 2, n).astype(float)
+    for cv, pcv in ((None, None), (CV, PCV)):
+        better = is_better(F, cv, PF, pcv)
+        MX, MF, MCV = greedy_memory(X_new, F, cv, X_old, PF, pcv)
+        np.testing.assert_array_equal(MX, np.where(better[:, None], X_new, X_old))
+        np.testing.assert_array_equal(MF, np.where(better, F, PF))
+        assert MCV is None if cv is None else np.array_equal(MCV, np.where(better, cv, pcv))
+    F[2] = np.nan
+    feas = CV <= 0.0
+    expected = np.where(feas, F, (F[feas].max() if feas.any() else 0.0) + CV)
+    np.testing.assert_array_equal(ranking_fitness(F, CV), expected)
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_stable_order_is_numpys_stable_argsort(seed):
+    """Ties keep their order, nan sorts last, -0.0 ties with 0.0, any length."""
+    rng = np.random.default_rng(seed)
+    n = int(rng.integers(1, 130))
+    S = rng.integers(0, 6, n).astype(float)
+    S[rng.random(n) < 0.1] = np.nan
+    S[rng.random(n) < 0.05] = -np.inf
+    S[rng.random(n) < 0.05] = -0.0
+    order = stable_order(S, np.empty(n, dtype=np.int64))
+    np.testing.assert_array_equal(order, np.argsort(S, kind="stable"))

@@ -45,6 +45,16 @@ Deviations and readings:
 - W uses ``log10`` and ``eps`` as the SMA code (Eq. 4 prints ``log``).
 - Constrained problems: comparisons are feasibility-first (see base.py).
 
+Compiled (:mod:`moik.algorithms.soo.eosma_kernels`): a generation of the class is three
+compiled calls (the draws, the candidates, the memory update, which also builds the
+Eq. 16 batch when the mutation fires) and one more memory update after that batch. All
+of a generation's random numbers are drawn at its start on ``self.random_state`` in the
+order Algorithm 1 uses them, including the line-22 test and the Eq. 16 numbers; nothing
+else draws from the generator in between, so the stream and the results are bit for
+bit those of drawing each number where it is used.
+The functions below (:func:`eosma_update`, :func:`random_difference_mutation`, also
+used by MOEOSMA) draw with the Generator's methods and call the same compiled operators.
+
 Reproducing Tables 5 and 7 on the 7-DOF arm: tests/algorithms/soo/test_eosma.py
 (Table 7 is reproduced with Table 1's lengths in metres, not in cm).
 """
@@ -53,15 +63,21 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._jit import kernel_array
 from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
-from moik.algorithms.mechanics import (
-    greedy_memory,
-    midpoint_repair,
-    ranking_fitness,
+from moik.algorithms.generator_handle import GeneratorHandles
+from moik.algorithms.soo.eo import eo_schedule, select_pool
+from moik.algorithms.soo.eosma_kernels import (
+    POOL_SIZE,
+    difference_rows,
+    eosma_rows,
+    first_pool,
+    generation_candidates,
+    generation_draws,
+    remember,
 )
-from moik.algorithms.soo.eo import concentration_update, eo_schedule, with_mean
-from moik.algorithms.soo.sma import sma_schedule, sma_weights
+from moik.algorithms.soo.sma import sma_schedule
 from moik.exceptions import ParameterError
 
 SCENARIOS = {
@@ -75,54 +91,51 @@ def eosma_update(P, g_best, pool, W, t1: float, a: float, *, z: float, a1: float
     """Eq. 15: the EO operator (probability z) or the SMA operator, per agent.
 
     Args:
-        P: Personal bests (n, d). g_best: best so far (d,). pool: equilibrium pool.
+        P: Personal bests (n, d). g_best: best so far (d,), or a leader per agent (n, d).
+            pool: equilibrium pool.
         W: SMA weights (n, d). t1: EO time factor (Eq. 8). a: SMA range (Eq. 3).
-        z, a1, GP, V: hyperparameters. rng: random generator.
+        z, a1, GP, V: hyperparameters.
+        rng: Random generator: EO's ``lam``, ``r`` (n, d), pool index, ``r1``, ``r2``
+            (n,), then ``vb`` (n, d), ``A``, ``B`` and the operator test (n,), in that order.
     """
+    P = kernel_array(P)
     n, d = P.shape
-    X_eo = concentration_update(P, pool, t1, a1=a1, GP=GP, V=V, rng=rng)
-    vb = rng.uniform(-a, a, (n, d))
-    A, B = rng.integers(n, size=n), rng.integers(n, size=n)
-    X_sma = g_best + vb * (W * P[A] - P[B])
-    use_eo = rng.random(n) < z
-    return np.where(use_eo[:, None], X_eo, X_sma)
+    lam, r = kernel_array(rng.random((n, d))), kernel_array(rng.random((n, d)))
+    idx = np.asarray(rng.integers(len(pool), size=n), dtype=np.int64)
+    r1, r2 = kernel_array(rng.random(n)), kernel_array(rng.random(n))
+    vb = kernel_array(rng.uniform(-a, a, (n, d)))
+    A = np.asarray(rng.integers(n, size=n), dtype=np.int64)
+    B = np.asarray(rng.integers(n, size=n), dtype=np.int64)
+    u = kernel_array(rng.random(n))
+    g_best = kernel_array(g_best).reshape(-1, d)
+    return eosma_rows(P, g_best, kernel_array(pool), kernel_array(W), lam,
+                      np.exp(-lam * t1), r, idx, r1, r2, vb, A, B, u, float(z), float(a1),
+                      float(GP), float(V), np.empty((n, d)))
 
 
-def update_distinct_pool(PX, PF, PCV, X, F, CV, k: int = 4):
+def update_distinct_pool(PX, PF, PCV, X, F, CV, k: int = POOL_SIZE):
     """Eq. 7: the ``k`` best distinct rows of the old pool and a new evaluated batch.
 
-    Rows are ranked by the feasibility-first fitness (stable); a row equal to
-    a better-ranked one is dropped. Equal rows have equal fitness, so rows are
-    compared only when the ``4 k`` best hold a tie (else nothing to drop), and
-    all rows only when the ``4 k`` best hold fewer than ``k`` distinct points.
+    Rows are ranked by the feasibility-first fitness (stable); a row equal to a
+    better-ranked one (same point, same fitness) is dropped
+    (:func:`moik.algorithms.soo.eo.best_rows`).
 
     Returns:
         ``(PX, PF, PCV)`` with at most ``k`` rows, best first.
     """
-    X_all, F_all = np.concatenate([PX, X]), np.concatenate([PF, F])
-    CV_all = None if CV is None else np.concatenate([PCV, CV])
-    S = ranking_fitness(F_all, CV_all)
-    order = np.argsort(S, kind="stable")
-    for m in (4 * k, len(order)):
-        top = order[:m]
-        St = S[top]
-        if not np.any(St[1:] == St[:-1]):
-            break
-        Xs = X_all[top]
-        same = (Xs[:, None, :] == Xs[None, :, :]).all(axis=2) & (St[:, None] == St[None, :])
-        top = top[~np.tril(same, -1).any(axis=1)]
-        if len(top) >= k or m >= len(order):
-            break
-    top = top[:k]
-    return X_all[top], F_all[top], (None if CV is None else CV_all[top])
+    return select_pool(PX, PF, PCV, X, F, CV, k, True)
 
 
 def random_difference_mutation(P: np.ndarray, *, rng: np.random.Generator) -> np.ndarray:
-    """Eq. 16: ``pBest_R1 + SF (pBest_R2 - pBest_R3)`` with ``SF ~ U[0.3, 0.6]``."""
+    """Eq. 16: ``pBest_R1 + SF (pBest_R2 - pBest_R3)`` with ``SF ~ U[0.3, 0.6]``.
+
+    Draws the indices ``R`` (3, n), then ``SF`` (n, 1).
+    """
+    P = kernel_array(P)
     n = len(P)
-    R = rng.integers(n, size=(3, n))
-    SF = rng.uniform(0.3, 0.6, (n, 1))
-    return P[R[0]] + SF * (P[R[1]] - P[R[2]])
+    R = np.asarray(rng.integers(n, size=(3, n)), dtype=np.int64)
+    SF = kernel_array(rng.uniform(0.3, 0.6, (n, 1))).reshape(n)
+    return difference_rows(P, R, SF, np.empty(P.shape))
 
 
 class EOSMA(ArrayAlgorithm):
@@ -169,34 +182,56 @@ class EOSMA(ArrayAlgorithm):
         return self.pop_size * (1.0 + self.q)
 
     def _initialize_state(self) -> None:
-        self.pbest_X, self.pbest_F, self.pbest_CV = self.X, self.F, self.CV
-        empty, cv0 = np.empty((0, self.problem.n_var)), (None if self.CV is None else np.empty(0))
-        self.pool_X, self.pool_F, self.pool_CV = update_distinct_pool(
-            empty, np.empty(0), cv0, self.X, self.F, self.CV)
+        n, d = self.pop_size, self.problem.n_var
+        # scratch of the generation kernels (see eosma_kernels)
+        self._cells, self._rows = np.empty((5, n, d)), np.empty((5, n))
+        self._picks = np.empty((7, n), dtype=np.int64)
+        self._zeros = np.zeros(n)  # the violation of unconstrained rows
+        self._handles = GeneratorHandles()
+        self._bounds = np.stack([self.xl, self.xu]).astype(float)
+        X, F, CV = kernel_array(self.X), kernel_array(self.F), self._violation(self.CV)
+        self._set_memory(X, np.stack([F, CV]), *first_pool(X, F, CV))
 
-    def _remember(self, X, F, CV) -> None:
-        """Eq. 18 and the pool after an evaluation."""
+    def _violation(self, CV):
+        return self._zeros if CV is None else kernel_array(CV)
+
+    def _set_memory(self, PX, PM, pool, QM) -> None:
+        """The memory: kernels use the packed arrays (pbest F and CV in ``_PM`` (2, n), the
+        pool with its mean as a last row in ``_pool``, its F and CV in ``_QM``); the
+        public attributes are views of them."""
+        self.pbest_X, self._PM, self._pool, self._QM = PX, PM, pool, QM
+        self.pbest_F, self.pool_X, self.pool_F = PM[0], pool[:-1], QM[0]
+        self.pbest_CV, self.pool_CV = (PM[1], QM[1]) if self._constrained else (None, None)
+
+    def _remember(self, X, F, CV, mutate: bool) -> np.ndarray:
+        """Eqs. 18 and 7 after an evaluation; returns the Eq. 16 candidates if ``mutate``."""
         self.X, self.F, self.CV = X, F, CV
-        self.pbest_X, self.pbest_F, self.pbest_CV = greedy_memory(
-            X, F, CV, self.pbest_X, self.pbest_F, self.pbest_CV)
-        self.pool_X, self.pool_F, self.pool_CV = update_distinct_pool(
-            self.pool_X, self.pool_F, self.pool_CV, X, F, CV)
+        *memory, X_mut = remember(X, kernel_array(F), self._violation(CV), self.pbest_X,
+                                  self._PM, self._pool, self._QM, mutate, self._rows,
+                                  self._picks, self._bounds)
+        self._set_memory(*memory)
+        return X_mut
 
     def _population_arrays(self):
         return self.pbest_X, self.pbest_F, self.pbest_CV
 
     def _generation(self) -> Step:
-        rng = self.random_state
+        """Algorithm 1, one iteration. All its random numbers are drawn first, in the
+        order the numpy operators draw them (:func:`generation_draws`): nothing else draws
+        from the generator before the mutation, so the stream and the results are those
+        of drawing each number where it is used."""
         t1 = eo_schedule(self.t, self.max_iter, self.a2)
         a, _ = sma_schedule(self.t, self.max_iter)
-        W = sma_weights(ranking_fitness(self.pbest_F, self.pbest_CV), self.problem.n_var, rng=rng)
-        X = eosma_update(self.pbest_X, self.best_x, with_mean(self.pool_X), W, t1, a, z=self.z,
-                         a1=self.a1, GP=self.GP, V=self.V, rng=rng)
-        X = midpoint_repair(X, self.pbest_X, self.xl, self.xu)  # Eq. 17
+        cells, rows, picks = self._cells, self._rows, self._picks
+        mutate = generation_draws(self._handles.of(self.random_state), self._PM,
+                                  len(self._pool), t1, a, self.q, cells, rows, picks)
+        np.log10(rows[0], out=rows[0])  # Eq. 4
+        np.exp(cells[2], out=cells[2])  # Eq. 8
+        X = generation_candidates(self.pbest_X, kernel_array(self.best_x)[None], self._pool,
+                                  cells, rows, picks, self.z, self.a1, self.GP, self.V,
+                                  self._bounds)
         F, CV = yield X
-        self._remember(X, F, CV)
-        if rng.random() < self.q:  # Algorithm 1, line 22
-            X = midpoint_repair(random_difference_mutation(self.pbest_X, rng=rng),
-                                self.pbest_X, self.xl, self.xu)
+        X = self._remember(X, F, CV, mutate)
+        if mutate:  # Algorithm 1, line 22 (Eq. 16)
             F, CV = yield X
-            self._remember(X, F, CV)
+            self._remember(X, F, CV, False)

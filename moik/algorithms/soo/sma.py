@@ -30,6 +30,13 @@ Deviations:
 - Eq. 4 prints ``log``; the authors' code and this port use ``log10``.
 - Constrained problems: the fitness S is the feasibility-first ranking value of
   base.ranking_fitness (Deb's rules).
+
+Compiled: the weights (:func:`weight_arguments`, :func:`weights_into`, shared with
+EOSMA) and the Eq. 1 position update (per coordinate :func:`sma_coordinate`, which
+EOSMA's update inlines too). The random numbers are drawn with numpy's Generator
+before the kernels, and ``log10`` and ``tanh`` are numpy's: numpy's vectorised
+versions and the C library's (which numba calls) differ in the last bit for some
+inputs, and numpy's are the ones the recorded results were computed with.
 """
 
 from __future__ import annotations
@@ -38,28 +45,62 @@ import math
 
 import numpy as np
 
+from moik._jit import jit, kernel_array
 from moik._validate import interval
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.mechanics import (
     clip_to_bounds,
+    ieee_divide,
     ranking_fitness,
+    stable_order,
     uniform_population,
 )
 
 EPS = np.finfo(float).eps
 
 
-def sma_weights(S: np.ndarray, d: int, *, rng: np.random.Generator) -> np.ndarray:
-    """Eqs. 4-5: the fitness weight W (n, d) of each agent from its fitness S (n,)."""
-    n = len(S)
-    order = np.argsort(S, kind="stable")  # Eq. 5
-    S_sorted = S[order]
-    bF, wF = S_sorted[0], S_sorted[-1]
-    log = np.log10((bF - S_sorted) / (bF - wF - EPS) + 1.0)
-    sign = np.where(np.arange(1, n + 1) <= n / 2, 1.0, -1.0)
-    W = np.empty((n, d))
-    W[order] = 1.0 + (sign * log)[:, None] * rng.random((n, d))  # Eq. 4
+@jit
+def weight_arguments(S, order, arg):
+    """Eq. 5 and the argument of Eq. 4's log10, per rank, into ``order`` and ``arg``.
+
+    ``order`` is numpy's stable ranking of ``S``; ``arg[i] = (bF - S_(i)) / (bF - wF -
+    eps) + 1`` for the i-th best fitness ``S_(i)``.
+    """
+    stable_order(S, order)
+    bF, wF = S[order[0]], S[order[-1]]
+    den = bF - wF - EPS
+    for i in range(S.size):
+        arg[i] = ieee_divide(bF - S[order[i]], den) + 1.0
+
+
+@jit(inline=True)
+def weight_sign(rank: int, n: int) -> float:
+    """Eq. 4's sign: "+" for the better half of the sorted population."""
+    return 1.0 if rank + 1 <= n / 2 else -1.0
+
+
+@jit
+def weights_into(order, log, R, W):
+    """Eq. 4: ``W[order[i]] = 1 +/- log[i] R[i]`` (``R`` drawn per rank), into ``W``."""
+    n, d = R.shape
+    for i in range(n):
+        sl = weight_sign(i, n) * log[i]
+        for j in range(d):
+            W[order[i], j] = 1.0 + sl * R[i, j]
     return W
+
+
+def sma_weights(S: np.ndarray, d: int, *, rng: np.random.Generator) -> np.ndarray:
+    """Eqs. 4-5: the fitness weight W (n, d) of each agent from its fitness S (n,).
+
+    Draws ``r`` (n, d) with ``rng`` after ranking.
+    """
+    S = kernel_array(S)
+    n = S.size
+    order, arg = np.empty(n, np.int64), np.empty(n)
+    weight_arguments(S, order, arg)
+    return weights_into(order, np.log10(arg), kernel_array(rng.random((n, d))),
+                        np.empty((n, d)))
 
 
 def sma_schedule(t: int, T: int) -> tuple[float, float]:
@@ -68,18 +109,46 @@ def sma_schedule(t: int, T: int) -> tuple[float, float]:
     return math.atanh(1.0 - s), 1.0 - s
 
 
+@jit(inline=True)
+def sma_coordinate(x_b: float, vb: float, w: float, x_a: float, x_bb: float) -> float:
+    """Eq. 1's approach move for one coordinate: ``X_b + vb (W X_A - X_B)``."""
+    return x_b + vb * (w * x_a - x_bb)
+
+
+@jit
+def sma_rows(X, W, x_best, p, vb, vc, r, IA, IB, out):
+    """Eq. 1 (without the restarts) on every row from its drawn numbers, into ``out``.
+    ``x_best`` is (1, d), or (n, d) with one food source per agent (MOSMA)."""
+    n, d = X.shape
+    for i in range(n):
+        g = i if x_best.shape[0] == n else 0
+        for j in range(d):
+            if r[i, j] < p[i]:
+                out[i, j] = sma_coordinate(x_best[g, j], vb[i, j], W[i, j], X[IA[i, j], j],
+                                           X[IB[i, j], j])
+            else:
+                out[i, j] = vc[i, j] * X[i, j]
+    return out
+
+
 def sma_update(X, W, x_best, S, f_best: float, a: float, b: float, *, z: float,
                xl: np.ndarray, xu: np.ndarray, rng: np.random.Generator) -> np.ndarray:
-    """Eqs. 1-3: SMA's position update of every row of ``X`` (not yet bounded)."""
+    """Eqs. 1-3: SMA's position update of every row of ``X`` (not yet bounded).
+
+    Draws ``vb``, ``vc``, ``r``, the indices of ``X_A`` and ``X_B`` (all (n, d)), the
+    restart test (n,) and the restarted points, in that order.
+    """
+    X = kernel_array(X)
     n, d = X.shape
     p = np.tanh(np.abs(S - f_best))  # Eq. 2
-    vb = rng.uniform(-a, a, (n, d))  # Eq. 3
-    vc = rng.uniform(-b, b, (n, d))
-    r = rng.random((n, d))
-    cols = np.arange(d)
-    XA = X[rng.integers(n, size=(n, d)), cols]
-    XB = X[rng.integers(n, size=(n, d)), cols]
-    X_new = np.where(r < p[:, None], x_best + vb * (W * XA - XB), vc * X)  # Eq. 1
+    vb = kernel_array(rng.uniform(-a, a, (n, d)))  # Eq. 3
+    vc = kernel_array(rng.uniform(-b, b, (n, d)))
+    r = kernel_array(rng.random((n, d)))
+    IA = np.asarray(rng.integers(n, size=(n, d)), dtype=np.int64)
+    IB = np.asarray(rng.integers(n, size=(n, d)), dtype=np.int64)
+    x_best = kernel_array(x_best).reshape(-1, d)
+    X_new = sma_rows(X, kernel_array(W), x_best, kernel_array(p), vb, vc, r, IA, IB,
+                     np.empty((n, d)))  # Eq. 1
     restart = rng.random(n) < z
     k = int(restart.sum())
     if k:

@@ -40,13 +40,17 @@ the re-solve protocol at threshold 1e-10 instead of the paper's 1e-6.
 
 import numpy as np
 import pytest
+from pymoo.core.problem import Problem
+from pymoo.optimize import minimize
 
 from moik.algorithms import EOSMA
+from moik.algorithms.generator_handle import GeneratorHandles
 from moik.algorithms.soo.eosma import (
     eosma_update,
     random_difference_mutation,
     update_distinct_pool,
 )
+from moik.algorithms.soo.eosma_kernels import generation_draws
 from moik.exceptions import ParameterError
 from moik.experiments.protocol import solve_until_success
 from moik.problems import PoseIK, PositionIK, random_reachable_targets
@@ -97,6 +101,136 @@ def test_random_difference_mutation_eq16():
     rng = ScriptedRng([[2, 1, 1], [1, 2, 0], [0, 0, 0]], [[0.5], [0.4], [0.3]])
     out = random_difference_mutation(P, rng=rng)
     np.testing.assert_allclose(out, [[2.5], [1.8], [1.0]])
+
+
+def random_case(seed: int, n: int = 9, d: int = 4):
+    """Personal bests with repeated rows and fitness ties, a pool with its mean, weights."""
+    rng = np.random.default_rng(seed)
+    P = rng.uniform(-2.0, 2.0, (n, d))
+    P[1] = P[0]  # duplicates
+    pool = np.concatenate([P[:4], P[:4].mean(axis=0, keepdims=True)])
+    W = rng.uniform(0.0, 2.0, (n, d))
+    return P, pool, W
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_compiled_operators_equal_the_numpy_formulas(seed, numpy_rules):
+    """Eqs. 15 and 16: the same bits as the numpy formulas on the same random stream,
+    with one best for all agents and with one leader per agent (MOEOSMA)."""
+    P, pool, W = random_case(seed)
+    for g_best in (P[2], P[np.random.default_rng(seed).integers(len(P), size=len(P))]):
+        for z in (0.0, 0.5, 1.0):
+            args = (P, g_best, pool, W, 0.3 + 0.05 * seed, 0.7)
+            kw = {"z": z, "a1": 2.0, "GP": 0.5, "V": 1.0}
+            out = eosma_update(*args, **kw, rng=np.random.default_rng(seed))
+            ref = numpy_rules.eosma_update(*args, **kw, rng=np.random.default_rng(seed))
+            np.testing.assert_array_equal(out, ref)
+    out = random_difference_mutation(P, rng=np.random.default_rng(seed))
+    ref = numpy_rules.random_difference_mutation(P, rng=np.random.default_rng(seed))
+    np.testing.assert_array_equal(out, ref)
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_distinct_pool_equals_the_numpy_selection(seed, numpy_rules):
+    """Eq. 7 with ties, exact duplicates, nan and infinite fitness, with and without
+    constraints, pools of 1 to 6 rows: the same rows in the same order."""
+    rng = np.random.default_rng(seed)
+    n, d = int(rng.integers(1, 40)), 3
+    X = rng.integers(0, 3, (n, d)).astype(float)  # many equal rows
+    F = rng.integers(0, 4, n).astype(float)
+    F[rng.random(n) < 0.1] = np.nan
+    F[rng.random(n) < 0.1] = np.inf
+    CV = None if seed % 2 else np.where(rng.random(n) < 0.5, 0.0, rng.integers(1, 3, n))
+    PX, PF = X[:2] + 1.0, F[:2].copy()
+    PCV = None if CV is None else CV[:2].copy()
+    for k in (1, 4, 6):
+        out = update_distinct_pool(PX, PF, PCV, X, F, CV, k)
+        ref = numpy_rules.update_distinct_pool(PX, PF, PCV, X, F, CV, k)
+        for a, b in zip(out, ref, strict=True):
+            if b is None:
+                assert a is None
+            else:
+                np.testing.assert_array_equal(a, b)
+
+
+class ConstrainedSphere(Problem):
+    """``|x - 0.3|^2`` subject to ``x_0 + x_1 >= 0.5`` (infeasible corners in the box)."""
+
+    def __init__(self):
+        super().__init__(n_var=4, n_obj=1, n_ieq_constr=1, xl=-1.0, xu=1.0)
+
+    def _evaluate(self, X, out, *args, **kwargs):
+        out["F"] = ((X - 0.3) ** 2).sum(axis=1)
+        out["G"] = 0.5 - X[:, 0] - X[:, 1]
+
+
+class Sphere(Problem):
+    def __init__(self):
+        super().__init__(n_var=5, n_obj=1, xl=-5.0, xu=3.0)
+
+    def _evaluate(self, X, out, *args, **kwargs):
+        out["F"] = ((X - 1.3) ** 2).sum(axis=1)
+
+
+@pytest.mark.parametrize("q", [0.0, 0.5, 1.0])
+@pytest.mark.parametrize("problem", [Sphere(), ConstrainedSphere()], ids=["sphere", "constrained"])
+def test_compiled_generation_equals_the_numpy_generation(q, problem, numpy_rules):
+    """The class's compiled generation (all of a generation's numbers drawn at its start)
+    and Algorithm 1 in numpy drawing each number where it is used give the same run, bit
+    for bit, also when an evaluation budget cuts a batch."""
+    for termination in (("n_gen", 40), ("n_eval", 1234)):
+        for seed in (0, 1):
+            kw = {"pop_size": 12, "q": q}
+            res = minimize(problem, EOSMA(**kw), termination, seed=seed)
+            ref = minimize(problem, numpy_rules.NumpyEOSMA(**kw), termination, seed=seed)
+            np.testing.assert_array_equal(res.algorithm.pbest_X, ref.algorithm.pbest_X)
+            np.testing.assert_array_equal(res.algorithm.pool_X, ref.algorithm.pool_X)
+            np.testing.assert_array_equal(res.algorithm.convergence, ref.algorithm.convergence)
+            assert res.algorithm.evaluator.n_eval == ref.algorithm.evaluator.n_eval
+
+
+def test_same_seed_same_run_through_minimize_and_ask_tell():
+    problem = ConstrainedSphere()
+    runs = [minimize(problem, EOSMA(pop_size=10), ("n_gen", 30), seed=7) for _ in range(2)]
+    algorithm = EOSMA(pop_size=10)
+    algorithm.setup(problem, termination=("n_gen", 30), seed=7)
+    while algorithm.has_next():
+        pop = algorithm.ask()
+        algorithm.evaluator.eval(problem, pop)
+        algorithm.tell(infills=pop)
+    for other in (runs[1].algorithm, algorithm):
+        np.testing.assert_array_equal(other.pbest_X, runs[0].algorithm.pbest_X)
+        np.testing.assert_array_equal(other.pbest_CV, runs[0].algorithm.pbest_CV)
+
+
+def test_generation_draws_follow_the_numpy_stream():
+    """The in-kernel draws are the numbers numpy's Generator methods give, in order."""
+    n, d, n_pool = 6, 3, 5
+    cells, rows = np.empty((5, n, d)), np.empty((5, n))
+    picks = np.empty((7, n), dtype=np.int64)
+    rng = np.random.default_rng(4)
+    F = np.arange(n, 0, -1.0)
+    assert generation_draws(GeneratorHandles().of(rng), np.stack([F, np.zeros(n)]), n_pool,
+                            0.25, 0.5, 1.0, cells, rows, picks)
+    after = rng.random()
+    ref = np.random.default_rng(4)
+    np.testing.assert_array_equal(cells[0], ref.random((n, d)))
+    lam = ref.random((n, d))
+    np.testing.assert_array_equal(cells[1], lam)
+    np.testing.assert_array_equal(cells[2], -lam * 0.25)
+    np.testing.assert_array_equal(cells[3], ref.random((n, d)))
+    np.testing.assert_array_equal(picks[1], ref.integers(n_pool, size=n))
+    np.testing.assert_array_equal(rows[1], ref.random(n))
+    np.testing.assert_array_equal(rows[2], ref.random(n))
+    np.testing.assert_array_equal(cells[4], ref.uniform(-0.5, 0.5, (n, d)))
+    np.testing.assert_array_equal(picks[2], ref.integers(n, size=n))
+    np.testing.assert_array_equal(picks[3], ref.integers(n, size=n))
+    np.testing.assert_array_equal(rows[3], ref.random(n))
+    assert ref.random() < 1.0  # the line-22 test
+    np.testing.assert_array_equal(picks[4:7], ref.integers(n, size=(3, n)))
+    np.testing.assert_array_equal(rows[4], ref.uniform(0.3, 0.6, (n, 1))[:, 0])
+    np.testing.assert_array_equal(picks[0], np.arange(n)[::-1])  # the ranking (Eq. 5)
+    assert after == ref.random()  # the Generator continues from where the kernel stopped
 
 
 def test_scenarios():

@@ -3,6 +3,7 @@
 import math
 
 import numpy as np
+import pytest
 
 from moik.algorithms.soo.sma import sma_schedule, sma_update, sma_weights
 from moik.testing import ScriptedRng
@@ -35,3 +36,22 @@ def test_sma_update_eqs_1_2():
     out = sma_update(X, W, np.array([0.5]), np.array([0.0, 10.0]), 0.0, 1.0, 0.5, z=0.03,
                      xl=np.array([0.0]), xu=np.array([4.0]), rng=rng)
     np.testing.assert_allclose(out, [[0.5], [1.0]])  # row 1 restarts at 0 + 0.25*4
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_compiled_weights_and_update_equal_the_numpy_formulas(seed, numpy_rules):
+    rng = np.random.default_rng(seed)
+    n, d = 13, 4
+    X = rng.uniform(-2, 2, (n, d))
+    S = rng.integers(0, 5, n).astype(float)  # ties
+    if seed % 2:
+        S[3] = np.nan
+    W = sma_weights(S, d, rng=np.random.default_rng(seed))
+    np.testing.assert_array_equal(W, numpy_rules.sma_weights(S, d, rng=np.random.default_rng(seed)))
+    xl, xu = np.full(d, -2.0), np.full(d, 2.0)
+    for x_best in (X[0], X[rng.integers(n, size=n)]):  # one best, or a food source per agent
+        args = (X, W, x_best, S, 0.5, 0.8, 0.3)
+        kw = {"z": 0.3, "xl": xl, "xu": xu}
+        out = sma_update(*args, **kw, rng=np.random.default_rng(seed))
+        ref = numpy_rules.sma_update(*args, **kw, rng=np.random.default_rng(seed))
+        np.testing.assert_array_equal(out, ref)

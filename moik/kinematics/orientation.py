@@ -35,11 +35,18 @@ import math
 from collections.abc import Callable
 
 import numpy as np
-from scipy.spatial.transform import Rotation
 
 from moik._jit import jit, kernel_array
 from moik.exceptions import NonFiniteError, ShapeError, TargetError, UnknownNameError
 from moik.kinematics.so3 import rotation_angle
+
+
+def _rotation():
+    """scipy's Rotation, imported on first use: scipy.spatial takes ~0.13 s to import,
+    which ``import moik`` and a solve need not pay (start-up time, not an import cycle)."""
+    from scipy.spatial.transform import Rotation
+
+    return Rotation
 
 
 def _atan_ratio(num: np.ndarray, den: np.ndarray) -> np.ndarray:
@@ -65,13 +72,13 @@ def zyx_euler(R: np.ndarray) -> np.ndarray:
     """MO-m-PSO Eqs. 11-13: ``(alpha, beta, gamma)`` with ``R = Rz Ry Rx``."""
     R = np.asarray(R, dtype=float)
     flat = R.reshape(-1, 3, 3)
-    angles = Rotation.from_matrix(flat).as_euler("ZYX")
+    angles = _rotation().from_matrix(flat).as_euler("ZYX")
     return angles.reshape(R.shape[:-2] + (3,))
 
 
 def rotation_from_zyx(alpha: float, beta: float, gamma: float) -> np.ndarray:
     """``Rz(alpha) Ry(beta) Rx(gamma)`` (MO-m-PSO convention), radians."""
-    return Rotation.from_euler("ZYX", [alpha, beta, gamma]).as_matrix()
+    return _rotation().from_euler("ZYX", [alpha, beta, gamma]).as_matrix()
 
 
 def rotation_from_eosma_euler(alpha: float, beta: float, gamma: float) -> np.ndarray:
@@ -81,7 +88,7 @@ def rotation_from_eosma_euler(alpha: float, beta: float, gamma: float) -> np.nda
     ``R = Rx(alpha) Ry(beta) Rz(gamma)`` restricted to ``atan`` ranges; for
     angles in ``(-pi/2, pi/2)`` this matrix reproduces them exactly.
     """
-    return Rotation.from_euler("XYZ", [alpha, beta, gamma]).as_matrix()
+    return _rotation().from_euler("XYZ", [alpha, beta, gamma]).as_matrix()
 
 
 def euler_error_l2(R: np.ndarray, angles_t: np.ndarray) -> np.ndarray:

@@ -31,13 +31,20 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import numpy as np
-from scipy.spatial.transform import Rotation
 
 from moik.exceptions import UnknownNameError, URDFError
 from moik.robots.chain import Robot
 from moik.robots.transforms import rot_x, translation
 
 __all__ = ["URDFError", "load_urdf"]
+
+
+def _rotation():
+    """scipy's Rotation, imported on first use: scipy.spatial takes ~0.13 s to import,
+    which ``import moik`` and a solve need not pay (start-up time, not an import cycle)."""
+    from scipy.spatial.transform import Rotation
+
+    return Rotation
 
 
 def _floats(text: str | None, default, what: str) -> np.ndarray:
@@ -57,8 +64,11 @@ def _origin(joint: ET.Element, name: str) -> np.ndarray:
     xyz = _floats(None if el is None else el.get("xyz"), (0, 0, 0), f"joint {name!r} origin xyz")
     rpy = _floats(None if el is None else el.get("rpy"), (0, 0, 0), f"joint {name!r} origin rpy")
     T = translation(*xyz)
-    if np.any(rpy != 0):
-        T[:3, :3] = Rotation.from_euler("xyz", rpy).as_matrix()
+    if np.any(rpy != 0):  # fixed-axis roll-pitch-yaw: R = Rz(yaw) Ry(pitch) Rx(roll)
+        (cr, cp, cy), (sr, sp, sy) = np.cos(rpy), np.sin(rpy)
+        T[:3, :3] = [[cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+                     [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+                     [-sp, cp * sr, cp * cr]]
     return T
 
 
@@ -71,7 +81,7 @@ def _axis_frame(axis: np.ndarray) -> np.ndarray:
         return exact[key]
     C = np.eye(4)
     with np.errstate(all="ignore"):
-        rot, _ = Rotation.align_vectors([axis], [[0.0, 0.0, 1.0]])
+        rot, _ = _rotation().align_vectors([axis], [[0.0, 0.0, 1.0]])
     C[:3, :3] = rot.as_matrix()
     return C
 

@@ -51,8 +51,8 @@ SENSES = (MINIMIZE, MAXIMIZE)
 def nearest_copy(q, q_ref, lo, hi):
     """The value ``q + 2 pi k`` within ``[lo, hi]`` nearest to ``q_ref`` (``q`` if none is nearer).
 
-    The same rule as :func:`moik.solver.session.nearest_copies`: the rounded shift
-    and its two neighbours are tried.
+    The rounded shift and its two neighbours are tried (the rule of
+    :func:`moik.solver.session.nearest_copies`, which calls it).
     """
     two_pi = 2.0 * np.pi
     k = np.round((q_ref - q) / two_pi)
@@ -62,6 +62,17 @@ def nearest_copy(q, q_ref, lo, hi):
         if lo <= c <= hi and abs(c - q_ref) < abs(best - q_ref):
             best = c
     return best
+
+
+@jit
+def nearest_copies_into(Q, q_refs, lo, hi, types, out):
+    """``out[i, j]``: :func:`nearest_copy` of every revolute ``Q[i, j]`` towards
+    ``q_refs[i, j]`` (prismatic joints copied)."""
+    for i in range(Q.shape[0]):
+        for j in range(Q.shape[1]):
+            v = Q[i, j]
+            out[i, j] = v if types[j] == PRISMATIC else nearest_copy(v, q_refs[i, j], lo[j],
+                                                                      hi[j])
 
 
 @jit

@@ -14,6 +14,7 @@ import numpy as np
 from moik._jit import jit, kernel_array
 from moik._validate import positive
 from moik.exceptions import ParameterError
+from moik.kinematics.criteria import nearest_copies_into
 from moik.kinematics.orientation import GEODESIC, rotation_error
 from moik.problems.targets import Target
 from moik.robots.chain import Robot, fk_reference
@@ -100,18 +101,15 @@ def nearest_copies(robot: Robot, Q: np.ndarray, q_ref: np.ndarray) -> np.ndarray
 
     ``q_j + 2 pi k`` is the same arm configuration; of the copies within the joint
     limits, the one nearest to ``q_ref_j`` is taken (``q_j`` itself if no other copy
-    fits). Prismatic joints are left as they are.
+    fits). Prismatic joints are left as they are. ``q_ref`` is one joint vector or
+    one per row.
     """
-    Q = np.atleast_2d(np.asarray(Q, dtype=float))
-    two_pi = 2.0 * np.pi
-    k = np.round((q_ref - Q) / two_pi)
-    best = Q.copy()
-    for dk in (-1.0, 0.0, 1.0):  # the rounded shift or a neighbour may leave the limits
-        cand = Q + (k + dk) * two_pi
-        ok = (cand >= robot.lower) & (cand <= robot.upper) & ~robot.is_prismatic
-        better = ok & (np.abs(cand - q_ref) < np.abs(best - q_ref))
-        best = np.where(better, cand, best)
-    return best
+    Q = kernel_array(np.atleast_2d(Q))
+    out = np.empty_like(Q)
+    chain = robot.kinematic_chain
+    nearest_copies_into(Q, kernel_array(np.broadcast_to(q_ref, Q.shape)), robot.lower,
+                        robot.upper, chain.joint_types, out)
+    return out
 
 
 def is_distinct(robot: Robot, q: np.ndarray, others: list[np.ndarray], threshold: float) -> bool:

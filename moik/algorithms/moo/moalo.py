@@ -119,5 +119,5 @@ class MOALO(MOArrayAlgorithm):
         R_E = walk_around(np.broadcast_to(self.elite, antlions.shape), self.t, T,
                           self.xl, self.xu, rng=rng)
         X = clip_to_bounds((R_A + R_E) / 2.0, self.xl, self.xu)  # Eq. 2.13
-        F = yield X
-        self.X, self.F = X, F
+        F, CV = yield X
+        self.X, self.F, self.CV = X, F, CV

@@ -24,7 +24,7 @@ paper does not define "better" for objective vectors. The authors' MOEOSMA.m
 keeps the old position only when it is strictly better in every objective
 (``if fit_old(k,:) < Fitness(k,:)``) and otherwise takes the new one. Here the
 old personal best is kept exactly when it Pareto-dominates the new point
-(Eq. 11, :func:`~moik.algorithms.moo.base.pareto_memory`); a new point that is
+(Eq. 11, :func:`~moik.algorithms.moo.dominance.dominance_memory`); a new point that is
 better in one objective, incomparable or equal replaces it.
 
 Defaults (Table 4): z=0.5, q=1, V=1, GP=0.5, a1=2, a2=2, N = archive = 100
@@ -44,7 +44,9 @@ Deviations and readings:
   The archive is not read in between, so the non-dominated set is the same;
   the roulette truncation (Eq. 20) runs once on the union. This saves one
   archive update per iteration (about 17% of a Table 8 P2 run).
-- Unconstrained problems only (MOArrayAlgorithm).
+- Constraints (not in the paper): constraint-domination in the archive and the
+  memory; the Eq. 21 sort ranks feasible rows by the objective, infeasible ones
+  after them by violation (:func:`~moik.algorithms.mechanics.ranking_fitness`).
 """
 
 from __future__ import annotations
@@ -52,8 +54,9 @@ from __future__ import annotations
 import numpy as np
 
 from moik._validate import interval
-from moik.algorithms.mechanics import midpoint_repair
-from moik.algorithms.moo.base import MOArrayAlgorithm, Step, pareto_memory
+from moik.algorithms.mechanics import midpoint_repair, ranking_fitness
+from moik.algorithms.moo.base import MOArrayAlgorithm, Step
+from moik.algorithms.moo.dominance import dominance_memory
 from moik.algorithms.soo.eo import eo_schedule
 from moik.algorithms.soo.eosma import eosma_update, random_difference_mutation
 from moik.algorithms.soo.sma import sma_schedule, sma_weights
@@ -72,7 +75,7 @@ def equilibrium_pool(X: np.ndarray, counts: np.ndarray) -> np.ndarray:
 class MOEOSMA(MOArrayAlgorithm):
     """MOEOSMA (Yin et al. 2022) with array state; ``res.X``/``res.F`` = the archive.
 
-    Extra public arrays: ``pbest_X``/``pbest_F`` (personal bests, Eq. 18) and
+    Extra public arrays: ``pbest_X``/``pbest_F``/``pbest_CV`` (personal bests, Eq. 18) and
     ``pool_X`` (equilibrium pool of the last iteration). ``X``/``F`` are the
     last evaluated positions. ``moik.metrics.compromise(res)`` picks the member
     closest to the utopia point.
@@ -110,16 +113,17 @@ class MOEOSMA(MOArrayAlgorithm):
         return self.pop_size * (1.0 + self.q)
 
     def _initialize_state(self) -> None:
-        self.pbest_X, self.pbest_F = self.X, self.F
+        self.pbest_X, self.pbest_F, self.pbest_CV = self.X, self.F, self.CV
         self.pool_X = equilibrium_pool(self.pareto_archive.X, self.pareto_archive.counts)
 
-    def _remember(self, X: np.ndarray, F: np.ndarray) -> None:
+    def _remember(self, X: np.ndarray, F: np.ndarray, CV: np.ndarray | None) -> None:
         """Eq. 18 (Pareto form) after an evaluation; the archive was updated on evaluation."""
-        self.X, self.F = X, F
-        self.pbest_X, self.pbest_F = pareto_memory(X, F, self.pbest_X, self.pbest_F)
+        self.X, self.F, self.CV = X, F, CV
+        self.pbest_X, self.pbest_F, self.pbest_CV = dominance_memory(
+            X, F, CV, self.pbest_X, self.pbest_F, self.pbest_CV)
 
-    def _population_arrays(self) -> tuple[np.ndarray, np.ndarray]:
-        return self.pbest_X, self.pbest_F
+    def _population_arrays(self):
+        return self.pbest_X, self.pbest_F, self.pbest_CV
 
     def _generation(self) -> Step:
         rng, n = self.random_state, self.pop_size
@@ -127,16 +131,17 @@ class MOEOSMA(MOArrayAlgorithm):
         self.pool_X = pool = equilibrium_pool(A.X, A.counts)  # Algorithm 2, line 12
         g_best = pool[rng.integers(len(pool), size=n)]
         obj = rotation_objective(self.t, self.problem.n_obj)  # Eq. 21
-        W = sma_weights(self.pbest_F[:, obj], self.problem.n_var, rng=rng)  # Eq. 4
+        S = ranking_fitness(self.pbest_F[:, obj], self.pbest_CV)
+        W = sma_weights(S, self.problem.n_var, rng=rng)  # Eq. 4
         t1 = eo_schedule(self.t, self.max_iter, self.a2)
         a, _ = sma_schedule(self.t, self.max_iter)
         X = eosma_update(self.pbest_X, g_best, pool, W, t1, a, z=self.z, a1=self.a1,
                          GP=self.GP, V=self.V, rng=rng)  # Eq. 15
         X = midpoint_repair(X, self.pbest_X, self.xl, self.xu)  # Eq. 17
-        F = yield X
-        self._remember(X, F)
+        F, CV = yield X
+        self._remember(X, F, CV)
         if rng.random() < self.q:  # Algorithm 2, line 26
             X = random_difference_mutation(self.pbest_X, rng=rng)  # Eq. 16
             X = midpoint_repair(X, self.pbest_X, self.xl, self.xu)
-            F = yield X
-            self._remember(X, F)
+            F, CV = yield X
+            self._remember(X, F, CV)

@@ -16,7 +16,8 @@ external archive that supplies the top predator:
 - Elite (Eq. 10): the top predator of the iteration is an archive member drawn
   by roulette on ``1 / count`` (less crowded likelier), repeated in every row;
 - marine memory with Pareto dominance: a prey keeps its previous position only
-  if that dominates the new one (:func:`~moik.algorithms.moo.base.pareto_memory`);
+  if that dominates the new one (:func:`~moik.algorithms.moo.dominance.dominance_memory`;
+  constraint-domination for constrained problems);
 - the phase move (Eqs. 12-15) and the FADs step (Eq. 16) are each followed by
   an evaluation and the memory, as in MPA.
 
@@ -40,7 +41,8 @@ import numpy as np
 from moik._validate import interval
 from moik.algorithms.archive import ArchiveBase, CrowdingArchive
 from moik.algorithms.mechanics import clip_to_bounds
-from moik.algorithms.moo.base import MOArrayAlgorithm, Step, pareto_memory
+from moik.algorithms.moo.base import MOArrayAlgorithm, Step
+from moik.algorithms.moo.dominance import dominance_memory
 from moik.algorithms.soo.mpa import fads_effect, mpa_cf, mpa_phase, predator_move
 
 
@@ -53,7 +55,7 @@ class MOMPA(MOArrayAlgorithm):
     """MOMPA (Zhong et al. 2021) with array state; ``res.X``/``res.F`` = the archive.
 
     Extra public arrays: ``elite`` (top predator of the last iteration).
-    ``X``/``F`` is the prey matrix after marine memory.
+    ``X``/``F``/``CV`` is the prey matrix after marine memory.
 
     Args:
         pop_size: Number of search agents N (Table 4: 100).
@@ -89,9 +91,9 @@ class MOMPA(MOArrayAlgorithm):
         phase = mpa_phase(self.t, self.max_iter)
         X = predator_move(self.X, self.elite, phase, CF, P=self.P, rng=rng)  # Eqs. 12-15
         X = clip_to_bounds(X, self.xl, self.xu)
-        F = yield X
-        self.X, self.F = pareto_memory(X, F, self.X, self.F)  # marine memory
+        F, CV = yield X
+        self.X, self.F, self.CV = dominance_memory(X, F, CV, self.X, self.F, self.CV)  # memory
         X = fads_effect(self.X, CF, FADs=self.FADs, xl=self.xl, xu=self.xu, rng=rng)  # Eq. 16
         X = clip_to_bounds(X, self.xl, self.xu)
-        F = yield X
-        self.X, self.F = pareto_memory(X, F, self.X, self.F)
+        F, CV = yield X
+        self.X, self.F, self.CV = dominance_memory(X, F, CV, self.X, self.F, self.CV)

@@ -84,18 +84,19 @@ def crowding_counts(F: np.ndarray, divisor: float) -> np.ndarray:
 
     Returns:
         Integer array (m,): for row i, the number of rows j (i included) with
-        ``|F_jk - F_ik| < dr_k`` for every k; objectives with ``dr_k = 0`` are
-        ignored.
+        ``|F_jk - F_ik| < dr_k`` for every k, at least 1; objectives with ``dr_k = 0``
+        are ignored.
     """
     m = F.shape[0]
     if m == 0:
         return np.zeros(0, dtype=np.int64)
     dr = crowding_radius(F, divisor)
-    if F.shape[1] == 2 and m > 1:
-        counts = _crowding_counts_front_2d(F, dr)
-        if counts is not None:
-            return counts
-    return _crowding_counts_pairwise(F, dr)
+    counts = _crowding_counts_front_2d(F, dr) if F.shape[1] == 2 and m > 1 else None
+    if counts is None:
+        counts = _crowding_counts_pairwise(F, dr)
+    # a member always counts itself, also where F +/- dr rounds back to F (a radius
+    # below the values' last bit), so that 1 / count stays finite
+    return np.maximum(counts, 1)
 
 
 def _crowding_counts_pairwise(F: np.ndarray, dr: np.ndarray) -> np.ndarray:

@@ -120,3 +120,13 @@ def test_x0_rows_are_used_and_archive_size_is_honoured():
     np.testing.assert_array_equal(res.algorithm.pbest_X[:2], X0)
     res = minimize(Schaffer(), MOEOSMA(pop_size=6, archive_size=4), ("n_gen", 20), seed=0)
     assert len(res.F) == 4
+
+
+def test_verbose_prints_pymoos_multi_objective_columns(capsys):
+    minimize(get_problem("zdt1", n_var=5), MOEOSMA(pop_size=10), ("n_gen", 3), seed=0,
+             verbose=True)
+    header = capsys.readouterr().out.splitlines()[1]
+    assert [c.strip() for c in header.split("|")] == ["n_gen", "n_eval", "n_nds", "igd", "gd",
+                                                      "hv"]
+    minimize(Schaffer(n_ieq_constr=1), MOEOSMA(pop_size=10), ("n_gen", 3), seed=0, verbose=True)
+    assert "cv_min" in capsys.readouterr().out

@@ -145,6 +145,6 @@ class NeverFeasible(Problem):
 def test_an_infeasible_archive_is_never_reported_as_feasible(name):
     res = minimize(NeverFeasible(), get_algorithm(name, pop_size=10), ("n_eval", 300), seed=0)
     assert res.X is None and res.F is None
-    least = minimize(NeverFeasible(), get_algorithm(name, pop_size=10, return_least_infeasible=True),
-                     ("n_eval", 300), seed=0)
+    alg = get_algorithm(name, pop_size=10, return_least_infeasible=True)
+    least = minimize(NeverFeasible(), alg, ("n_eval", 300), seed=0)
     assert least.X is not None and np.all(least.CV > 0.0)

@@ -38,6 +38,7 @@ import abc
 
 import numpy as np
 
+from moik._jit import jit, kernel_array
 from moik._validate import finite_array, is_integer, positive
 from moik.exceptions import ParameterError, ShapeError
 
@@ -108,7 +109,7 @@ def nondominated_mask(F: np.ndarray) -> np.ndarray:
     if F.shape[0] <= 1:
         return np.ones(F.shape[0], dtype=bool)
     if F.shape[1] == 2:
-        return _nondominated_mask_2d(F)
+        return _front_mask_2d(kernel_array(F), False)
     m = F.shape[0]
     leq = np.ones((m, m), dtype=bool)  # leq[j, i]: F_j <= F_i in every objective
     lt = np.zeros((m, m), dtype=bool)  # lt[j, i]: F_j < F_i in some objective
@@ -119,25 +120,32 @@ def nondominated_mask(F: np.ndarray) -> np.ndarray:
     return ~np.any(leq & lt, axis=0)
 
 
-def _nondominated_mask_2d(F: np.ndarray) -> np.ndarray:
-    """Two-objective :func:`nondominated_mask` by lexicographic sort, O(m log m).
+@jit
+def _front_mask_2d(F: np.ndarray, unique: bool) -> np.ndarray:
+    """Two-objective :func:`nondominated_mask` by lexicographic sort, O(m log m), compiled;
+    with ``unique`` also dropping every repeat of a row after its first occurrence.
 
-    After sorting by (f1, f2), row i is dominated exactly when a row with a
-    smaller f1 has f2 <= f2_i, or a row with the same f1 has f2 < f2_i.
+    After sorting by (f1, f2) (stable, so equal rows stay in index order), row i is
+    dominated exactly when a row with a smaller f1 has f2 <= f2_i, or a row with the
+    same f1 has f2 < f2_i; a repeat directly follows an equal row.
     """
-    order = np.lexsort((F[:, 1], F[:, 0]))
-    f1, f2 = F[order, 0], F[order, 1]
-    new_group = np.empty(f1.size, dtype=bool)
-    new_group[0] = True
-    new_group[1:] = f1[1:] != f1[:-1]
-    group = np.cumsum(new_group) - 1
-    group_min = f2[new_group]  # the first row of a group has its smallest f2
-    before = np.empty_like(group_min)
-    before[0] = np.inf
-    before[1:] = np.minimum.accumulate(group_min)[:-1]
-    dominated = (before[group] <= f2) | (group_min[group] < f2)
-    mask = np.empty(f1.size, dtype=bool)
-    mask[order] = ~dominated
+    m = F.shape[0]
+    by_f2 = np.argsort(F[:, 1], kind="mergesort")
+    order = by_f2[np.argsort(F[by_f2, 0], kind="mergesort")]  # np.lexsort((f2, f1))
+    mask = np.empty(m, dtype=np.bool_)
+    before = np.inf  # smallest f2 of the rows with a smaller f1
+    k = 0
+    while k < m:
+        f1 = F[order[k], 0]
+        group_min = F[order[k], 1]  # the first row of a group has its smallest f2
+        e = k
+        while e < m and F[order[e], 0] == f1:
+            f2 = F[order[e], 1]
+            repeat = unique and e > k and F[order[e - 1], 1] == f2
+            mask[order[e]] = not (before <= f2 or group_min < f2 or repeat)
+            e += 1
+        before = min(before, group_min)
+        k = e
     return mask
 
 
@@ -274,8 +282,11 @@ class ArchiveBase(abc.ABC):
         CV_all = None if CV is None else (CV.copy() if empty else np.concatenate([self._CV, CV]))
         extra_all = None if extra is None else (
             extra.copy() if empty else np.concatenate([self._extra, extra]))
-        keep = constrained_nondominated_mask(F_all, CV_all)
-        keep[keep] = first_unique_mask(F_all[keep])
+        if CV_all is None and F_all.shape[1] == 2:
+            keep = _front_mask_2d(F_all, True)  # both filters in one sweep
+        else:
+            keep = constrained_nondominated_mask(F_all, CV_all)
+            keep[keep] = first_unique_mask(F_all[keep])
         self._X, self._F = X_all[keep], F_all[keep]
         self._CV = None if CV_all is None else CV_all[keep]
         self._extra = None if extra_all is None else extra_all[keep]

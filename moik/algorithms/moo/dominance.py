@@ -21,10 +21,46 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._jit import jit, kernel_array
+
+
+@jit(inline=True)
+def _dominates(FA, cva: float, FB, cvb: float, i: int) -> bool:
+    """Row i of ``FA`` (violation ``cva``) constraint-dominates row i of ``FB`` (``cvb``)."""
+    a_ok, b_ok = cva <= 0.0, cvb <= 0.0
+    if not (a_ok and b_ok):
+        return (a_ok and not b_ok) or (not a_ok and not b_ok and cva < cvb)
+    less = False
+    for j in range(FA.shape[1]):
+        if not FA[i, j] <= FB[i, j]:  # worse, or NaN
+            return False
+        less = less or FA[i, j] < FB[i, j]
+    return less
+
+
+@jit
+def _dominates_rows(FA, CVA, FB, CVB):
+    """Row i of ``(FA, CVA)`` constraint-dominates row i of ``(FB, CVB)`` (module doc)."""
+    out = np.empty(FA.shape[0], dtype=np.bool_)
+    for i in range(FA.shape[0]):
+        out[i] = _dominates(FA, CVA[i], FB, CVB[i], i)
+    return out
+
+
+@jit
+def _pareto_memory_rows(X, F, PX, PF):
+    """Eq. 18 with Pareto dominance (no constraints): new ``(PX, PF)`` arrays."""
+    MX, MF = X.copy(), F.copy()
+    for i in range(X.shape[0]):
+        if _dominates(PF, 0.0, F, 0.0, i):
+            MX[i], MF[i] = PX[i], PF[i]
+    return MX, MF
+
 
 def dominates(A: np.ndarray, B: np.ndarray) -> np.ndarray:
     """Row-wise Pareto dominance (EOSMA Eq. 11): ``A_i <= B_i`` everywhere, ``<`` somewhere."""
-    return np.all(A <= B, axis=1) & np.any(A < B, axis=1)
+    zero = np.zeros(len(A))
+    return _dominates_rows(kernel_array(A), zero, kernel_array(B), zero)
 
 
 def constrained_dominates(FA: np.ndarray, CVA: np.ndarray | None, FB: np.ndarray,
@@ -35,9 +71,8 @@ def constrained_dominates(FA: np.ndarray, CVA: np.ndarray | None, FB: np.ndarray
     """
     if CVA is None:
         return dominates(FA, FB)
-    feas_a, feas_b = CVA <= 0.0, CVB <= 0.0
-    return np.where(feas_a & feas_b, dominates(FA, FB), (feas_a & ~feas_b)
-                    | (~feas_a & ~feas_b & (CVA < CVB)))
+    return _dominates_rows(kernel_array(FA), kernel_array(CVA), kernel_array(FB),
+                           kernel_array(CVB))
 
 
 def dominance_memory(X, F, CV, PX, PF, PCV):
@@ -49,9 +84,13 @@ def dominance_memory(X, F, CV, PX, PF, PCV):
     Returns:
         The updated memory ``(PX, PF, PCV)`` as new arrays (``PCV`` None without constraints).
     """
+    if CV is None:
+        PX, PF = _pareto_memory_rows(kernel_array(X), kernel_array(F), kernel_array(PX),
+                                     kernel_array(PF))
+        return PX, PF, None
     keep = constrained_dominates(PF, PCV, F, CV)
-    PCV = None if CV is None else np.where(keep, PCV, CV)
-    return np.where(keep[:, None], PX, X), np.where(keep[:, None], PF, F), PCV
+    return (np.where(keep[:, None], PX, X), np.where(keep[:, None], PF, F),
+            np.where(keep, PCV, CV))
 
 
 def pareto_memory(X, F, PX, PF):

@@ -53,13 +53,14 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._jit import kernel_array
 from moik._validate import interval
-from moik.algorithms.mechanics import midpoint_repair, ranking_fitness
+from moik.algorithms.mechanics import ranking_fitness
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step
 from moik.algorithms.moo.dominance import dominance_memory
+from moik.algorithms.moo.moeosma_kernels import candidates, generation_draws, mutants
 from moik.algorithms.soo.eo import eo_schedule
-from moik.algorithms.soo.eosma import eosma_update, random_difference_mutation
-from moik.algorithms.soo.sma import sma_schedule, sma_weights
+from moik.algorithms.soo.sma import sma_schedule
 
 
 def rotation_objective(t: int, n_obj: int) -> int:
@@ -114,6 +115,7 @@ class MOEOSMA(MOArrayAlgorithm):
 
     def _initialize_state(self) -> None:
         self.pbest_X, self.pbest_F, self.pbest_CV = self.X, self.F, self.CV
+        self._xl, self._xu = kernel_array(self.xl), kernel_array(self.xu)
         self.pool_X = equilibrium_pool(self.pareto_archive.X, self.pareto_archive.counts)
 
     def _remember(self, X: np.ndarray, F: np.ndarray, CV: np.ndarray | None) -> None:
@@ -126,22 +128,21 @@ class MOEOSMA(MOArrayAlgorithm):
         return self.pbest_X, self.pbest_F, self.pbest_CV
 
     def _generation(self) -> Step:
-        rng, n = self.random_state, self.pop_size
+        rng, n, d = self.random_state, self.pop_size, self.problem.n_var
         A = self.pareto_archive
-        self.pool_X = pool = equilibrium_pool(A.X, A.counts)  # Algorithm 2, line 12
-        g_best = pool[rng.integers(len(pool), size=n)]
+        self.pool_X = pool = kernel_array(equilibrium_pool(A.X, A.counts))  # line 12
         obj = rotation_objective(self.t, self.problem.n_obj)  # Eq. 21
-        S = ranking_fitness(self.pbest_F[:, obj], self.pbest_CV)
-        W = sma_weights(S, self.problem.n_var, rng=rng)  # Eq. 4
+        S = kernel_array(ranking_fitness(self.pbest_F[:, obj], self.pbest_CV))
         t1 = eo_schedule(self.t, self.max_iter, self.a2)
         a, _ = sma_schedule(self.t, self.max_iter)
-        X = eosma_update(self.pbest_X, g_best, pool, W, t1, a, z=self.z, a1=self.a1,
-                         GP=self.GP, V=self.V, rng=rng)  # Eq. 15
-        X = midpoint_repair(X, self.pbest_X, self.xl, self.xu)  # Eq. 17
+        picks, cells, rows, log_arg, mutate, R, SF = generation_draws(rng, n, d, len(pool), a,
+                                                                      self.q, S)
+        P = kernel_array(self.pbest_X)
+        X = candidates(P, pool, picks, cells, rows, np.log10(log_arg), np.exp(-cells[1] * t1),
+                       self.a1, self.z, self.GP, self.V, self._xl, self._xu)  # Eqs. 4, 15, 17
         F, CV = yield X
         self._remember(X, F, CV)
-        if rng.random() < self.q:  # Algorithm 2, line 26
-            X = random_difference_mutation(self.pbest_X, rng=rng)  # Eq. 16
-            X = midpoint_repair(X, self.pbest_X, self.xl, self.xu)
+        if mutate:  # Algorithm 2, line 26
+            X = mutants(kernel_array(self.pbest_X), R, SF, self._xl, self._xu)  # Eqs. 16-17
             F, CV = yield X
             self._remember(X, F, CV)

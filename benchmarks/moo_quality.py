@@ -91,7 +91,7 @@ def random_front(problem, budget: int, seed: int) -> np.ndarray:
 
 def scores(F: np.ndarray, front: np.ndarray) -> tuple[float, float]:
     ref = 1.1 * front.max(axis=0)
-    inside = F[np.all(F < ref, axis=1)]
+    inside = F[np.all(ref > F, axis=1)]
     return float(IGD(front).do(F)), hypervolume(inside, ref) if len(inside) else 0.0
 
 

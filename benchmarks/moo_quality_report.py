@@ -37,7 +37,7 @@ def _moik_names() -> list[str]:
 def _by(results: dict, key: str, budget: int | None = None):
     """(algorithm, problem) -> list of values over the seeds (seed order)."""
     out = defaultdict(list)
-    for (alg, prob, b, seed), r in sorted(results.items(), key=lambda kv: kv[0][3]):
+    for (alg, prob, b, _seed), r in sorted(results.items(), key=lambda kv: kv[0][3]):
         if budget is None or b == budget:
             out[alg, prob].append(r[key])
     return out
@@ -135,7 +135,7 @@ def moeosma_table(res: dict) -> list[str]:
 
 def constrained_table(res: dict) -> tuple[list[str], dict]:
     runs = defaultdict(list)
-    for (alg, prob, _, seed), r in sorted(res.items(), key=lambda kv: kv[0][3]):
+    for (alg, prob, _, _seed), r in sorted(res.items(), key=lambda kv: kv[0][3]):
         runs[alg, prob].append(r)
     probs = sorted({p for _, p in runs})
     refs = {p: 1.1 * np.max([np.max(np.array(r["F"]), axis=0) for r in runs["nsga2", p]

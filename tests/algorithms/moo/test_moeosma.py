@@ -17,7 +17,7 @@ from moik.algorithms.moo.moeosma import equilibrium_pool, rotation_objective
 from moik.algorithms.soo.eo import eo_schedule
 from moik.algorithms.soo.eosma import eosma_update, random_difference_mutation
 from moik.algorithms.soo.sma import sma_schedule, sma_weights
-from moik.exceptions import ParameterError
+from moik.exceptions import ParameterError, UnknownNameError
 from moik.metrics import hypervolume
 from moik.problems.ik import BiObjectiveIK
 from moik.problems.targets import Target
@@ -117,3 +117,20 @@ def test_compiled_generation_equals_the_numpy_operators_bit_for_bit():
     M = step.send((F_ref, None))
     np.testing.assert_array_equal(M, M_ref)
     np.testing.assert_array_equal(alg.random_state.random(3), oracle_rng.random(3))
+
+
+def test_diversity_option_keeps_an_elitist_memory_and_searches_the_mutants():
+    problem = get_problem("zdt2", n_var=6)
+    res = minimize(problem, MOEOSMA(pop_size=10, diversity="nsga2-gaussian"), ("n_gen", 6),
+                   seed=1)
+    alg = res.algorithm
+    assert alg.diversity == "nsga2-gaussian" and alg.evaluator.n_eval == 10 + 5 * 20
+    # the memory is the NSGA-II survival of memory and batches: sorted by rank
+    from pymoo.util.nds.non_dominated_sorting import NonDominatedSorting
+
+    rank = NonDominatedSorting().do(alg.pbest_F, return_rank=True)[1]
+    assert np.all(np.diff(rank) >= 0) and rank.max() >= 1  # dominated members kept too
+    paper = minimize(problem, MOEOSMA(pop_size=10), ("n_gen", 6), seed=1)
+    assert not np.array_equal(paper.F, res.F)
+    with pytest.raises(UnknownNameError, match="diversity"):
+        MOEOSMA(diversity="crowding")

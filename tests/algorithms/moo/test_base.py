@@ -130,3 +130,28 @@ def test_verbose_prints_pymoos_multi_objective_columns(capsys):
                                                       "hv"]
     minimize(Schaffer(n_ieq_constr=1), MOEOSMA(pop_size=10), ("n_gen", 3), seed=0, verbose=True)
     assert "cv_min" in capsys.readouterr().out
+
+
+# ask/tell rounds one generation takes (docs/algorithms.md, "Ask/tell rounds per generation")
+ROUNDS = {"moeosma": (2, 2), "mo-m-pso": (2, 2), "mopso": (1, 2), "mosma": (1, 1),
+          "mompa": (1, 1), "mogwo": (1, 1), "moalo": (1, 1), "moda": (1, 1), "momvo": (1, 1),
+          "mssa": (1, 1), "mo-pso": (1, 1), "mo-jaya": (1, 1), "mo-csa": (1, 1)}
+
+
+@pytest.mark.parametrize("name", sorted(ROUNDS))
+def test_ask_tell_rounds_per_generation_are_the_documented_ones(name):
+    from moik.algorithms import get_algorithm
+
+    problem = get_problem("zdt1", n_var=5)
+    alg = get_algorithm(name, pop_size=10)
+    alg.setup(problem, termination=("n_gen", 12), seed=0)
+    rounds = {}
+    while alg.has_next():
+        gen = alg.n_gen
+        pop = alg.ask()
+        alg.evaluator.eval(problem, pop)
+        alg.tell(infills=pop)
+        rounds[gen] = rounds.get(gen, 0) + 1
+    counts = [rounds[g] for g in sorted(k for k in rounds if k is not None) if g > 1]
+    lo, hi = ROUNDS[name]
+    assert all(lo <= c <= hi for c in counts) and lo in counts and hi in counts

@@ -23,7 +23,10 @@ its constrained test problems:
 Unconstrained problems run pymoo's code unchanged (bit for bit). Seeding is
 pymoo's: ``Algorithm.setup`` rebuilds ``random_state`` from the run's seed
 before the swarm is sampled, so a seed gives one run (checked by the registry's
-determinism test).
+determinism test; pymoo's ``__init__`` builds a random state from ``seed=None``
+too, which ``setup`` replaces). pymoo's ``__init__`` also overwrites a
+``termination`` given to the constructor with its default termination; here
+the given one is kept.
 """
 
 from __future__ import annotations
@@ -52,6 +55,8 @@ class MOPSOCD(MOPSO_CD):
     def __init__(self, **kwargs):
         refuse_unknown_keywords(type(self), kwargs)
         super().__init__(**kwargs)
+        if kwargs.get("termination") is not None:
+            self.termination = kwargs["termination"]  # pymoo's __init__ replaced it
 
     def _update_archive(self, pop):
         if not self.problem.has_constraints() or len(pop) == 0:

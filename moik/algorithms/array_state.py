@@ -14,11 +14,12 @@ from __future__ import annotations
 
 import functools
 import inspect
+import math
 
 import numpy as np
 from pymoo.core.algorithm import Algorithm
 from pymoo.core.population import Population
-from pymoo.core.termination import TerminateIfAny
+from pymoo.core.termination import TerminateIfAll, TerminateIfAny
 from pymoo.termination.default import DefaultTermination
 
 from moik._validate import integer, is_integer, keywords
@@ -100,6 +101,59 @@ def schedule_length(termination, max_iter, n_initial: int, per_iteration: float)
         limit = min(n_gen, np.ceil(by_eval))
         max_iter = int(limit) if np.isfinite(limit) else 1000
     return max(int(max_iter), 1)
+
+
+def planned_iterations(termination, *, t: int, n_eval: int, elapsed: float,
+                       per_iteration: float, plans: dict) -> float:
+    """The schedule length T the termination's budget allows, seen from iteration ``t``.
+
+    T counts pymoo generations (the initial population is generation 1), so the
+    iterations ``t = 1 .. T - 1`` fit the budget and ``t / T`` runs over it:
+
+    - ``n_gen``: its ``n_max_gen``;
+    - ``n_eval``: ``t`` plus the iterations the evaluations left allow at
+      ``per_iteration`` each, planned once, when the criterion is first seen (its T is
+      kept in ``plans``, keyed by the criterion object, so an algorithm whose rate
+      varies within a run keeps one plan; a new criterion, e.g. a checkpoint resumed
+      with a new termination, is planned from where the run stands);
+    - ``time``: ``t / p`` with ``p`` the share of the time used, re-estimated every call;
+    - any-of criteria (tuples, pymoo's default and robust terminations): the smallest T;
+      all-of: the largest; a ``RobustTermination``: its inner criterion's; other
+      criteria (tolerances): none (inf).
+
+    Every finite T is at least ``t + 1``.
+
+    Args:
+        termination: A pymoo termination (the algorithm's current one).
+        t: The iteration about to run (1 = the first after initialization).
+        n_eval: Evaluations done so far.
+        elapsed: Seconds since the run started.
+        per_iteration: Expected evaluations per iteration.
+        plans: The ``n_eval`` plans made so far (updated in place).
+
+    Returns:
+        T as an integer-valued float, or inf when no criterion bounds the run.
+    """
+    kw = {"t": t, "n_eval": n_eval, "elapsed": elapsed, "per_iteration": per_iteration,
+          "plans": plans}
+    if isinstance(termination, TerminateIfAll):
+        return max((planned_iterations(c, **kw) for c in termination.criteria), default=math.inf)
+    if isinstance(termination, (TerminateIfAny, DefaultTermination)):
+        return min((planned_iterations(c, **kw) for c in termination.criteria), default=math.inf)
+    if hasattr(termination, "termination"):  # RobustTermination wraps one criterion
+        return planned_iterations(termination.termination, **kw)
+    T = math.inf
+    if getattr(termination, "n_max_gen", None) is not None:
+        T = float(termination.n_max_gen)
+    elif getattr(termination, "n_max_evals", None) is not None:
+        if termination not in plans:
+            left = float(termination.n_max_evals) - n_eval
+            plans[termination] = (t + max(math.ceil(left / per_iteration), 1)
+                                  if math.isfinite(left) else math.inf)
+        T = plans[termination]
+    elif getattr(termination, "max_time", None) is not None and elapsed > 0:
+        T = math.ceil(t * float(termination.max_time) / elapsed)
+    return max(T, t + 1.0)
 
 
 def initial_population(n: int, xl: np.ndarray, xu: np.ndarray, X0, *,

@@ -9,8 +9,9 @@ needs to pick a problem. This table is the one list of moik's algorithms:
 moik's own algorithms validate their hyperparameters and refuse unknown
 keywords in ``__init__`` (a bad value raises
 :class:`~moik.exceptions.ParameterError` with the valid range). pymoo's DE (as
-``pymoo-de``; ``de`` is moik's array-state DE/rand/1/bin), GA, NSGA2, SMS-EMOA
-and MOPSO-CD are registered as they are, for comparisons; for them
+``pymoo-de``; ``de`` is moik's array-state DE/rand/1/bin), GA, NSGA2 and SMS-EMOA
+are registered as they are, for comparisons (MOEA/D and MOPSO-CD as moik
+subclasses that add default directions and constraint handling); for them
 :func:`get_algorithm` refuses an unknown keyword (pymoo's classes would swallow
 it through ``**kwargs``).
 
@@ -24,7 +25,6 @@ import inspect
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from pymoo.algorithms.moo.mopso_cd import MOPSO_CD
 from pymoo.algorithms.moo.nsga2 import NSGA2
 from pymoo.algorithms.moo.sms import SMSEMOA
 from pymoo.algorithms.soo.nonconvex.de import DE as PymooDE  # noqa: N811
@@ -45,6 +45,7 @@ from moik.algorithms.moo.moeosma import MOEOSMA
 from moik.algorithms.moo.mogwo import MOGWO
 from moik.algorithms.moo.mompa import MOMPA
 from moik.algorithms.moo.momvo import MOMVO
+from moik.algorithms.moo.mopso_cd import MOPSOCD
 from moik.algorithms.moo.mopso_grid import MOPSO
 from moik.algorithms.moo.mosma import MOSMA
 from moik.algorithms.moo.mssa import MSSA
@@ -186,7 +187,8 @@ _MULTI = [
                      "Das-Dennis directions by default"),
     ("sms-emoa", SMSEMOA, "pymoo: SMS-EMOA (Beume, Naujoks & Emmerich 2007, "
                           "DOI 10.1016/j.ejor.2006.08.008)"),
-    ("mopso-cd", MOPSO_CD, "pymoo: MOPSO-CD (Raquel & Naval 2005, DOI 10.1145/1068009.1068047)"),
+    ("mopso-cd", MOPSOCD, "pymoo: MOPSO-CD (Raquel & Naval 2005, DOI 10.1145/1068009.1068047), "
+                          "with constraint-domination"),
 ]
 
 _REGISTRY: dict[str, AlgorithmEntry] = {
@@ -199,7 +201,7 @@ _REGISTRY: dict[str, AlgorithmEntry] = {
 _FORWARDED: dict[type, tuple[str, ...]] = {
     PymooDE: ("CR", "F", "jitter", "prob_mut", "control", "crossover", "selection", "n_diffs"),
 }
-_PYMOO_MULTI_OBJECTIVE = (NSGA2, MOEAD, SMSEMOA, MOPSO_CD)
+_PYMOO_MULTI_OBJECTIVE = (NSGA2, MOEAD, SMSEMOA, MOPSOCD)
 
 
 def register(name: str, cls: type[Algorithm] | None = None, *, kind: str | None = None,

@@ -9,7 +9,12 @@ Both keep ``X`` (m, n_var) and ``F`` (m, n_obj) arrays, merge with
 ``add(X, F, rng=rng)`` and draw leader row indices with ``leaders(k, rng=rng)``.
 """
 
-from moik.algorithms.archive.base import ArchiveBase, first_unique_mask, nondominated_mask
+from moik.algorithms.archive.base import (
+    ArchiveBase,
+    constrained_nondominated_mask,
+    first_unique_mask,
+    nondominated_mask,
+)
 from moik.algorithms.archive.crowding import CrowdingArchive, crowding_counts, crowding_radius
 from moik.algorithms.archive.grid import GridArchive, grid_bounds, grid_index
 
@@ -17,6 +22,7 @@ __all__ = [
     "ArchiveBase",
     "CrowdingArchive",
     "GridArchive",
+    "constrained_nondominated_mask",
     "crowding_counts",
     "crowding_radius",
     "first_unique_mask",

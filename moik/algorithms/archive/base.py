@@ -13,6 +13,17 @@ Eq. 19):
 3. drop exact duplicate objective rows, keeping the first occurrence (so a
    member already in the archive keeps its ``X``).
 
+Constrained problems (``CV`` given, the total constraint violation of each row,
+0 when feasible): step 2 uses constraint-domination (Deb's rules, as pymoo's
+multi-objective algorithms): a feasible row dominates an infeasible one, of two
+infeasible rows the smaller violation dominates, two feasible rows compare by
+Pareto dominance. So the archive holds the feasible non-dominated rows as soon
+as one feasible row was seen; before that, the rows of the smallest violation
+(of those, the Pareto non-dominated ones). Its members are then all feasible or
+all share one violation, and truncation and leaders work on ``F`` as without
+constraints. Rows carried in ``extra`` (the constraint values G, H) follow
+their members.
+
 What differs between archives is only how an overfull archive is truncated and
 how leaders are drawn; subclasses implement ``_truncate`` and ``leaders``.
 
@@ -27,6 +38,7 @@ import abc
 
 import numpy as np
 
+from moik._jit import jit, kernel_array
 from moik._validate import finite_array, is_integer, positive
 from moik.exceptions import ParameterError, ShapeError
 
@@ -97,7 +109,7 @@ def nondominated_mask(F: np.ndarray) -> np.ndarray:
     if F.shape[0] <= 1:
         return np.ones(F.shape[0], dtype=bool)
     if F.shape[1] == 2:
-        return _nondominated_mask_2d(F)
+        return _front_mask_2d(kernel_array(F), False)
     m = F.shape[0]
     leq = np.ones((m, m), dtype=bool)  # leq[j, i]: F_j <= F_i in every objective
     lt = np.zeros((m, m), dtype=bool)  # lt[j, i]: F_j < F_i in some objective
@@ -108,25 +120,54 @@ def nondominated_mask(F: np.ndarray) -> np.ndarray:
     return ~np.any(leq & lt, axis=0)
 
 
-def _nondominated_mask_2d(F: np.ndarray) -> np.ndarray:
-    """Two-objective :func:`nondominated_mask` by lexicographic sort, O(m log m).
+@jit
+def _front_mask_2d(F: np.ndarray, unique: bool) -> np.ndarray:
+    """Two-objective :func:`nondominated_mask` by lexicographic sort, O(m log m), compiled;
+    with ``unique`` also dropping every repeat of a row after its first occurrence.
 
-    After sorting by (f1, f2), row i is dominated exactly when a row with a
-    smaller f1 has f2 <= f2_i, or a row with the same f1 has f2 < f2_i.
+    After sorting by (f1, f2) (stable, so equal rows stay in index order), row i is
+    dominated exactly when a row with a smaller f1 has f2 <= f2_i, or a row with the
+    same f1 has f2 < f2_i; a repeat directly follows an equal row.
     """
-    order = np.lexsort((F[:, 1], F[:, 0]))
-    f1, f2 = F[order, 0], F[order, 1]
-    new_group = np.empty(f1.size, dtype=bool)
-    new_group[0] = True
-    new_group[1:] = f1[1:] != f1[:-1]
-    group = np.cumsum(new_group) - 1
-    group_min = f2[new_group]  # the first row of a group has its smallest f2
-    before = np.empty_like(group_min)
-    before[0] = np.inf
-    before[1:] = np.minimum.accumulate(group_min)[:-1]
-    dominated = (before[group] <= f2) | (group_min[group] < f2)
-    mask = np.empty(f1.size, dtype=bool)
-    mask[order] = ~dominated
+    m = F.shape[0]
+    by_f2 = np.argsort(F[:, 1], kind="mergesort")
+    order = by_f2[np.argsort(F[by_f2, 0], kind="mergesort")]  # np.lexsort((f2, f1))
+    mask = np.empty(m, dtype=np.bool_)
+    before = np.inf  # smallest f2 of the rows with a smaller f1
+    k = 0
+    while k < m:
+        f1 = F[order[k], 0]
+        group_min = F[order[k], 1]  # the first row of a group has its smallest f2
+        e = k
+        while e < m and F[order[e], 0] == f1:
+            f2 = F[order[e], 1]
+            repeat = unique and e > k and F[order[e - 1], 1] == f2
+            mask[order[e]] = not (before <= f2 or group_min < f2 or repeat)
+            e += 1
+        before = min(before, group_min)
+        k = e
+    return mask
+
+
+def constrained_nondominated_mask(F: np.ndarray, CV: np.ndarray | None) -> np.ndarray:
+    """Rows no other row constraint-dominates (see the module doc); ``CV`` None: Eq. 11.
+
+    Args:
+        F: Objective values, shape (m, n_obj).
+        CV: Total constraint violation per row (m,), 0 when feasible, or None.
+
+    Returns:
+        Boolean array of shape (m,): the feasible non-dominated rows if any row is
+        feasible, else the non-dominated rows among those of the smallest violation.
+    """
+    if CV is None:
+        return nondominated_mask(F)
+    best = CV <= 0.0
+    if not best.any():
+        best = CV.min() == CV if CV.size else best
+    mask = np.zeros(F.shape[0], dtype=bool)
+    idx = np.flatnonzero(best)
+    mask[idx] = nondominated_mask(F[idx])
     return mask
 
 
@@ -163,12 +204,16 @@ class ArchiveBase(abc.ABC):
         capacity: Maximum number of members after :meth:`add`.
         X: Decision vectors of the members, shape (m, n_var), read-only.
         F: Objective values of the members, shape (m, n_obj), read-only.
+        CV: Constraint violation of the members (m,), or None (unconstrained).
+        extra: Rows carried along with the members (m, k), or None.
     """
 
     def __init__(self, capacity: int):
         self.capacity = check_count("capacity", capacity, 1)
         self._X = np.empty((0, 0))
         self._F = np.empty((0, 0))
+        self._CV: np.ndarray | None = None
+        self._extra: np.ndarray | None = None
         self._freeze()
 
     @property
@@ -181,21 +226,36 @@ class ArchiveBase(abc.ABC):
         """Objective values of the members, shape (m, n_obj)."""
         return self._F
 
+    @property
+    def CV(self) -> np.ndarray | None:
+        """Constraint violation of the members (m,), 0 when feasible; None if unconstrained."""
+        return self._CV
+
+    @property
+    def extra(self) -> np.ndarray | None:
+        """The rows given as ``extra`` to :meth:`add`, one per member, or None."""
+        return self._extra
+
     def __len__(self) -> int:
         return self._F.shape[0]
 
-    def add(self, X: object, F: object, *, rng: np.random.Generator) -> None:
+    def add(self, X: object, F: object, *, rng: np.random.Generator, CV: object = None,
+            extra: object = None) -> None:
         """Merge new solutions into the archive and truncate it to ``capacity``.
 
         Args:
             X: Decision vectors, shape (k, n_var).
             F: Their objective values (minimized), shape (k, n_obj).
             rng: Random generator used for truncation (roulette removal).
+            CV: Their total constraint violations (k,), 0 when feasible, for constrained
+                problems (constraint-domination, see the module doc); given on every
+                call or on none.
+            extra: Rows (k, j) to keep beside the members (e.g. the constraint values).
 
         Raises:
             ShapeError: If the shapes disagree with each other or with the
-                members already stored.
-            NonFiniteError: If ``X`` or ``F`` hold NaN or infinite values.
+                members already stored, or ``CV`` is given on some calls only.
+            NonFiniteError: If ``X``, ``F``, ``CV`` or ``extra`` hold NaN or infinite values.
         """
         empty = len(self) == 0 and self._X.shape[1] == 0
         X = as_finite_2d("X", X, None if empty else self._X.shape[1])
@@ -204,12 +264,32 @@ class ArchiveBase(abc.ABC):
             raise ShapeError(
                 f"X and F must have the same number of rows; got X {X.shape} and F {F.shape}"
             )
+        for name, new, old in (("CV", CV, self._CV), ("extra", extra, self._extra)):
+            if not empty and (new is None) != (old is None):
+                raise ShapeError(f"{name} must be given on every add() of an archive or on "
+                                 f"none; got {'None' if new is None else 'values'} after "
+                                 f"{'none' if old is None else 'values'}")
+        if CV is not None:
+            CV = as_finite_2d("CV", np.reshape(CV, (-1, 1)), 1)[:, 0]
+        if extra is not None:
+            extra = as_finite_2d("extra", extra, None if empty else self._extra.shape[1])
+        for name, arr in (("CV", CV), ("extra", extra)):
+            if arr is not None and arr.shape[0] != X.shape[0]:
+                raise ShapeError(f"{name} must have one entry per row of X ({X.shape[0]}); "
+                                 f"got {arr.shape[0]}")
         X_all = np.concatenate([self._X, X]) if not empty else X.copy()
         F_all = np.concatenate([self._F, F]) if not empty else F.copy()
-        keep = nondominated_mask(F_all)
-        X_all, F_all = X_all[keep], F_all[keep]
-        keep = first_unique_mask(F_all)
+        CV_all = None if CV is None else (CV.copy() if empty else np.concatenate([self._CV, CV]))
+        extra_all = None if extra is None else (
+            extra.copy() if empty else np.concatenate([self._extra, extra]))
+        if CV_all is None and F_all.shape[1] == 2:
+            keep = _front_mask_2d(F_all, True)  # both filters in one sweep
+        else:
+            keep = constrained_nondominated_mask(F_all, CV_all)
+            keep[keep] = first_unique_mask(F_all[keep])
         self._X, self._F = X_all[keep], F_all[keep]
+        self._CV = None if CV_all is None else CV_all[keep]
+        self._extra = None if extra_all is None else extra_all[keep]
         self._update(rng)
         self._freeze()
 
@@ -225,6 +305,10 @@ class ArchiveBase(abc.ABC):
         keep = np.ones(len(self), dtype=bool)
         keep[drop] = False
         self._X, self._F = self._X[keep], self._F[keep]
+        if self._CV is not None:
+            self._CV = self._CV[keep]
+        if self._extra is not None:
+            self._extra = self._extra[keep]
 
     def _check_leaders(self, k: object) -> int:
         k = check_count("k", k, 0)
@@ -233,8 +317,9 @@ class ArchiveBase(abc.ABC):
         return k
 
     def _freeze(self) -> None:
-        self._X.flags.writeable = False
-        self._F.flags.writeable = False
+        for arr in (self._X, self._F, self._CV, self._extra):
+            if arr is not None:
+                arr.flags.writeable = False
 
     def __repr__(self) -> str:
         return f"{type(self).__name__}(capacity={self.capacity}, members={len(self)})"

@@ -51,6 +51,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._jit import jit, kernel_array
 from moik.algorithms.archive.base import ArchiveBase, check_count, roulette
 from moik.exceptions import UnknownNameError
 
@@ -70,6 +71,15 @@ def crowding_radius(F: np.ndarray, divisor: float) -> np.ndarray:
     return (F.max(axis=0) - F.min(axis=0)) / divisor
 
 
+@jit
+def _radius_2d(F: np.ndarray, divisor: float) -> np.ndarray:
+    """:func:`crowding_radius` of two objectives, compiled."""
+    dr = np.empty(2)
+    for k in range(2):
+        dr[k] = (F[:, k].max() - F[:, k].min()) / divisor
+    return dr
+
+
 def crowding_counts(F: np.ndarray, divisor: float) -> np.ndarray:
     """Crowding count of every row of ``F`` (Fig. 2, RankingProcess.m).
 
@@ -84,18 +94,19 @@ def crowding_counts(F: np.ndarray, divisor: float) -> np.ndarray:
 
     Returns:
         Integer array (m,): for row i, the number of rows j (i included) with
-        ``|F_jk - F_ik| < dr_k`` for every k; objectives with ``dr_k = 0`` are
-        ignored.
+        ``|F_jk - F_ik| < dr_k`` for every k, at least 1; objectives with ``dr_k = 0``
+        are ignored.
     """
     m = F.shape[0]
     if m == 0:
         return np.zeros(0, dtype=np.int64)
-    dr = crowding_radius(F, divisor)
+    # a member always counts itself, also where F +/- dr rounds back to F (a radius
+    # below the values' last bit), so that 1 / count stays finite
     if F.shape[1] == 2 and m > 1:
-        counts = _crowding_counts_front_2d(F, dr)
-        if counts is not None:
+        counts = _crowding_counts_front_2d(kernel_array(F), _radius_2d(F, float(divisor)))
+        if counts.size == m:
             return counts
-    return _crowding_counts_pairwise(F, dr)
+    return np.maximum(_crowding_counts_pairwise(F, crowding_radius(F, divisor)), 1)
 
 
 def _crowding_counts_pairwise(F: np.ndarray, dr: np.ndarray) -> np.ndarray:
@@ -108,18 +119,22 @@ def _crowding_counts_pairwise(F: np.ndarray, dr: np.ndarray) -> np.ndarray:
     return np.count_nonzero(within, axis=1).astype(np.int64)
 
 
-def _crowding_counts_front_2d(F: np.ndarray, dr: np.ndarray) -> np.ndarray | None:
-    """Counts of a two-objective front by binary search, or None if not a front.
+@jit
+def _crowding_counts_front_2d(F: np.ndarray, dr: np.ndarray) -> np.ndarray:
+    """Counts of a two-objective front by binary search (compiled); empty if not a front.
 
     Sorted by f1 ascending, a mutually non-dominated set without duplicates has
     f2 strictly descending, so both radius windows are index intervals and the
-    count is the length of their intersection.
+    count is the length of their intersection (at least 1, see :func:`crowding_counts`).
+    A set that is not such a front gives an empty array (the caller then counts
+    pairwise).
     """
     m = F.shape[0]
-    order = np.argsort(F[:, 0], kind="stable")
+    order = np.argsort(F[:, 0], kind="mergesort")
     f1, f2 = F[order, 0], F[order, 1]
-    if not (np.all(f1[1:] > f1[:-1]) and np.all(f2[1:] < f2[:-1])):
-        return None
+    for k in range(1, m):
+        if not (f1[k] > f1[k - 1] and f2[k] < f2[k - 1]):
+            return np.empty(0, dtype=np.int64)
     lo = np.zeros(m, dtype=np.int64)
     hi = np.full(m, m, dtype=np.int64)
     if dr[0] > 0:
@@ -130,7 +145,7 @@ def _crowding_counts_front_2d(F: np.ndarray, dr: np.ndarray) -> np.ndarray | Non
         lo = np.maximum(lo, np.searchsorted(g, -(f2 + dr[1]), side="right"))
         hi = np.minimum(hi, np.searchsorted(g, -(f2 - dr[1]), side="left"))
     counts = np.empty(m, dtype=np.int64)
-    counts[order] = np.maximum(hi - lo, 0)
+    counts[order] = np.maximum(hi - lo, 1)
     return counts
 
 

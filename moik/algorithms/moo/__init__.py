@@ -2,7 +2,13 @@
 module per algorithm (registered in :mod:`moik.algorithms.registry`)."""
 
 from moik.algorithms.moo.around_best import around_best
-from moik.algorithms.moo.base import MOArrayAlgorithm, dominates, pareto_memory
+from moik.algorithms.moo.base import MOArrayAlgorithm
+from moik.algorithms.moo.dominance import (
+    constrained_dominates,
+    dominance_memory,
+    dominates,
+    pareto_memory,
+)
 from moik.algorithms.moo.mo_classic_pso import MOClassicPSO
 from moik.algorithms.moo.mo_csa import MOCSA
 from moik.algorithms.moo.mo_jaya import MOJAYA
@@ -14,11 +20,13 @@ from moik.algorithms.moo.moeosma import MOEOSMA
 from moik.algorithms.moo.mogwo import MOGWO
 from moik.algorithms.moo.mompa import MOMPA
 from moik.algorithms.moo.momvo import MOMVO
+from moik.algorithms.moo.mopso_cd import MOPSOCD
 from moik.algorithms.moo.mopso_grid import MOPSO
 from moik.algorithms.moo.mosma import MOSMA
 from moik.algorithms.moo.mssa import MSSA
 from moik.algorithms.moo.objective_swarms import ObjectiveSwarms
 
 __all__ = ["MOALO", "MOCSA", "MODA", "MOEAD", "MOEOSMA", "MOGWO", "MOJAYA", "MOMPA", "MOMPSO",
-           "MOMVO", "MOPSO", "MOSMA", "MSSA", "MOArrayAlgorithm", "MOClassicPSO",
-           "ObjectiveSwarms", "around_best", "dominates", "pareto_memory"]
+           "MOMVO", "MOPSO", "MOPSOCD", "MOSMA", "MSSA", "MOArrayAlgorithm", "MOClassicPSO",
+           "ObjectiveSwarms", "around_best", "constrained_dominates", "dominance_memory",
+           "dominates", "pareto_memory"]

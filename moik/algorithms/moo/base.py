@@ -10,14 +10,35 @@ default), in one merge per iteration (``_flush``). The result is the archive:
 ``res.X``/``res.F``/``res.opt`` are its members, built as a ``Population`` when read.
 
 A subclass writes one iteration as a generator ``_generation()`` that yields
-candidate arrays ``X`` (k, n_var) and receives their objectives ``F`` (k, n_obj).
-``next()`` (used by ``minimize``) evaluates them directly; ``ask()/tell()`` hand
-the same candidates out as ``Population`` objects; both give identical runs.
+candidate arrays ``X`` (k, n_var) and receives ``(F, CV)`` for them: their
+objectives (k, n_obj) and total constraint violations (k,), ``CV`` None for
+unconstrained problems. ``next()`` (used by ``minimize``) evaluates them
+directly; ``ask()/tell()`` hand the same candidates out as ``Population``
+objects (one ``ask()/tell()`` round per yield); both give identical runs.
+
+Constraints: every comparison is constraint-domination
+(:mod:`moik.algorithms.moo.dominance`; feasible first, then smaller total
+violation ``sum(max(G, 0)) + sum(max(|H| - 1e-4, 0))``, then Pareto dominance), in
+the archive, the memories and the rankings of each algorithm. The archive holds
+only feasible members once one feasible point was found; before that, the
+least infeasible ones, which ``res.opt`` carries with their ``CV`` so that pymoo's
+``Result`` reports no solution (``res.X``/``res.F`` None) unless
+``return_least_infeasible=True``. ``res.G``/``res.H`` are the members' constraint values.
+
+Schedules: the length T of the papers' t/T schedules (``max_iter``) is fixed when
+given; otherwise it is re-planned before every iteration from the algorithm's
+*current* termination (:func:`~moik.algorithms.array_state.planned_iterations`:
+``n_gen``, ``n_eval``, ``time``, pymoo's default and robust terminations and their
+combinations), so t/T spans the real budget, also after a checkpoint is resumed
+with a new termination; 1000 when no criterion bounds the run.
 
 ``n_eval`` budgets are exact: rows of a batch beyond the budget are not
-evaluated, get ``F = inf`` (never accepted by a memory, never archived). The
-initial population is always evaluated in full. Constrained problems are
-rejected (the papers' archives have no feasibility rule).
+evaluated, get ``F = CV = inf`` (never accepted by a memory, never archived). The
+initial population is always evaluated in full.
+
+``verbose=True`` prints pymoo's ``MultiObjectiveOutput`` columns (n_nds = archive
+size, cv_min/cv_avg with constraints, igd/gd/hv when the problem knows its front,
+else eps/indicator).
 
 The archive attribute is not called ``archive``: pymoo's ``Algorithm`` uses that
 name for its own ``pymoo.util.archive.Archive`` (``res.archive``).
@@ -25,13 +46,14 @@ name for its own ``pymoo.util.archive.Archive`` (``res.archive``).
 
 from __future__ import annotations
 
+import math
+import time
 from collections.abc import Generator
 
 import numpy as np
 from pymoo.core.algorithm import Algorithm
 from pymoo.core.population import Population
-from pymoo.util.display.column import Column
-from pymoo.util.display.output import Output
+from pymoo.util.display.multi import MultiObjectiveOutput
 
 from moik._validate import optional_integer
 from moik.algorithms.archive import ArchiveBase, CrowdingArchive
@@ -42,57 +64,49 @@ from moik.algorithms.array_state import (
     find_limit,
     finite_bounds,
     initial_population,
+    planned_iterations,
     refuse_unknown_keywords,
-    schedule_length,
+)
+from moik.algorithms.mechanics import constraint_violation
+from moik.algorithms.moo.dominance import (
+    constrained_dominates,
+    dominance_memory,
+    dominates,
+    pareto_memory,
 )
 from moik.exceptions import ParameterError
 
-Step = Generator[np.ndarray, np.ndarray, None]
+Step = Generator[np.ndarray, tuple, None]
+DEFAULT_SCHEDULE_LENGTH = 1000
+"""T when neither ``max_iter`` nor any termination criterion bounds the run."""
+
+__all__ = ["DEFAULT_SCHEDULE_LENGTH", "MOArrayAlgorithm", "MOArrayOutput", "Step",
+           "constrained_dominates", "dominance_memory", "dominates", "pareto_memory"]
 
 
-def dominates(A: np.ndarray, B: np.ndarray) -> np.ndarray:
-    """Row-wise Pareto dominance (EOSMA Eq. 11): ``A_i <= B_i`` everywhere, ``<`` somewhere."""
-    return np.all(A <= B, axis=1) & np.any(A < B, axis=1)
-
-
-def pareto_memory(X, F, PX, PF):
-    """Eq. 18 with Pareto dominance: the memory keeps ``PX_i`` only if it dominates ``X_i``.
-
-    An equal, incomparable or better new point replaces it (the authors' MOEOSMA.m
-    keeps the old point only when it is better in every objective).
-
-    Returns:
-        The updated memory ``(PX, PF)`` as new arrays.
-    """
-    keep = dominates(PF, F)[:, None]
-    return np.where(keep, PX, X), np.where(keep, PF, F)
-
-
-class MOArrayOutput(Output):
-    """``verbose=True`` columns: n_gen, n_eval, n_nds (archive size), f<k>_min (k <= 3)."""
-
-    def initialize(self, algorithm) -> None:
-        self.columns.append(Column("n_nds", func=lambda a: len(a.pareto_archive), width=7))
-        for k in range(min(algorithm.problem.n_obj, 3)):
-            self.columns.append(Column(f"f{k + 1}_min",
-                                       func=lambda a, k=k: float(a.pareto_archive.F[:, k].min())))
+class MOArrayOutput(MultiObjectiveOutput):
+    """``verbose=True`` columns: pymoo's ``MultiObjectiveOutput`` (n_gen, n_eval, n_nds =
+    archive size, cv_min/cv_avg with constraints, igd/gd/hv when the problem's
+    ``pareto_front()`` is known, else eps/indicator)."""
 
 
 class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
     """Base of moik's multi-objective population algorithms (array state, external archive).
 
-    Public attributes for callbacks (numpy; read, do not mutate): ``X``/``F``
-    (last evaluated candidates and their objectives), ``pareto_archive`` (its
-    ``X``, ``F``, ``counts``), ``t`` (iteration of the paper's schedule) and
-    ``max_iter`` (its length T), plus the arrays each algorithm documents.
+    Public attributes for callbacks (numpy; read, do not mutate): ``X``/``F``/``CV``
+    (last evaluated candidates, their objectives and violations; ``CV`` None without
+    constraints), ``pareto_archive`` (its ``X``, ``F``, ``CV``, ``counts``), ``t``
+    (iteration of the paper's schedule) and ``max_iter`` (its length T), plus the
+    arrays each algorithm documents.
 
     Args:
         pop_size: Population size N (per swarm for multi-swarm methods).
         archive_size: Archive capacity; None means ``pop_size`` (the papers).
         X0: Optional initial points (k rows within the bounds, k at most the
             initial population); the other rows are drawn uniformly.
-        max_iter: Schedule length T. None: from an ``n_gen``/``n_eval``
-            termination, else 1000.
+        max_iter: Schedule length T, fixed. None: planned before every iteration from
+            the current termination (see the module doc), else
+            :data:`DEFAULT_SCHEDULE_LENGTH`.
         **kwargs: pymoo ``Algorithm`` options (``output``, ``callback``, ``seed`` ...,
             :data:`~moik.algorithms.array_state.PYMOO_OPTIONS`).
 
@@ -108,22 +122,30 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         refuse_unknown_keywords(type(self), kwargs)
         kwargs.setdefault("output", MOArrayOutput())
         super().__init__(**kwargs)
-        self.pop_size, self.max_iter = check_sizes(pop_size, self.min_pop_size, max_iter)
+        self.pop_size, self._fixed_T = check_sizes(pop_size, self.min_pop_size, max_iter)
+        self.max_iter = self._fixed_T
         archive_size = optional_integer("archive_size", archive_size, minimum=1)
         self.X0 = X0
         self.archive_size = self.pop_size if archive_size is None else archive_size
-        self.X = self.F = self.pareto_archive = None
+        self.X = self.F = self.CV = self.pareto_archive = None
         self.t = 0
 
     # ---- lazily built pymoo objects (ArrayStateMixin) -------------------------------------
     def _build_pop(self) -> Population:
-        X, F = self._population_arrays()
-        return Population.new("X", X, "F", F, "CV", np.zeros((len(F), 1)))
+        X, F, CV = self._population_arrays()
+        cv = np.zeros(len(F)) if CV is None else CV
+        return Population.new("X", X, "F", F, "CV", cv[:, None])
 
     def _build_opt(self) -> Population:
-        """The archive members as a ``Population``."""
+        """The archive members as a ``Population`` (with CV, G and H for constrained problems)."""
         A = self.pareto_archive
-        return Population.new("X", A.X.copy(), "F", A.F.copy(), "CV", np.zeros((len(A), 1)))
+        args = ["X", A.X.copy(), "F", A.F.copy()]
+        if A.CV is None:
+            return Population.new(*args, "CV", np.zeros((len(A), 1)))
+        n_ieq = self.problem.n_ieq_constr
+        args += ["CV", A.CV[:, None].copy(), "G", A.extra[:, :n_ieq].copy(),
+                 "H", A.extra[:, n_ieq:].copy()]
+        return Population.new(*args)
 
     # ---- pymoo hooks ----------------------------------------------------------------------
     def _setup(self, problem, **kwargs) -> None:
@@ -131,14 +153,34 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         if problem.n_obj < 2:
             raise ParameterError(f"{name} is multi-objective; the problem has "
                                  f"n_obj={problem.n_obj}")
-        if problem.has_constraints():
-            raise ParameterError(f"{name} handles unconstrained problems only; the problem has "
-                                 f"n_ieq_constr={problem.n_ieq_constr}, "
-                                 f"n_eq_constr={problem.n_eq_constr}")
         self.xl, self.xu = finite_bounds(problem, name)
+        self._constrained = bool(problem.has_constraints())
+        self._plans: dict = {}
+        self._plan_schedule(t=1, n_eval=self._n_initial(), elapsed=0.0)
+
+    def _plan_schedule(self, *, t: int, n_eval: int, elapsed: float) -> None:
+        """Refresh the evaluation budget and T from the current termination (module doc)."""
         self._max_evals = find_limit(self.termination, "n_max_evals")
-        self.max_iter = schedule_length(self.termination, self.max_iter, self._n_initial(),
-                                        self._evals_per_iteration())
+        if self._fixed_T is None:
+            T = planned_iterations(self.termination, t=t, n_eval=n_eval, elapsed=elapsed,
+                                   per_iteration=self._evals_per_iteration(), plans=self._plans)
+            self.max_iter = int(T) if math.isfinite(T) else max(DEFAULT_SCHEDULE_LENGTH, t + 1)
+
+    def _begin_iteration(self) -> None:
+        """Before an iteration's first batch: t and the planned schedule."""
+        self.t = self.n_iter - 1
+        self._plan_schedule(t=self.t, n_eval=self.evaluator.n_eval,
+                            elapsed=time.time() - self.start_time)
+
+    def next(self) -> None:
+        if self.is_initialized and self._step is None:
+            self._begin_iteration()
+        super().next()
+
+    def _infill(self) -> Population:
+        if self._step is None:
+            self._begin_iteration()
+        return super()._infill()
 
     def _initialize_infill(self) -> Population:
         return initial_population(self._n_initial(), self.xl, self.xu, self.X0,
@@ -147,11 +189,12 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
     def _initialize_advance(self, infills=None, **kwargs) -> None:
         self._step = self._pending = None
         self.pareto_archive = self._make_archive(self.archive_size)
-        X, F = infills.get("X"), infills.get("F").astype(float)
+        X = infills.get("X")
+        F, CV, GH = self._values_of(infills)
         self._buffer = []
-        self._receive(X, F)
+        self._receive(X, F, CV, GH)
         self._flush()
-        self.X, self.F = X, F
+        self.X, self.F, self.CV = X, F, CV
         self._initialize_state()
 
     def _end_iteration(self) -> None:
@@ -159,10 +202,10 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         self._flush()
 
     def _advance(self, infills=None, **kwargs) -> bool:
-        F = infills.get("F").astype(float) if len(infills) else np.empty((0, self.problem.n_obj))
-        self._receive(self._pending[: len(F)], F)
+        F, CV, GH = self._values_of(infills)
+        self._receive(self._pending[: len(F)], F, CV, GH)
         try:
-            self._pending = self._step.send(self._pad(len(self._pending), F))
+            self._pending = self._step.send(self._pad(len(self._pending), F, CV))
             return False
         except StopIteration:
             self._step = self._pending = None
@@ -174,27 +217,53 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         super()._post_advance()
 
     # ---- evaluation -----------------------------------------------------------------------
-    def _pad(self, n: int, F: np.ndarray) -> np.ndarray:
-        """Rows left unevaluated by the budget get ``F = inf``."""
-        if len(F) == n:
-            return F
-        return np.concatenate([F, np.full((n - len(F), self.problem.n_obj), np.inf)])
+    def _values_of(self, pop: Population):
+        """``(F, CV, GH)`` of an evaluated ``Population`` (GH: G and H side by side)."""
+        if not len(pop):
+            n_con = self.problem.n_ieq_constr + self.problem.n_eq_constr
+            return (np.empty((0, self.problem.n_obj)),
+                    np.empty(0) if self._constrained else None, np.empty((0, n_con)))
+        F = pop.get("F").astype(float)
+        if not self._constrained:
+            return F, None, None
+        return self._constraint_values(F, pop.get("G"), pop.get("H"))
 
-    def _evaluate(self, X: np.ndarray) -> np.ndarray:
-        """Evaluate a batch (vectorized), count n_eval exactly, offer it to the archive."""
+    def _constraint_values(self, F, G, H):
+        n = len(F)
+        G = np.zeros((n, 0)) if G is None else np.asarray(G, float).reshape(n, -1)
+        H = np.zeros((n, 0)) if H is None else np.asarray(H, float).reshape(n, -1)
+        return F, constraint_violation(G, H), np.concatenate([G, H], axis=1)
+
+    def _pad(self, n: int, F: np.ndarray, CV: np.ndarray | None):
+        """Rows left unevaluated by the budget get ``F = CV = inf``."""
+        k = len(F)
+        if k == n:
+            return F, CV
+        F = np.concatenate([F, np.full((n - k, self.problem.n_obj), np.inf)])
+        return F, None if CV is None else np.concatenate([CV, np.full(n - k, np.inf)])
+
+    def _evaluate(self, X: np.ndarray):
+        """Evaluate a batch (vectorized), count n_eval exactly, offer it to the archive.
+
+        Returns:
+            ``(F, CV)`` for every row of ``X`` (see ``_pad``).
+        """
         n = len(X)
         k = budget_left(self._max_evals, self.evaluator.n_eval, n)
         if k == 0:
-            return self._pad(n, np.empty((0, self.problem.n_obj)))
-        F = self.problem.evaluate(X if k == n else X[:k], return_as_dictionary=True)["F"]
+            return self._pad(n, np.empty((0, self.problem.n_obj)),
+                             np.empty(0) if self._constrained else None)
+        out = self.problem.evaluate(X if k == n else X[:k], return_as_dictionary=True)
         self.evaluator.n_eval += k
-        self._receive(X[:k], F)
-        return self._pad(n, F)
+        F, CV, GH = (out["F"], None, None) if not self._constrained else \
+            self._constraint_values(out["F"], out.get("G"), out.get("H"))
+        self._receive(X[:k], F, CV, GH)
+        return self._pad(n, F, CV)
 
-    def _receive(self, X: np.ndarray, F: np.ndarray) -> None:
+    def _receive(self, X, F, CV, GH) -> None:
         """Queue evaluated rows for the archive (merged once per iteration, see ``_flush``)."""
         if len(F):
-            self._buffer.append((X, F))
+            self._buffer.append((X, F, CV, GH))
 
     def _flush(self) -> None:
         """Merge the iteration's evaluated rows into the archive at once (NonFiniteError on NaN).
@@ -203,10 +272,15 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         non-dominated set as a merge per batch; the truncation runs once on the union.
         """
         if self._buffer:
-            X = np.concatenate([b[0] for b in self._buffer])
-            F = np.concatenate([b[1] for b in self._buffer])
+            parts = list(zip(*self._buffer, strict=True))
             self._buffer = []
-            self.pareto_archive.add(X, F, rng=self.random_state)
+            X, F = np.concatenate(parts[0]), np.concatenate(parts[1])
+            if self._constrained:
+                self.pareto_archive.add(X, F, rng=self.random_state,
+                                        CV=np.concatenate(parts[2]),
+                                        extra=np.concatenate(parts[3]))
+            else:
+                self.pareto_archive.add(X, F, rng=self.random_state)
             self._opt_stale = True
 
     # ---- subclass interface ---------------------------------------------------------------
@@ -219,16 +293,16 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         return self.pop_size
 
     def _evals_per_iteration(self) -> float:
-        """Expected evaluations per iteration (used to infer T from an n_eval budget)."""
+        """Expected evaluations per iteration (used to plan T from an n_eval budget)."""
         return float(self.pop_size)
 
     def _initialize_state(self) -> None:
         """Create per-run arrays after the initial population was evaluated."""
 
-    def _population_arrays(self) -> tuple[np.ndarray, np.ndarray]:
-        """Arrays reported as ``pop`` (default: the last evaluated candidates)."""
-        return self.X, self.F
+    def _population_arrays(self) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+        """Arrays ``(X, F, CV)`` reported as ``pop`` (default: the last evaluated candidates)."""
+        return self.X, self.F, self.CV
 
     def _generation(self) -> Step:
-        """One iteration: yield candidate arrays, receive ``F`` for each."""
+        """One iteration: yield candidate arrays, receive ``(F, CV)`` for each."""
         raise NotImplementedError("abstract hook: subclasses implement it")

@@ -69,9 +69,9 @@ class MOClassicPSO(ObjectiveSwarms):
         self.vmax = None if self.vmax_rate is None else self.vmax_rate * (self.xu - self.xl)
 
     def _generation(self) -> Step:
-        g = swarm_best(self.pbest_X, self.pbest_S, self.problem.n_obj)
+        g = swarm_best(self.pbest_X, self._pbest_rank(), self.problem.n_obj)
         V = pso_velocity(self.V, self.X, self.pbest_X, g, w=self.w, c1=self.c1, c2=self.c2,
                          rng=self.random_state)  # Eq. 1
         self.V = clamp_velocity(V, self.vmax)
         X = clip_to_bounds(self.X + self.V, self.xl, self.xu)  # Eq. 2
-        self._remember(X, (yield X))
+        self._remember(X, *(yield X))

@@ -109,5 +109,8 @@ class MOCSA(ObjectiveSwarms):
         ok = inside_box(X_new, self.xl, self.xu)
         X, F = self.X.copy(), self.F.copy()
         X[ok] = X_new[ok]
-        F[ok] = yield X_new[ok]  # possibly no rows: an iteration always yields once
-        self._remember(X, F)  # Eq. 3; crows that stayed cannot improve their memory
+        F[ok], CV_ok = yield X_new[ok]  # possibly no rows: an iteration always yields once
+        CV = None if self.CV is None else self.CV.copy()
+        if CV is not None:
+            CV[ok] = CV_ok
+        self._remember(X, F, CV)  # Eq. 3; crows that stayed cannot improve their memory

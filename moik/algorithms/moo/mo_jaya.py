@@ -65,8 +65,9 @@ class MOJAYA(ObjectiveSwarms):
 
     def _generation(self) -> Step:
         M = self.problem.n_obj
-        best = swarm_extreme(self.pbest_X, self.pbest_S, M)
-        worst = swarm_extreme(self.pbest_X, self.pbest_S, M, worst=True)
+        S = self._pbest_rank()
+        best = swarm_extreme(self.pbest_X, S, M)
+        worst = swarm_extreme(self.pbest_X, S, M, worst=True)
         X = jaya_update(self.pbest_X, best, worst, rng=self.random_state)  # Eq. 1
         X = clip_to_bounds(X, self.xl, self.xu)
-        self._remember(X, (yield X))  # greedy acceptance
+        self._remember(X, *(yield X))  # greedy acceptance

@@ -38,7 +38,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from moik.algorithms.mechanics import clip_to_bounds
+from moik.algorithms.mechanics import clip_to_bounds, is_better
 from moik.algorithms.moo.base import Step
 from moik.algorithms.moo.objective_swarms import ObjectiveSwarms, own_objective, swarm_best
 from moik.algorithms.soo.modified_pso import SWITCHES, mpso_velocity
@@ -93,14 +93,17 @@ class MOMPSO(ObjectiveSwarms):
         M, N = self.problem.n_obj, self.pop_size
         if self.switch == "mean-position":
             means = self.pbest_X.reshape(M, N, -1).sum(axis=1) / N
-            F_mean = yield means
+            F_mean, cv_mean = yield means
             f_mean = own_objective(F_mean, np.arange(M))
         else:
             f_mean = self.pbest_S.reshape(M, N).sum(axis=1) / N
-        self.classic = np.repeat(f_mean, N) < self.S  # f(x_i) > f(xmean)
-        g = swarm_best(self.pbest_X, self.pbest_S, M)
+            cv_mean = None if self.CV is None else self.pbest_CV.reshape(M, N).sum(axis=1) / N
+        self.classic = is_better(np.repeat(f_mean, N),  # f(x_i) > f(xmean)
+                                 None if cv_mean is None else np.repeat(cv_mean, N),
+                                 self.S, self.CV)
+        g = swarm_best(self.pbest_X, self._pbest_rank(), M)
         V = mpso_velocity(self.V, self.X, self.pbest_X, g, self.classic, w=self.w, c1=self.c1,
                           c2=self.c2, rng=self.random_state)  # Eqs. 3-4
         self.V = clamp_velocity(V, self.vmax)
         X = clip_to_bounds(self.X + self.V, self.xl, self.xu)  # Eq. 5
-        self._remember(X, (yield X))
+        self._remember(X, *(yield X))

@@ -27,8 +27,12 @@ archive = 100 (Table 8: T = 1000). Evaluations per iteration: N.
 
 Deviations and readings:
 - Antlion: the paper selects it from the archive by roulette wheel on the
-  crowding; MALO.m uses the first archive member for every ant. The paper is
-  followed.
+  crowding (``antlion="roulette"``, the default); MALO.m uses the first archive
+  member for every ant (``antlion="first"``). Measured (25,000 evaluations, 3
+  seeds, ``benchmarks/moo_quality.py``): on DTLZ2 the paper's rule reaches IGD 0.58
+  and MALO.m's rule 0.32 (the line-by-line port of MALO.m: 0.27), on ZDT1 (30
+  variables) the paper's rule is better (HV 0.65 against 0.58); both stay behind
+  uniform random sampling on DTLZ2 (IGD 0.16), a weakness of the method.
 - ``I = 1 + 10^w t / T`` as in MALO.m (ALO's paper prints ``I = 10^w t / T``).
 - Walks are generated in full (T steps per coordinate, two per ant) as in the
   code, since the min and max of the whole walk set the scale: O(N d T) work
@@ -41,11 +45,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import choice
 from moik.algorithms.archive import ArchiveBase, CrowdingArchive
 from moik.algorithms.mechanics import clip_to_bounds
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step
 
 _STAGES = ((0.95, 6), (0.9, 5), (0.75, 4), (0.5, 3), (0.1, 2))
+ANTLION_RULES = ("roulette", "first")
 
 
 def shrink_ratio(t: int, T: int) -> float:
@@ -103,10 +109,19 @@ class MOALO(MOArrayAlgorithm):
     Args:
         pop_size: Number of ants N (paper setting: 100).
         archive_size: Archive capacity; None means ``pop_size`` (paper setting: 100).
+        antlion: ``"roulette"`` (one archive member per ant by roulette on 1 / count,
+            the paper) or ``"first"`` (the first archive member for every ant, MALO.m).
         max_iter: Schedule length T, also the walk length (see MOArrayAlgorithm).
         X0: Optional initial points.
         **kwargs: pymoo ``Algorithm`` options.
     """
+
+    def __init__(self, *, pop_size: int = 100, archive_size: int | None = None,
+                 antlion: str = "roulette", max_iter: int | None = None,
+                 X0: np.ndarray | None = None, **kwargs):
+        super().__init__(pop_size=pop_size, archive_size=archive_size, X0=X0,
+                         max_iter=max_iter, **kwargs)
+        self.antlion = choice("antlion", antlion, ANTLION_RULES)
 
     def _make_archive(self, capacity: int) -> ArchiveBase:
         return CrowdingArchive.mirjalili(capacity)
@@ -114,10 +129,11 @@ class MOALO(MOArrayAlgorithm):
     def _generation(self) -> Step:
         rng, A, n, T = self.random_state, self.pareto_archive, self.pop_size, self.max_iter
         self.elite = A.X[A.leaders(1, rng=rng)[0]]
-        antlions = A.X[A.leaders(n, rng=rng)]
+        antlions = (A.X[A.leaders(n, rng=rng)] if self.antlion == "roulette"
+                    else np.repeat(A.X[:1], n, axis=0))
         R_A = walk_around(antlions, self.t, T, self.xl, self.xu, rng=rng)
         R_E = walk_around(np.broadcast_to(self.elite, antlions.shape), self.t, T,
                           self.xl, self.xu, rng=rng)
         X = clip_to_bounds((R_A + R_E) / 2.0, self.xl, self.xu)  # Eq. 2.13
-        F = yield X
-        self.X, self.F = X, F
+        F, CV = yield X
+        self.X, self.F, self.CV = X, F, CV

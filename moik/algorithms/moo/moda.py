@@ -148,5 +148,5 @@ class MODA(MOArrayAlgorithm):
         X, self.dX = dragonfly_step(self.X, self.dX, self.food, self.enemy, r, w, k, f,
                                     self.vmax, rng=rng)
         X = clip_to_bounds(X, self.xl, self.xu)
-        F = yield X
-        self.X, self.F = X, F
+        F, CV = yield X
+        self.X, self.F, self.CV = X, F, CV

@@ -7,9 +7,15 @@ needs reference directions at construction; :class:`MOEAD` here is pymoo's with
 a default: when ``ref_dirs`` is None, the Das-Dennis directions for the
 problem's number of objectives are built at setup with the most partitions that
 give at most ``pop_size`` directions (for two objectives:
-``n_partitions = pop_size - 1``, exactly ``pop_size`` directions). pymoo's other
-multi-objective algorithms (NSGA2, SMS-EMOA, MOPSO-CD) are registered unchanged
-(:mod:`moik.algorithms.registry`).
+``n_partitions = pop_size - 1``, exactly ``pop_size`` directions).
+
+Constraints: pymoo's MOEA/D refuses constrained problems. Here an offspring
+replaces a neighbour by constraint-domination of the decomposed values (feasible
+first, then smaller total violation, then the smaller decomposed value), the rule
+pymoo's source leaves commented out; ``res.F`` is pymoo's feasible non-dominated
+set of the population. Unconstrained runs are pymoo's, bit for bit.
+pymoo's NSGA2 and SMS-EMOA are registered unchanged, MOPSO-CD with constraint
+handling (:mod:`moik.algorithms.moo.mopso_cd`).
 """
 
 from __future__ import annotations
@@ -19,6 +25,7 @@ from math import comb
 import numpy as np
 from pymoo.algorithms.moo import moead
 from pymoo.util.ref_dirs import get_reference_directions
+from scipy.spatial.distance import cdist
 
 from moik._validate import integer
 from moik.algorithms.array_state import refuse_unknown_keywords
@@ -62,4 +69,27 @@ class MOEAD(moead.MOEAD):
     def _setup(self, problem, **kwargs) -> None:
         if self._default_dirs and self.ref_dirs.shape[1] != problem.n_obj:
             self.ref_dirs = default_ref_dirs(problem.n_obj, self._n_dirs)
-        super()._setup(problem, **kwargs)
+        if not problem.has_constraints():
+            super()._setup(problem, **kwargs)
+            return
+        # pymoo's _setup without its refusal of constraints
+        self.pop_size = len(self.ref_dirs)
+        self.neighbors = np.argsort(cdist(self.ref_dirs, self.ref_dirs), axis=1,
+                                    kind="quicksort")[:, : self.n_neighbors]
+        if self.decomposition is None:
+            self.decomposition = moead.default_decomp(problem)
+
+    def _replace(self, k, off) -> None:
+        """pymoo's replacement; with constraints by constraint-domination (module doc)."""
+        if not self.problem.has_constraints():
+            super()._replace(k, off)
+            return
+        pop, N = self.pop, self.neighbors[k]
+        FV = self.decomposition.do(pop[N].get("F"), weights=self.ref_dirs[N, :],
+                                   ideal_point=self.ideal)
+        off_FV = self.decomposition.do(off.F[None, :], weights=self.ref_dirs[N, :],
+                                       ideal_point=self.ideal)
+        CV, off_CV = pop[N].get("CV")[:, 0], float(off.CV[0])
+        better = np.where(CV <= 0.0, (off_CV <= 0.0) & (off_FV < FV),
+                          (off_CV <= 0.0) | (off_CV < CV))
+        pop[N[np.flatnonzero(better)]] = off

@@ -96,5 +96,5 @@ class MOGWO(MOArrayAlgorithm):
         self.leader_index = idx = distinct_grid_leaders(A, self.pop_size, rng=rng)
         X = gwo_move(self.X, (A.X[idx[:, 0]], A.X[idx[:, 1]], A.X[idx[:, 2]]), a, rng=rng)
         X = clip_to_bounds(X, self.xl, self.xu)
-        F = yield X
-        self.X, self.F = X, F
+        F, CV = yield X
+        self.X, self.F, self.CV = X, F, CV

@@ -37,6 +37,10 @@ Deviations and readings:
   ``NI(U_i)``).
 - NI assumes non-negative rates (as MVO); with negative values of the first
   objective the tunnel probability of those universes is 0.
+- Constraints (not in the paper): the inflation rate of a universe is its first
+  objective if feasible, else the worst feasible value plus its violation
+  (:func:`~moik.algorithms.mechanics.ranking_fitness`), so feasible universes sort
+  first; the archive uses constraint-domination.
 - Random streams differ from MATLAB's; only the distributions match.
 """
 
@@ -46,7 +50,7 @@ import numpy as np
 
 from moik._validate import interval
 from moik.algorithms.archive import ArchiveBase, CrowdingArchive
-from moik.algorithms.mechanics import clip_to_bounds
+from moik.algorithms.mechanics import clip_to_bounds, ranking_fitness
 from moik.algorithms.moo.around_best import around_best
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step
 
@@ -124,9 +128,10 @@ class MOMVO(MOArrayAlgorithm):
         rng, A = self.random_state, self.pareto_archive
         wep, tdr = mvo_schedule(self.t, self.max_iter, self.wep_min, self.wep_max, self.p)
         self.best = A.X[A.leaders(1, rng=rng)[0]]
-        order = np.argsort(self.F[:, 0], kind="stable")
-        X_s, F_s = self.X[order], self.F[order]
-        I_s = F_s[:, 0]
+        I = ranking_fitness(self.F[:, 0], self.CV)  # noqa: E741
+        order = np.argsort(I, kind="stable")
+        X_s, F_s, I_s = self.X[order], self.F[order], I[order]
+        CV_s = None if self.CV is None else self.CV[order]
         norm = np.sqrt(np.sum(I_s**2))
         NI = I_s / norm if norm > 0 else np.zeros_like(I_s)  # Eq. 3.1, normr
         moved = tunnels(X_s[1:], NI[1:], X_s, I_s, rng=rng)  # elite X_s[0] is kept
@@ -135,5 +140,6 @@ class MOMVO(MOArrayAlgorithm):
         moved = np.where(hole, around_best(self.best, tdr, self.xl, self.xu, (n, d), rng=rng),
                          moved)
         X = clip_to_bounds(moved, self.xl, self.xu)
-        F = yield X
+        F, CV = yield X
         self.X, self.F = np.concatenate([X_s[:1], X]), np.concatenate([F_s[:1], F])
+        self.CV = None if CV is None else np.concatenate([CV_s[:1], CV])

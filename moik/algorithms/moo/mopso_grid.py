@@ -33,7 +33,9 @@ Deviations and readings:
   schedule; Table 4's values and the Yarpiz mutation are used instead.
 - Every evaluated point (mutants included) is offered to the repository (the
   Yarpiz code offers only each particle's final position of the iteration).
-- Unconstrained problems only (MOArrayAlgorithm).
+- Constraints (not in the paper's Section III): every "dominates" above is
+  constraint-domination (feasible first, then smaller violation), as in the
+  repository.
 """
 
 from __future__ import annotations
@@ -43,7 +45,8 @@ import numpy as np
 from moik._validate import interval
 from moik.algorithms.archive import ArchiveBase, GridArchive
 from moik.algorithms.mechanics import clip_to_bounds
-from moik.algorithms.moo.base import MOArrayAlgorithm, Step, dominates
+from moik.algorithms.moo.base import MOArrayAlgorithm, Step
+from moik.algorithms.moo.dominance import constrained_dominates
 from moik.algorithms.soo.pso import pso_velocity
 
 
@@ -66,11 +69,16 @@ def mopso_mutation(X: np.ndarray, pm: float, xl: np.ndarray, xu: np.ndarray, *,
     return X
 
 
-def pareto_accept(F_new: np.ndarray, F_old: np.ndarray, *,
-                  rng: np.random.Generator) -> np.ndarray:
-    """Rows where the new point replaces the old: it dominates, or neither does and a coin."""
+def pareto_accept(F_new: np.ndarray, F_old: np.ndarray, *, rng: np.random.Generator,
+                  CV_new: np.ndarray | None = None, CV_old: np.ndarray | None = None
+                  ) -> np.ndarray:
+    """Rows where the new point replaces the old: it dominates, or neither does and a coin.
+
+    With ``CV_new``/``CV_old`` (constrained problems) "dominates" is constraint-domination.
+    """
     coin = rng.random(len(F_new)) < 0.5
-    return dominates(F_new, F_old) | (~dominates(F_old, F_new) & coin)
+    return constrained_dominates(F_new, CV_new, F_old, CV_old) | (
+        ~constrained_dominates(F_old, CV_old, F_new, CV_new) & coin)
 
 
 def reflect_velocity(X: np.ndarray, V: np.ndarray, xl: np.ndarray, xu: np.ndarray):
@@ -87,8 +95,9 @@ def reflect_velocity(X: np.ndarray, V: np.ndarray, xl: np.ndarray, xu: np.ndarra
 class MOPSO(MOArrayAlgorithm):
     """MOPSO (Coello Coello et al. 2004) with array state; ``res.X``/``res.F`` = the grid archive.
 
-    Extra public arrays: ``V`` (velocities), ``pbest_X``/``pbest_F`` (personal
-    bests), ``w_t`` (inertia of the last iteration). ``X``/``F`` is the swarm.
+    Extra public arrays: ``V`` (velocities), ``pbest_X``/``pbest_F``/``pbest_CV``
+    (personal bests), ``w_t`` (inertia of the last iteration). ``X``/``F``/``CV`` is
+    the swarm.
 
     Args:
         pop_size: Number of particles N (Table 4: 100).
@@ -123,7 +132,7 @@ class MOPSO(MOArrayAlgorithm):
 
     def _initialize_state(self) -> None:
         self.V = np.zeros_like(self.X)
-        self.pbest_X, self.pbest_F = self.X, self.F
+        self.pbest_X, self.pbest_F, self.pbest_CV = self.X, self.F, self.CV
         self.w_t = self.w
 
     def _generation(self) -> Step:
@@ -133,16 +142,22 @@ class MOPSO(MOArrayAlgorithm):
         V = pso_velocity(self.V, self.X, self.pbest_X, leader, w=self.w_t, c1=self.c1,
                          c2=self.c2, rng=rng)
         X, self.V = reflect_velocity(self.X, V, self.xl, self.xu)
-        F = yield X
+        F, CV = yield X
         pm = mutation_rate(self.t, self.max_iter, self.mu)
         mutated = np.flatnonzero(rng.random(self.pop_size) < pm)
         if mutated.size:
             Xm = mopso_mutation(X[mutated], pm, self.xl, self.xu, rng=rng)
-            Fm = yield Xm
-            take = pareto_accept(Fm, F[mutated], rng=rng)
+            Fm, CVm = yield Xm
+            take = pareto_accept(Fm, F[mutated], rng=rng, CV_new=CVm,
+                                 CV_old=None if CV is None else CV[mutated])
             X, F = X.copy(), F.copy()
             X[mutated[take]], F[mutated[take]] = Xm[take], Fm[take]
-        self.X, self.F = X, F
-        take = pareto_accept(F, self.pbest_F, rng=rng)[:, None]
-        self.pbest_X = np.where(take, X, self.pbest_X)
-        self.pbest_F = np.where(take, F, self.pbest_F)
+            if CV is not None:
+                CV = CV.copy()
+                CV[mutated[take]] = CVm[take]
+        self.X, self.F, self.CV = X, F, CV
+        take = pareto_accept(F, self.pbest_F, rng=rng, CV_new=CV, CV_old=self.pbest_CV)
+        self.pbest_X = np.where(take[:, None], X, self.pbest_X)
+        self.pbest_F = np.where(take[:, None], F, self.pbest_F)
+        if CV is not None:
+            self.pbest_CV = np.where(take, CV, self.pbest_CV)

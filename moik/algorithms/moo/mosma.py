@@ -46,6 +46,9 @@ Deviations and readings:
   non-dominated point found, truncated to capacity).
 - Coordinates are clipped to the bounds (as in the code); rows left without
   evaluation by an ``n_eval`` budget (``F = inf``) never survive.
+- Constraints (not in the paper): the elitist order puts the feasible rows first
+  (by rank and crowding distance), then the infeasible ones by increasing
+  violation, each its own front (constraint-domination, as pymoo's NSGA-II).
 """
 
 from __future__ import annotations
@@ -60,18 +63,32 @@ from moik.algorithms.moo.base import MOArrayAlgorithm, Step
 from moik.algorithms.soo.sma import sma_schedule, sma_update, sma_weights
 
 
-def elitist_order(F: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
+def elitist_order(F: np.ndarray, n: int, CV: np.ndarray | None = None
+                  ) -> tuple[np.ndarray, np.ndarray]:
     """NSGA-II elitist selection: the best ``n`` rows by rank, then crowding distance.
 
     Args:
         F: Objective values (finite), shape (m, M) with m >= n.
         n: Number of rows to keep.
+        CV: Total constraint violations (m,), or None (unconstrained): feasible rows
+            are ordered first, the infeasible ones after them by increasing
+            violation (stable), each with its own rank.
 
     Returns:
         ``(index, rank)``: the kept row indices sorted by (rank ascending,
         crowding distance descending within each front; stable on ties) and
         their 0-based non-domination ranks.
     """
+    if CV is not None:
+        feas = np.flatnonzero(CV <= 0.0)
+        index, rank = (elitist_order(F[feas], min(n, feas.size)) if feas.size
+                       else (np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)))
+        index = feas[index]
+        bad = np.flatnonzero(CV > 0.0)
+        bad = bad[np.argsort(CV[bad], kind="stable")][: n - index.size]
+        start = rank.max() + 1 if rank.size else 0
+        return (np.concatenate([index, bad]),
+                np.concatenate([rank, start + np.arange(bad.size)]))
     fronts = NonDominatedSorting().do(F, n_stop_if_ranked=n)
     index, rank = [], []
     for r, front in enumerate(fronts):
@@ -87,7 +104,7 @@ def elitist_order(F: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
 class MOSMA(MOArrayAlgorithm):
     """MOSMA (Premkumar et al. 2021) with array state; ``res.X``/``res.F`` = the archive.
 
-    Extra public arrays: ``pop_X``/``pop_F``/``pop_rank`` (the elitist
+    Extra public arrays: ``pop_X``/``pop_F``/``pop_CV``/``pop_rank`` (the elitist
     population in sorted order). ``X``/``F`` are the last offspring.
 
     Args:
@@ -107,17 +124,19 @@ class MOSMA(MOArrayAlgorithm):
         self.z = interval("z", z, 0.0, 1.0)
 
     def _initialize_state(self) -> None:
-        self._survive(self.X, self.F)
+        self._survive(self.X, self.F, self.CV)
 
-    def _survive(self, X: np.ndarray, F: np.ndarray) -> None:
+    def _survive(self, X: np.ndarray, F: np.ndarray, CV: np.ndarray | None) -> None:
         """Elitist non-dominated sorting of the finite rows of ``X``/``F`` (at least N)."""
         finite = np.all(np.isfinite(F), axis=1)
         X, F = X[finite], F[finite]
-        keep, self.pop_rank = elitist_order(F, self.pop_size)
+        CV = None if CV is None else CV[finite]
+        keep, self.pop_rank = elitist_order(F, self.pop_size, CV)
         self.pop_X, self.pop_F = X[keep], F[keep]
+        self.pop_CV = None if CV is None else CV[keep]
 
-    def _population_arrays(self) -> tuple[np.ndarray, np.ndarray]:
-        return self.pop_X, self.pop_F
+    def _population_arrays(self):
+        return self.pop_X, self.pop_F, self.pop_CV
 
     def _generation(self) -> Step:
         rng, n, d = self.random_state, self.pop_size, self.problem.n_var
@@ -129,6 +148,7 @@ class MOSMA(MOArrayAlgorithm):
         X = sma_update(self.pop_X, W, food, S, 0.0, a, b, z=self.z, xl=self.xl, xu=self.xu,
                        rng=rng)  # Eqs. 1-2
         X = clip_to_bounds(X, self.xl, self.xu)
-        F = yield X
-        self.X, self.F = X, F
-        self._survive(np.concatenate([self.pop_X, X]), np.concatenate([self.pop_F, F]))
+        F, CV = yield X
+        self.X, self.F, self.CV = X, F, CV
+        self._survive(np.concatenate([self.pop_X, X]), np.concatenate([self.pop_F, F]),
+                      None if CV is None else np.concatenate([self.pop_CV, CV]))

@@ -26,7 +26,6 @@ Deviations and readings:
 - Eq. 3.1 is printed with ``c3 >= 0`` / ``c3 < 0`` for ``c3 ~ U(0, 1)``, which
   would always take ``+``; the code's threshold 0.5 is used.
 - Random streams differ from MATLAB's; only the distributions match.
-- Unconstrained problems only (MOArrayAlgorithm).
 """
 
 from __future__ import annotations
@@ -92,5 +91,5 @@ class MSSA(MOArrayAlgorithm):
         self.food = A.X[A.leaders(1, rng=rng)[0]]
         c1 = ssa_c1(self.t, self.max_iter)
         X = salp_chain(self.X, self.food, c1, self.xl, self.xu, rng=rng)
-        F = yield X
-        self.X, self.F = X, F
+        F, CV = yield X
+        self.X, self.F, self.CV = X, F, CV

@@ -24,6 +24,10 @@ This module holds the mechanics those four methods share, once:
   base class), ``res.X``/``res.F`` is its front and ``moik.metrics.compromise(res)``
   picks the member closest to the utopia point.
 
+Constraints (not in the paper): the memory and the swarm bests compare
+feasibility first (:func:`~moik.algorithms.mechanics.is_better` on the swarm's
+objective and the total violation), the shared archive uses constraint-domination.
+
 Evaluations: M * pop_size for the initial population and, by default, per iteration.
 """
 
@@ -31,7 +35,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from moik.algorithms.mechanics import greedy_memory, is_better
+from moik.algorithms.mechanics import greedy_memory, is_better, ranking_fitness
 from moik.algorithms.moo.base import MOArrayAlgorithm
 
 
@@ -71,8 +75,9 @@ class ObjectiveSwarms(MOArrayAlgorithm):
 
     Public arrays (numpy; rows of swarm k are ``k N .. (k + 1) N - 1``): ``swarm``
     (objective index of each row), ``X``/``F``/``S`` (current rows, their
-    objective vectors and their fitness on the swarm's objective),
-    ``pbest_X``/``pbest_F``/``pbest_S`` (greedy memory on ``S``).
+    objective vectors and their fitness on the swarm's objective; ``CV`` their
+    violations or None), ``pbest_X``/``pbest_F``/``pbest_S``/``pbest_CV`` (greedy memory
+    on ``S``, feasibility first).
 
     Args:
         pop_size: Rows per swarm N (one swarm per objective).
@@ -92,11 +97,16 @@ class ObjectiveSwarms(MOArrayAlgorithm):
         self.swarm = np.repeat(np.arange(self.problem.n_obj), self.pop_size)
         self.S = own_objective(self.F, self.swarm)
         self.pbest_X, self.pbest_F, self.pbest_S = self.X, self.F, self.S
+        self.pbest_CV = self.CV
 
-    def _remember(self, X: np.ndarray, F: np.ndarray) -> None:
+    def _pbest_rank(self) -> np.ndarray:
+        """The memories' fitness in feasibility-first order (``pbest_S`` if unconstrained)."""
+        return ranking_fitness(self.pbest_S, self.pbest_CV)
+
+    def _remember(self, X: np.ndarray, F: np.ndarray, CV: np.ndarray | None) -> None:
         """Take the evaluated rows as current and update the greedy memory on ``S``."""
-        self.X, self.F, self.S = X, F, own_objective(F, self.swarm)
-        better = is_better(self.S, None, self.pbest_S, None)[:, None]
+        self.X, self.F, self.CV, self.S = X, F, CV, own_objective(F, self.swarm)
+        better = is_better(self.S, CV, self.pbest_S, self.pbest_CV)[:, None]
         self.pbest_F = np.where(better, F, self.pbest_F)
-        self.pbest_X, self.pbest_S, _ = greedy_memory(X, self.S, None, self.pbest_X,
-                                                      self.pbest_S, None)
+        self.pbest_X, self.pbest_S, self.pbest_CV = greedy_memory(
+            X, self.S, CV, self.pbest_X, self.pbest_S, self.pbest_CV)

@@ -77,7 +77,8 @@ def test_n_gen_time_verbose_and_callback(capsys):
     res = minimize(Schaffer(), MOEOSMA(pop_size=10), ("n_gen", 5), seed=0, verbose=True,
                    callback=lambda a: seen.append((a.t, len(a.pareto_archive), a.X.shape)))
     out = capsys.readouterr().out
-    assert "n_nds" in out and "f1_min" in out and "f2_min" in out
+    # pymoo's MultiObjectiveOutput: no known front here, so eps/indicator
+    assert "n_nds" in out and "eps" in out and "indicator" in out
     assert [s[0] for s in seen] == [0, 1, 2, 3, 4] and res.algorithm.max_iter == 5
     assert all(s[2] == (10, 2) for s in seen)
     res = minimize(Schaffer(), MOEOSMA(pop_size=10), ("time", 0.2), seed=0)
@@ -96,8 +97,8 @@ def test_front_of_a_known_problem_and_compromise():
 def test_bad_problems_and_parameters():
     with pytest.raises(ParameterError, match="multi-objective; the problem has n_obj=1"):
         minimize(get_problem("sphere"), MOEOSMA(), ("n_gen", 2))
-    with pytest.raises(ParameterError, match="unconstrained problems only"):
-        minimize(Schaffer(n_ieq_constr=1), MOEOSMA(), ("n_gen", 2))
+    res = minimize(Schaffer(n_ieq_constr=1), MOEOSMA(pop_size=10), ("n_gen", 5), seed=0)
+    assert np.all(res.X[:, 0] <= 0.0) and np.all(res.CV == 0.0)  # G = x0 <= 0: feasible only
     with pytest.raises(NonFiniteError):
         minimize(Schaffer(nan=True), MOEOSMA(pop_size=5), ("n_gen", 2))
     with pytest.raises(ParameterError, match="archive_size must be an integer >= 1"):
@@ -119,3 +120,38 @@ def test_x0_rows_are_used_and_archive_size_is_honoured():
     np.testing.assert_array_equal(res.algorithm.pbest_X[:2], X0)
     res = minimize(Schaffer(), MOEOSMA(pop_size=6, archive_size=4), ("n_gen", 20), seed=0)
     assert len(res.F) == 4
+
+
+def test_verbose_prints_pymoos_multi_objective_columns(capsys):
+    minimize(get_problem("zdt1", n_var=5), MOEOSMA(pop_size=10), ("n_gen", 3), seed=0,
+             verbose=True)
+    header = capsys.readouterr().out.splitlines()[1]
+    assert [c.strip() for c in header.split("|")] == ["n_gen", "n_eval", "n_nds", "igd", "gd",
+                                                      "hv"]
+    minimize(Schaffer(n_ieq_constr=1), MOEOSMA(pop_size=10), ("n_gen", 3), seed=0, verbose=True)
+    assert "cv_min" in capsys.readouterr().out
+
+
+# ask/tell rounds one generation takes (docs/algorithms.md, "Ask/tell rounds per generation")
+ROUNDS = {"moeosma": (2, 2), "mo-m-pso": (2, 2), "mopso": (1, 2), "mosma": (1, 1),
+          "mompa": (1, 1), "mogwo": (1, 1), "moalo": (1, 1), "moda": (1, 1), "momvo": (1, 1),
+          "mssa": (1, 1), "mo-pso": (1, 1), "mo-jaya": (1, 1), "mo-csa": (1, 1)}
+
+
+@pytest.mark.parametrize("name", sorted(ROUNDS))
+def test_ask_tell_rounds_per_generation_are_the_documented_ones(name):
+    from moik.algorithms import get_algorithm
+
+    problem = get_problem("zdt1", n_var=5)
+    alg = get_algorithm(name, pop_size=10)
+    alg.setup(problem, termination=("n_gen", 12), seed=0)
+    rounds = {}
+    while alg.has_next():
+        gen = alg.n_gen
+        pop = alg.ask()
+        alg.evaluator.eval(problem, pop)
+        alg.tell(infills=pop)
+        rounds[gen] = rounds.get(gen, 0) + 1
+    counts = [rounds[g] for g in sorted(k for k in rounds if k is not None) if g > 1]
+    lo, hi = ROUNDS[name]
+    assert all(lo <= c <= hi for c in counts) and lo in counts and hi in counts

@@ -41,3 +41,29 @@ def test_zdt1_hypervolume_sanity_against_nsga2(check):
     hv = check.zdt1_hypervolume(lambda: get_algorithm("moalo", pop_size=50), n_var=10,
                                 n_eval=5000)
     assert hv / check.nsga2_zdt1_hypervolume(n_var=10, n_eval=5000, pop_size=50) >= 0.8
+
+
+def test_antlion_rule_of_malo_m_walks_around_the_first_member(monkeypatch):
+    import moik.algorithms.moo.moalo as moalo
+    from moik.algorithms import MOALO
+    from moik.exceptions import UnknownNameError
+
+    centres, first = [], []
+    walk = moalo.walk_around
+
+    def spy(c, *args, **kwargs):
+        centres.append(np.array(c))
+        return walk(c, *args, **kwargs)
+
+    monkeypatch.setattr(moalo, "walk_around", spy)
+    alg = MOALO(pop_size=8, antlion="first")
+    alg.setup(get_problem("zdt1", n_var=4), termination=("n_gen", 4), seed=1)
+    while alg.has_next():
+        if alg.is_initialized:
+            first.append(alg.pareto_archive.X[0].copy())
+        alg.next()
+    assert len(first) == 3 and len(centres) == 6  # antlions, then the elite, per iteration
+    for x0, antlions in zip(first, centres[::2], strict=True):
+        np.testing.assert_array_equal(antlions, np.repeat(x0[None], 8, axis=0))
+    with pytest.raises(UnknownNameError, match="antlion"):
+        MOALO(antlion="nearest")

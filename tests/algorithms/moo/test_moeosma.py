@@ -1,6 +1,8 @@
 """MOEOSMA (moik.algorithms.moo.moeosma): kernels, evaluation count, parameters, and HV
 sanity against pymoo's NSGA2."""
 
+import copy
+
 import numpy as np
 import pytest
 from pymoo.algorithms.moo.nsga2 import NSGA2
@@ -9,8 +11,13 @@ from pymoo.problems import get_problem
 
 from moik.algorithms import MOEOSMA
 from moik.algorithms.archive import CrowdingArchive
+from moik.algorithms.mechanics import midpoint_repair, ranking_fitness
+from moik.algorithms.moo.dominance import pareto_memory
 from moik.algorithms.moo.moeosma import equilibrium_pool, rotation_objective
-from moik.exceptions import ParameterError
+from moik.algorithms.soo.eo import eo_schedule
+from moik.algorithms.soo.eosma import eosma_update, random_difference_mutation
+from moik.algorithms.soo.sma import sma_schedule, sma_weights
+from moik.exceptions import ParameterError, UnknownNameError
 from moik.metrics import hypervolume
 from moik.problems.ik import BiObjectiveIK
 from moik.problems.targets import Target
@@ -76,3 +83,54 @@ def test_zdt1_hv_at_least_95_percent_of_nsga2():
         res = minimize(problem, NSGA2(pop_size=100), ("n_eval", 25_000), seed=seed)
         hv_nsga2.append(hypervolume(res.F, ref))
     assert np.mean(hv_moeosma) >= 0.95 * np.mean(hv_nsga2)
+
+
+def _numpy_generation(alg, rng, problem):
+    """One MOEOSMA generation with EOSMA's numpy operators (the oracle of the kernels)."""
+    n, A = alg.pop_size, alg.pareto_archive
+    pool = equilibrium_pool(A.X, A.counts)
+    g_best = pool[rng.integers(len(pool), size=n)]
+    S = ranking_fitness(alg.pbest_F[:, rotation_objective(alg.t, 2)], alg.pbest_CV)
+    W = sma_weights(S, alg.problem.n_var, rng=rng)
+    t1, (a, _) = eo_schedule(alg.t, alg.max_iter, alg.a2), sma_schedule(alg.t, alg.max_iter)
+    X = eosma_update(alg.pbest_X, g_best, pool, W, t1, a, z=alg.z, a1=alg.a1, GP=alg.GP,
+                     V=alg.V, rng=rng)
+    X = midpoint_repair(X, alg.pbest_X, alg.xl, alg.xu)
+    F = problem.evaluate(X, return_values_of=["F"])
+    P, _ = pareto_memory(X, F, alg.pbest_X, alg.pbest_F)
+    assert rng.random() < alg.q
+    return X, F, midpoint_repair(random_difference_mutation(P, rng=rng), P, alg.xl, alg.xu)
+
+
+def test_compiled_generation_equals_the_numpy_operators_bit_for_bit():
+    problem = get_problem("zdt1", n_var=7)
+    alg = MOEOSMA(pop_size=12)
+    alg.setup(problem, termination=("n_gen", 10), seed=8)
+    for _ in range(4):
+        alg.next()
+    alg._begin_iteration()
+    oracle_rng = copy.deepcopy(alg.random_state)
+    X_ref, F_ref, M_ref = _numpy_generation(alg, oracle_rng, problem)
+    step = alg._generation()
+    X = next(step)
+    np.testing.assert_array_equal(X, X_ref)
+    M = step.send((F_ref, None))
+    np.testing.assert_array_equal(M, M_ref)
+    np.testing.assert_array_equal(alg.random_state.random(3), oracle_rng.random(3))
+
+
+def test_diversity_option_keeps_an_elitist_memory_and_searches_the_mutants():
+    problem = get_problem("zdt2", n_var=6)
+    res = minimize(problem, MOEOSMA(pop_size=10, diversity="nsga2-gaussian"), ("n_gen", 6),
+                   seed=1)
+    alg = res.algorithm
+    assert alg.diversity == "nsga2-gaussian" and alg.evaluator.n_eval == 10 + 5 * 20
+    # the memory is the NSGA-II survival of memory and batches: sorted by rank
+    from pymoo.util.nds.non_dominated_sorting import NonDominatedSorting
+
+    rank = NonDominatedSorting().do(alg.pbest_F, return_rank=True)[1]
+    assert np.all(np.diff(rank) >= 0) and rank.max() >= 1  # dominated members kept too
+    paper = minimize(problem, MOEOSMA(pop_size=10), ("n_gen", 6), seed=1)
+    assert not np.array_equal(paper.F, res.F)
+    with pytest.raises(UnknownNameError, match="diversity"):
+        MOEOSMA(diversity="crowding")

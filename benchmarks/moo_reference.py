@@ -1,0 +1,396 @@
+"""Line-by-line numpy ports of the authors' MATLAB codes, to run beside moik's implementations.
+
+Used by ``benchmarks/moo_quality.py`` (section "reference codes side by side") to tell a
+bug from a method's weakness: where moik's algorithm and the port of its reference
+code give the same picture on the same problem and budget, the weakness is the
+method's. Each port keeps the code's control flow, its order of operations and its
+quirks (noted inline); only the random streams differ (numpy instead of MATLAB), and
+evaluations are vectorized where the code evaluates one agent at a time without the
+others seeing the result. Ports (files as published):
+
+- ``moeosma_reference``: Shihong-Yin/MOEOSMA, ``MOEOSMA_for_CEC2020/MOEOSMA.m``,
+  ``UpdateArchive.m``, ``RankingProcess.m``, ``HandleFullArchive.m``,
+  ``RouletteWheelSelection.m`` (``mode="paper"`` swaps in the paper's Eq. 16 mutation
+  and a1 = a2 = 2 for the code's random a1, a2 and ``X + SF (X_R1 - X_R2)``);
+- ``mogwo_reference``: Mirjalili's MOGWO 1.0 (``MOGWO.m``, ``SelectLeader.m``,
+  ``DeleteFromRep.m``, ``CreateHypercubes.m``, ``GetGridIndex.m``);
+- ``malo_reference``: Mirjalili's MOALO 1.0 (``MALO.m``, ``Random_walk_around_antlion.m``);
+- ``mssa_reference``: Mirjalili's MSSA 1.0 (``MSSA.m``);
+- ``moda_reference``: Mirjalili's MODA 1.0 (``MODA.m``, ``Levy.m``);
+  the last three with Mirjalili's shared archive files (``UpdateArchive.m``,
+  ``RankingProcess.m``, ``HandleFullArchive.m``, ``RouletteWheelSelection.m``).
+
+The Mirjalili codes were read in the copies of github.com/mxd888/MOAOA_For_MOVRPD
+(``MO_For_CEC2020/``), which carry Mirjalili's version-1.0 headers.
+
+Every function takes a pymoo problem, the population size, the number of iterations
+and a numpy Generator and returns ``(archive_X, archive_F, n_eval)``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+EPS = np.finfo(float).eps
+
+
+def _evaluate(problem, X):
+    return problem.evaluate(X, return_values_of=["F"])
+
+
+def _dominates(a, b):
+    return bool(np.all(a <= b) and np.any(a < b))
+
+
+def _nondominated(F):
+    m = len(F)
+    return np.array([not any(_dominates(F[j], F[i]) for j in range(m) if j != i)
+                     for i in range(m)], dtype=bool)
+
+
+def _roulette(weights, rng) -> int:
+    """RouletteWheelSelection.m (Mirjalili): first index with cumsum > r sum, else -1."""
+    acc = np.cumsum(weights)
+    hit = np.flatnonzero(acc > rng.random() * acc[-1])
+    return int(hit[0]) if hit.size else -1
+
+
+# ---- Mirjalili's archive (MSSA, MOALO, MODA) ------------------------------------------
+def mirjalili_update_archive(AX, AF, X, F):
+    """UpdateArchive.m: the non-dominated rows; rows with an equal twin are dropped, both."""
+    TX, TF = np.vstack([AX, X]), np.vstack([AF, F])
+    keep = _nondominated_fast(TF)
+    _, inverse, counts = np.unique(TF, axis=0, return_inverse=True, return_counts=True)
+    keep &= counts[inverse.reshape(-1)] == 1
+    return TX[keep], TF[keep]
+
+
+def _nondominated_fast(F):
+    leq = np.all(F[:, None, :] <= F[None, :, :], axis=2)  # leq[j, i]: F_j <= F_i
+    lt = np.any(F[:, None, :] < F[None, :, :], axis=2)
+    return ~np.any(leq & lt, axis=0)
+
+
+def mirjalili_ranks(AF, divisor=20.0):
+    """RankingProcess.m: members within (max - min) / divisor in every objective (strict)."""
+    if len(AF) == 1:
+        return np.zeros(1)  # min = max: a zero radius counts nobody
+    r = (AF.max(axis=0) - AF.min(axis=0)) / divisor
+    return np.all(np.abs(AF[None, :, :] - AF[:, None, :]) < r, axis=2).sum(axis=1).astype(float)
+
+
+def mirjalili_handle_full(AX, AF, ranks, capacity, rng):
+    """HandleFullArchive.m: remove by roulette on the ranks, without recounting."""
+    for _ in range(len(AF) - capacity):
+        i = max(_roulette(ranks, rng), 0)
+        AX, AF, ranks = np.delete(AX, i, 0), np.delete(AF, i, 0), np.delete(ranks, i)
+    return AX, AF
+
+
+def _mirjalili_archive_step(AX, AF, X, F, capacity, rng):
+    AX, AF = mirjalili_update_archive(AX, AF, X, F)
+    if len(AF) > capacity:
+        AX, AF = mirjalili_handle_full(AX, AF, mirjalili_ranks(AF), capacity, rng)
+    return AX, AF, mirjalili_ranks(AF)
+
+
+def _leader(AX, ranks, rng, inverse=True):
+    """``RouletteWheelSelection(1 ./ ranks)`` (or on the ranks), -1 read as the first member:
+    a zero rank gives an infinite weight, an infinite sum and so the first member, as in
+    MATLAB."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return AX[max(_roulette(1.0 / ranks if inverse else ranks, rng), 0)]
+
+
+# ---- MSSA.m ------------------------------------------------------------------------------
+def mssa_reference(problem, N, max_iter, rng, capacity=100):
+    lb, ub = problem.xl.astype(float), problem.xu.astype(float)
+    dim = problem.n_var
+    AX, AF = np.zeros((0, dim)), np.zeros((0, problem.n_obj))
+    X = lb + rng.random((N, dim)) * (ub - lb)
+    n_eval = 0
+    for it in range(1, max_iter + 1):
+        c1 = 2 * math.exp(-((4 * it / max_iter) ** 2))  # Eq. 3.2
+        F = _evaluate(problem, X)
+        n_eval += N
+        AX, AF, ranks = _mirjalili_archive_step(AX, AF, X, F, capacity, rng)
+        food = _leader(AX, ranks, rng)
+        for i in range(N):
+            if i + 1 <= N / 2:
+                c2, c3 = rng.random(dim), rng.random(dim)
+                step = c1 * ((ub - lb) * c2 + lb)
+                X[i] = np.where(c3 < 0.5, food + step, food - step)  # Eq. 3.1
+            else:
+                X[i] = (X[i - 1] + X[i]) / 2  # Eq. 3.4, with the moved predecessor
+            X[i] = np.clip(X[i], lb, ub)
+    return AX, AF, n_eval
+
+
+# ---- MALO.m ------------------------------------------------------------------------------
+def _walk_around(antlion, it, max_iter, lb, ub, rng):
+    """Random_walk_around_antlion.m, the row ``it`` (1-based) of the walks."""
+    ratio = 1.0
+    for frac, w in ((0.1, 2), (0.5, 3), (0.75, 4), (0.9, 5), (0.95, 6)):
+        if it > max_iter * frac:
+            ratio = 1 + 10**w * (it / max_iter)
+    lo, hi = lb / ratio, ub / ratio  # Eqs. 2.10-2.11
+    lo = lo + antlion if rng.random() < 0.5 else -lo + antlion  # Eq. 2.8
+    hi = hi + antlion if rng.random() >= 0.5 else -hi + antlion  # Eq. 2.9
+    steps = 2 * (rng.random((len(lb), max_iter)) > 0.5) - 1
+    walk = np.concatenate([np.zeros((len(lb), 1)), np.cumsum(steps, axis=1)], axis=1)
+    a, b = walk.min(axis=1), walk.max(axis=1)
+    return (walk[:, it - 1] - a) * (hi - lo) / (b - a) + lo  # Eq. 2.7
+
+
+def malo_reference(problem, N, max_iter, rng, capacity=100):
+    lb, ub = problem.xl.astype(float), problem.xu.astype(float)
+    dim = problem.n_var
+    AX, AF = np.zeros((0, dim)), np.zeros((0, problem.n_obj))
+    X = lb + rng.random((N, dim)) * (ub - lb)
+    n_eval = 0
+    for it in range(1, max_iter + 1):
+        F = _evaluate(problem, X)
+        n_eval += N
+        AX, AF, ranks = _mirjalili_archive_step(AX, AF, X, F, capacity, rng)
+        elite = _leader(AX, ranks, rng)
+        antlion = AX[0]  # MALO.m: the first archive member, for every ant
+        for i in range(N):
+            RA = _walk_around(antlion, it, max_iter, lb, ub, rng)
+            RE = _walk_around(elite, it, max_iter, lb, ub, rng)
+            X[i] = np.clip((RE + RA) / 2, lb, ub)  # Eq. 2.13
+    return AX, AF, n_eval
+
+
+# ---- MODA.m ------------------------------------------------------------------------------
+def _levy(d, rng, beta=1.5):
+    sigma = (math.gamma(1 + beta) * math.sin(math.pi * beta / 2)
+             / (math.gamma((1 + beta) / 2) * beta * 2 ** ((beta - 1) / 2))) ** (1 / beta)
+    return 0.01 * rng.standard_normal(d) * sigma / np.abs(rng.standard_normal(d)) ** (1 / beta)
+
+
+def moda_reference(problem, N, max_iter, rng, capacity=100):
+    lb, ub = problem.xl.astype(float), problem.xu.astype(float)
+    dim = problem.n_var
+    AX, AF = np.zeros((0, dim)), np.zeros((0, problem.n_obj))
+    v_max = (ub[0] - lb[0]) / 10
+    X = lb + rng.random((N, dim)) * (ub - lb)
+    dX = lb + rng.random((N, dim)) * (ub - lb)
+    n_eval = 0
+    for it in range(1, max_iter + 1):
+        r = (ub - lb) / 4 + (ub - lb) * (it / max_iter) * 2
+        w = 0.9 - it * ((0.9 - 0.2) / max_iter)
+        my_c = max(0.1 - it * ((0.1 - 0) / (max_iter / 2)), 0.0)
+        k = my_c if it < 3 * max_iter / 4 else my_c / it
+        f = 2 * rng.random()
+        F = _evaluate(problem, X)
+        n_eval += N
+        AX, AF, ranks = _mirjalili_archive_step(AX, AF, X, F, capacity, rng)
+        food = _leader(AX, ranks, rng)
+        enemy = _leader(AX, ranks, rng, inverse=False)
+        for i in range(N):  # in place: later dragonflies see the moved ones
+            dist = np.abs(X - X[i])
+            nb = np.flatnonzero(np.all(dist <= r, axis=1) & np.all(dist != 0, axis=1))
+            many = nb.size > 1
+            S = -(X[nb] - X[i]).sum(axis=0) if many else np.zeros(dim)
+            A = dX[nb].mean(axis=0) if many else dX[i].copy()
+            C = (X[nb].mean(axis=0) if many else X[i]) - X[i]
+            to_food = np.abs(X[i] - food)
+            Fo = food - X[i] if np.all(to_food <= r) else np.zeros(dim)
+            E = enemy + X[i] if np.all(np.abs(X[i] - enemy) <= r) else np.zeros(dim)
+            out_hi, out_lo = X[i] > ub, X[i] < lb
+            X[i] = np.where(out_hi, lb, np.where(out_lo, ub, X[i]))
+            redraw = out_hi | out_lo
+            dX[i, redraw] = rng.random(int(redraw.sum()))
+            if np.any(to_food > r):
+                if many:
+                    for j in range(dim):
+                        dX[i, j] = np.clip(w * dX[i, j] + rng.random() * A[j] + rng.random() * C[j]
+                                           + rng.random() * S[j], -v_max, v_max)
+                        X[i, j] += dX[i, j]
+                else:
+                    X[i] = X[i] + _levy(dim, rng) * X[i]
+                    dX[i] = 0.0
+            else:
+                dX[i] = np.clip(k * S + k * A + k * C + f * Fo + k * E + w * dX[i], -v_max, v_max)
+                X[i] = X[i] + dX[i]
+            X[i] = np.clip(X[i], lb, ub)
+    return AX, AF, n_eval
+
+
+# ---- MOGWO.m -----------------------------------------------------------------------------
+def _hypercubes(AF, n_grid, alpha):
+    """CreateHypercubes.m: per objective n_grid - 1 edges over the inflated range, +-inf ends."""
+    lo, hi = AF.min(axis=0), AF.max(axis=0)
+    d = alpha * (hi - lo)
+    return [np.linspace(lo[k] - d[k], hi[k] + d[k], n_grid - 1) for k in range(AF.shape[1])]
+
+
+def _grid_index(AF, grid):
+    """GetGridIndex.m: the first upper edge above each value; one scalar cell id per row."""
+    subs = [np.searchsorted(edges, AF[:, k], side="right") for k, edges in enumerate(grid)]
+    return np.ravel_multi_index(subs, [len(e) + 1 for e in grid])
+
+
+def _select_by_cell(cells, rng, power):
+    """SelectLeader.m / DeleteFromRep.m: a cell by roulette on count^power, a uniform member."""
+    ids, counts = np.unique(cells, return_counts=True)
+    p = counts.astype(float) ** power
+    c = np.cumsum(p / p.sum())
+    cell = ids[min(int(np.searchsorted(c, rng.random(), side="left")), len(ids) - 1)]
+    members = np.flatnonzero(cells == cell)
+    return members[rng.integers(members.size)]
+
+
+def mogwo_reference(problem, N, max_iter, rng, capacity=100, n_grid=10, alpha=0.1, beta=4.0,
+                    gamma=2.0):
+    lb, ub = problem.xl.astype(float), problem.xu.astype(float)
+    dim = problem.n_var
+    X = lb + rng.random((N, dim)) * (ub - lb)
+    F = _evaluate(problem, X)
+    n_eval = N
+    keep = _nondominated_fast(F)
+    AX, AF = X[keep], F[keep]
+    grid = _hypercubes(AF, n_grid, alpha)
+    cells = _grid_index(AF, grid)
+    for it in range(1, max_iter + 1):
+        a = 2 - it * (2 / max_iter)
+        for i in range(N):
+            d = _select_by_cell(cells, rng, -beta)
+            leaders = [d, _select_by_cell(cells, rng, -beta), _select_by_cell(cells, rng, -beta)]
+            # rep2 / rep3: the members at another position than delta / beta (MATLAB
+            # stops with an error when none is left: the earlier draw is kept here)
+            rep2 = np.flatnonzero(np.any(AX[d] != AX, axis=1))
+            if len(AX) > 1 and rep2.size:
+                leaders[1] = rep2[_select_by_cell(cells[rep2], rng, -beta)]
+                rep3 = rep2[np.any(AX[rep2] != AX[leaders[1]], axis=1)]
+                if len(AX) > 2 and rep3.size:
+                    leaders[2] = rep3[_select_by_cell(cells[rep3], rng, -beta)]
+            moves = []
+            for k, j in enumerate(leaders):  # Eqs. 3.1-3.10; A is a vector only for delta
+                c = 2 * rng.random(dim)
+                D = np.abs(c * AX[j] - X[i])
+                A = 2 * a * (rng.random(dim) if k == 0 else rng.random()) - a
+                moves.append(AX[j] - A * np.abs(D))
+            X[i] = np.clip(sum(moves) / 3, lb, ub)  # Eq. 3.11
+        F = _evaluate(problem, X)
+        n_eval += N
+        nd = _nondominated_fast(F)
+        TX, TF = np.vstack([AX, X[nd]]), np.vstack([AF, F[nd]])
+        keep = _nondominated_fast(TF)  # duplicates stay (they do not dominate each other)
+        AX, AF = TX[keep], TF[keep]
+        cells = _grid_index(AF, grid)  # the grid of the last truncation
+        if len(AX) > capacity:
+            for _ in range(len(AX) - capacity):
+                j = _select_by_cell(cells, rng, gamma)
+                AX, AF, cells = np.delete(AX, j, 0), np.delete(AF, j, 0), np.delete(cells, j)
+            grid = _hypercubes(AF, n_grid, alpha)  # the indices stay those of the old grid
+    return AX, AF, n_eval
+
+
+# ---- MOEOSMA.m ---------------------------------------------------------------------------
+def _eosma_ranks(AF, capacity):
+    """RankingProcess.m of MOEOSMA: radius (max - min) / capacity."""
+    unit = (AF.max(axis=0) - AF.min(axis=0)) / capacity
+    return np.all(np.abs(AF[:, None, :] - AF[None, :, :]) < unit, axis=2).sum(axis=0).astype(float)
+
+
+def _eosma_update_archive(AX, AF, X, F):
+    """UpdateArchive.m: strict all-objective dominance, then one of each equal row kept."""
+    TX, TF = np.vstack([AX, X]), np.vstack([AF, F])
+    strict = np.all(TF[None, :, :] < TF[:, None, :], axis=2)  # strict[i, j]: j < i everywhere
+    keep = ~strict.any(axis=1)
+    UX, UF = TX[keep], TF[keep]
+    _, first = np.unique(UF, axis=0, return_index=True)
+    first = np.sort(first)
+    return UX[first], UF[first]
+
+
+def moeosma_reference(problem, N, max_iter, rng, capacity=None, z=0.6, GP=0.5, mode="code"):
+    cap = capacity or N
+    lb, ub = problem.xl.astype(float), problem.xu.astype(float)
+    dim, M = problem.n_var, problem.n_obj
+    AX, AF = np.zeros((0, dim)), np.zeros((0, M))
+    X = lb + rng.random((N, dim)) * (ub - lb)
+    fit = _evaluate(problem, X)
+    n_eval = N
+    fit_old, X_old = fit.copy(), X.copy()
+    weight = np.ones((N, dim))
+
+    def bound(X, X_old):
+        hi, lo = ub < X, lb > X
+        return np.where(hi, (X_old + ub) / 2, np.where(lo, (X_old + lb) / 2, X))
+
+    def memory(X, fit, X_old, fit_old):  # MATLAB ``if fit_old(k,:) < Fitness(k,:)``: all
+        old = np.all(fit_old < fit, axis=1)[:, None]
+        X, fit = np.where(old, X_old, X), np.where(old, fit_old, fit)
+        return X, fit, X.copy(), fit.copy()
+
+    def archive(AX, AF, X, fit):
+        AX, AF = _eosma_update_archive(AX, AF, X, fit)
+        if len(AF) > cap:
+            ranks = _eosma_ranks(AF, cap)
+            for _ in range(len(AF) - cap):
+                i = max(_roulette(ranks, rng), 0)
+                AX, AF, ranks = np.delete(AX, i, 0), np.delete(AF, i, 0), np.delete(ranks, i)
+        return AX, AF
+
+    for it in range(1, max_iter + 1):
+        X = bound(X, X_old)
+        fit = _evaluate(problem, X)
+        n_eval += N
+        AX, AF = archive(AX, AF, X, fit)
+        ranks = _eosma_ranks(AF, cap)
+        pool = AX[ranks == ranks.min()]
+        X, fit, X_old, fit_old = memory(X, fit, X_old, fit_old)
+        order = np.argsort(fit[:, it % M], kind="stable")
+        so = fit[order, it % M]
+        best, worst = so[0], so[-1]
+        S = best - worst - EPS  # the code adds eps, which divides by 0 once f spans < eps
+        for k in range(N):
+            lg = np.log10((best - so[k]) / S + 1)
+            weight[order[k]] = 1 + (1 if k + 1 <= N / 2 else -1) * rng.random(dim) * lg
+        s = it / max_iter
+        a1 = (1 + (1 - s) ** (2 * s)) * rng.random()
+        a2 = (2 - (1 - s) ** (2 * s)) * rng.random()
+        if mode == "paper":
+            a1, a2 = 2.0, 2.0
+        t1 = (1 - s) ** (a2 * s)
+        lam, r1, r2 = rng.random((N, dim)), rng.random(N), rng.random(N)
+        rn = rng.integers(len(pool), size=N)
+        a = math.atanh(1 - s) if s < 1 else 0.0
+        vb, r = rng.uniform(-a, a, (N, dim)), rng.random((N, dim))
+        R = rng.integers(N, size=(N, 2))
+        for i in range(N):  # in place, as the code: later agents see the moved ones
+            g = pool[rn[i]]
+            if rng.random() < z:
+                Fv = a1 * np.sign(r[i] - 0.5) * (np.exp(-lam[i] * t1) - 1)
+                G = 0.5 * r1[i] * (r2[i] >= GP) * (g - lam[i] * X[i]) * Fv
+                X[i] = g + (X[i] - g) * Fv + G / lam[i] * (1 - Fv)
+            else:
+                X[i] = g + vb[i] * (weight[i] * X[R[i, 0]] - X[R[i, 1]])
+        X = bound(X, X_old)
+        fit = _evaluate(problem, X)
+        n_eval += N
+        AX, AF = archive(AX, AF, X, fit)
+        X, fit, X_old, fit_old = memory(X, fit, X_old, fit_old)
+        if mode == "paper":  # Eq. 16
+            SF = rng.uniform(0.3, 0.6, (N, 1))
+            R = rng.integers(N, size=(N, 3))
+            X = X[R[:, 0]] + SF * (X[R[:, 1]] - X[R[:, 2]])
+        else:  # MOEOSMA.m
+            SF = 0.2 + rng.random() * 0.8
+            R = rng.integers(N, size=(N, 2))
+            X = X + SF * (X[R[:, 0]] - X[R[:, 1]])
+    return AX, AF, n_eval
+
+
+REFERENCES = {
+    "moeosma": moeosma_reference,
+    "mogwo": mogwo_reference,
+    "moalo": malo_reference,
+    "mssa": mssa_reference,
+    "moda": moda_reference,
+}
+"""moik registry name -> port of its reference code."""

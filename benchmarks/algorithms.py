@@ -279,7 +279,8 @@ def section_d(epochs: int) -> None:
     try:
         import mealpy  # noqa: F401
     except ImportError:
-        print("    skipped: mealpy is not installed; pip install mealpy==3.0.3 (extra 'bench-mealpy')")
+        print("    skipped: mealpy is not installed; pip install mealpy==3.0.3 "
+              "(extra 'bench-mealpy')")
         return
     robot = get_robot("eosma7")
     problems = [("sphere 7-D", Sphere()),

@@ -22,7 +22,7 @@ Sections:
 - ``reference``: moik's implementation and the port of its reference code side by
   side, same problem and budget, 5 seeds (bug or method?).
 - ``small``: the Mirjalili family at its codes' setting (5 variables, 100 iterations,
-  N = 100; MSSA.m's N = 200), ZDT1-3.
+  N = 100; MSSA.m's N = 200), ZDT1-3, with MO-CSA beside them (scale or bug?).
 - ``moeosma``: MOEOSMA as in the paper and with ``diversity="nsga2-gaussian"`` on the
   EOSMA paper's Table 8 poses P1/P2 (N = 100, T = 1000, 5 seeds).
 - ``constrained``: BNH, TNK, OSY, SRN, 25,000 evaluations, 5 seeds: the share of
@@ -58,8 +58,9 @@ CONSTRAINED = ("bnh", "tnk", "osy", "srn")
 OPTION = "moeosma-nsga2-gaussian"
 REFERENCE_CASES = [("moeosma", "zdt2"), ("moeosma", "zdt6"), ("mogwo", "dtlz2"),
                    ("mogwo", "zdt2"), ("moalo", "dtlz2"), ("mssa", "dtlz2"), ("mssa", "zdt1"),
-                   ("moda", "zdt1")]
-SMALL = {"mssa": 200, "moalo": 100, "moda": 100, "momvo": 100, "mogwo": 100, "nsga2": 100}
+                   ("moda", "zdt1"), ("moda", "dtlz2")]
+SMALL = {"mssa": 200, "moalo": 100, "moda": 100, "momvo": 100, "mogwo": 100, "mo-csa": 100,
+         "nsga2": 100}
 TABLE8_POSES = {"P1": (-0.25, 1.00, 0.50), "P2": (0.50, -0.25, 0.75)}
 
 

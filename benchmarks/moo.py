@@ -82,7 +82,7 @@ def run(make, problem, budget: int, seed: int) -> tuple[float, np.ndarray, int]:
 
 def table8(seeds: list[int], budget: int) -> None:
     """(a) and (b): times, ratios and hypervolumes on P1 and P2."""
-    print(f"Table 8 setting: eosma7, N={N}, archive {N}, {budget} evaluations per run, "
+    print(f"Table 8 setting: eosma7-m, N={N}, archive {N}, {budget} evaluations per run, "
           f"seeds {seeds}")
     for pose in POSES:
         problem, ref = pose_problem(pose), EOSMA_TABLE8_REF_POINTS[pose]

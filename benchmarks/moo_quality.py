@@ -21,8 +21,10 @@ Sections:
   test of the IGD against NSGA-II's (paired seeds), Friedman mean ranks; the goals.
 - ``reference``: moik's implementation and the port of its reference code side by
   side, same problem and budget, 5 seeds (bug or method?).
+- ``variants``: options beside the defaults (MOALO's ``antlion="first"``, MALO.m's rule),
+  25,000 evaluations, 5 seeds.
 - ``small``: the Mirjalili family at its codes' setting (5 variables, 100 iterations,
-  N = 100; MSSA.m's N = 200), ZDT1-3.
+  N = 100; MSSA.m's N = 200), ZDT1-3, with MO-CSA beside them (scale or bug?).
 - ``moeosma``: MOEOSMA as in the paper and with ``diversity="nsga2-gaussian"`` on the
   EOSMA paper's Table 8 poses P1/P2 (N = 100, T = 1000, 5 seeds).
 - ``constrained``: BNH, TNK, OSY, SRN, 25,000 evaluations, 5 seeds: the share of
@@ -58,8 +60,9 @@ CONSTRAINED = ("bnh", "tnk", "osy", "srn")
 OPTION = "moeosma-nsga2-gaussian"
 REFERENCE_CASES = [("moeosma", "zdt2"), ("moeosma", "zdt6"), ("mogwo", "dtlz2"),
                    ("mogwo", "zdt2"), ("moalo", "dtlz2"), ("mssa", "dtlz2"), ("mssa", "zdt1"),
-                   ("moda", "zdt1")]
-SMALL = {"mssa": 200, "moalo": 100, "moda": 100, "momvo": 100, "mogwo": 100, "nsga2": 100}
+                   ("moda", "zdt1"), ("moda", "dtlz2")]
+SMALL = {"mssa": 200, "moalo": 100, "moda": 100, "momvo": 100, "mogwo": 100, "mo-csa": 100,
+         "nsga2": 100}
 TABLE8_POSES = {"P1": (-0.25, 1.00, 0.50), "P2": (0.50, -0.25, 0.75)}
 
 
@@ -76,9 +79,16 @@ def problem_and_front(name: str, n_var: int | None = None):
     return problem, front
 
 
+VARIANTS = {"moalo-first": ("moalo", {"antlion": "first"})}
+"""Label -> (registry name, options) of the ``variants`` section."""
+
+
 def build(name: str, pop_size: int = 100):
     if name == OPTION:
         return MOEOSMA(pop_size=pop_size, diversity="nsga2-gaussian")
+    if name in VARIANTS:
+        base, options = VARIANTS[name]
+        return get_algorithm(base, pop_size=pop_size, **options)
     return get_algorithm(name, pop_size=pop_size)
 
 
@@ -142,6 +152,10 @@ def tasks(section: str, seeds: int, quick: bool) -> list[tuple]:
         budget = 2500 if quick else 25_000
         return [(section, a, p, budget, s, {}) for name, p in REFERENCE_CASES
                 for a in (name, f"port:{name}") for s in range(2 if quick else 5)]
+    if section == "variants":
+        return [(section, a, p, 2500 if quick else 25_000, s, {})
+                for label, (base, _) in VARIANTS.items() for a in (label, base)
+                for p in ("zdt1", "dtlz2") for s in range(2 if quick else 5)]
     if section == "small":
         return [(section, a, p, 100 * n, s, {"n_var": 5, "pop_size": n})
                 for p in ("zdt1", "zdt2", "zdt3") for a, n in SMALL.items()

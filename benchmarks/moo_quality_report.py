@@ -21,6 +21,7 @@ BEGIN, END = "<!-- moo-quality:begin -->", "<!-- moo-quality:end -->"
 SECTIONS_DOC = {
     "suite": "every algorithm on every problem",
     "reference": "moik's implementation beside the port of its reference code",
+    "variants": "options beside the defaults",
     "small": "the Mirjalili family at its codes' setting",
     "moeosma": "MOEOSMA and its option on the EOSMA paper's Table 8 poses",
     "constrained": "pymoo's constrained problems",
@@ -106,6 +107,15 @@ def reference_table(res: dict, suite: dict) -> list[str]:
     return lines
 
 
+def variants_table(res: dict) -> list[str]:
+    igd, hv = _by(res, "igd"), _by(res, "hv")
+    lines = ["| algorithm | problem | IGD mean | HV mean |", "|---|---|---|---|"]
+    for alg, prob in sorted(igd):
+        lines.append(f"| {alg} | {prob.upper()} | {_fmt(np.mean(igd[alg, prob]))} | "
+                     f"{_fmt(np.mean(hv[alg, prob]))} |")
+    return lines
+
+
 def small_table(res: dict) -> list[str]:
     igd, hv = _by(res, "igd"), _by(res, "hv")
     probs = ("zdt1", "zdt2", "zdt3")
@@ -161,6 +171,23 @@ def constrained_table(res: dict) -> tuple[list[str], dict]:
     return lines, ok
 
 
+def summary_table(res: dict, summary: dict, budget: int = 25_000) -> list[str]:
+    """Compact table for docs/algorithms.md: HV share of NSGA-II and IGD per problem."""
+    igd = _by(res, "igd", budget)
+    problems = sorted({p for _, p in igd}, key=lambda p: (p.rstrip("0123456789"), int(p[-1])))
+    lines = ["| algorithm | mean rank | " + " | ".join(p.upper() for p in problems) + " |",
+             "|---|---|" + "---|" * len(problems)]
+    for alg in sorted(summary["ranks"], key=summary["ranks"].get):
+        cells = []
+        for p in problems:
+            share = summary["hv_share"].get((alg, p), float("nan"))
+            mark = "" if alg == "random" or summary["beats_random"].get((alg, p), True) else " (<)"
+            hv_txt = f"{share:.0%}" if np.isfinite(share) else "-"
+            cells.append(f"{hv_txt} / {np.mean(igd[alg, p]):.3g}{mark}")
+        lines.append(f"| {alg} | {summary['ranks'][alg]:.1f} | " + " | ".join(cells) + " |")
+    return lines
+
+
 def goals(summaries: dict, constrained: dict | None) -> list[str]:
     lines = []
     moik = _moik_names()
@@ -202,6 +229,9 @@ def write_reports(results: dict, quick: bool, *, write: bool) -> None:
         out += ["\n## Reference codes side by side (25,000 evaluations, 5 seeds; a seed "
                 "'collapsed' below a quarter of the best HV)\n"]
         out += reference_table(results["reference"], results.get("suite"))
+    if "variants" in results:
+        out += ["\n## Options beside the defaults (25,000 evaluations, 5 seeds)\n"]
+        out += variants_table(results["variants"])
     if "small" in results:
         out += ["\n## The Mirjalili codes' setting: ZDT1-3 with 5 variables, 100 iterations "
                 "(N x 100 evaluations), 5 seeds\n"] + small_table(results["small"])
@@ -221,7 +251,15 @@ def write_reports(results: dict, quick: bool, *, write: bool) -> None:
         if BEGIN in doc and END in doc:
             head, rest = doc.split(BEGIN, 1)
             _, tail = rest.split(END, 1)
-            block = "\n".join(["", *goals(summaries, constrained), "",
-                               "Full tables: [results/moo-quality.md](results/moo-quality.md).",
-                               ""])
+            table = (summary_table(results["suite"], summaries[25_000])
+                     if 25_000 in summaries else [])
+            block = "\n".join([
+                "", "Measured by `benchmarks/moo_quality.py` (25,000 evaluations, population "
+                "100, 10 seeds; each cell: HV as a share of NSGA-II's / mean IGD, \"(<)\" where "
+                "the IGD is worse than uniform random sampling of the same budget; mean rank: "
+                "Friedman ranks of the IGD averaged over the problems):", "", *table, "",
+                "Goals:", "", *goals(summaries, constrained), "",
+                "Every table (10,000 evaluations, Wilcoxon tests against NSGA-II, the reference "
+                "codes side by side, the codes' own setting, Table 8, constrained problems): "
+                "[results/moo-quality.md](results/moo-quality.md).", ""])
             (DOCS / "algorithms.md").write_text(head + BEGIN + block + END + tail)

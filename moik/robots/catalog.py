@@ -177,9 +177,9 @@ def puma560_kalra() -> Robot:
     Table 9's geometric joint angles reach its 5 targets with this arm (wrist
     centre, joints 4-6 at 0) to under 1 mm, not with the Table 6 arm (other
     lengths and twist signs): a2 = 0.4318, a3 = -0.0203, d3 = 0.1491,
-    d4 = 0.4331 m, alpha1 = -pi/2, alpha3 = +pi/2 (fitted, see
-    ../shared/notes/reference-facts.md). alpha4, alpha5 (-pi/2, +pi/2) do not
-    move the wrist centre; limits [-pi, pi] as in the paper's simulations.
+    d4 = 0.4331 m, alpha1 = -pi/2, alpha3 = +pi/2 (fitted to the paper's geometric
+    solutions to under 1 mm, the team's checked reference facts). alpha4, alpha5
+    (-pi/2, +pi/2) do not move the wrist centre; limits [-pi, pi] as in the paper's simulations.
     """
     return _ibes(
         "puma560-kalra",

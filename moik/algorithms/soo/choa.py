@@ -3,8 +3,8 @@
 ChOA: Khishe & Mosavi, "Chimp optimization algorithm", Expert Systems with
 Applications 149, 113338 (2020), DOI 10.1016/j.eswa.2020.113338. MChOA: Hou,
 Luo, Wu, Sun & Zhang, "Solution of Inverse Kinematics for Industry Robot Based
-on Multi-Strategy Improved Chimpanzee Optimization Algorithm" (the MChOA paper
-in ``../shared/papers/``). Equation numbers are the MChOA paper's:
+on Multi-Strategy Improved Chimpanzee Optimization Algorithm" (the MChOA
+paper). Equation numbers are the MChOA paper's:
 
 - Eqs. 7-11: the four best chimps so far lead (Attacker, Barrier, Chaser,
   Driver); for leader k, ``x_k = x_leader_k - a_k |c_k x_leader_k - m_k x|`` with

@@ -1,6 +1,6 @@
 """CEC2017 single-objective test functions (I-BES paper, Section 5.2).
 
-Source: I-BES paper (``../shared/papers/ibes-manipulators-2024.txt``, Section
+Source: I-BES paper (the team's copy ``ibes-manipulators-2024``, Section
 5.2, Table 12: F3, F8, F9, F14, F15, F18, F19, F27, F30 at D = 30 on
 [-100, 100]^D), and Awad, Ali, Liang, Qu & Suganthan, "Problem Definitions and
 Evaluation Criteria for the CEC 2017 Special Session ..." (2016).

@@ -1,6 +1,6 @@
 """Scalable classical test functions F1-F13 (MChOA paper, Table 2).
 
-Source: the MChOA IK paper (``../shared/papers/mchoa-industrial-robot.txt``,
+Source: the MChOA IK paper (the team's copy ``mchoa-industrial-robot``,
 Table 2, dimensions 30/500/1000), which takes the functions from the ChOA
 MATLAB code (Khishe & Mosavi 2020), itself the set of Yao, Liu & Lin (1999,
 IEEE TEC 3(2)) as coded by Mirjalili for GWO (2014). Every function here is

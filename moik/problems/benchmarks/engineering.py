@@ -1,6 +1,6 @@
 """Constrained engineering design problems of the I-BES paper (Section 5.3).
 
-Source: I-BES paper (``../shared/papers/ibes-manipulators-2024.txt``, Section
+Source: I-BES paper (the team's copy ``ibes-manipulators-2024``, Section
 5.3, Tables 14-17), with the standard formulations of the tension/compression
 spring (Belegundu 1982; Arora 1989) and the pressure vessel (Kannan & Kramer
 1994; Sandgren 1990). Both are pymoo ``Problem``s with ``n_ieq_constr=4``;

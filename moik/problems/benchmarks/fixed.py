@@ -1,6 +1,6 @@
 """Fixed-dimension classical test functions F14-F23 (MChOA paper, Table 2).
 
-Source: the MChOA IK paper (``../shared/papers/mchoa-industrial-robot.txt``,
+Source: the MChOA IK paper (the team's copy ``mchoa-industrial-robot``,
 Table 2), i.e. the fixed-dimension multimodal functions of Yao, Liu & Lin
 (1999, IEEE TEC 3(2)) as coded for GWO/ChOA: Shekel's foxholes (F14), Kowalik
 (F15), six-hump camel back (F16), Branin (F17), Goldstein-Price (F18), Hartman

@@ -1,6 +1,6 @@
 """F24 of the MChOA paper: weighted pose IK of the ABB IRB-2600 (Eq. 6).
 
-Source: MChOA paper (``../shared/papers/mchoa-industrial-robot.txt``),
+Source: MChOA paper (the team's copy ``mchoa-industrial-robot``),
 Section 2.2, Eq. 6 ``f3 = alpha ||dp|| + beta ||dR||`` with the Table 1 arm
 (modified DH, mm; :func:`moik.robots.catalog.irb2600`), and Section 4.2:
 "establishing the fitness function in the manner of Equation (6) and using a

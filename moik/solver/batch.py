@@ -23,7 +23,8 @@ from moik.exceptions import ParameterError, ShapeError, TargetError
 from moik.kinematics.orientation import check_rotation
 from moik.problems.targets import Target
 from moik.robots.catalog import as_robot
-from moik.solver.lm import STALL_RATIO, lm_multistart
+from moik.solver.lm import STALL_RATIO
+from moik.solver.multistart import lm_multistart
 from moik.solver.options import search_options, seed_sequence
 from moik.solver.session import (
     LM_ITERATIONS,

@@ -9,7 +9,7 @@ position error is at least the excess.
 
 The (position error, orientation error) front of an unreachable pose is made of
 weighted-sum scalarisations solved by the compiled Levenberg-Marquardt
-(:func:`moik.solver.lm.front`), from ``weights`` running from 1 (position only:
+(:func:`moik.solver.multistart.front`), from ``weights`` running from 1 (position only:
 the front's end with the smallest position error) to 0 (orientation only); when a
 metaheuristic front exists too (the search fallback), its members seed the
 scalarisations and both are merged. Only mutually non-dominated members are kept.
@@ -25,7 +25,7 @@ from moik.algorithms.archive.base import nondominated_mask
 from moik.problems.ik import BiObjectiveIK
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
-from moik.solver.lm import front as lm_front
+from moik.solver.multistart import front as lm_front
 
 FRONT_WEIGHTS = 21  # scalarisations from position-only (w = 1) to orientation-only (w = 0)
 FRONT_STARTS = 4  # random starts per scalarisation (besides the previous weight's answer)

@@ -24,7 +24,8 @@ from moik.algorithms import get_algorithm
 from moik.algorithms.archive.base import first_unique_mask, nondominated_mask
 from moik.algorithms.registry import accepted_parameters
 from moik.problems.pareto_ik import ParetoIK
-from moik.solver.lm import STALL_RATIO, lm_start, multistart
+from moik.solver.lm import STALL_RATIO, lm_start
+from moik.solver.multistart import multistart
 from moik.solver.session import STOP_FRACTION, nearest_copies
 
 LM_ITERATIONS = 30  # per projection (the first stage of solve_ik uses as many)

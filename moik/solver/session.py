@@ -18,7 +18,7 @@ from moik.kinematics.criteria import nearest_copies_into
 from moik.kinematics.orientation import GEODESIC, rotation_error
 from moik.problems.targets import Target
 from moik.robots.chain import Robot, fk_reference
-from moik.solver.lm import multistart
+from moik.solver.multistart import multistart
 from moik.solver.polish import polish as polish_q
 
 LM_ITERATIONS = 30  # Levenberg-Marquardt iterations per start of the first attempt

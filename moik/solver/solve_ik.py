@@ -41,7 +41,7 @@ from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.catalog import as_robot
 from moik.robots.chain import Robot
 from moik.solver.front import FRONT_STARTS, polished_front, reach_excess
-from moik.solver.lm import front as lm_front
+from moik.solver.multistart import front as lm_front
 from moik.solver.options import SearchOptions, seed_sequence, validated_options
 from moik.solver.session import (
     SolveSession,

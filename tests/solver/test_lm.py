@@ -6,7 +6,8 @@ import pytest
 from moik.problems import random_reachable_targets
 from moik.problems.targets import Target
 from moik.robots import get_robot
-from moik.solver.lm import front, multistart, residual
+from moik.solver.lm import residual
+from moik.solver.multistart import front, multistart
 from moik.solver.polish import ResidualModel
 from moik.solver.session import pose_errors
 

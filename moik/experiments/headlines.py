@@ -231,5 +231,8 @@ def headline(res: Results) -> list[str]:
         return ["- no finished trials"]
     lines: list[str] = []
     for name in res.config.get("analyses", ["summary"]):
-        lines += HEADLINES[name](res)
+        part = HEADLINES[name](res)
+        if part and lines and lines[-1]:
+            lines.append("")  # a list and a table stay apart in Markdown
+        lines += part
     return lines

@@ -96,10 +96,15 @@ def read_npz(path: Path) -> dict[str, np.ndarray]:
                            f"({exc.__class__.__name__}: {msg})") from None
 
 
+CODE_PATHS = ("moik", "experiments", "pyproject.toml")
+"""What a run's or a report's commit stands for: changes elsewhere (docs) do not make it dirty."""
+
+
 def git_commit(root: str | Path | None = None) -> str | None:
     """The commit of the git checkout whose top folder is ``root`` (default: the one holding moik).
 
-    ``-dirty`` is appended when tracked files differ from the commit. None when git is
+    ``-dirty`` is appended when tracked files of the code (``moik/``, ``experiments/``,
+    ``pyproject.toml``) differ from the commit; edited docs do not count. None when git is
     absent, ``root`` is not the top of a checkout (an installed wheel inside some other
     repository does not take that repository's commit), or git fails: never raises.
     """
@@ -115,7 +120,7 @@ def git_commit(root: str | Path | None = None) -> str | None:
         if top is None or Path(top).resolve() != root:
             return None
         commit = git("rev-parse", "HEAD")
-        if commit and git("status", "--porcelain", "-uno"):
+        if commit and git("status", "--porcelain", "-uno", "--", *CODE_PATHS):
             commit += "-dirty"
         return commit
     except (OSError, subprocess.SubprocessError):

@@ -71,33 +71,66 @@ def _verdict(p: float, a: float, b: float) -> str:
     return "+" if a < b else "-"
 
 
+def _paper_verdicts(res: Results, name: str, proposed: str, others: list[str]) -> list[str]:
+    """``+``/``-``/``=`` of the paper's rank-sum row, else of its means, per other algorithm."""
+    ranks = res.paper.get("ranksum", {}).get(name)
+    if ranks:
+        return [ranks[lab].get("R", "") if lab in ranks else "" for lab in others]
+    means = res.paper.get("per_target", {}).get(name, {})
+    if "mean" not in means.get(proposed, {}):
+        return []
+    a = means[proposed]["mean"]
+    return [("=" if a == means[lab]["mean"] else "+" if a < means[lab]["mean"] else "-")
+            if "mean" in means.get(lab, {}) else "" for lab in others]
+
+
 def per_target_ranksum_table(res: Results) -> list[Table]:
-    """Rank-sum p-values and +/-/= of the proposed algorithm vs each, per target."""
+    """Rank-sum p-values and +/-/= of the proposed algorithm vs each, per target.
+
+    Beside moik's row: the paper's rank-sum row when the config has one, else
+    the paper's verdict by mean; a note lists where moik's verdict differs.
+    """
     proposed = res.config["proposed"]
     others = [lab for lab in res.labels if lab != proposed]
     if proposed not in res.labels or not others:
         return []
     paper = res.paper.get("ranksum", {})
     big = np.finfo(float).max
-    rows = []
+    rows, compared, differ = [], 0, []
     for ti, target in enumerate(res.meta["targets"]):
+        name = target["name"]
         samples = {lab: np.array([big if r.get("best_f") is None else r["best_f"]
                                   for r in _runs(res, lab, ti)]) for lab in res.labels}
         if any(v.size == 0 for v in samples.values()):
             continue
         pv = ranksum_pvalues(samples, proposed)
         med = {lab: float(np.median(v)) for lab, v in samples.items()}
-        rows.append([target["name"], "moik"] + [
-            f"{fmt(pv[lab], 3)} {_verdict(pv[lab], med[proposed], med[lab])}" for lab in others])
-        p = paper.get(target["name"])
+        ours = [_verdict(pv[lab], med[proposed], med[lab]) for lab in others]
+        rows.append([name, "moik"] + [f"{fmt(pv[lab], 3)} {v}" for lab, v in
+                                      zip(others, ours, strict=True)])
+        theirs = _paper_verdicts(res, name, proposed, others)
+        p = paper.get(name)
         if p:
-            rows.append([target["name"], res.citation] + [
+            rows.append([name, res.citation] + [
                 f"{fmt(p[lab].get('p'), 3)} {p[lab].get('R', '')}" if lab in p else "-"
                 for lab in others])
+        elif theirs:
+            rows.append([name, f"{res.citation} (by mean)"] + [v or "-" for v in theirs])
+        for lab, a, b in zip(others, ours, theirs, strict=False):
+            if b:
+                compared += 1
+                if a != b:
+                    differ.append(f"{name} vs {lab} (moik {a}, paper {b})")
+    notes = ["+: proposed better (lower median, p < 0.05); -: worse; =: no significant "
+             "difference; infeasible runs rank last; paper rows by mean: + where the paper's "
+             "mean of the proposed algorithm is lower"]
+    if compared:
+        notes.append(f"moik's verdict matches the paper's in {compared - len(differ)} of "
+                     f"{compared} comparisons" + (f"; differs: {'; '.join(differ)}"
+                                                   if differ else ""))
     return [Table(f"Wilcoxon rank-sum test of {proposed} vs each algorithm, per target",
                   ["target", "source"] + [f"{proposed} vs {lab}" for lab in others], rows,
-                  ["+: proposed better (lower median, p < 0.05); -: worse; =: no significant "
-                   "difference; infeasible runs rank last"])]
+                  notes)]
 
 
 def wrapped_distance(q1, q2) -> float:

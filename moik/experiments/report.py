@@ -102,8 +102,6 @@ def _section(store: ResultStore, base: Path, *, figures: bool) -> str:
 def _figures(res: Results, folder: Path):
     if not res.ok:
         return [], ["no finished trials: no figures"]
-    if res.config["problem"]["kind"] == "benchmark":
-        return [], ["benchmark experiments have tables only (the figures draw robots/targets)"]
     return make_figures(res, folder)
 
 

@@ -55,8 +55,8 @@ def plot_convergence_panels(
     panels = check_mapping(panels, "panels")
     ncols = min(integer("ncols", ncols, minimum=1), len(panels))
     nrows = -(-len(panels) // ncols)
-    fig, axes = plt.subplots(nrows, ncols, figsize=(3.2 * ncols, 2.7 * nrows + 0.6),
-                             squeeze=False)
+    fig, axes = plt.subplots(nrows, ncols, figsize=(3.2 * ncols, 2.7 * nrows + 0.8),
+                             squeeze=False, layout="constrained")
     for ax, (name, curves) in zip(axes.flat, panels.items(), strict=False):
         plot_convergence(curves, log=log, floor=floor, ax=ax, xlabel=xlabel, ylabel=ylabel,
                          title=name, proposed=proposed)
@@ -66,10 +66,9 @@ def plot_convergence_panels(
     for ax in axes.flat[len(panels):]:
         ax.set_visible(False)
     handles, labels = axes.flat[0].get_legend_handles_labels()
-    legend = fig.legend(handles, [lab.split(" (n=")[0] for lab in labels], loc="upper center",
-                        ncol=len(labels), bbox_to_anchor=(0.5, 1.0), fontsize="medium")
+    legend = fig.legend(handles, [lab.split(" (n=")[0] for lab in labels],
+                        loc="outside lower center", ncol=len(labels), fontsize="medium")
     emphasise_legend(legend, proposed)
-    fig.suptitle(title, y=1.0 + 0.35 / nrows)
-    fig.tight_layout(rect=(0, 0, 1, 1 - 0.25 / nrows))
+    fig.suptitle(title)
     save_figure(fig, save)
     return fig

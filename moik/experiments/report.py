@@ -118,8 +118,6 @@ def _relative(png: Path, base: Path) -> str:
 def _figures(res: Results, folder: Path):
     if not res.ok:
         return [], ["no finished trials: no figures"]
-    if res.config["problem"]["kind"] == "benchmark":
-        return [], ["benchmark experiments have tables only (the figures draw robots/targets)"]
     return make_figures(res, folder)
 
 

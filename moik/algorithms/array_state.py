@@ -212,6 +212,17 @@ class ArrayStateMixin:
         if self.termination.has_terminated():
             self.finalize()
 
+    def _problem_values(self, X: np.ndarray) -> dict:
+        """``problem.evaluate(X, return_as_dictionary=True)``; an unconstrained problem that
+        offers ``batch_objectives(X)`` (moik's IK problems: the same F bit for bit, without
+        pymoo's per-call bookkeeping) is asked that instead, unless it answers None."""
+        direct = None if self._constrained else getattr(self.problem, "batch_objectives", None)
+        if direct is not None:
+            F = direct(X)
+            if F is not None:
+                return {"F": F}
+        return self.problem.evaluate(X, return_as_dictionary=True)
+
     def _end_iteration(self) -> None:
         """Hook run after an iteration's last batch (the MO base merges its archive)."""
 

@@ -188,7 +188,7 @@ class ArrayAlgorithm(ArrayStateMixin, Algorithm):
         k = budget_left(self._max_evals, self.evaluator.n_eval, n)
         F, CV, G, H = np.empty(0), (np.empty(0) if self._constrained else None), None, None
         if k:
-            out = self.problem.evaluate(X if k == n else X[:k], return_as_dictionary=True)
+            out = self._problem_values(X if k == n else X[:k])
             self.evaluator.n_eval += k
             F = out["F"][:, 0]
             if self._constrained:

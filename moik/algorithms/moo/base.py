@@ -253,7 +253,7 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         if k == 0:
             return self._pad(n, np.empty((0, self.problem.n_obj)),
                              np.empty(0) if self._constrained else None)
-        out = self.problem.evaluate(X if k == n else X[:k], return_as_dictionary=True)
+        out = self._problem_values(X if k == n else X[:k])
         self.evaluator.n_eval += k
         F, CV, GH = (out["F"], None, None) if not self._constrained else \
             self._constraint_values(out["F"], out.get("G"), out.get("H"))

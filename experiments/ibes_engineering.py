@@ -40,7 +40,7 @@ EXPERIMENT = {
         {"name": "cpso-at"},
     ],
     "pop_size": 30,
-    "n_gen": 500,
+    "iterations": 500,
     "runs": 30,
     "seed": 53,
     "analyses": ["per-target", "per-target-ranksum"],
@@ -49,5 +49,5 @@ EXPERIMENT = {
         "citation": "I-BES paper, Tables 15 (spring; penalized values) and 17 (vessel cost)",
         "per_target": {"spring": _rows(_TABLE15), "pressure_vessel": _rows(_TABLE17)},
     },
-    "quick": {"pop_size": 8, "n_gen": 10, "runs": 2},
+    "quick": {"pop_size": 8, "iterations": 10, "runs": 2},
 }

@@ -51,7 +51,7 @@ EXPERIMENT = {
                                             for i, p in enumerate(_TARGETS)]},
     "algorithms": [{"name": "ibes"}],
     "pop_size": 150,
-    "n_gen": 500,
+    "iterations": 500,
     "runs": 20,
     "seed": 9,
     "success_threshold": 1e-6,
@@ -61,5 +61,5 @@ EXPERIMENT = {
         "branches": {f"T{i + 1}": [{"geometric": list(g), "paper": list(q)} for g, q in rows]
                      for i, rows in enumerate(_TABLE9)},
     },
-    "quick": {"pop_size": 20, "n_gen": 30, "runs": 2},
+    "quick": {"pop_size": 20, "iterations": 30, "runs": 2},
 }

@@ -46,7 +46,7 @@ EXPERIMENT = {
         {"name": "cpso-at"},
     ],
     "pop_size": 30,
-    "n_gen": 500,
+    "iterations": 500,
     "runs": 30,
     "seed": 53,
     "analyses": ["per-target", "per-target-ranksum"],
@@ -58,5 +58,5 @@ EXPERIMENT = {
                   "nor, per the finding recorded on main, with a penalty rule"],
         "per_target": {"spring": _rows(_TABLE15), "pressure_vessel": _rows(_TABLE17)},
     },
-    "quick": {"pop_size": 8, "n_gen": 10, "runs": 2},
+    "quick": {"pop_size": 8, "iterations": 10, "runs": 2},
 }

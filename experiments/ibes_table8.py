@@ -61,7 +61,7 @@ EXPERIMENT = {
         {"name": "cpso-at"},
     ],
     "pop_size": 150,
-    "n_gen": 500,
+    "iterations": 500,
     "runs": 25,
     "seed": 2024,
     "success_threshold": 1e-6,
@@ -75,5 +75,5 @@ EXPERIMENT = {
                              for lab, v in zip(_LABELS, rows, strict=True)}
                        for arm, rows in _TABLE8.items()},
     },
-    "quick": {"pop_size": 10, "n_gen": 8, "runs": 1},
+    "quick": {"pop_size": 10, "iterations": 8, "runs": 1},
 }

@@ -66,7 +66,7 @@ EXPERIMENT = {
                                             for i, p in enumerate(_TARGETS)]},
     "algorithms": [{"name": "ibes"}],
     "pop_size": 150,
-    "n_gen": 500,
+    "iterations": 500,
     "runs": 20,
     "seed": 9,
     "success_threshold": 1e-6,
@@ -80,5 +80,5 @@ EXPERIMENT = {
                    "targets": {f"T{i + 1}": p for i, p in enumerate(_PRINTED)},
                    "fit_targets": ["T2", "T3", "T4", "T5"]},
     },
-    "quick": {"pop_size": 20, "n_gen": 30, "runs": 2},
+    "quick": {"pop_size": 20, "iterations": 30, "runs": 2},
 }

@@ -104,7 +104,8 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         archive_size: Archive capacity; None means ``pop_size`` (the papers).
         X0: Optional initial points (k rows within the bounds, k at most the
             initial population); the other rows are drawn uniformly.
-        max_iter: Schedule length T, fixed. None: planned before every iteration from
+        max_iter: Schedule length T (update iterations after initialization, the
+            papers' Max_t; ``t = 1 .. T``), fixed. None: planned before every iteration from
             the current termination (see the module doc), else
             :data:`DEFAULT_SCHEDULE_LENGTH`.
         **kwargs: pymoo ``Algorithm`` options (``output``, ``callback``, ``seed`` ...,
@@ -164,7 +165,7 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         if self._fixed_T is None:
             T = planned_iterations(self.termination, t=t, n_eval=n_eval, elapsed=elapsed,
                                    per_iteration=self._evals_per_iteration(), plans=self._plans)
-            self.max_iter = int(T) if math.isfinite(T) else max(DEFAULT_SCHEDULE_LENGTH, t + 1)
+            self.max_iter = int(T) if math.isfinite(T) else max(DEFAULT_SCHEDULE_LENGTH, t)
 
     def _begin_iteration(self) -> None:
         """Before an iteration's first batch: t and the planned schedule."""

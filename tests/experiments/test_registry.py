@@ -9,8 +9,7 @@ from moik.experiments import registry
 from moik.experiments.registry import ENV_VAR, available_experiments, get_experiment
 
 PAPER_EXPERIMENTS = ["eosma-table5", "eosma-table7", "eosma-table8", "eosma-table9",
-                     "mpso-single", "mpso-table2", "mpso-table3", "mpso-circle", "mpso-table5",
-                     "mpso-table3-independent", "mpso-circle-full-range"]
+                     "mpso-single", "mpso-table2", "mpso-table3", "mpso-circle", "mpso-table5"]
 
 
 def test_all_paper_experiments_are_listed_and_valid():

@@ -33,7 +33,7 @@ EXPERIMENT = {
          "params": {"w": 0.8, "c1": 1.493, "c2": 1.493, "guide": "own-best"}},
     ],
     "pop_size": 100,
-    "n_gen": 500,
+    "iterations": 500,
     "runs": 1,
     "seed": 2022,
     "analyses": ["compromise", "paper-consistency"],
@@ -45,5 +45,5 @@ EXPERIMENT = {
             "orientation": {"best": 1.85e-8, "worst": 4.58e-4, "mean": 5.73e-5, "std": 0.002},
         }},
     },
-    "quick": {"targets": {"n_points": 6}, "pop_size": 10, "n_gen": 15},
+    "quick": {"targets": {"n_points": 6}, "pop_size": 10, "iterations": 15},
 }

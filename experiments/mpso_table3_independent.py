@@ -26,7 +26,7 @@ EXPERIMENT = {
          "params": {"w": 0.8, "c1": 1.493, "c2": 1.493, "guide": "own-best"}},
     ],
     "pop_size": 100,
-    "n_gen": 500,
+    "iterations": 500,
     "runs": 1,
     "seed": 2022,
     "analyses": ["compromise", "paper-consistency"],
@@ -38,5 +38,5 @@ EXPERIMENT = {
             "orientation": {"best": 1.65e-10, "worst": 0.643, "mean": 0.091, "std": 0.126},
         }},
     },
-    "quick": {"targets": {"n": 3}, "pop_size": 10, "n_gen": 15},
+    "quick": {"targets": {"n": 3}, "pop_size": 10, "iterations": 15},
 }

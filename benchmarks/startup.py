@@ -1,0 +1,76 @@
+"""Start-up time: a fresh process importing moik and solving one pose, beside numba's floor.
+
+Each sample is a new Python process (kernels already cached on disk: run any solve once
+before). ``floor`` imports numpy and numba and calls one cached kernel, the least any
+numba-based solver pays (numba's first call loads its registries, which import
+scipy.linalg); ``moik`` imports moik and solves a Puma 560 pose. Samples interleave the
+two; medians are printed. Cold start (no kernel cache): ``--cold`` also times one first
+solve with an empty NUMBA_CACHE_DIR (wall and CPU seconds).
+
+Run: python benchmarks/startup.py [--n 15] [--cold]
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+FLOOR = ("import numpy as np, numba\n"
+         "@numba.njit(cache=True)\n"
+         "def f(x):\n"
+         "    return x + 1.0\n"
+         "f(np.zeros(3))\n")  # run from a file: numba caches only functions with a source file
+MOIK = ("import numpy as np, moik\n"
+        "T = np.array([[1, 0, 0, 0.4], [0, 1, 0, 0.2], [0, 0, 1, 0.3], [0, 0, 0, 1.0]])\n"
+        "assert moik.solve_ik(moik.get_robot('puma560'), T).success\n")
+
+
+SCRIPTS = tempfile.mkdtemp(prefix="moik-startup-")
+
+
+def wall(code: str, env: dict | None = None) -> tuple[float, float]:
+    """Wall and child CPU seconds of one fresh process running ``code`` (from a file)."""
+    path = os.path.join(SCRIPTS, f"s{abs(hash(code))}.py")
+    if not os.path.exists(path):
+        with open(path, "w") as f:
+            f.write(code)
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t0 = time.perf_counter()
+    subprocess.run([sys.executable, path], check=True, env=env, stderr=subprocess.DEVNULL)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return time.perf_counter() - t0, cpu
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--n", type=int, default=15, help="samples of each")
+    parser.add_argument("--cold", action="store_true", help="also time a cold first solve")
+    args = parser.parse_args()
+    wall(MOIK)  # make sure the kernels are cached
+    wall(FLOOR)
+    floor, moik = [], []
+    for _ in range(args.n):
+        floor.append(wall(FLOOR)[0])
+        moik.append(wall(MOIK)[0])
+    load = os.getloadavg()[0]
+    print(f"# benchmarks/startup.py --n {args.n}; load average {load:.1f}")
+    print(f"numba floor (numpy + numba + one cached kernel): median {np.median(floor):.3f} s")
+    print(f"moik import + first solve (cached kernels):      median {np.median(moik):.3f} s "
+          f"(goal <= 0.5 s); moik above the floor: {np.median(moik) - np.median(floor):.3f} s")
+    if args.cold:
+        with tempfile.TemporaryDirectory() as cache:
+            seconds, cpu = wall(MOIK, env={**os.environ, "NUMBA_CACHE_DIR": cache})
+        print(f"cold first solve (empty kernel cache): {seconds:.1f} s wall, {cpu:.1f} s CPU "
+              "(goal <= 10 s)")
+
+
+if __name__ == "__main__":
+    main()

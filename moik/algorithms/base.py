@@ -47,6 +47,7 @@ from moik.algorithms.array_state import (
 from moik.algorithms.mechanics import best_index, constraint_violation, is_better
 from moik.exceptions import ParameterError
 
+
 def _avg_f(algorithm) -> float | None:
     F = algorithm.F[np.isfinite(algorithm.F)]
     return float(F.mean()) if F.size else None

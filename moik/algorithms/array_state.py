@@ -23,7 +23,7 @@ from pymoo.core.population import Population
 from pymoo.core.termination import TerminateIfAll, TerminateIfAny
 from pymoo.termination.default import DefaultTermination
 
-from moik._validate import integer, is_integer, keywords
+from moik._validate import integer, is_integer, keywords, seed
 from moik.algorithms.mechanics import clip_to_bounds, uniform_population
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError
 
@@ -207,6 +207,16 @@ class ArrayStateMixin(Algorithm):
     _max_evals: float
     _step: Step | None
     _pending: np.ndarray | None
+
+    def setup(self, problem, **kwargs):
+        """pymoo's ``setup`` (``minimize`` calls it), after checking the seed it will use.
+
+        Raises:
+            ParameterError: If the seed (``seed=`` of ``minimize`` or of the constructor)
+                is not None, a non-negative integer or a numpy ``SeedSequence``.
+        """
+        seed("seed", kwargs.get("seed", self.seed))
+        return super().setup(problem, **kwargs)
 
     def next(self) -> None:
         """One iteration through the array fast path: run ``_generation()``,

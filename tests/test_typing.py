@@ -1,4 +1,4 @@
-"""The package type-checks: ``python -m mypy moik`` with the ``[tool.mypy]`` config of pyproject.toml.
+"""The package type-checks: ``python -m mypy moik`` with the ``[tool.mypy]`` of pyproject.toml.
 
 mypy (and the stubs of the typed dependencies) come with the ``test`` extra, so the README's
 test command, which CI runs, checks the types too. The run takes no cache

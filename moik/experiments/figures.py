@@ -35,8 +35,9 @@ from moik.robots import get_robot
 def _curves(res: Results, labels) -> dict[str, np.ndarray]:
     out = {}
     for lab in labels:
-        runs = [res.store.load_arrays(r["trial"]).get("convergence") for r in res.by_label[lab]]
-        runs = [c for c in runs if c is not None and c.size]
+        found = [res.store.load_arrays(r["trial"]).get("convergence")
+                 for r in res.by_label[lab]]
+        runs = [c for c in found if c is not None and c.size]
         if runs:
             n = min(c.size for c in runs)
             out[lab] = np.array([c[:n] for c in runs])
@@ -80,7 +81,8 @@ def objective_label(problem: dict, unit: str) -> tuple[str, str]:
 
 def _plans(res: Results) -> list[tuple[str, str, Callable]]:
     """(file stem, caption, draw(save_stem)) of every figure that applies."""
-    cfg, labels, plans = res.config, res.labels, []
+    cfg, labels = res.config, res.labels
+    plans: list[tuple[str, str, Callable]] = []
     robot = get_robot(cfg["robot"])
     unit = robot.unit
     proposed = cfg.get("proposed") or (res.meta.get("algorithms") or [None])[0]
@@ -154,10 +156,10 @@ def _plans(res: Results) -> list[tuple[str, str, Callable]]:
                               title=f"Best candidate joint angles ({first})", save=s)))
     if "compromise" in analyses and cfg["targets"]["kind"] == "circle" and labels:
         lab = labels[0]
-        recs = {r["target"]: r for r in res.by_label[lab] if r["run"] == 0}
-        if len(recs) == len(targets):
-            Q = np.array([recs[t]["best_x"] for t in range(len(targets))])
-            ori = np.array([recs[t]["orientation_error"] for t in range(len(targets))])
+        first_runs = {r["target"]: r for r in res.by_label[lab] if r["run"] == 0}
+        if len(first_runs) == len(targets):
+            Q = np.array([first_runs[t]["best_x"] for t in range(len(targets))])
+            ori = np.array([first_runs[t]["orientation_error"] for t in range(len(targets))])
             plans.append(("path", f"Circle tracked by {lab}", lambda s: mp.plot_path_tracking(
                 pos, robot.fk_position(Q), orientation_errors=ori, Q=Q, unit=unit, log=True,
                 save=s)))

@@ -121,6 +121,8 @@ def _parse(root: ET.Element, label: str) -> tuple[set, dict]:
     parent_of: dict[str, str] = {}
     for el in root.findall("joint"):
         name = el.get("name")
+        if not name:
+            raise URDFError(f"{label!r}: every <joint> needs a name=, one has none")
         parent, child = el.find("parent"), el.find("child")
         if parent is None or child is None or parent.get("link") is None \
                 or child.get("link") is None:

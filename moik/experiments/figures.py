@@ -147,12 +147,9 @@ def _plans(res: Results) -> list[tuple[str, str, Callable]]:
         best_run = min(res.by_label[first], key=lambda r: r["best_f"])
         history = res.store.load_arrays(best_run["trial"]).get("best_x_history")
         if history is not None and len(history):
-            values = np.where(robot.is_prismatic, history, np.degrees(history))
-            ylabel = (f"joint value (deg | {unit} for prismatic joints)"
-                      if np.any(robot.is_prismatic) else "joint angle (deg)")
             plans.append(("joint-history", f"Best candidate joint angles of {first} per "
-                          "iteration (its best run)", lambda s, h=values: mp.plot_joint_history(
-                              h, ylabel=ylabel,
+                          "iteration (its best run)", lambda s, h=history: mp.plot_joint_history(
+                              h, prismatic=robot.is_prismatic, unit=unit,
                               title=f"Best candidate joint angles ({first})", save=s)))
     if "compromise" in analyses and cfg["targets"]["kind"] == "circle" and labels:
         lab = labels[0]
@@ -161,8 +158,8 @@ def _plans(res: Results) -> list[tuple[str, str, Callable]]:
             Q = np.array([first_runs[t]["best_x"] for t in range(len(targets))])
             ori = np.array([first_runs[t]["orientation_error"] for t in range(len(targets))])
             plans.append(("path", f"Circle tracked by {lab}", lambda s: mp.plot_path_tracking(
-                pos, robot.fk_position(Q), orientation_errors=ori, Q=Q, unit=unit, log=True,
-                save=s)))
+                pos, robot.fk_position(Q), orientation_errors=ori, Q=Q,
+                prismatic=robot.is_prismatic, unit=unit, log=True, save=s)))
     return plans
 
 

@@ -9,6 +9,7 @@ before the search, whose options would otherwise never be looked at).
 from __future__ import annotations
 
 import functools
+import threading
 from dataclasses import dataclass
 
 import numpy as np
@@ -94,15 +95,20 @@ def validated_options(**values) -> SearchOptions:
     """:class:`SearchOptions` of ``values``, cached (solve_ik's hot path validates the same
     options over and over). The key holds each value's type: ``True`` and ``1`` (or ``2.0``
     and ``2``) are equal and hash alike, but must not share a validation."""
+    given = tuple(values.values())
     try:
-        return _cached_options(tuple((k, type(v), v) for k, v in values.items()))
+        return _OPTIONS[(tuple(values), given, tuple(map(type, given)))]
+    except KeyError:
+        options = SearchOptions(**values)
+        if len(_OPTIONS) >= 256:
+            _OPTIONS.clear()
+        _OPTIONS[(tuple(values), given, tuple(map(type, given)))] = options
+        return options
     except TypeError:  # an unhashable value: validate uncached (it raises)
         return SearchOptions(**values)
 
 
-@functools.lru_cache(maxsize=256)
-def _cached_options(key: tuple) -> SearchOptions:
-    return SearchOptions(**{k: v for k, _, v in key})
+_OPTIONS: dict[tuple, SearchOptions] = {}  # validated options by (names, values, types)
 
 
 def search_options(owner: str, options: dict) -> SearchOptions:
@@ -119,3 +125,28 @@ def seed_sequence(seed) -> np.random.SeedSequence:
     """``seed`` validated (``None``, an integer >= 0 or a SeedSequence) as a ``SeedSequence``."""
     seed = check_seed("seed", seed)
     return seed if isinstance(seed, np.random.SeedSequence) else np.random.SeedSequence(seed)
+
+
+_PCG64_STATES: dict[int, dict] = {}  # PCG64(SeedSequence(seed)).state of integer seeds seen
+_MAX_STATES = 4096
+_LOCAL = threading.local()
+
+
+def start_generator(seed: int) -> np.random.Generator:
+    """``Generator(PCG64(SeedSequence(seed)))`` for an integer ``seed`` >= 0, bit for bit.
+
+    Seeding a PCG64 through a SeedSequence costs more than a whole first-stage solve
+    takes, so the initial state of each seed is kept (up to ``_MAX_STATES`` seeds) and
+    loaded into one generator per thread. The generator is reset by the next call on
+    the same thread: use it within one solve only.
+    """
+    state = _PCG64_STATES.get(seed)
+    if state is None:
+        if len(_PCG64_STATES) >= _MAX_STATES:
+            _PCG64_STATES.clear()
+        state = _PCG64_STATES[seed] = np.random.PCG64(np.random.SeedSequence(seed)).state
+    generator = getattr(_LOCAL, "generator", None)
+    if generator is None:
+        generator = _LOCAL.generator = np.random.Generator(np.random.PCG64(0))
+    generator.bit_generator.state = state
+    return generator

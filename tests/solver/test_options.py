@@ -1,9 +1,10 @@
 """SearchOptions: solve_ik's options validated and normalised together."""
 
+import numpy as np
 import pytest
 
 from moik.exceptions import ParameterError, UnknownNameError
-from moik.solver.options import SearchOptions, seed_sequence
+from moik.solver.options import SearchOptions, seed_sequence, start_generator
 
 DEFAULTS = dict(method="eosma", orientation="geodesic", polish=True, n_solutions=1,
                 max_evals=50_000, starts=16, pop_size=None, generations=15,
@@ -41,3 +42,12 @@ def test_seed_sequence():
     assert seed_sequence(ss) is ss
     with pytest.raises(ParameterError, match="seed must be a non-negative integer"):
         seed_sequence(True)
+
+
+@pytest.mark.parametrize("seed", [0, 7, 2**40])
+def test_start_generator_is_a_fresh_seeded_generator_each_time(seed):
+    """Bit for bit ``Generator(PCG64(SeedSequence(seed)))``, reset on every call."""
+    for _ in range(2):
+        got = start_generator(seed).random(16)
+        want = np.random.Generator(np.random.PCG64(np.random.SeedSequence(seed))).random(16)
+        assert np.array_equal(got, want)

@@ -13,7 +13,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik.experiments.dh_fit import FUNCTIONS as DH_FIT_FUNCTIONS
 from moik.experiments.per_target import FUNCTIONS
+from moik.experiments.solution_sets import FUNCTIONS as RANK_FUNCTIONS
 from moik.experiments.store import ResultStore
 from moik.experiments.tables import Results, Table, fmt
 from moik.metrics import (
@@ -224,7 +226,8 @@ def analyze(store: ResultStore) -> tuple[Results, list[Table]]:
     tables: list[Table] = []
     if res.ok:
         for name in res.config.get("analyses", ["summary"]):
-            tables += {**ANALYSIS_FUNCTIONS, **FUNCTIONS}[name](res)
+            tables += {**ANALYSIS_FUNCTIONS, **FUNCTIONS, **DH_FIT_FUNCTIONS,
+                       **RANK_FUNCTIONS}[name](res)
     for table in tables:
         if res.paper_note and any("paper" in row for row in table.rows):
             table.notes.append(res.paper_note)

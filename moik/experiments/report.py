@@ -89,7 +89,7 @@ def experiment_section(store: ResultStore, *, figures: bool, link: Callable[[Pat
               + ("" if cfg["problem"]["kind"] == "position" else
                  f" (orientation `{cfg['problem'].get('orientation')}`)") + ", ")
              + f"{len(meta['targets'])} target(s), runs per target {cfg['runs']}, "
-             f"population {cfg['pop_size']}, generations {cfg['n_gen']}, seed {cfg['seed']}",
+             f"population {cfg['pop_size']}, iterations {cfg['iterations']}, seed {cfg['seed']}",
              f"- algorithms: {algs}",
              f"- moik {meta['versions']['moik']}, pymoo {meta['versions']['pymoo']}, numpy "
              f"{meta['versions']['numpy']}, commit {meta.get('git_commit') or 'unknown'}; "
@@ -118,8 +118,6 @@ def _relative(png: Path, base: Path) -> str:
 def _figures(res: Results, folder: Path):
     if not res.ok:
         return [], ["no finished trials: no figures"]
-    if res.config["problem"]["kind"] == "benchmark":
-        return [], ["benchmark experiments have tables only (the figures draw robots/targets)"]
     return make_figures(res, folder)
 
 

@@ -34,7 +34,6 @@ import numpy as np
 from pymoo.optimize import minimize
 
 from moik._validate import seed as check_seed
-from moik.algorithms import get_algorithm
 from moik.exceptions import ShapeError
 from moik.metrics.compromise import closest_to_utopia
 from moik.problems.ik import BiObjectiveIK, PoseIK, PositionIK
@@ -45,6 +44,7 @@ from moik.solver.front import FRONT_STARTS, polished_front, reach_excess
 from moik.solver.multistart import front as lm_front
 from moik.solver.options import (
     SearchOptions,
+    algorithm_registry,
     seed_sequence,
     start_generator,
     validated_options,
@@ -250,7 +250,7 @@ def _search_round(session: SolveSession, problem, opts: SearchOptions, run_seed:
     at once (early stop when that already solves the target), the best
     ``opts.candidates_per_round`` distinct ones after the last generation."""
     generations, n_solutions = opts.generations, opts.n_solutions
-    algorithm = get_algorithm(opts.method, pop_size=opts.pop_size)
+    algorithm = algorithm_registry().get_algorithm(opts.method, pop_size=opts.pop_size)
     algorithm.setup(problem, termination=("n_gen", generations), seed=run_seed)
     robot, gen = session.robot, 0
     while algorithm.has_next() and len(session.found) < n_solutions:
@@ -278,7 +278,7 @@ def _front(session: SolveSession, opts: SearchOptions, seeds) -> tuple[np.ndarra
     if it reaches the pose after all, the target is solved)."""
     robot, target = session.robot, session.target
     problem = BiObjectiveIK(robot, target, orientation=opts.orientation)
-    algorithm = get_algorithm(opts.front_method)
+    algorithm = algorithm_registry().get_algorithm(opts.front_method)
     run_seed = int(seeds.spawn(1)[0].generate_state(1)[0])
     res = minimize(problem, algorithm, ("n_eval", opts.front_evals), seed=run_seed,
                    copy_algorithm=False)

@@ -39,7 +39,7 @@ def test_joint_motion_experiment_draws_the_joint_history(tmp_path):
     store = ResultStore.open(out / "eosma-table9")
     recs = store.records()
     history = store.load_arrays(recs[0]["trial"])["best_x_history"]
-    assert history.shape == (20, 7)  # quick size: 20 generations, 7 joints
+    assert history.shape == (21, 7)  # quick size: the initial population + 20 iterations, 7 joints
     assert history[-1].tolist() == recs[0]["best_x"]
     assert main(["report", str(out)]) == 0
     assert (out / "eosma-table9" / "figures" / "joint-history.png").exists()

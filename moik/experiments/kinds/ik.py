@@ -246,8 +246,8 @@ def _targets(where: str, spec: Any, problem: Mapping, robot: Robot,
                                   f"{', '.join(RANDOM_ORIENTATIONS)}, got {reading!r}")
             ts = random_reachable_targets(robot, n, seed=seed, with_orientation=with_orientation)
             if with_orientation and reading == "independent":
-                rot = Rotation.random(n, random_state=np.random.default_rng([seed, 1]))
-                ts = [Target(x.position, R) for x, R in zip(ts, rot.as_matrix(), strict=True)]
+                drawn = Rotation.random(n, random_state=np.random.default_rng([seed, 1]))
+                ts = [Target(x.position, R) for x, R in zip(ts, drawn.as_matrix(), strict=True)]
             return [NamedTarget(f"T{i + 1}", x) for i, x in enumerate(ts)]
         if kind == "circle":
             numbers(f"{where}.center", t.get("center"), 3)

@@ -215,8 +215,8 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
         _search_round(session, problem, opts, int(seeds.spawn(1)[0].generate_state(1)[0]))
         idle_rounds = 0 if len(session.found) > n_found else idle_rounds + 1
     searched_out = idle_rounds >= patience  # ended for lack of progress, not for budget
-    if not session.found and polish and session.n_eval < opts.max_evals:  # a near miss may
-        # only need more iterations
+    if (not session.found and session.best is not None and polish
+            and session.n_eval < opts.max_evals):  # a near miss may need more iterations
         session.refine(session.best[1], polish, max_nfev=FINAL_NFEV)
     front = front_q = None
     if not session.found and target.rotation is not None:
@@ -298,7 +298,7 @@ def _front(session: SolveSession, opts: SearchOptions, seeds) -> tuple[np.ndarra
 def _result(session: SolveSession, q_current, t0: float, searched_out: bool, front, front_q,
             proven: bool = False) -> IKResult:
     robot, target = session.robot, session.target
-    errors = None
+    errors: tuple[float, float] | None = None
     if session.found:
         sols = np.array(session.found)
         if q_current is not None:  # 2 pi copies nearest to the current configuration first
@@ -308,6 +308,7 @@ def _result(session: SolveSession, q_current, t0: float, searched_out: bool, fro
             errors = session.found_errors[0]
         q, status, front, front_q = sols[0], "solved", None, None
     else:
+        assert session.best is not None  # every stage considers at least one candidate
         sols = np.empty((0, robot.dof))
         tol = session.tol_pos / robot.reach + session.tol_ori
         far = session.best[0] > UNREACHABLE_FACTOR * tol
@@ -316,8 +317,8 @@ def _result(session: SolveSession, q_current, t0: float, searched_out: bool, fro
         if status == "unreachable" and front is not None:
             q = np.clip(front_q[closest_to_utopia(front)], robot.lower, robot.upper)
     if errors is None:  # unsolved: the independent reference FK has the last word
-        errors = tuple(float(v[0]) for v in pose_errors(robot, target, q,
-                                                         reference=status != "solved"))
+        pos_v, ori_v = pose_errors(robot, target, q, reference=status != "solved")
+        errors = (float(pos_v[0]), float(ori_v[0]))
     pos, ori = errors
     return IKResult(q=q, position_error=pos, orientation_error=ori, success=status == "solved",
                     status=status, n_eval=session.n_eval, time=time.perf_counter() - t0,

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from moik._jit import jit, kernel_array
-from moik.kinematics.orientation import geodesic_angle
+from moik.kinematics.rotation_metrics import geodesic_angle
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
 from moik.robots.dh import fk_pose_into

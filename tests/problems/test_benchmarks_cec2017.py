@@ -8,6 +8,9 @@ formulas are checked in ``test_benchmarks_cec2017_oracle.py``.
 
 from __future__ import annotations
 
+import copy
+import pickle
+
 import numpy as np
 import pytest
 
@@ -72,6 +75,15 @@ def test_vectorized_matches_row_by_row_and_exceeds_optimum(number):
     rows = [problem.evaluate(x[None])[0, 0] for x in X]
     np.testing.assert_array_equal(F[:, 0], rows)
     assert np.all(F[:, 0] > 100.0 * number)
+
+
+def test_pickles_and_deep_copies():
+    problem = CEC2017(30, n_var=10)
+    X = np.random.default_rng(3).uniform(-100.0, 100.0, (4, 10))
+    for clone in (pickle.loads(pickle.dumps(problem)), copy.deepcopy(problem)):
+        assert clone.number == 30 and clone.n_var == 10
+        np.testing.assert_array_equal(clone.x_opt, problem.x_opt)
+        np.testing.assert_array_equal(clone.evaluate(X), problem.evaluate(X))
 
 
 def test_every_dimension_with_official_data_builds():

@@ -187,6 +187,16 @@ class CEC2017(Benchmark):
             x_opt=optimum_location(self.number, n_var),
         )
 
+    def __getstate__(self) -> dict:
+        # minionpy's evaluator does not pickle: rebuild it on unpickling (process pools, deepcopy)
+        state = self.__dict__.copy()
+        del state["function"]
+        return state
+
+    def __setstate__(self, state: dict) -> None:
+        self.__dict__.update(state)
+        self.function = make_minion_function(self.number, self.n_var)
+
     def _evaluate(self, x, out, *args, **kwargs):
         # minionpy reads n_var values per row whatever the row length: check the shape first
         x = finite_array("x", x, shape=(None, self.n_var))

@@ -24,10 +24,10 @@ and D in {10, 30, 50} except F9, as in the official code: its Levy component
 maps z to ``w = 1 + (z - 1) / 4``, so the minimum 900 lies at z = 1, i.e. at
 ``x = o_9 + M_9^{-1} 1``, which is ``x_opt`` here (F9(o_9) = 903.26 at D = 30).
 
-Until this module used opfunu 1.0.4 (with the same official data), which
-departs from ``cec17_func.cpp``: at D = 30 on 200 random points of the box,
-opfunu and minionpy agree to 1e-8 only on F1, F4 and F10 (F12 to 6e-8, F14
-and F18 to 0.5 %). The causes found:
+Before the switch this module used opfunu 1.0.4 (with the same official
+data), which departs from ``cec17_func.cpp``: at D = 30 on 200 random points
+of the box, opfunu and minionpy agree to 1e-8 only on F1, F4 and F10 (F12 to
+6e-8, F14 and F18 within 0.5 %). The causes found:
 
 * F3 (Zakharov): opfunu weights the linear sum by a constant 0.5 where the
   official code weights it by ``0.5 (i + 1)``;
@@ -43,7 +43,7 @@ and F18 to 0.5 %). The causes found:
   ``x - o_1`` instead of ``x - o_k``, and its F27 Schaffer component adds 1.
 
 So the ``ibes-cec2017`` results measured with opfunu are not comparable with
-published CEC2017 tables; those measured with minionpy are.
+published CEC2017 tables; with minionpy the functions are the official ones.
 
 Cost: minionpy evaluates the whole population in one call. Measured at D = 30
 with 30 rows per call on the shared 2-core reference machine: 7e-6 (F3) to

@@ -199,13 +199,14 @@ def section_b(repeats: int, n_targets: int = 5) -> None:
     for label, number, T, make, fk, paper in cases:
         problems = [make(t) for t in targets]
         N = EOSMA.scenario(number).pop_size
-        res = minimize(problems[0], EOSMA.scenario(number), ("n_gen", T), seed=0)
+        res = minimize(problems[0], EOSMA.scenario(number), ("n_gen", T + 1), seed=0)
         n_eval, n_batches = res.algorithm.evaluator.n_eval, -(-res.algorithm.evaluator.n_eval // N)
         Q = robot.random_q(N, rng=np.random.default_rng(0))
         times = {"run": [], "fk": [], "numpy": []}
         for r in range(repeats):
             t0 = time.perf_counter()
-            minimize(problems[r % n_targets], EOSMA.scenario(number), ("n_gen", T), seed=r)
+            minimize(problems[r % n_targets], EOSMA.scenario(number), ("n_gen", T + 1),
+                     seed=r)
             times["run"].append(time.perf_counter() - t0)
             t0 = time.perf_counter()
             for _ in range(n_batches):
@@ -245,10 +246,11 @@ def section_c(n_targets: int) -> None:
         for i, target in enumerate(targets):
             problem = make(robot, target)
             t0 = time.perf_counter()
-            res = minimize(problem, EOSMA.scenario(number), ("n_gen", T), seed=i)
+            res = minimize(problem, EOSMA.scenario(number), ("n_gen", T + 1), seed=i)
             run_t.append(time.perf_counter() - t0)
             first.append(res.F[0])
-            out = solve_until_success(problem, lambda n=number: EOSMA.scenario(n), ("n_gen", T),
+            out = solve_until_success(problem, lambda n=number: EOSMA.scenario(n),
+                                      ("n_gen", T + 1),
                                       seed=i)
             solve_t.append(out.total_time)
             final.append(out.best_f)

@@ -30,11 +30,11 @@ EXPERIMENT = {
         {"name": "ibes", "label": "ibes-levy-unscaled", "params": {"levy_scale": 1.0}},
     ],
     "pop_size": 150,
-    "n_gen": 500,
+    "iterations": 500,
     "runs": 25,
     "seed": 2024,
     "success_threshold": 1e-6,
     "analyses": ["per-target", "per-target-ranksum", "solution-rank"],
     "proposed": "ibes",
-    "quick": {"pop_size": 10, "n_gen": 8, "runs": 1},
+    "quick": {"pop_size": 10, "iterations": 8, "runs": 1},
 }

@@ -7,6 +7,14 @@ error without its gamma term (metric ``zyx-euler-free-gamma``). Each point is so
 independently by MO-m-PSO with the Section 4.3 settings (100 agents, 500
 iterations; the section gives none), keeping the compromise closest to the
 utopia point.
+
+Joint limits: Table 1's servo ranges ([0, 180], [0, 170], [0, 135], [0, 180],
+[0, 180] deg, the catalog arm), as here, leave most circle points without an
+exact solution with alpha = beta = 0; ``mpso-circle-full-range`` runs the same
+path with every joint in [-180, 180] deg, where every point has one, the reading
+that fits the paper's Table 4 (the paper does not say it enforced the ranges).
+Both MO-m-PSO guides run (``mo-m-pso``: the archive compromise guides every
+swarm, the default; ``mo-m-pso-own-best``: independent swarms).
 """
 
 EXPERIMENT = {
@@ -17,14 +25,19 @@ EXPERIMENT = {
     "problem": {"kind": "bi-objective", "orientation": "zyx-euler-free-gamma"},
     "targets": {"kind": "circle", "center": [15, 0, 12], "radius": 8, "n_points": 50,
                 "euler_deg": [0, 0, 0], "convention": "zyx-euler"},
-    "algorithms": [{"name": "mo-m-pso", "params": {"w": 0.8, "c1": 1.493, "c2": 1.493}}],
+    "algorithms": [
+        {"name": "mo-m-pso", "params": {"w": 0.8, "c1": 1.493, "c2": 1.493}},
+        {"name": "mo-m-pso", "label": "mo-m-pso-own-best",
+         "params": {"w": 0.8, "c1": 1.493, "c2": 1.493, "guide": "own-best"}},
+    ],
     "pop_size": 100,
     "iterations": 500,
     "runs": 1,
     "seed": 2022,
-    "analyses": ["compromise"],
+    "analyses": ["compromise", "paper-consistency"],
     "paper": {
         "citation": "MO-m-PSO paper, Table 4 (position cm, orientation rad)",
+        "n_values": 50,
         "compromise": {"mo-m-pso": {
             "position": {"best": 2.31e-6, "worst": 0.268, "mean": 0.032, "std": 0.191},
             "orientation": {"best": 1.85e-8, "worst": 4.58e-4, "mean": 5.73e-5, "std": 0.002},

@@ -36,7 +36,7 @@ if TYPE_CHECKING:
 
 _LAZY: dict[str, tuple[str, str | None]] = {
     "IKBatchResult": ("moik.solver.batch", "IKBatchResult"),
-    "IKResult": ("moik.solver.solve_ik", "IKResult"),
+    "IKResult": ("moik.solver", "IKResult"),
     "ParetoIKResult": ("moik.solver.pareto", "ParetoIKResult"),
     "PathResult": ("moik.solver.path", "PathResult"),
     "Robot": ("moik.robots", "Robot"),
@@ -45,7 +45,7 @@ _LAZY: dict[str, tuple[str, str | None]] = {
     "get_robot": ("moik.robots", "get_robot"),
     "load_urdf": ("moik.robots.urdf", "load_urdf"),
     "problems": ("moik.problems", None),
-    "solve_ik": ("moik.solver.solve_ik", "solve_ik"),
+    "solve_ik": ("moik.solver", "solve_ik"),
     "solve_ik_batch": ("moik.solver.batch", "solve_ik_batch"),
     "solve_ik_pareto": ("moik.solver.pareto", "solve_ik_pareto"),
     "solve_path": ("moik.solver.path", "solve_path"),

@@ -53,7 +53,8 @@ from moik.experiments.checks import check_keys, flag, integer, number
 from moik.experiments.kinds import KINDS, kind_of
 
 ANALYSES = ("summary", "ranksum", "friedman-hv", "joint-motion", "compromise", "signed-rank",
-            "per-target", "per-target-ranksum", "branches", "dh-fit", "solution-rank")
+            "per-target", "per-target-ranksum", "branches", "dh-fit", "solution-rank",
+            "paper-consistency")
 """Report tables an experiment can ask for (see :mod:`moik.experiments.analysis`)."""
 
 _TOP_KEYS = {"name", "title", "source", "robot", "problem", "targets", "algorithms", "pop_size",

@@ -329,6 +329,24 @@ def _wrap_pi(angle):
 
 
 @jit(inline=True)
+def geodesic_angle(rot, R_t):
+    """Geodesic angle (rad) between ``rot`` (a 9-tuple row by row) and ``R_t (3, 3)``."""
+    r00, r01, r02, r10, r11, r12, r20, r21, r22 = rot
+    # geodesic: M = R_t^T R, angle = atan2(|skew(M)|, trace(M) - 1)
+    m00 = R_t[0, 0] * r00 + R_t[1, 0] * r10 + R_t[2, 0] * r20
+    m11 = R_t[0, 1] * r01 + R_t[1, 1] * r11 + R_t[2, 1] * r21
+    m22 = R_t[0, 2] * r02 + R_t[1, 2] * r12 + R_t[2, 2] * r22
+    m01 = R_t[0, 0] * r01 + R_t[1, 0] * r11 + R_t[2, 0] * r21
+    m10 = R_t[0, 1] * r00 + R_t[1, 1] * r10 + R_t[2, 1] * r20
+    m02 = R_t[0, 0] * r02 + R_t[1, 0] * r12 + R_t[2, 0] * r22
+    m20 = R_t[0, 2] * r00 + R_t[1, 2] * r10 + R_t[2, 2] * r20
+    m12 = R_t[0, 1] * r02 + R_t[1, 1] * r12 + R_t[2, 1] * r22
+    m21 = R_t[0, 2] * r01 + R_t[1, 2] * r11 + R_t[2, 2] * r21
+    vx, vy, vz = m21 - m12, m02 - m20, m10 - m01
+    return math.atan2(math.sqrt(vx * vx + vy * vy + vz * vz), m00 + m11 + m22 - 1.0)
+
+
+@jit(inline=True)
 def rotation_error(code, rot, R_t, angles_t):
     """Error of metric ``code`` (:func:`metric_code`) between ``rot`` and the target.
 
@@ -348,25 +366,13 @@ def rotation_error(code, rot, R_t, angles_t):
         if code == ZYX_EULER_FREE_GAMMA:
             return (d0 + d1) / 3.0
         return (d0 + d1 + abs(e2 - angles_t[2])) / 3.0
-    r00, r01, r02, r10, r11, r12, r20, r21, r22 = rot
     if code == FROBENIUS:
         acc = 0.0
         for k in range(9):
             diff = rot[k] - R_t[k // 3, k % 3]
             acc += diff * diff
         return math.sqrt(acc)
-    # geodesic: M = R_t^T R, angle = atan2(|skew(M)|, trace(M) - 1)
-    m00 = R_t[0, 0] * r00 + R_t[1, 0] * r10 + R_t[2, 0] * r20
-    m11 = R_t[0, 1] * r01 + R_t[1, 1] * r11 + R_t[2, 1] * r21
-    m22 = R_t[0, 2] * r02 + R_t[1, 2] * r12 + R_t[2, 2] * r22
-    m01 = R_t[0, 0] * r01 + R_t[1, 0] * r11 + R_t[2, 0] * r21
-    m10 = R_t[0, 1] * r00 + R_t[1, 1] * r10 + R_t[2, 1] * r20
-    m02 = R_t[0, 0] * r02 + R_t[1, 0] * r12 + R_t[2, 0] * r22
-    m20 = R_t[0, 2] * r00 + R_t[1, 2] * r10 + R_t[2, 2] * r20
-    m12 = R_t[0, 1] * r02 + R_t[1, 1] * r12 + R_t[2, 1] * r22
-    m21 = R_t[0, 2] * r01 + R_t[1, 2] * r11 + R_t[2, 2] * r21
-    vx, vy, vz = m21 - m12, m02 - m20, m10 - m01
-    return math.atan2(math.sqrt(vx * vx + vy * vy + vz * vz), m00 + m11 + m22 - 1.0)
+    return geodesic_angle(rot, R_t)
 
 
 @jit

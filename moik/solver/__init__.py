@@ -15,11 +15,14 @@ from typing import TYPE_CHECKING
 
 from moik._lazy import lazy_names
 
+# imported here, not lazily: the submodule's name is the function's, and a lazy name would
+# be shadowed by the submodule once anything imports it
+from moik.solver.solve_ik import IKResult, solve_ik
+
 if TYPE_CHECKING:
     from moik.solver.batch import IKBatchResult, solve_ik_batch
     from moik.solver.pareto import ParetoIKResult, solve_ik_pareto
     from moik.solver.path import PathResult, solve_path
-    from moik.solver.solve_ik import IKResult, solve_ik
 
 _LAZY: dict[str, tuple[str, str | None]] = {
     "IKBatchResult": ("moik.solver.batch", "IKBatchResult"),
@@ -28,8 +31,6 @@ _LAZY: dict[str, tuple[str, str | None]] = {
     "solve_ik_pareto": ("moik.solver.pareto", "solve_ik_pareto"),
     "PathResult": ("moik.solver.path", "PathResult"),
     "solve_path": ("moik.solver.path", "solve_path"),
-    "IKResult": ("moik.solver.solve_ik", "IKResult"),
-    "solve_ik": ("moik.solver.solve_ik", "solve_ik"),
 }
 """Public name -> (module, attribute): each loads at first use (start-up time: the
 single-pose solver need not import the search, Pareto and path machinery)."""

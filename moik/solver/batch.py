@@ -23,7 +23,7 @@ from moik.exceptions import ParameterError, ShapeError, TargetError
 from moik.kinematics.orientation import check_rotation
 from moik.problems.targets import Target
 from moik.robots.catalog import as_robot
-from moik.solver.lm import STALL_RATIO
+from moik.solver.lm import STALL_RATIO, copy_into
 from moik.solver.multistart import lm_multistart
 from moik.solver.options import search_options, seed_sequence
 from moik.solver.session import (
@@ -110,7 +110,7 @@ def lm_batch(F, types, lo, hi, Q0, Rts, pts, has_rot, inv_len, stop_pos, stop_or
             n_evals[i] += ne
             solved[i] = k > 0
         if solved[i]:
-            out_Q[i] = one[0]
+            copy_into(one[0], out_Q[i])
 
 
 def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, **options

@@ -119,6 +119,14 @@ def cholesky_solve(A, b, x):
     return True
 
 
+@jit(inline=True)
+def copy_into(src, dst, offset=0):
+    """``dst[offset:offset + len(src)] = src`` by a loop: a slice assignment would compile
+    numba's shape-mismatch error path (string formatting), seconds of the first run."""
+    for j in range(src.shape[0]):
+        dst[offset + j] = src[j]
+
+
 @jit
 def into_limits(v, kind, lo, hi):
     """Joint value ``v`` moved into ``[lo, hi]``: a revolute joint by the multiple of 2 pi
@@ -224,9 +232,10 @@ def lm_start(F, types, lo, hi, q, Rt, pt, has_rot, s_pos, s_rot, stop_pos, stop_
                                   Jrt)
                 n_eval += 1
                 if cost_t < cost:
-                    q[:] = trial
-                    r[:] = rt
-                    Jr[:, :] = Jrt
+                    copy_into(trial, q)
+                    copy_into(rt, r)
+                    for a in range(6):
+                        copy_into(Jrt[a], Jr[a])
                     cost = cost_t
                     lam = max(lam / 3.0, 1e-12)
                     accepted = True

@@ -13,12 +13,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from moik._jit import jit, kernel_array
-from moik.kinematics.orientation import GEODESIC, rotation_error
+from moik.kinematics.orientation import geodesic_angle
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
 from moik.robots.dh import fk_pose_into
 from moik.robots.transforms import PRISMATIC
-from moik.solver.lm import FRONT_STALL_RATIO, STALL_RATIO, lm_start
+from moik.solver.lm import FRONT_STALL_RATIO, STALL_RATIO, copy_into, lm_start
 
 
 @jit
@@ -52,13 +52,13 @@ def lm_multistart(F, types, lo, hi, Q0, Rt, pt, has_rot, inv_len, stop_pos, stop
         if n_found >= want or n_eval >= max_evals:
             break
         used += 1
-        q[:] = Q0[s]
+        copy_into(Q0[s], q)
         conv, cost, ne = lm_start(F, types, lo, hi, q, Rt, pt, has_rot, inv_len, 1.0, stop_pos,
                                   stop_ori, max_iter, stall_ratio)
         n_eval += ne
         if cost < best_cost:
             best_cost = cost
-            best_q[:] = q
+            copy_into(q, best_q)
         if conv:
             new = True
             for k in range(n_found):
@@ -66,7 +66,7 @@ def lm_multistart(F, types, lo, hi, Q0, Rt, pt, has_rot, inv_len, stop_pos, stop
                     new = False
                     break
             if new:
-                out_Q[n_found] = q
+                copy_into(q, out_Q[n_found])
                 n_found += 1
     return n_found, n_eval, used, best_cost
 
@@ -81,7 +81,7 @@ def recheck_into(F, types, q, Rt, pt, has_rot, T, out):
     out[1] = 0.0
     if has_rot:
         rot = (T[0, 0], T[0, 1], T[0, 2], T[1, 0], T[1, 1], T[1, 2], T[2, 0], T[2, 1], T[2, 2])
-        out[1] = rotation_error(GEODESIC, rot, Rt, np.zeros(3))
+        out[1] = geodesic_angle(rot, Rt)
 
 
 @jit
@@ -106,14 +106,14 @@ def starts_checked(F, types, lo, hi, Q0, Rt, pt, has_rot, inv_len, tol_pos, tol_
     for s in range(n):
         if n_found >= want or n_eval >= max_evals:
             break
-        q[:] = Q0[s]
+        copy_into(Q0[s], q)
         conv, cost, ne = lm_start(F, types, lo, hi, q, Rt, pt, has_rot, inv_len, 1.0,
                                   stop_fraction * tol_pos, stop_fraction * tol_ori, max_iter,
                                   stall_ratio)
         n_eval += ne
         if cost < low_cost:
             low_cost = cost
-            low_q[:] = q
+            copy_into(q, low_q)
         if not conv:
             continue
         recheck_into(F, types, q, Rt, pt, has_rot, T, err)
@@ -125,19 +125,19 @@ def starts_checked(F, types, lo, hi, Q0, Rt, pt, has_rot, inv_len, tol_pos, tol_
                 new = False
                 break
         if new:
-            found[n_found] = q
+            copy_into(q, found[n_found])
             found_err[n_found, 0], found_err[n_found, 1] = err[0], err[1]
             n_found += 1
             scaled = err[0] * inv_len + err[1]
             if scaled < best[0]:
                 best[0] = scaled
-                best[1:] = q
+                copy_into(q, best, 1)
     if n_found == n_known and np.isfinite(low_cost):
         recheck_into(F, types, low_q, Rt, pt, has_rot, T, err)
         scaled = err[0] * inv_len + err[1]
         if scaled < best[0]:
             best[0] = scaled
-            best[1:] = low_q
+            copy_into(low_q, best, 1)
     return n_found, n_eval
 
 
@@ -156,13 +156,13 @@ def lm_front(F, types, lo, hi, Q0, Rt, pt, inv_len, weights, max_iter, out_Q):
         s_pos, s_rot = inv_len * np.sqrt(weights[i]), np.sqrt(1.0 - weights[i])
         best = np.inf
         for s in range(n + (1 if i > 0 else 0)):
-            q[:] = Q0[s] if s < n else out_Q[i - 1]
+            copy_into(Q0[s] if s < n else out_Q[i - 1], q)
             _, cost, ne = lm_start(F, types, lo, hi, q, Rt, pt, True, s_pos, s_rot, -1.0, -1.0,
                                    max_iter, FRONT_STALL_RATIO)
             n_eval += ne
             if cost < best:
                 best = cost
-                out_Q[i] = q
+                copy_into(q, out_Q[i])
     return n_eval
 
 

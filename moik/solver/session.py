@@ -15,7 +15,7 @@ from moik._jit import jit, kernel_array
 from moik._validate import positive
 from moik.exceptions import ParameterError
 from moik.kinematics.criteria import nearest_copies_into
-from moik.kinematics.orientation import GEODESIC, rotation_error
+from moik.kinematics.orientation import geodesic_angle
 from moik.problems.targets import Target
 from moik.robots.chain import Robot, fk_reference
 from moik.solver.lm import STALL_RATIO
@@ -84,8 +84,7 @@ def geodesic_errors(R, Rts, out):
     for i in range(R.shape[0]):
         rot = (R[i, 0, 0], R[i, 0, 1], R[i, 0, 2], R[i, 1, 0], R[i, 1, 1], R[i, 1, 2],
                R[i, 2, 0], R[i, 2, 1], R[i, 2, 2])
-        out[i] = rotation_error(GEODESIC, rot, Rts[0] if Rts.shape[0] == 1 else Rts[i],
-                                np.zeros(3))
+        out[i] = geodesic_angle(rot, Rts[0] if Rts.shape[0] == 1 else Rts[i])
 
 
 def joint_distance(robot: Robot, q: np.ndarray, others: np.ndarray) -> np.ndarray:

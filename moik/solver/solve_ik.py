@@ -61,6 +61,7 @@ STATUSES = ("solved", "unreachable", "not-converged")
 UNREACHABLE_FACTOR = 1e3  # best error beyond this many tolerances after a full search
 FINAL_NFEV = 300  # extended refinement of the best candidate before giving up
 FIRST_STARTS = 8  # random starts drawn first; the remaining ``starts`` only when needed
+FOUND_PATIENCE = 1  # idle search rounds once all starts found some, not all, solutions
 QUICK_NFEV = 12  # a good start converges in ~5-10 evaluations; a bad one is dropped early
 
 
@@ -148,7 +149,10 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
         generations: Search generations per round.
         candidates_per_round: Distinct candidates polished per round.
         distinct: Joint-space distance above which two solutions are distinct.
-        patience: Stop after this many search rounds without a new solution.
+        patience: Stop after this many search rounds without a new solution (at
+            most 1 when every start of the first stage ran and found some but not all
+            of the ``n_solutions``: hundreds of Levenberg-Marquardt starts rarely miss
+            a branch that exists, and the search then rarely adds one).
         front_method: Multi-objective algorithm for the front of unreachable poses.
         front_evals: Evaluation budget of that front.
 
@@ -202,13 +206,15 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
         return _result(session, q_current, t0, False, None, None)
     problem = _search_problem(robot, target, opts.orientation)
     seeds = np.random.SeedSequence(seed) if seeds is None else seeds
-    idle_rounds = 0
+    idle_rounds, patience = 0, opts.patience
+    if session.found and opts.starts > FIRST_STARTS:  # every start ran and found some of the
+        patience = min(patience, FOUND_PATIENCE)  # branches: the rest most likely do not exist
     while (len(session.found) < n_solutions and session.n_eval < opts.max_evals
-           and idle_rounds < opts.patience):
+           and idle_rounds < patience):
         n_found = len(session.found)
         _search_round(session, problem, opts, int(seeds.spawn(1)[0].generate_state(1)[0]))
         idle_rounds = 0 if len(session.found) > n_found else idle_rounds + 1
-    searched_out = idle_rounds >= opts.patience  # ended for lack of progress, not for budget
+    searched_out = idle_rounds >= patience  # ended for lack of progress, not for budget
     if not session.found and polish and session.n_eval < opts.max_evals:  # a near miss may
         # only need more iterations
         session.refine(session.best[1], polish, max_nfev=FINAL_NFEV)

@@ -83,3 +83,13 @@ def test_a_first_stage_solve_imports_neither_the_algorithms_nor_scipy_optimize()
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True)
     assert out.stdout.strip() == "[]"
+
+
+def test_public_solver_names_are_the_functions_after_any_import_order():
+    """A submodule named like its function must not shadow it on the package."""
+    code = ("import moik.solver.solve_ik, moik.solver.batch, moik.solver.pareto, moik.solver.path\n"
+            "import moik, moik.solver\n"
+            "from moik.solver import solve_ik, solve_ik_batch, solve_ik_pareto, solve_path\n"
+            "assert all(callable(f) and not isinstance(f, type(moik)) for f in (solve_ik, "
+            "solve_ik_batch, solve_ik_pareto, solve_path, moik.solve_ik, moik.solve_ik_batch))\n")
+    subprocess.run([sys.executable, "-c", code], check=True)

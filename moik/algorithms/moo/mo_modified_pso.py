@@ -8,8 +8,9 @@ DOI 10.3390/app12147091, Section 2.2 (Eqs. 6-8), Algorithm 2:
   a single objective": M swarms of ``pop_size`` particles each (the paper: "the
   same number of particles, similar m-PSO parameters, and the same maximum
   iterations number"); swarm k runs m-PSO (Eqs. 3-5,
-  :mod:`moik.algorithms.soo.modified_pso`) on objective k alone (shared swarm
-  mechanics in :mod:`moik.algorithms.moo.objective_swarms`);
+  :mod:`moik.algorithms.soo.modified_pso`) on objective k: its personal bests,
+  its mean-of-local-bests switch and its fitness are on objective k alone
+  (shared swarm mechanics in :mod:`moik.algorithms.moo.objective_swarms`);
 - "then a Pareto-based approach is used to find a compromise solution by
   sorting the closest particle to the utopia point of the Pareto front" (Eq. 8):
   every evaluated particle of every swarm is offered to one shared
@@ -17,6 +18,31 @@ DOI 10.3390/app12147091, Section 2.2 (Eqs. 6-8), Algorithm 2:
   ``res.F`` is the archive's front, and ``moik.metrics.compromise(res)`` picks the
   member closest to the utopia point (objectives scaled to [0, 1] over the
   front, :func:`moik.metrics.closest_to_utopia`).
+
+Two readings of the social guide x_g of Eqs. 3-4 (``guide``):
+
+- ``guide="compromise"`` (default): Algorithm 2 places "find Pareto Utopia
+  point of (f_1(), f_2()); Select Best_q" *inside* the iteration loop, after
+  both m-PSO steps, and returns Best_q. Read as written, Best_q is recomputed
+  every iteration and it is the one solution the swarms share: here every
+  particle of every swarm takes the archive member closest to the utopia point
+  (:func:`~moik.algorithms.moo.objective_swarms.utopia_closest`, the same rule
+  as the final pick) as its global guide, recomputed at the start of every
+  iteration from the archive after the previous one;
+- ``guide="own-best"``: the swarms are independent m-PSO runs, each guided by
+  its own best on its own objective, and the compromise is only picked at the
+  end (the reading of Section 2.2's prose alone; the swarm of objective k then
+  converges to the minimiser of objective k and the front between them is
+  sparse).
+
+The paper's numbers support the coupled reading. Table 2 (one pose, 100 runs,
+50 particles per swarm, 500 iterations; paper mean position error 0.015 cm,
+orientation 0.0918 rad), from ``moik experiment run mpso-table2`` and ``moik
+report`` (docs/results/mpso-table2.md): compromise guide mean 0.01991 cm (median
+0.001883, one run of 100 at 1.73 cm), orientation 6.05e-05 rad; own-best guide
+mean 2.563 cm (median 1.72), 0.1355 rad. The paper's Fig. 5 solution (30.00,
+59.16, 44.59, 54.63, 57.92) deg misses the Eq. 16 pose by 0.0021 cm, an accuracy
+only the coupled reading reaches.
 
 Defaults (Section 4.1): w=0.8, c1=c2=1.493. The swarms are advanced together
 as one (M * pop_size, n_var) array; one batch is evaluated per step.
@@ -38,14 +64,23 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik._validate import choice
 from moik.algorithms.mechanics import clip_to_bounds, is_better
 from moik.algorithms.moo.base import Step
-from moik.algorithms.moo.objective_swarms import ObjectiveSwarms, own_objective, swarm_best
+from moik.algorithms.moo.objective_swarms import (
+    ObjectiveSwarms,
+    own_objective,
+    swarm_best,
+    utopia_closest,
+)
 from moik.algorithms.soo.modified_pso import SWITCHES, mpso_velocity
 from moik.algorithms.soo.pso import check_pso_params, clamp_velocity
 from moik.exceptions import ParameterError
 
-__all__ = ["MOMPSO", "own_objective", "swarm_best"]
+__all__ = ["GUIDES", "MOMPSO", "own_objective", "swarm_best", "utopia_closest"]
+
+GUIDES = ("compromise", "own-best")
+"""The social guide x_g of Eqs. 3-4 (see the module doc)."""
 
 
 class MOMPSO(ObjectiveSwarms):
@@ -65,6 +100,9 @@ class MOMPSO(ObjectiveSwarms):
         c2: Social coefficient in [0, 4] (paper: 1.493).
         vmax_rate: Velocity clamp as a fraction of the box width, in (0, 1], or None.
         switch: "mean-position" (Algorithm 1) or "mean-fitness" (see m-PSO).
+        guide: The social guide of every swarm: "compromise" (the archive member
+            closest to the utopia point, recomputed every iteration) or "own-best"
+            (each swarm's best on its own objective); see the module doc.
         X0: Optional initial points (at most M * pop_size rows).
         **kwargs: pymoo ``Algorithm`` options.
     """
@@ -72,12 +110,13 @@ class MOMPSO(ObjectiveSwarms):
     def __init__(self, *, pop_size: int = 100, archive_size: int | None = None,
                  w: float = 0.8, c1: float = 1.493, c2: float = 1.493,
                  vmax_rate: float | None = 0.2, switch: str = "mean-position",
-                 X0: np.ndarray | None = None, **kwargs):
+                 guide: str = "compromise", X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, archive_size=archive_size, X0=X0, **kwargs)
         self.w, self.c1, self.c2, self.vmax_rate = check_pso_params(w, c1, c2, vmax_rate)
         if switch not in SWITCHES:
             raise ParameterError(f"switch must be one of {', '.join(SWITCHES)}; got {switch!r}")
         self.switch = switch
+        self.guide = choice("guide", guide, GUIDES)
 
     def _evals_per_iteration(self) -> float:
         extra = 1.0 if self.switch == "mean-position" else 0.0
@@ -101,9 +140,16 @@ class MOMPSO(ObjectiveSwarms):
         self.classic = is_better(np.repeat(f_mean, N),  # f(x_i) > f(xmean)
                                  None if cv_mean is None else np.repeat(cv_mean, N),
                                  self.S, self.CV)
-        g = swarm_best(self.pbest_X, self._pbest_rank(), M)
+        g = self._social_guide()
         V = mpso_velocity(self.V, self.X, self.pbest_X, g, self.classic, w=self.w, c1=self.c1,
                           c2=self.c2, rng=self.random_state)  # Eqs. 3-4
         self.V = clamp_velocity(V, self.vmax)
         X = clip_to_bounds(self.X + self.V, self.xl, self.xu)  # Eq. 5
         self._remember(X, *(yield X))
+
+    def _social_guide(self) -> np.ndarray:
+        """x_g of Eqs. 3-4 for every row: Best_q of Algorithm 2, or each swarm's own best."""
+        if self.guide == "own-best":
+            return swarm_best(self.pbest_X, self._pbest_rank(), self.problem.n_obj)
+        A = self.pareto_archive
+        return A.X[utopia_closest(A.F)]  # broadcast over all rows of all swarms

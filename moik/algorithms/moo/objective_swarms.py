@@ -65,6 +65,20 @@ def swarm_best(P: np.ndarray, S: np.ndarray, n_swarms: int) -> np.ndarray:
     return swarm_extreme(P, S, n_swarms)
 
 
+def utopia_closest(F: np.ndarray) -> int:
+    """Row of ``F`` closest (Euclidean) to the utopia point, objectives scaled to [0, 1].
+
+    Eq. 8 of the MO-m-PSO paper: the utopia point is each objective's minimum over
+    ``F``; each objective is scaled by its range over ``F`` (a constant one counts
+    0) so that units (cm vs rad) do not decide. The same rule as
+    :func:`moik.metrics.closest_to_utopia` (first row on ties), written here because
+    the algorithms do not import the metrics.
+    """
+    lo, hi = F.min(axis=0), F.max(axis=0)
+    Z = (F - lo) / np.where(hi > lo, hi - lo, 1.0)
+    return int(np.argmin(np.linalg.norm(Z, axis=1)))
+
+
 def swarm_partners(n_swarms: int, N: int, *, rng: np.random.Generator) -> np.ndarray:
     """A uniformly drawn row index of the same swarm for every row, shape (M * N,)."""
     return rng.integers(N, size=n_swarms * N) + N * np.repeat(np.arange(n_swarms), N)

@@ -5,9 +5,10 @@ Config keys (see :mod:`moik.experiments.config` for the others):
 - ``robot``: catalog name;
 - ``problem``: ``{"kind": "position" | "pose" | "bi-objective", "orientation":
   metric, "weights": [w1, w2], "displacement_weight": w, "q_start_deg": [...],
-  "locked_joints_deg": [...]}``; the kinds map to :class:`~moik.problems.PositionIK`,
-  :class:`~moik.problems.PoseIK` and :class:`~moik.problems.BiObjectiveIK`;
-- ``targets``: ``{"kind": "random", "n", "seed", "with_orientation"}``,
+  "locked_joints_deg": [...], "joint_limits_deg": [[lo, hi], ...]}``; the kinds map
+  to :class:`~moik.problems.PositionIK`, :class:`~moik.problems.PoseIK` and
+  :class:`~moik.problems.BiObjectiveIK`;
+- ``targets``: ``{"kind": "random", "n", "seed", "with_orientation", "orientation"}``,
   ``{"kind": "fixed", "points": [{"name", "position" or "fk_q_deg",
   "euler_deg", "convention", "hv_ref_point", "robot"}]}`` or ``{"kind": "circle",
   "center", "radius", "n_points", "euler_deg", "convention"}``.
@@ -19,6 +20,13 @@ uses the named metric ``"zyx-euler-free-gamma"`` of :mod:`moik.kinematics.orient
 joints with :meth:`~moik.robots.Robot.with_locked_joints` (I-BES Table 9 solves
 the Puma 560 position with joints 4-6 at 0); a fixed target point may name its
 own ``robot`` (I-BES Table 8: one target per arm), else the experiment's is used.
+``joint_limits_deg`` (one ``[lower, upper]`` pair per joint) replaces the catalog
+arm's limits before any joint is locked (MO-m-PSO Section 4.4 run with and without
+Table 1's servo ranges). Random targets take FK poses of random joint vectors
+(``"orientation": "reachable"``, the default) or FK positions with rotations drawn
+uniformly on SO(3), independent of the position (``"independent"``, from the
+generator seeded ``[seed, 1]``; MO-m-PSO Section 4.3 reads "each point is
+associated with a random orientation").
 
 Validation builds what a run uses: the robots, every target (a
 :class:`~moik.problems.Target`, validated once and carried to the trials as it
@@ -34,6 +42,7 @@ start configuration) for single-objective problems; the compromise's errors,
 
 from __future__ import annotations
 
+import dataclasses
 import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
@@ -41,6 +50,7 @@ from typing import Any
 
 import numpy as np
 from pymoo.optimize import minimize
+from scipy.spatial.transform import Rotation
 
 from moik.algorithms import get_algorithm
 from moik.exceptions import ConfigError, MoikError
@@ -57,9 +67,10 @@ from moik.robots import Robot, get_robot
 PROBLEM_KINDS = ("position", "pose", "bi-objective")
 TARGET_KINDS = ("random", "fixed", "circle")
 _PROBLEM_KEYS = {"kind", "orientation", "weights", "displacement_weight", "q_start_deg",
-                 "locked_joints_deg"}
+                 "locked_joints_deg", "joint_limits_deg"}
+RANDOM_ORIENTATIONS = ("reachable", "independent")
 _TARGET_KEYS = {
-    "random": {"kind", "n", "seed", "with_orientation"},
+    "random": {"kind", "n", "seed", "with_orientation", "orientation"},
     "fixed": {"kind", "points"},
     "circle": {"kind", "center", "radius", "n_points", "euler_deg", "convention"},
 }
@@ -104,6 +115,11 @@ def experiment_robot(name: str, problem: Mapping) -> Robot:
 
 
 def _locked(robot: Robot, problem: Mapping) -> Robot:
+    limits = problem.get("joint_limits_deg")
+    if limits:
+        lower, upper = np.radians(np.asarray(limits, dtype=float)).T
+        robot = dataclasses.replace(robot, name=f"{robot.name}[limits]", lower=lower, upper=upper,
+                                    source=f"{robot.source}; limits {limits} deg")
     locked = problem.get("locked_joints_deg")
     if locked:
         robot = robot.with_locked_joints({i: float(np.radians(v)) for i, v in enumerate(locked)
@@ -150,7 +166,8 @@ def check_config(where: str, cfg: Mapping) -> tuple[dict, tuple[NamedTarget, ...
             try:
                 robots[name] = _locked(arm, problem)
             except MoikError as exc:
-                raise ConfigError(f"{where}: problem.locked_joints_deg: {exc}") from None
+                key = "locked_joints_deg" if "locked_joints_deg" in problem else "joint_limits_deg"
+                raise ConfigError(f"{where}: problem.{key}: {exc}") from None
         return robots[name]
 
     robot = robot_of(cfg["robot"], f"{where}: robot")
@@ -191,6 +208,13 @@ def _check_locked_joints(where: str, p: Mapping, dof: int) -> None:
         for i, v in enumerate(lj):
             if v is not None:
                 number(f"{where}.locked_joints_deg[{i}]", v)
+    if "joint_limits_deg" in p:
+        lim = p["joint_limits_deg"]
+        if not isinstance(lim, list) or len(lim) != dof:
+            raise ConfigError(f"{where}.joint_limits_deg must be a list of {dof} [lower, upper] "
+                              f"pairs, got {lim!r}")
+        for i, pair in enumerate(lim):
+            numbers(f"{where}.joint_limits_deg[{i}]", pair, 2)
 
 
 def _rotation(spec: Mapping) -> np.ndarray:
@@ -213,7 +237,14 @@ def _targets(where: str, spec: Any, problem: Mapping, robot: Robot,
             if oriented and not with_orientation:
                 raise ConfigError(f"{where}: problem kind {problem['kind']!r} needs "
                                   "with_orientation true")
+            reading = t.get("orientation", "reachable")
+            if reading not in RANDOM_ORIENTATIONS:
+                raise ConfigError(f"{where}.orientation must be one of "
+                                  f"{', '.join(RANDOM_ORIENTATIONS)}, got {reading!r}")
             ts = random_reachable_targets(robot, n, seed=seed, with_orientation=with_orientation)
+            if with_orientation and reading == "independent":
+                rot = Rotation.random(n, random_state=np.random.default_rng([seed, 1]))
+                ts = [Target(x.position, R) for x, R in zip(ts, rot.as_matrix(), strict=True)]
             return [NamedTarget(f"T{i + 1}", x) for i, x in enumerate(ts)]
         if kind == "circle":
             numbers(f"{where}.center", t.get("center"), 3)

@@ -7,7 +7,9 @@ from moik.algorithms.moo.objective_swarms import (
     swarm_best,
     swarm_extreme,
     swarm_partners,
+    utopia_closest,
 )
+from moik.metrics import closest_to_utopia
 
 
 def test_own_objective_and_swarm_best_on_tiny_arrays():
@@ -27,3 +29,13 @@ def test_swarm_extremes_and_partners():
                                   [[0, 1], [0, 1], [6, 7], [6, 7]])
     j = swarm_partners(3, 4, rng=np.random.default_rng(0))
     np.testing.assert_array_equal(j // 4, np.repeat([0, 1, 2], 4))
+
+
+def test_utopia_closest_is_the_metrics_rule():
+    F = np.array([[0.0, 10.0], [0.4, 2.0], [1.0, 0.0]])  # scaled: (0, 1), (0.4, 0.2), (1, 0)
+    assert utopia_closest(F) == 1
+    assert utopia_closest(np.array([[1.0, 5.0], [1.0, 3.0]])) == 1  # a constant objective counts 0
+    rng = np.random.default_rng(4)
+    for _ in range(20):
+        F = rng.random((int(rng.integers(1, 30)), int(rng.integers(2, 4))))
+        assert utopia_closest(F) == closest_to_utopia(F)

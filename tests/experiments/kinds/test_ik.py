@@ -2,10 +2,12 @@
 
 import copy
 
+import numpy as np
 import pytest
 
 from moik.exceptions import ConfigError
 from moik.experiments.config import ExperimentConfig
+from moik.robots import get_robot
 
 
 def test_ik_config_needs_robot_and_checks_locked_joints_and_point_robots(tiny):
@@ -96,3 +98,47 @@ def test_locked_joints_apply_to_the_trials(tiny):
 def test_random_targets_are_reachable_positions(tiny_config):
     targets = tiny_config.targets
     assert len(targets) == 2 and targets[0].rotation is None
+
+
+def test_joint_limits_replace_the_catalog_limits(tiny):
+    from moik.experiments.kinds.ik import experiment_robot
+
+    tiny["problem"]["joint_limits_deg"] = [[-180, 180], [-90, 45]]
+    cfg = ExperimentConfig.from_dict(tiny)
+    arm = experiment_robot("planar2", cfg["problem"])
+    np.testing.assert_allclose(np.degrees(arm.lower), [-180, -90])
+    np.testing.assert_allclose(np.degrees(arm.upper), [180, 45])
+    np.testing.assert_array_equal(arm.fk([0.3, 0.2]), get_robot("planar2").fk([0.3, 0.2]))
+    tiny["problem"]["locked_joints_deg"] = [None, 30.0]  # limits first, then the lock
+    assert experiment_robot("planar2", ExperimentConfig.from_dict(tiny)["problem"]).dof == 1
+
+
+def test_bad_joint_limits_are_config_errors(tiny):
+    tiny["problem"]["joint_limits_deg"] = [[0, 1]]
+    with pytest.raises(ConfigError, match=r"joint_limits_deg must be a list of 2 \[lower, upper\]"):
+        ExperimentConfig.from_dict(tiny)
+    tiny["problem"]["joint_limits_deg"] = [[0, 1], [0, "x"]]
+    with pytest.raises(ConfigError, match=r"joint_limits_deg\[1\]\[1\]"):
+        ExperimentConfig.from_dict(tiny)
+    tiny["problem"]["joint_limits_deg"] = [[0, 1], [1, 0]]
+    with pytest.raises(ConfigError, match=r"problem.joint_limits_deg: "):
+        ExperimentConfig.from_dict(tiny)
+
+
+def test_independent_random_orientations_keep_the_reachable_positions():
+    from moik.experiments.kinds.ik import check_config
+
+    base = {"robot": "rokbani5", "problem": {"kind": "bi-objective"},
+            "targets": {"kind": "random", "n": 4, "seed": 3}}
+    _, reachable = check_config("x", base)
+    _, independent = check_config("x", {**base, "targets": {**base["targets"],
+                                                           "orientation": "independent"}})
+    arm = get_robot("rokbani5")
+    for r, i in zip(reachable, independent, strict=True):
+        np.testing.assert_array_equal(r.position, i.position)
+        assert r.target.q_source is not None and i.target.q_source is None
+        np.testing.assert_allclose(arm.fk(r.target.q_source)[:3, :3], r.rotation, atol=1e-12)
+        assert not np.allclose(r.rotation, i.rotation)
+        np.testing.assert_allclose(i.rotation @ i.rotation.T, np.eye(3), atol=1e-12)
+    with pytest.raises(ConfigError, match="orientation must be one of reachable, independent"):
+        check_config("x", {**base, "targets": {**base["targets"], "orientation": "fk"}})

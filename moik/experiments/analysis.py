@@ -1,7 +1,9 @@
 """Tables computed from a results folder, with the paper's numbers side by side.
 
 One function per analysis name of :data:`moik.experiments.config.ANALYSES`
-(the per-target ones in :mod:`moik.experiments.per_target`); each returns
+(the per-target ones in :mod:`moik.experiments.per_target`, the front-quality
+ones of multi-objective benchmark problems in
+:mod:`moik.experiments.front_quality`); each returns
 :class:`~moik.experiments.tables.Table` objects that
 :mod:`moik.experiments.report` prints as Markdown. Paper rows come from the
 config's ``paper`` dict (keys ``summary``, ``hv``, ``joint_motion``,
@@ -13,6 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik.experiments.front_quality import FUNCTIONS as FRONT_FUNCTIONS
 from moik.experiments.per_target import FUNCTIONS
 from moik.experiments.store import ResultStore
 from moik.experiments.tables import Results, Table, fmt
@@ -210,7 +213,7 @@ def analyze(store: ResultStore) -> tuple[Results, list[Table]]:
     tables: list[Table] = []
     if res.ok:
         for name in res.config.get("analyses", ["summary"]):
-            tables += {**ANALYSIS_FUNCTIONS, **FUNCTIONS}[name](res)
+            tables += {**ANALYSIS_FUNCTIONS, **FUNCTIONS, **FRONT_FUNCTIONS}[name](res)
     for table in tables:
         if res.paper_note and any("paper" in row for row in table.rows):
             table.notes.append(res.paper_note)

@@ -30,7 +30,7 @@ EXPERIMENT = {
         {"name": "m-pso"},
     ],
     "pop_size": 50,
-    "n_gen": 500,
+    "iterations": 500,
     "runs": 1,
     "seed": 2022,
     "protocol": {"threshold": 1e-6, "max_failures": 10},
@@ -74,6 +74,6 @@ EXPERIMENT = {
                      "time": 1.2234},
         },
     },
-    "quick": {"targets": {"n": 3}, "pop_size": 10, "n_gen": 15,
+    "quick": {"targets": {"n": 3}, "pop_size": 10, "iterations": 15,
               "protocol": {"max_failures": 2}},
 }

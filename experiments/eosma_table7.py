@@ -29,7 +29,7 @@ EXPERIMENT = {
         {"name": "m-pso"},
     ],
     "pop_size": 100,
-    "n_gen": 1000,
+    "iterations": 1000,
     "runs": 1,
     "seed": 2022,
     "protocol": {"threshold": 1e-6, "max_failures": 10},
@@ -73,6 +73,6 @@ EXPERIMENT = {
                      "time": 0.61688},
         },
     },
-    "quick": {"targets": {"n": 3}, "pop_size": 10, "n_gen": 15,
+    "quick": {"targets": {"n": 3}, "pop_size": 10, "iterations": 15,
               "protocol": {"max_failures": 2}},
 }

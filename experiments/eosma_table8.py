@@ -43,7 +43,7 @@ EXPERIMENT = {
     ],
     "pop_size": 100,
     "archive_size": 100,
-    "n_gen": 1000,
+    "iterations": 1000,
     "runs": 20,
     "seed": 2022,
     "analyses": ["friedman-hv"],
@@ -96,5 +96,5 @@ EXPERIMENT = {
             },
         },
     },
-    "quick": {"pop_size": 10, "archive_size": 10, "n_gen": 10, "runs": 2},
+    "quick": {"pop_size": 10, "archive_size": 10, "iterations": 10, "runs": 2},
 }

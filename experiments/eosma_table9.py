@@ -37,7 +37,7 @@ EXPERIMENT = {
         {"name": "eo"},
     ],
     "pop_size": 100,
-    "n_gen": 1000,
+    "iterations": 1000,
     "runs": 10,
     "seed": 2022,
     "analyses": ["joint-motion", "summary"],
@@ -53,5 +53,5 @@ EXPERIMENT = {
                              -51.677450, -14.648226], "distance": 247.7969},
         },
     },
-    "quick": {"pop_size": 10, "n_gen": 20, "runs": 2},
+    "quick": {"pop_size": 10, "iterations": 20, "runs": 2},
 }

@@ -61,7 +61,7 @@ EXPERIMENT = {
         {"name": "cpso-at"},
     ],
     "pop_size": 30,
-    "n_gen": 500,
+    "iterations": 500,
     "runs": 30,
     "seed": 2017,
     "analyses": ["per-target", "per-target-ranksum"],
@@ -75,6 +75,6 @@ EXPERIMENT = {
                                       for lab, p in zip(_LABELS[1:], ps, strict=True)}
                     for i, ps in _TABLE13.items()},
     },
-    "quick": {"problem": {"names": ["cec2017_F3", "cec2017_F30"]}, "pop_size": 8, "n_gen": 4,
+    "quick": {"problem": {"names": ["cec2017_F3", "cec2017_F30"]}, "pop_size": 8, "iterations": 4,
               "runs": 2},
 }

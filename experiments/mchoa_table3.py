@@ -63,7 +63,7 @@ EXPERIMENT = {
                 "params": {"n_var": 30}},
     "algorithms": [{"name": n} for n in _LABELS],
     "pop_size": 50,
-    "n_gen": 1000,
+    "iterations": 1000,
     "runs": 30,
     "seed": 23,
     "analyses": ["per-target", "per-target-ranksum"],
@@ -74,6 +74,6 @@ EXPERIMENT = {
                            for lab, v in zip(_LABELS, rows, strict=True)}
                        for f, rows in _TABLE3.items()},
     },
-    "quick": {"problem": {"names": ["F1", "F9", "F14", "F21", "F24"]}, "pop_size": 8, "n_gen": 5,
+    "quick": {"problem": {"names": ["F1", "F9", "F14", "F21", "F24"]}, "pop_size": 8, "iterations": 5,
               "runs": 2},
 }

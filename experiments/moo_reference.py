@@ -8,9 +8,8 @@ here (``zdtK-30`` and ``zdtK-5``), 10 runs, with NSGA-II and ``random-search``
 (the NSGA-II budget, 100 x 101 evaluations, sampled uniformly) beside them;
 MSSA with N = 200 and archive 100 as MSSA.m. The papers' own IGD tables are not in this
 repository's papers, so the report prints moik's numbers only. Budget: 100
-update iterations after initialization (pymoo counts initialization as
-generation 1: ``n_gen`` 101); each algorithm evaluates what its method does per
-iteration. Metrics as in ``moo-suite`` (IGD against the analytic front, HV with
+update iterations after initialization (``iterations``); each algorithm
+evaluates what its method does per iteration. Metrics as in ``moo-suite`` (IGD against the analytic front, HV with
 1.1 x the front's nadir).
 """
 
@@ -33,13 +32,13 @@ EXPERIMENT = {
         {"name": "random-search"},
     ],
     "pop_size": 100,
-    "n_gen": 101,
+    "iterations": 100,
     "runs": 10,
     "seed": 2016,
     "analyses": ["front-quality", "mean-ranks"],
     "proposed": "nsga2",
     "quick": {"problem": {"names": [{"name": "zdt1", "label": "zdt1-5", "params": {"n_var": 5}}]},
-              "pop_size": 10, "n_gen": 4, "runs": 2,
+              "pop_size": 10, "iterations": 3, "runs": 2,
               "algorithms": [{"name": "mogwo"}, {"name": "mssa"}, {"name": "nsga2"},
                              {"name": "random-search"}]},
 }

@@ -7,7 +7,7 @@ downloaded): ZDT1/2/3 with 30 variables, ZDT4 and ZDT6 with 10 (their standard
 sizes, pymoo's defaults), DTLZ1 (7 variables) and DTLZ2 (12) with three
 objectives. Every multi-objective algorithm of the registry with its defaults,
 population 100, 25,000 evaluations per run (``problem.evaluations``; the
-generation count is then unused), 10 runs; ``random-search`` samples the same
+iteration count is then unused), 10 runs; ``random-search`` samples the same
 25,000 points uniformly and keeps the non-dominated ones. IGD against the
 analytic front (ZDT 1,000 points, DTLZ 496 Das-Dennis points) and HV with the
 reference point 1.1 x the front's nadir per objective; Wilcoxon rank-sum test of
@@ -34,7 +34,7 @@ EXPERIMENT = {
     ]},
     "algorithms": [{"name": n} for n in _MO] + [{"name": "random-search"}],
     "pop_size": 100,
-    "n_gen": 250,
+    "iterations": 249,  # unused: problem.evaluations bound the runs
     "runs": 10,
     "seed": 2000,
     "analyses": ["front-quality", "mean-ranks"],

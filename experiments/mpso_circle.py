@@ -19,7 +19,7 @@ EXPERIMENT = {
                 "euler_deg": [0, 0, 0], "convention": "zyx-euler"},
     "algorithms": [{"name": "mo-m-pso", "params": {"w": 0.8, "c1": 1.493, "c2": 1.493}}],
     "pop_size": 100,
-    "n_gen": 500,
+    "iterations": 500,
     "runs": 1,
     "seed": 2022,
     "analyses": ["compromise"],
@@ -30,5 +30,5 @@ EXPERIMENT = {
             "orientation": {"best": 1.85e-8, "worst": 4.58e-4, "mean": 5.73e-5, "std": 0.002},
         }},
     },
-    "quick": {"targets": {"n_points": 6}, "pop_size": 10, "n_gen": 15},
+    "quick": {"targets": {"n_points": 6}, "pop_size": 10, "iterations": 15},
 }

@@ -15,7 +15,7 @@ EXPERIMENT = {
                                               "fk_q_deg": [30, 60, 45, 60, 60]}]},
     "algorithms": [{"name": "m-pso", "params": {"w": 0.8, "c1": 1.493, "c2": 1.493}}],
     "pop_size": 50,
-    "n_gen": 500,
+    "iterations": 500,
     "runs": 30,
     "seed": 2022,
     "success_threshold": 1e-4,
@@ -24,5 +24,5 @@ EXPERIMENT = {
         "citation": "MO-m-PSO paper, Section 4.1 text (position error, cm)",
         "summary": {"m-pso": {"best": 3.01e-10, "worst": 1.08e-5, "mean": 2.01e-6}},
     },
-    "quick": {"runs": 3, "n_gen": 20, "pop_size": 10},
+    "quick": {"runs": 3, "iterations": 20, "pop_size": 10},
 }

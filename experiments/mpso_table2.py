@@ -21,7 +21,7 @@ EXPERIMENT = {
     ]},
     "algorithms": [{"name": "mo-m-pso", "params": {"w": 0.8, "c1": 1.493, "c2": 1.493}}],
     "pop_size": 50,
-    "n_gen": 500,
+    "iterations": 500,
     "runs": 100,
     "seed": 2022,
     "analyses": ["compromise"],
@@ -32,5 +32,5 @@ EXPERIMENT = {
             "orientation": {"best": 2.34e-9, "worst": 0.6439, "mean": 0.0918, "std": 0.2268},
         }},
     },
-    "quick": {"pop_size": 10, "n_gen": 15, "runs": 3},
+    "quick": {"pop_size": 10, "iterations": 15, "runs": 3},
 }

@@ -15,7 +15,7 @@ EXPERIMENT = {
     "targets": {"kind": "random", "n": 100, "seed": 3, "with_orientation": True},
     "algorithms": [{"name": "mo-m-pso", "params": {"w": 0.8, "c1": 1.493, "c2": 1.493}}],
     "pop_size": 100,
-    "n_gen": 500,
+    "iterations": 500,
     "runs": 1,
     "seed": 2022,
     "analyses": ["compromise"],
@@ -26,5 +26,5 @@ EXPERIMENT = {
             "orientation": {"best": 1.65e-10, "worst": 0.643, "mean": 0.091, "std": 0.126},
         }},
     },
-    "quick": {"targets": {"n": 3}, "pop_size": 10, "n_gen": 15},
+    "quick": {"targets": {"n": 3}, "pop_size": 10, "iterations": 15},
 }

@@ -22,7 +22,7 @@ EXPERIMENT = {
         {"name": "csa", "optional": True},
     ],
     "pop_size": 50,
-    "n_gen": 500,
+    "iterations": 500,
     "runs": 30,
     "seed": 2022,
     "success_threshold": 1e-4,
@@ -36,5 +36,5 @@ EXPERIMENT = {
             "csa": {"r_plus": 0, "r_minus": 465, "p": 3.01e-11, "best": "m-pso"},
         },
     },
-    "quick": {"pop_size": 10, "n_gen": 15, "runs": 6},
+    "quick": {"pop_size": 10, "iterations": 15, "runs": 6},
 }

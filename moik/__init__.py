@@ -13,9 +13,9 @@ and scipy take about half a second to import, which a script that only reads
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
+from moik._lazy import lazy_names
 from moik._version import __version__
 from moik.exceptions import MoikError
 
@@ -35,20 +35,20 @@ if TYPE_CHECKING:
     )
 
 _LAZY: dict[str, tuple[str, str | None]] = {
-    "IKBatchResult": ("moik.solver", "IKBatchResult"),
-    "IKResult": ("moik.solver", "IKResult"),
-    "ParetoIKResult": ("moik.solver", "ParetoIKResult"),
-    "PathResult": ("moik.solver", "PathResult"),
+    "IKBatchResult": ("moik.solver.batch", "IKBatchResult"),
+    "IKResult": ("moik.solver.solve_ik", "IKResult"),
+    "ParetoIKResult": ("moik.solver.pareto", "ParetoIKResult"),
+    "PathResult": ("moik.solver.path", "PathResult"),
     "Robot": ("moik.robots", "Robot"),
     "algorithms": ("moik.algorithms", None),
     "available_robots": ("moik.robots", "available_robots"),
     "get_robot": ("moik.robots", "get_robot"),
     "load_urdf": ("moik.robots.urdf", "load_urdf"),
     "problems": ("moik.problems", None),
-    "solve_ik": ("moik.solver", "solve_ik"),
-    "solve_ik_batch": ("moik.solver", "solve_ik_batch"),
-    "solve_ik_pareto": ("moik.solver", "solve_ik_pareto"),
-    "solve_path": ("moik.solver", "solve_path"),
+    "solve_ik": ("moik.solver.solve_ik", "solve_ik"),
+    "solve_ik_batch": ("moik.solver.batch", "solve_ik_batch"),
+    "solve_ik_pareto": ("moik.solver.pareto", "solve_ik_pareto"),
+    "solve_path": ("moik.solver.path", "solve_path"),
 }
 """Public name -> (module, attribute); None: the module itself."""
 
@@ -72,16 +72,4 @@ __all__ = [
 ]
 
 
-def __getattr__(name: str) -> Any:
-    """Load a public name's module at its first use (start-up time, see the docstring)."""
-    if name not in _LAZY:
-        raise AttributeError(f"module 'moik' has no attribute {name!r}")
-    module_name, attribute = _LAZY[name]
-    module = importlib.import_module(module_name)
-    value = module if attribute is None else getattr(module, attribute)
-    globals()[name] = value
-    return value
-
-
-def __dir__() -> list[str]:
-    return sorted({*globals(), *__all__})
+__getattr__, __dir__ = lazy_names("moik", _LAZY, globals(), __all__)

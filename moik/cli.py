@@ -8,7 +8,9 @@ Subcommands:
     moik experiment list             list the papers' experiments
     moik experiment run NAME [--quick] [--workers N] [--resume] [--out DIR] [--dask-scheduler A]
     moik experiment run --config FILE [...]   run your own config file
-    moik report DIR                  Markdown report of a results folder
+    moik report DIR [DIR ...]        Markdown report of each results folder (DIR/report.md)
+    moik report DIR [DIR ...] --docs DOCS   regenerate DOCS/results/NAME.md and the generated
+                                     blocks of DOCS/reproducing.md from the results
 
 ROBOT is a catalog name (``moik robots``) or a URDF file (``--base``/``--tip``
 name the chain's first and last links). Joint values on the command line are

@@ -93,12 +93,17 @@ def finite_bounds(problem, name: str) -> tuple[np.ndarray, np.ndarray]:
 
 
 def schedule_length(termination, max_iter, n_initial: int, per_iteration: float) -> int:
-    """T: ``max_iter`` if given, else from an ``n_gen`` or ``n_eval`` termination
-    (the smaller), else 1000."""
+    """T, the number of update iterations after initialization (the papers' Max_t).
+
+    ``max_iter`` if given; else the smaller of what an ``n_gen`` termination allows
+    (``n_max_gen - 1``: pymoo counts the initial population as generation 1) and what
+    an ``n_eval`` termination allows (``ceil((n_max_evals - n_initial) / per_iteration)``);
+    else 1000. At least 1.
+    """
     if max_iter is None:
-        n_gen = find_limit(termination, "n_max_gen")
-        by_eval = (find_limit(termination, "n_max_evals") - n_initial) / per_iteration + 1
-        limit = min(n_gen, np.ceil(by_eval))
+        n_gen = find_limit(termination, "n_max_gen") - 1.0
+        by_eval = np.ceil((find_limit(termination, "n_max_evals") - n_initial) / per_iteration)
+        limit = min(n_gen, by_eval)
         max_iter = int(limit) if np.isfinite(limit) else 1000
     return max(int(max_iter), 1)
 
@@ -107,21 +112,24 @@ def planned_iterations(termination, *, t: int, n_eval: int, elapsed: float,
                        per_iteration: float, plans: dict) -> float:
     """The schedule length T the termination's budget allows, seen from iteration ``t``.
 
-    T counts pymoo generations (the initial population is generation 1), so the
-    iterations ``t = 1 .. T - 1`` fit the budget and ``t / T`` runs over it:
+    T counts update iterations after initialization (the papers' Max_t): the
+    iterations ``t = 1 .. T`` fit the budget and ``t / T`` reaches 1 on the last one:
 
-    - ``n_gen``: its ``n_max_gen``;
-    - ``n_eval``: ``t`` plus the iterations the evaluations left allow at
-      ``per_iteration`` each, planned once, when the criterion is first seen (its T is
-      kept in ``plans``, keyed by the criterion object, so an algorithm whose rate
-      varies within a run keeps one plan; a new criterion, e.g. a checkpoint resumed
-      with a new termination, is planned from where the run stands);
-    - ``time``: ``t / p`` with ``p`` the share of the time used, re-estimated every call;
+    - ``n_gen``: ``n_max_gen - 1`` (pymoo counts the initial population as
+      generation 1);
+    - ``n_eval``: ``t - 1`` plus the iterations the evaluations left allow at
+      ``per_iteration`` each (the last one possibly cut short), planned once, when
+      the criterion is first seen (its T is kept in ``plans``, keyed by the criterion
+      object, so an algorithm whose rate varies within a run keeps one plan; a new
+      criterion, e.g. a checkpoint resumed with a new termination, is planned from
+      where the run stands);
+    - ``time``: ``t / p`` with ``p`` the share of the time used, re-estimated every call
+      (an estimate: the run stops when the time is up);
     - any-of criteria (tuples, pymoo's default and robust terminations): the smallest T;
       all-of: the largest; a ``RobustTermination``: its inner criterion's; other
       criteria (tolerances): none (inf).
 
-    Every finite T is at least ``t + 1``.
+    Every finite T is at least ``t``.
 
     Args:
         termination: A pymoo termination (the algorithm's current one).
@@ -144,16 +152,16 @@ def planned_iterations(termination, *, t: int, n_eval: int, elapsed: float,
         return planned_iterations(termination.termination, **kw)
     T = math.inf
     if getattr(termination, "n_max_gen", None) is not None:
-        T = float(termination.n_max_gen)
+        T = float(termination.n_max_gen) - 1.0
     elif getattr(termination, "n_max_evals", None) is not None:
         if termination not in plans:
             left = float(termination.n_max_evals) - n_eval
-            plans[termination] = (t + max(math.ceil(left / per_iteration), 1)
+            plans[termination] = (t - 1 + max(math.ceil(left / per_iteration), 1)
                                   if math.isfinite(left) else math.inf)
         T = plans[termination]
     elif getattr(termination, "max_time", None) is not None and elapsed > 0:
         T = math.ceil(t * float(termination.max_time) / elapsed)
-    return max(T, t + 1.0)
+    return max(T, float(t))
 
 
 def initial_population(n: int, xl: np.ndarray, xu: np.ndarray, X0, *,
@@ -211,6 +219,17 @@ class ArrayStateMixin:
         self._post_advance()
         if self.termination.has_terminated():
             self.finalize()
+
+    def _problem_values(self, X: np.ndarray) -> dict:
+        """``problem.evaluate(X, return_as_dictionary=True)``; an unconstrained problem that
+        offers ``batch_objectives(X)`` (moik's IK problems: the same F bit for bit, without
+        pymoo's per-call bookkeeping) is asked that instead, unless it answers None."""
+        direct = None if self._constrained else getattr(self.problem, "batch_objectives", None)
+        if direct is not None:
+            F = direct(X)
+            if F is not None:
+                return {"F": F}
+        return self.problem.evaluate(X, return_as_dictionary=True)
 
     def _end_iteration(self) -> None:
         """Hook run after an iteration's last batch (the MO base merges its archive)."""

@@ -82,7 +82,9 @@ class ArrayAlgorithm(ArrayStateMixin, Algorithm):
         X0: Optional initial points (k <= pop_size rows within the bounds); the
             remaining rows are drawn uniformly.
         max_iter: Schedule length T of algorithms whose parameters depend on
-            t/T. None: taken from an ``n_gen``/``n_eval`` termination, else 1000.
+            t/T: the number of update iterations after initialization (the papers'
+            Max_t; ``t = 1 .. T``). None: what an ``n_gen`` (``n_max_gen - 1``) or
+            ``n_eval`` termination allows, else 1000.
         **kwargs: pymoo ``Algorithm`` options (``output``, ``callback``, ``seed`` ...,
             :data:`~moik.algorithms.array_state.PYMOO_OPTIONS`).
 
@@ -188,7 +190,7 @@ class ArrayAlgorithm(ArrayStateMixin, Algorithm):
         k = budget_left(self._max_evals, self.evaluator.n_eval, n)
         F, CV, G, H = np.empty(0), (np.empty(0) if self._constrained else None), None, None
         if k:
-            out = self.problem.evaluate(X if k == n else X[:k], return_as_dictionary=True)
+            out = self._problem_values(X if k == n else X[:k])
             self.evaluator.n_eval += k
             F = out["F"][:, 0]
             if self._constrained:

@@ -15,8 +15,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik.experiments.dh_fit import FUNCTIONS as DH_FIT_FUNCTIONS
 from moik.experiments.front_quality import FUNCTIONS as FRONT_FUNCTIONS
 from moik.experiments.per_target import FUNCTIONS
+from moik.experiments.solution_sets import FUNCTIONS as RANK_FUNCTIONS
 from moik.experiments.store import ResultStore
 from moik.experiments.tables import Results, Table, fmt
 from moik.metrics import (
@@ -95,10 +97,20 @@ def front_hv(res: Results) -> dict[tuple[str, int], dict[str, np.ndarray]]:
 
 
 def friedman_hv_table(res: Results) -> list[Table]:
-    """HV mean/std, Friedman mean rank and time per target (EOSMA Table 8)."""
+    """HV mean/std, Friedman mean rank, time and uncovered box share per target (EOSMA Table 8).
+
+    The reference box is ``[0, ref]`` (the objectives are non-negative errors): its
+    volume less the HV is what the front leaves uncovered, given also as a share of it.
+    """
     tables, paper = [], _paper(res, "hv")
     for (name, ti), hv in front_hv(res).items():
         ref = hv.pop("__ref__")
+        box = float(np.prod(ref))
+
+        def uncovered(mean, box=box):
+            return [fmt(box - mean, 4), f"{100 * (box - mean) / box:.2f} %"] if box > 0 and \
+                mean is not None else ["-", "-"]
+
         labels = [lab for lab in res.labels if hv[lab].size]
         n_common = min((hv[lab].size for lab in labels), default=0)
         fr = friedman_ranks({lab: hv[lab][:n_common] for lab in labels},
@@ -110,19 +122,23 @@ def friedman_hv_table(res: Results) -> list[Table]:
             rank = (f"{fr.mean_ranks[lab]:.2f} ({fr.order[lab]})" if fr else "-")
             rows.append([lab, "moik", fmt(float(hv[lab].mean()), 6),
                          fmt(float(np.std(hv[lab], ddof=1)) if hv[lab].size > 1 else 0.0, 3),
-                         rank, fmt(float(np.mean(times))), fmt(float(np.mean(sizes)))])
+                         rank, fmt(float(np.mean(times))), fmt(float(np.mean(sizes))),
+                         *uncovered(float(hv[lab].mean()))])
             p = paper.get(name, {}).get(lab)
             if p:
                 rows.append([lab, res.citation, fmt(p.get("mean"), 6), fmt(p.get("std"), 3),
                              f"{p['fr']:.2f} ({p.get('rank', '-')})" if "fr" in p else "-",
                              fmt(p.get("time")),
-                             "-"])
-        notes = [f"reference point {np.round(ref, 6).tolist()}; runs per algorithm: {n_common}"]
+                             "-", *uncovered(p.get("mean"))])
+        notes = [f"reference point {np.round(ref, 6).tolist()}; runs per algorithm: {n_common}",
+                 f"uncovered: volume of the reference box [0, ref] ({fmt(box, 5)}) less the mean "
+                 "HV, and its share of the box"]
         if fr is not None and np.isfinite(fr.p_value):
             notes.append(f"Friedman test p-value: {fr.p_value:.3g}")
         tables.append(Table(f"Hypervolume at {name}", ["algorithm", "source", "HV mean", "HV std",
                                                        "Friedman rank", "time (s)",
-                                                       "front size"], rows, notes))
+                                                       "front size", "uncovered (box - HV)",
+                                                       "uncovered share"], rows, notes))
     return tables
 
 
@@ -213,7 +229,8 @@ def analyze(store: ResultStore) -> tuple[Results, list[Table]]:
     tables: list[Table] = []
     if res.ok:
         for name in res.config.get("analyses", ["summary"]):
-            tables += {**ANALYSIS_FUNCTIONS, **FUNCTIONS, **FRONT_FUNCTIONS}[name](res)
+            tables += {**ANALYSIS_FUNCTIONS, **FUNCTIONS, **DH_FIT_FUNCTIONS,
+                       **RANK_FUNCTIONS, **FRONT_FUNCTIONS}[name](res)
     for table in tables:
         if res.paper_note and any("paper" in row for row in table.rows):
             table.notes.append(res.paper_note)

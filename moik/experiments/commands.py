@@ -1,13 +1,15 @@
-"""The ``moik experiment list|run`` and ``moik report`` subcommands."""
+"""The ``moik experiment list|run`` and ``moik report [--docs]`` subcommands."""
 
 from __future__ import annotations
 
 import argparse
 import sys
+from pathlib import Path
 
 from moik._validate import integer
-from moik.exceptions import MoikError
+from moik.exceptions import MoikError, ParameterError
 from moik.experiments.config import load_config
+from moik.experiments.docs import write_docs
 from moik.experiments.registry import ENV_VAR, experiment_files, get_experiment
 from moik.experiments.report import make_report
 from moik.experiments.runner import default_out, run_experiment
@@ -58,16 +60,39 @@ def cmd_run(args: argparse.Namespace) -> int:
 
 
 def cmd_report(args: argparse.Namespace) -> int:
-    """Write the Markdown report of a results folder (1 if a folder could not be reported)."""
-    report = make_report(args.folder, figures=not args.no_figures, output=args.output)
-    print(f"report written to {report.path}")
-    if report.warnings:
-        print(f"{len(report.warnings)} folder(s) with damaged or missing trials (left out; "
-              "see the warnings)")
-    if report.failed:
-        print(f"{len(report.failed)} folder(s) could not be reported: "
-              + "; ".join(report.failed))
-    return 1 if report.failed else 0
+    """Write the report of each results folder, or with ``--docs`` the docs (1 if one failed)."""
+    if args.docs is not None:
+        if args.output is not None:
+            raise ParameterError("--output names the report file of one folder; --docs writes "
+                                 "the docs folder instead: give one of them")
+        return _docs(args)
+    if args.output is not None and len(args.folder) > 1:
+        raise ParameterError(f"--output names one report file, got {len(args.folder)} folders "
+                             "(leave it out: each folder gets its report.md)")
+    failed = 0
+    for folder in args.folder:
+        report = make_report(folder, figures=not args.no_figures, output=args.output)
+        print(f"report written to {report.path}")
+        if report.warnings:
+            print(f"{len(report.warnings)} folder(s) with damaged or missing trials (left out; "
+                  "see the warnings)")
+        if report.failed:
+            print(f"{len(report.failed)} folder(s) could not be reported: "
+                  + "; ".join(report.failed))
+            failed += 1
+    return 1 if failed else 0
+
+
+def _docs(args: argparse.Namespace) -> int:
+    update = write_docs(args.folder, args.docs, figures=not args.no_figures)
+    for page in update.pages:
+        print(f"written {page}")
+    replaced = ", ".join(f"{name} {kind}" for name, kind in update.replaced) or "none"
+    print(f"{Path(args.docs) / 'reproducing.md'}: blocks regenerated: {replaced}; kept as they "
+          f"are: {len(update.kept)}")
+    if update.warnings:
+        print(f"{len(update.warnings)} warning(s) (see stderr)")
+    return 1 if update.warnings else 0
 
 
 def _positive_int(text: str) -> int:
@@ -111,10 +136,15 @@ def add_subcommands(sub) -> None:
                         "a partial run compares every algorithm")
     q.add_argument("--no-progress", action="store_true", help="no progress bar")
     q.set_defaults(func=cmd_run)
-    p = sub.add_parser("report", help="write a Markdown report of a results folder",
+    p = sub.add_parser("report", help="write a Markdown report of results folders, or the docs",
                        description="Write DIR/report.md: tables beside the paper's numbers, "
-                                   "and figures. DIR is a results folder or a folder of them.")
-    p.add_argument("folder", metavar="DIR", help="results folder (or a folder of them)")
+                                   "and figures. DIR is a results folder or a folder of them. "
+                                   "With --docs DOCS: write DOCS/results/NAME.md per experiment "
+                                   "and regenerate its blocks in DOCS/reproducing.md.")
+    p.add_argument("folder", metavar="DIR", nargs="+",
+                   help="results folder (or a folder of them)")
     p.add_argument("--no-figures", action="store_true", help="tables only")
     p.add_argument("--output", metavar="FILE", help="report file (default DIR/report.md)")
+    p.add_argument("--docs", metavar="DOCS",
+                   help="docs folder to regenerate from the results (e.g. docs/)")
     p.set_defaults(func=cmd_report)

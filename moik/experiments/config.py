@@ -18,8 +18,12 @@ An experiment is one Python file in an experiments folder that defines a dict
   "params": {...}, "optional": bool}`` (an optional algorithm that is not
   registered is left out; a kind's baselines, such as ``random-search``, are
   accepted beside the registry's names); ``pop_size``,
-  ``archive_size`` (multi-objective only), ``n_gen``, ``runs`` (per target)
-  and ``seed`` apply to all;
+  ``archive_size`` (multi-objective only), ``iterations``, ``runs`` (per target)
+  and ``seed`` apply to all; ``iterations`` is the papers' Max_t (T): the update
+  iterations after the initial population, so a run evaluates the initial
+  population plus ``iterations`` x the algorithm's evaluations per iteration
+  (pymoo's termination ``("n_gen", iterations + 1)``: pymoo counts the initial
+  population as generation 1). The former key ``n_gen`` is refused;
 - ``protocol`` (optional): ``{"threshold", "max_failures"}``, the EOSMA
   re-solve protocol (:func:`moik.experiments.protocol.solve_until_success`);
 - ``analyses``: which tables the report prints (:data:`ANALYSES`);
@@ -51,13 +55,14 @@ from moik.experiments.checks import check_keys, flag, integer, number
 from moik.experiments.kinds import KINDS, MULTI_OBJECTIVE_PROBLEMS, baselines, kind_of
 
 ANALYSES = ("summary", "ranksum", "friedman-hv", "joint-motion", "compromise", "signed-rank",
-            "per-target", "per-target-ranksum", "branches", "front-quality", "mean-ranks")
+            "per-target", "per-target-ranksum", "branches", "dh-fit", "solution-rank",
+            "front-quality", "mean-ranks")
 """Report tables an experiment can ask for (see :mod:`moik.experiments.analysis`)."""
 
 _TOP_KEYS = {"name", "title", "source", "robot", "problem", "targets", "algorithms", "pop_size",
-             "archive_size", "n_gen", "runs", "seed", "protocol", "analyses", "proposed",
+             "archive_size", "iterations", "runs", "seed", "protocol", "analyses", "proposed",
              "success_threshold", "paper", "quick", "requires"}
-_REQUIRED = ("name", "title", "source", "problem", "algorithms", "pop_size", "n_gen", "runs",
+_REQUIRED = ("name", "title", "source", "problem", "algorithms", "pop_size", "iterations", "runs",
              "seed")
 _NAME = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
 
@@ -160,7 +165,9 @@ class ExperimentConfig:
             ConfigError: Naming the key and what was expected.
         """
         where = path or "experiment"
+        _refuse_renamed(where, data)
         cfg = check_keys(where, data, _TOP_KEYS, _REQUIRED)
+        _refuse_renamed(f"{where}: quick", cfg.get("quick", {}))
         quick = check_keys(f"{where}: quick", cfg.pop("quick", {}), _TOP_KEYS - {"quick", "name"})
         name = cfg["name"]
         if not isinstance(name, str) or not _NAME.match(name):
@@ -172,7 +179,7 @@ class ExperimentConfig:
         integer(f"{where}: pop_size", cfg["pop_size"], 1)
         if cfg.get("archive_size") is not None:
             integer(f"{where}: archive_size", cfg["archive_size"], 1)
-        integer(f"{where}: n_gen", cfg["n_gen"], 1)
+        integer(f"{where}: iterations", cfg["iterations"], 1)
         integer(f"{where}: runs", cfg["runs"], 1)
         integer(f"{where}: seed", cfg["seed"], 0)
         cfg["problem"], targets = KINDS[kind].check_config(where, cfg)
@@ -208,6 +215,19 @@ class ExperimentConfig:
         """SHA-256 of ``raw`` and the algorithms present (identifies a run's configuration)."""
         text = json.dumps([self.raw, self.labels], sort_keys=True, separators=(",", ":"))
         return hashlib.sha256(text.encode()).hexdigest()
+
+
+def _refuse_renamed(where: str, data: Any) -> None:
+    """Refuse the keys a former config format used, naming their replacement.
+
+    Raises:
+        ConfigError: For ``n_gen`` (now ``iterations``).
+    """
+    if isinstance(data, Mapping) and "n_gen" in data:
+        raise ConfigError(f"{where}: the key 'n_gen' was renamed 'iterations' (the papers' "
+                          f"Max_t: update iterations after the initial population; a run does "
+                          f"pop_size + iterations x per-iteration evaluations), got "
+                          f"n_gen={data['n_gen']!r}")
 
 
 def _check_rest(where: str, cfg: dict, algorithms: tuple[AlgorithmSpec, ...],

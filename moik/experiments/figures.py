@@ -6,7 +6,11 @@ times (Figs. 9, 14) and error boxes (Figs. 10, 15); ``ranksum`` the p-value bars
 (Figs. 11, 16); ``friedman-hv`` the fronts at each pose (Figs. 17-18);
 ``joint-motion`` the quintic motion (Fig. 20); ``compromise`` the tracked
 circle (MO-m-PSO Fig. 7) or the front with its compromise (Fig. 5a);
-``signed-rank`` convergence and errors (MO-m-PSO Fig. 8). Files go to
+``signed-rank`` convergence and errors (MO-m-PSO Fig. 8); ``per-target``
+with several algorithms and targets the final errors per target (I-BES Figs.
+8-13, one figure per arm). Benchmark experiments get the mean convergence of
+every problem on one grid (MChOA Fig. 5), as the error ``f - f*`` where the
+optimum is known. Files go to
 ``OUT/figures/NAME.png`` and ``.pdf``. A figure that cannot be drawn is skipped
 with a note; drawing never fails the report.
 
@@ -78,9 +82,60 @@ def objective_label(problem: dict, unit: str) -> tuple[str, str]:
     return text, formula
 
 
+def _benchmark_plans(res: Results) -> list[tuple[str, str, Callable]]:
+    """The mean convergence of every benchmark problem, one panel each."""
+    panels, shifted = {}, set()
+    for ti, target in enumerate(res.meta["targets"]):
+        curves = {}
+        for lab in res.labels:
+            recs = [r for r in res.by_label[lab] if r["target"] == ti]
+            runs = [res.store.load_arrays(r["trial"]).get("convergence") for r in recs]
+            runs = [c for c in runs if c is not None and c.size]
+            if not runs:
+                continue
+            n = min(c.size for c in runs)
+            f_opt = recs[0].get("f_opt")
+            C = np.array([c[:n] for c in runs])
+            if f_opt is not None and np.isfinite(f_opt):
+                C = np.maximum(C - f_opt, 0.0)
+                shifted.add(target["name"])
+            curves[lab] = C
+        if curves and all(np.all(np.isfinite(c)) and np.all(c >= 0) for c in curves.values()):
+            panels[target["name"]] = curves
+    if not panels:
+        return []
+    proposed = res.config.get("proposed") or res.labels[0]
+    what = ("f - f* (best value found minus the known optimum)" if shifted
+            else "best value found")
+    return [("convergence", "Mean convergence per problem", lambda s: mp.plot_convergence_panels(
+        panels, ylabel=f"mean best {('f - f*' if shifted else 'f')} (function value)",
+        title=f"Mean convergence over the runs: {what}; x = iteration", proposed=proposed,
+        save=s))]
+
+
+def _error_boxes_per_target(res: Results, formula: str, units: str, proposed
+                            ) -> list[tuple[str, str, Callable]]:
+    """Final objective per algorithm at each target (I-BES Figs. 8-13), one figure each."""
+    plans = []
+    for ti, target in enumerate(res.meta["targets"]):
+        errors = {lab: np.array([r["best_f"] for r in res.by_label[lab] if r["target"] == ti
+                                 and r.get("best_f") is not None]) for lab in res.labels}
+        errors = {lab: e for lab, e in errors.items() if e.size}
+        if len(errors) < 2:
+            continue
+        name = target["name"]
+        plans.append((f"errors-{name}", f"Final {formula} at {name}, every run",
+                      lambda s, e=errors, n=name: mp.plot_error_boxes(
+                          e, ylabel=f"final {formula}", proposed=proposed,
+                          title=f"{n}: final objective over the runs ({units})", save=s)))
+    return plans
+
+
 def _plans(res: Results) -> list[tuple[str, str, Callable]]:
     """(file stem, caption, draw(save_stem)) of every figure that applies."""
     cfg, labels, plans = res.config, res.labels, []
+    if cfg["problem"]["kind"] == "benchmark":
+        return _benchmark_plans(res)
     robot = get_robot(cfg["robot"])
     unit = robot.unit
     proposed = cfg.get("proposed") or (res.meta.get("algorithms") or [None])[0]
@@ -103,6 +158,8 @@ def _plans(res: Results) -> list[tuple[str, str, Callable]]:
         plans.append(("errors", "Final objective values", lambda s: mp.plot_error_boxes(
             errors, ylabel=f"final objective ({units})", proposed=proposed,
             title="Final objective values\n" + textwrap.fill(f"f = {formula}", 56), save=s)))
+    if "per-target" in analyses and len(targets) > 1 and len(labels) > 1:
+        plans += _error_boxes_per_target(res, formula, units, proposed)
     if "summary" in analyses and len(targets) > 1:
         times = {lab: _per_target(res, lab, "time") for lab in labels}
         plans.append(("times", "Solve time per target", lambda s: mp.plot_solve_times(
@@ -145,12 +202,9 @@ def _plans(res: Results) -> list[tuple[str, str, Callable]]:
         best_run = min(res.by_label[first], key=lambda r: r["best_f"])
         history = res.store.load_arrays(best_run["trial"]).get("best_x_history")
         if history is not None and len(history):
-            values = np.where(robot.is_prismatic, history, np.degrees(history))
-            ylabel = (f"joint value (deg | {unit} for prismatic joints)"
-                      if np.any(robot.is_prismatic) else "joint angle (deg)")
             plans.append(("joint-history", f"Best candidate joint angles of {first} per "
-                          "iteration (its best run)", lambda s, h=values: mp.plot_joint_history(
-                              h, ylabel=ylabel,
+                          "iteration (its best run)", lambda s, h=history: mp.plot_joint_history(
+                              h, prismatic=robot.is_prismatic, unit=unit,
                               title=f"Best candidate joint angles ({first})", save=s)))
     if "compromise" in analyses and cfg["targets"]["kind"] == "circle" and labels:
         lab = labels[0]
@@ -159,8 +213,8 @@ def _plans(res: Results) -> list[tuple[str, str, Callable]]:
             Q = np.array([recs[t]["best_x"] for t in range(len(targets))])
             ori = np.array([recs[t]["orientation_error"] for t in range(len(targets))])
             plans.append(("path", f"Circle tracked by {lab}", lambda s: mp.plot_path_tracking(
-                pos, robot.fk_position(Q), orientation_errors=ori, Q=Q, unit=unit, log=True,
-                save=s)))
+                pos, robot.fk_position(Q), orientation_errors=ori, Q=Q,
+                prismatic=robot.is_prismatic, unit=unit, log=True, save=s)))
     return plans
 
 

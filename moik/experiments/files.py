@@ -96,29 +96,48 @@ def read_npz(path: Path) -> dict[str, np.ndarray]:
                            f"({exc.__class__.__name__}: {msg})") from None
 
 
+CODE_PATHS = ("moik", "experiments", "pyproject.toml")
+"""What a run's or a report's commit stands for: changes elsewhere (docs) do not make it dirty."""
+
+
+def git_commit(root: str | Path | None = None) -> str | None:
+    """The commit of the git checkout whose top folder is ``root`` (default: the one holding moik).
+
+    ``-dirty`` is appended when tracked files of the code (``moik/``, ``experiments/``,
+    ``pyproject.toml``) differ from the commit; edited docs do not count. None when git is
+    absent, ``root`` is not the top of a checkout (an installed wheel inside some other
+    repository does not take that repository's commit), or git fails: never raises.
+    """
+    root = Path(__file__).resolve().parents[2] if root is None else Path(root).resolve()
+
+    def git(*args: str) -> str | None:
+        out = subprocess.run(["git", "-C", str(root), *args], capture_output=True, text=True,
+                             timeout=5, check=False)
+        return out.stdout.strip() if out.returncode == 0 else None
+
+    try:
+        top = git("rev-parse", "--show-toplevel")
+        if top is None or Path(top).resolve() != root:
+            return None
+        commit = git("rev-parse", "HEAD")
+        if commit and git("status", "--porcelain", "-uno", "--", *CODE_PATHS):
+            commit += "-dirty"
+        return commit
+    except (OSError, subprocess.SubprocessError):
+        return None
+
+
 def environment() -> dict:
     """Versions, git commit and machine description for the metadata.
 
-    The commit is that of the git checkout holding this moik (None for an installed wheel).
+    The commit is that of the git checkout holding this moik (None for an installed
+    wheel; see :func:`git_commit`).
     """
-    commit = None
-    try:
-        root = Path(__file__).resolve().parents[2]
-        out = subprocess.run(["git", "-C", str(root), "rev-parse", "HEAD"], capture_output=True,
-                             text=True, timeout=5, check=False)
-        if out.returncode == 0:
-            commit = out.stdout.strip()
-            dirty = subprocess.run(["git", "-C", str(root), "status", "--porcelain", "-uno"],
-                                   capture_output=True, text=True, timeout=5, check=False)
-            if dirty.stdout.strip():
-                commit += "-dirty"
-    except (OSError, subprocess.SubprocessError):
-        commit = None
     return {
         "versions": {"moik": __version__, "pymoo": pymoo.__version__,
                      "numpy": np.__version__, "scipy": scipy.__version__,
                      "python": platform.python_version()},
-        "git_commit": commit,
+        "git_commit": git_commit(),
         "machine": {"hostname": socket.gethostname(), "platform": platform.platform(),
                     "processor": platform.processor() or platform.machine(),
                     "cpu_count": os.cpu_count()},

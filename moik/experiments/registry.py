@@ -2,11 +2,13 @@
 
 The folders searched, in order:
 
-1. the papers' configs shipped with moik: the package ``moik.paper_configs``,
-   which is the repository's top-level ``experiments/`` folder mapped into the
-   package (``pyproject.toml``), found with :mod:`importlib.resources`; in a
-   source checkout whose install predates that mapping, the checkout's
-   ``experiments/`` folder;
+1. the papers' configs shipped with moik: when moik runs from a source checkout
+   (a ``pyproject.toml`` beside the ``moik`` package), that checkout's
+   ``experiments/`` folder, so that the code and its configs come from one tree
+   (an editable install made from another checkout maps the package to that
+   checkout's folder); otherwise the package ``moik.paper_configs``, which is the
+   repository's top-level ``experiments/`` folder mapped into the package
+   (``pyproject.toml``), found with :mod:`importlib.resources`;
 2. every folder in the environment variable ``MOIK_EXPERIMENTS_PATH``
    (:data:`ENV_VAR`, ``os.pathsep``-separated): a user's own configs.
 
@@ -38,16 +40,18 @@ _CHECKOUT = Path(__file__).resolve().parents[2] / "experiments"
 def packaged_dir() -> Path | None:
     """The folder of the papers' configs, or None if moik has none.
 
-    The installed package :data:`PACKAGE` if importable; else (a source checkout
-    whose editable install predates the package) the checkout's ``experiments/``.
+    A source checkout's own ``experiments/`` (beside the ``moik`` package it runs
+    from); else the installed package :data:`PACKAGE` if importable.
     """
+    if (_CHECKOUT / "__init__.py").is_file() and (_CHECKOUT.parent / "pyproject.toml").is_file():
+        return _CHECKOUT
     try:
         root = resources.files(PACKAGE)
     except ModuleNotFoundError:
         root = None
     if isinstance(root, Path) and root.is_dir():
         return root
-    return _CHECKOUT if (_CHECKOUT / "__init__.py").is_file() else None
+    return None
 
 
 def experiment_dirs() -> list[Path]:

@@ -1,7 +1,9 @@
 """``moik report DIR``: a Markdown report of one or several results folders.
 
 ``DIR`` is a results folder (it has ``meta.json``) or a folder of results
-folders (``results/`` after several ``moik experiment run``). The report,
+folders (``results/`` after several ``moik experiment run``). With ``--docs``
+the command writes the project's docs instead (:mod:`moik.experiments.docs`).
+The report,
 ``DIR/report.md``, has per experiment: its source and configuration, the run's
 metadata (versions, commit, machine, executors), the tables of its analyses
 with the paper's numbers side by side, and the figures (``figures/`` beside
@@ -16,6 +18,7 @@ section saying why while the others are reported.
 from __future__ import annotations
 
 import sys
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -60,7 +63,17 @@ def table_markdown(table: Table) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _section(store: ResultStore, base: Path, *, figures: bool) -> str:
+def experiment_section(store: ResultStore, *, figures: bool, link: Callable[[Path], str],
+                       figure_folder: Path | None = None) -> str:
+    """The report section of one results folder (Markdown).
+
+    Args:
+        store: The opened results folder.
+        figures: Draw the figures.
+        link: Figure PNG path -> the link written in the section (relative to the file
+            that holds the section; :mod:`moik.experiments.docs` copies the file there).
+        figure_folder: Where the figures are drawn (default ``store.folder/figures``).
+    """
     res, tables = analyze(store)
     meta, cfg = store.meta, store.meta["config"]
     size = "quick size" if meta.get("quick") else "full size"
@@ -79,7 +92,8 @@ def _section(store: ResultStore, base: Path, *, figures: bool) -> str:
                  f" (orientation `{cfg['problem'].get('orientation')}`)") + ", ")
              + f"{len(meta['targets'])} target(s), runs per target {cfg['runs']}, "
              f"population {cfg['pop_size']}, "
-             + ("" if cfg["problem"].get("evaluations") else f"generations {cfg['n_gen']}, ")
+             + ("" if cfg["problem"].get("evaluations")
+                else f"iterations {cfg['iterations']}, ")
              + f"seed {cfg['seed']}",
              f"- algorithms: {algs}",
              f"- moik {meta['versions']['moik']}, pymoo {meta['versions']['pymoo']}, numpy "
@@ -95,19 +109,22 @@ def _section(store: ResultStore, base: Path, *, figures: bool) -> str:
     lines.append("")
     lines += [table_markdown(t) for t in tables]
     if figures:
-        made, notes = _figures(res, store.folder / "figures")
+        made, notes = _figures(res, figure_folder or store.folder / "figures")
         for caption, png in made:
-            rel = png.relative_to(base) if png.is_relative_to(base) else png
-            lines.append(f"![{caption}]({rel.as_posix()})\n")
+            lines.append(f"![{caption}]({link(png)})\n")
         lines += [f"- {n}" for n in notes]
     return "\n".join(lines) + "\n"
+
+
+def _relative(png: Path, base: Path) -> str:
+    return (png.relative_to(base) if png.is_relative_to(base) else png).as_posix()
 
 
 def _figures(res: Results, folder: Path):
     if not res.ok:
         return [], ["no finished trials: no figures"]
-    if res.config["problem"]["kind"] in ("benchmark", "moo-benchmark"):
-        return [], ["benchmark experiments have tables only (the figures draw robots/targets)"]
+    if res.config["problem"]["kind"] == "moo-benchmark":
+        return [], ["multi-objective benchmark experiments have tables only"]
     return make_figures(res, folder)
 
 
@@ -136,7 +153,7 @@ class Report:
     failed: list[str] = field(default_factory=list)
 
 
-_FOLDER_ERRORS = (MoikError, OSError, ValueError, KeyError, TypeError, IndexError)
+FOLDER_ERRORS = (MoikError, OSError, ValueError, KeyError, TypeError, IndexError)
 """What reading or analysing one damaged folder may raise (a report goes on past it)."""
 
 
@@ -169,8 +186,9 @@ def make_report(folder: str | Path, *, figures: bool = True,
             if store.damaged:
                 report.warnings.append(f"{sub}: {damaged_warning(store)}")
                 print(f"moik: warning: {sub}: {damaged_warning(store)}", file=sys.stderr)
-            parts.append(_section(store, out.parent, figures=figures))
-        except _FOLDER_ERRORS as exc:
+            parts.append(experiment_section(store, figures=figures,
+                                            link=lambda png: _relative(png, out.parent)))
+        except FOLDER_ERRORS as exc:
             why = f"{exc.__class__.__name__}: {exc}"
             report.failed.append(f"{sub}: {why}")
             print(f"moik: warning: {sub} not reported: {why}", file=sys.stderr)

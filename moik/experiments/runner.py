@@ -117,7 +117,7 @@ def _run(cfg: ExperimentConfig, specs, targets, folder: Path, executor: str, *, 
     store = ResultStore.create(folder, config=cfg, targets=[t.as_dict() for t in targets],
                                trials=[spec_summary(s) for s in specs], resume=resume,
                                session={"executor": executor})
-    failed = 0
+    failed = ran = 0
     try:
         records = store.records()
         damaged = store.check_arrays(records)
@@ -139,10 +139,12 @@ def _run(cfg: ExperimentConfig, specs, targets, folder: Path, executor: str, *, 
             for record, arrays in execute(pending, workers=workers,
                                           dask_scheduler=dask_scheduler, dask_client=client):
                 store.append(record, arrays)
+                ran += 1
                 failed += record.get("status") != "ok"
                 bar.update(record.get("status") == "ok")
         finally:
             bar.close()
+            store.end_session(wall_time=time.perf_counter() - t0, ran=ran)
     finally:
         store.close()
     return RunSummary(folder=folder, total=len(specs), skipped=skipped, ran=len(pending),

@@ -44,7 +44,8 @@ class TrialSpec:
         entropy: Root entropy (the config seed); ``spawn_key`` the child's key.
         seed: Integer seed handed to pymoo (first word of the child's state).
         robot: Robot name (None for benchmark functions); ``problem`` the problem
-            dict; ``n_gen`` generations.
+            dict; ``iterations`` the update iterations after the initial population
+            (the papers' Max_t; pymoo's termination is ``("n_gen", iterations + 1)``).
         protocol: ``{"threshold", "max_failures"}`` or None.
         record_history: Store the best-so-far x of every generation as the
             array ``best_x_history`` (experiments with the ``joint-motion``
@@ -64,7 +65,7 @@ class TrialSpec:
     seed: int
     robot: str | None
     problem: dict
-    n_gen: int
+    iterations: int
     protocol: dict | None
     record_history: bool = False
 

@@ -5,6 +5,8 @@ Layout (format ``moik-results/1``)::
     OUT/meta.json         experiment name, config (as run) and its fingerprint, quick flag,
                           versions (moik, pymoo, numpy, scipy, python), git commit, machine,
                           targets, every planned trial with its seeds, one entry per session
+                          (start, executor, versions, git commit; at its end: finish time,
+                          wall time and trials run)
     OUT/results.jsonl     one JSON object per finished trial (scalars, seeds, status)
     OUT/arrays/ID.npz     that trial's arrays (convergence curve, front, best x)
     OUT/run.lock          while a run writes: its PID and host (see :mod:`moik.experiments.lock`)
@@ -57,8 +59,6 @@ from moik.experiments.files import (
 from moik.experiments.lock import RunLock
 
 FORMAT = "moik-results/1"
-
-
 
 def _now() -> str:
     return _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds")
@@ -224,6 +224,16 @@ class ResultStore:
             self._fd = os.open(self.results_path, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o644)
         os.write(self._fd, line)
         os.fsync(self._fd)
+
+    def end_session(self, *, wall_time: float, ran: int) -> None:
+        """Record in ``meta.json`` that the current session ended: its wall time and trial count.
+
+        ``sessions[-1]`` gets ``finished`` (UTC), ``wall_time_s`` (seconds of the whole
+        call, start-up included) and ``trials_run``; the docs stamp sums them.
+        """
+        self.meta["sessions"][-1].update(finished=_now(), wall_time_s=round(float(wall_time), 3),
+                                         trials_run=int(ran))
+        self._write_meta()
 
     def close(self) -> None:
         """Close the append descriptor and release the run lock."""

@@ -64,9 +64,10 @@ class Results:
                         dtype=float)
 
     def notes(self) -> list[str]:
-        """Counts of finished and failed trials."""
+        """Counts of finished and failed trials, then the config's ``paper["notes"]``."""
         n_planned = len(self.meta.get("trials", []))
         out = [f"{len(self.ok)} of {n_planned} planned trials finished"]
+        out += [f"about the paper's numbers: {n}" for n in self.paper.get("notes", [])]
         if self.failed:
             out.append(f"{len(self.failed)} trials failed (status error), e.g. "
                        f"{self.failed[0]['trial']}: {self.failed[0].get('error')}")

@@ -41,7 +41,7 @@ def build_trials(config, targets: list[TrialTarget] | None = None) -> list[Trial
                     seed=int(child.generate_state(1, dtype=np.uint32)[0]),
                     robot=getattr(target, "robot", None) or config["robot"],
                     problem=dict(config["problem"]),
-                    n_gen=config["n_gen"], protocol=config["protocol"],
+                    iterations=config["iterations"], protocol=config["protocol"],
                     record_history="joint-motion" in (config["analyses"] or [])))
     return specs
 

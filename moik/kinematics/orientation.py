@@ -196,8 +196,36 @@ def _all_rotations(R, atol):
     return True
 
 
+@jit
+def pose_matrix_status(T, atol):
+    """Checks of a ``(4, 4)`` pose in one pass: 0 valid, 1 a NaN/inf entry, 2 a last row
+    other than ``[0, 0, 0, 1]`` (numpy.allclose's rule), 3 a rotation block that is not
+    orthonormal with det +1 (the rule of :func:`check_rotation`)."""
+    for a in range(4):
+        for b in range(4):
+            if not np.isfinite(T[a, b]):
+                return 1
+    for b in range(4):
+        want = 1.0 if b == 3 else 0.0
+        if not abs(T[3, b] - want) <= 1e-8 + 1e-5 * want:
+            return 2
+    for a in range(3):
+        for b in range(3):
+            g = T[0, a] * T[0, b] + T[1, a] * T[1, b] + T[2, a] * T[2, b]
+            eye = 1.0 if a == b else 0.0
+            if not abs(g - eye) <= atol + 1e-5 * eye:
+                return 3
+    det = (T[0, 0] * (T[1, 1] * T[2, 2] - T[1, 2] * T[2, 1])
+           - T[0, 1] * (T[1, 0] * T[2, 2] - T[1, 2] * T[2, 0])
+           + T[0, 2] * (T[1, 0] * T[2, 1] - T[1, 1] * T[2, 0]))
+    return 0 if abs(det - 1.0) <= atol + 1e-5 else 3
+
+
+ROTATION_ATOL = 1e-6  # orthonormality tolerance of a given rotation matrix
+
+
 def check_rotation(
-    R, name: str = "rotation", *, batch: bool = False, atol: float = 1e-6
+    R, name: str = "rotation", *, batch: bool = False, atol: float = ROTATION_ATOL
 ) -> np.ndarray:
     """Validate a rotation matrix (or batch): shape, finiteness, orthonormality.
 

@@ -8,6 +8,7 @@ Figure it drew, and with ``save="path/stem"`` writes ``stem.png`` and
 from moik.plotting.convergence import plot_convergence, plot_joint_history
 from moik.plotting.fronts import plot_pareto_fronts
 from moik.plotting.motion import plot_end_effector_paths, plot_motion
+from moik.plotting.panels import plot_convergence_panels
 from moik.plotting.path import plot_path_tracking
 from moik.plotting.robot import plot_robot
 from moik.plotting.statistics import plot_error_boxes, plot_solve_times, plot_wilcoxon
@@ -15,6 +16,7 @@ from moik.plotting.workspace import plot_targets
 
 __all__ = [
     "plot_convergence",
+    "plot_convergence_panels",
     "plot_end_effector_paths",
     "plot_error_boxes",
     "plot_joint_history",

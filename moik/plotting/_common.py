@@ -11,6 +11,11 @@ up to 40 by colour, marker and line style together (and in grey-scale print).
 The paper's proposed method is drawn thicker, larger and on top, and its
 legend entry is bold (:func:`emphasise_legend`). Legends go outside the data
 (:func:`legend_outside`).
+
+Units, one per quantity across every figure: joint values are given in radians
+(the API's unit) and drawn in degrees, prismatic joints in the robot's length
+unit (:func:`joint_display`), the axis label saying so; position errors in the
+problem's length unit and orientation errors in rad, the unit in the label.
 """
 
 from __future__ import annotations
@@ -166,3 +171,33 @@ def save_figure(fig, save: str | None) -> None:
 def unit_suffix(unit: str | None) -> str:
     """``" (cm)"`` for a unit, ``""`` without one."""
     return f" ({unit})" if unit else ""
+
+
+def joint_display(Q, prismatic=None, unit: str | None = None, *, what: str = "Q",
+                  rate: str = "") -> tuple[np.ndarray, str]:
+    """Joint values as drawn: revolute columns (rad) in degrees, prismatic ones as they are.
+
+    Args:
+        Q: ``(..., dof)`` joint values (or rates) in rad (revolute) and ``unit`` (prismatic).
+        prismatic: Optional ``(dof,)`` mask of the prismatic joints (default: none).
+        unit: Length unit of the prismatic joints, for the label.
+        what: Name of ``Q`` in error messages.
+        rate: Per-time suffix of the label's unit: ``""``, ``"/s"`` or ``"/s²"``.
+
+    Returns:
+        ``(values, unit text)``: e.g. ``"deg"``, or ``"deg | cm for prismatic joints"``.
+
+    Raises:
+        ShapeError: ``prismatic`` does not have one entry per joint.
+    """
+    values = np.asarray(Q, dtype=float)
+    mask = (np.zeros(values.shape[-1], dtype=bool) if prismatic is None
+            else np.asarray(prismatic, dtype=bool).reshape(-1))
+    if mask.shape[0] != values.shape[-1]:
+        raise ShapeError(f"prismatic has {mask.shape[0]} entries, {what} has "
+                         f"{values.shape[-1]} joints")
+    shown = np.where(mask, values, np.degrees(values))
+    text = f"deg{rate}"
+    if mask.any():
+        text += f" | {unit or 'length unit'}{rate} for prismatic joints"
+    return shown, text

@@ -15,6 +15,7 @@ from moik.plotting._common import (
     check_mapping,
     floored,
     integer_ticks,
+    joint_display,
     legend_outside,
     new_axes,
     save_figure,
@@ -121,9 +122,11 @@ def plot_joint_history(
     history,
     *,
     joint_labels=None,
+    prismatic=None,
+    unit: str | None = None,
     ax=None,
     xlabel: str = "iteration",
-    ylabel: str = "joint angle (rad)",
+    ylabel: str | None = None,
     title: str = "Best candidate joint angles",
     save: str | None = None,
 ):
@@ -133,11 +136,16 @@ def plot_joint_history(
     varying with the number of iterations).
 
     Args:
-        history: ``(generations, dof)`` best joint vector of every generation.
+        history: ``(generations, dof)`` best joint vector of every generation, in rad
+            (prismatic joints in ``unit``); drawn in degrees, as every moik figure
+            draws joint values.
         joint_labels: Legend text per joint (default ``q1 .. q_dof``).
+        prismatic: Optional ``(dof,)`` mask of prismatic joints (drawn as they are).
+        unit: Length unit of the prismatic joints, for the label.
         ax: Axes to draw in (a new figure otherwise).
         xlabel: X label.
-        ylabel: Y label with unit.
+        ylabel: Y label (default ``"joint angle (deg)"``, naming the prismatic unit
+            when there are prismatic joints).
         title: Axes title.
         save: Path stem; writes ``save.png`` and ``save.pdf``.
 
@@ -145,9 +153,13 @@ def plot_joint_history(
         The Axes (one line per joint).
 
     Raises:
-        ShapeError: ``history`` is not 2-D or the label count does not match.
+        ShapeError: ``history`` is not 2-D, or the label count or ``prismatic`` does not
+            match.
     """
     H = as_array(history, "history", ndim=2)
+    H, u = joint_display(H, prismatic, unit, what="history")
+    if ylabel is None:
+        ylabel = f"joint {'value' if 'prismatic' in u else 'angle'} ({u})"
     dof = H.shape[1]
     labels = [f"q{j + 1}" for j in range(dof)] if joint_labels is None else list(joint_labels)
     if len(labels) != dof:

@@ -12,6 +12,7 @@ from moik.kinematics.trajectory import quintic_trajectory
 from moik.plotting._common import (
     as_array,
     check_mapping,
+    joint_display,
     legend_outside,
     new_axes,
     save_figure,
@@ -20,11 +21,6 @@ from moik.plotting._common import (
 )
 from moik.plotting._scene import base_marker, finish_3d, ground_grid
 from moik.robots.chain import Robot
-
-
-def _joint_units(robot: Robot) -> str:
-    """``"rad"`` for an all-revolute arm, ``"rad | cm"`` when prismatic joints exist."""
-    return f"rad | {robot.unit}" if np.any(robot.is_prismatic) else "rad"
 
 
 def plot_end_effector_paths(
@@ -133,8 +129,9 @@ def plot_motion(
 
     Reproduces EOSMA Fig. 20: (a) end-effector trajectory, (b) joint angles,
     (c) joint velocities and (d) joint accelerations against time, one line per
-    joint. ``others`` adds more solutions' paths to panel (a) only, as in the
-    paper's comparison of EOSMA, EO and SMA.
+    joint, in degrees (deg/s, deg/s²; prismatic joints in the robot's unit), as
+    every moik figure draws joint values. ``others`` adds more solutions' paths
+    to panel (a) only, as in the paper's comparison of EOSMA, EO and SMA.
 
     Args:
         robot: The arm.
@@ -175,12 +172,10 @@ def plot_motion(
                             title="(a) end-effector trajectory\n(grey: arm at start and goals; "
                                   "black square: base)",
                             proposed=proposed)
-    u = _joint_units(robot)
-    panels = (
-        (Q, "(b) joint angle", f"angle ({u})"),
-        (Qd, "(c) joint velocity", f"velocity ({u}/s)"),
-        (Qdd, "(d) joint acceleration", f"acceleration ({u}/s²)"),
-    )
+    panels = []
+    for Y, name, rate in ((Q, "angle", ""), (Qd, "velocity", "/s"), (Qdd, "acceleration", "/s²")):
+        shown, u = joint_display(Y, robot.is_prismatic, robot.unit, rate=rate)
+        panels.append((shown, f"({'bcd'[len(panels)]}) joint {name}", f"joint {name} ({u})"))
     for k, (Y, ttl, ylabel) in enumerate(panels):
         ax = fig.add_subplot(2, 2, k + 2)
         for j in range(robot.dof):

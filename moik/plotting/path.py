@@ -12,6 +12,7 @@ from moik.plotting._common import (
     check_floor,
     floored,
     integer_ticks,
+    joint_display,
     save_figure,
     series_style,
     unit_suffix,
@@ -25,6 +26,7 @@ def plot_path_tracking(
     *,
     orientation_errors=None,
     Q=None,
+    prismatic=None,
     unit: str | None = "cm",
     log: bool = False,
     floor: float = LOG_FLOOR,
@@ -43,8 +45,10 @@ def plot_path_tracking(
         reached: ``(n, 3)`` end-effector positions (FK of the solutions).
         orientation_errors: Optional ``(n,)`` orientation errors in rad, drawn in
             their own panel.
-        Q: Optional ``(n, dof)`` joint solutions per point, drawn in their own
-            panel (rad).
+        Q: Optional ``(n, dof)`` joint solutions per point in rad, drawn in their
+            own panel in degrees (as every moik figure draws joint values).
+        prismatic: Optional ``(dof,)`` mask of prismatic joints in ``Q`` (in ``unit``,
+            drawn as they are).
         unit: Length unit for the labels.
         log: Log y axis on the error panels; errors below ``floor`` (exact
             hits) are drawn at ``floor`` and the label says so.
@@ -80,6 +84,7 @@ def plot_path_tracking(
         joints = as_array(Q, "Q", ndim=2)
         if joints.shape[0] != npts:
             raise ShapeError(f"Q has {joints.shape[0]} rows for {npts} points")
+        joints, joint_unit = joint_display(joints, prismatic, unit)
     pos_err = np.linalg.norm(R - D, axis=1)
     note = ""
     if log:
@@ -129,7 +134,8 @@ def plot_path_tracking(
         for j in range(joints.shape[1]):
             ax.plot(idx, joints[:, j], label=f"q{j + 1}",
                     **(series_style(j) | {"markersize": 3, "linewidth": 1.0}))
-        ax.set_ylabel("joint angle (rad)")
+        ax.set_ylabel(f"joint {'value' if 'prismatic' in joint_unit else 'angle'} "
+                      f"({joint_unit})")
         ax.set_title("(b) joint angles per point")
         ax.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.01, 1.0),
                   borderaxespad=0)

@@ -23,7 +23,9 @@ from moik.exceptions import (
     UnknownNameError,
 )
 from moik.kinematics.orientation import (
+    ROTATION_ATOL,
     check_rotation,
+    pose_matrix_status,
     rotation_from_eosma_euler,
     rotation_from_zyx,
 )
@@ -96,6 +98,13 @@ class Target:
         T = real_array("pose", T)
         if T.shape != (4, 4):
             raise ShapeError(f"pose must have shape (4, 4), got {T.shape}")
+        if pose_matrix_status(T, ROTATION_ATOL) == 0:  # valid: every check passed in one
+            # compiled pass (the hot path); otherwise the checks below name the fault
+            target = object.__new__(cls)
+            object.__setattr__(target, "position", T[:3, 3].copy())
+            object.__setattr__(target, "rotation", np.ascontiguousarray(T[:3, :3]))
+            object.__setattr__(target, "q_source", None)
+            return target
         last = T[3].tolist()  # numpy.allclose's rule on plain floats (a hot path)
         if not all(abs(a - b) <= 1e-8 + 1e-5 * abs(b) for a, b in zip(last, _LAST_ROW,
                                                                         strict=True)):

@@ -172,27 +172,31 @@ def puma560() -> Robot:
 
 
 def puma560_kalra() -> Robot:
-    """The Puma 560 of the geometric solutions in I-BES Table 9 (after Kalra et al.).
+    """The Puma 560 of the solutions in I-BES Table 9 (after Kalra et al.).
 
-    Table 9's geometric joint angles reach its 5 targets with this arm (wrist
-    centre, joints 4-6 at 0) to under 1 mm, not with the Table 6 arm (other
-    lengths and twist signs): a2 = 0.4318, a3 = -0.0203, d3 = 0.1491,
-    d4 = 0.4331 m, alpha1 = -pi/2, alpha3 = +pi/2 (fitted to the paper's geometric
-    solutions to under 1 mm, the team's checked reference facts). alpha4, alpha5
-    (-pi/2, +pi/2) do not move the wrist centre; limits [-pi, pi] as in the paper's simulations.
+    Table 9's joint angles do not reach its 5 targets on the Table 6 arm (other
+    lengths and twist signs). A least-squares fit of a2, a3, d3, d4 to the
+    paper's 16 I-BES solutions of targets T2-T5 (printed to 8 decimals; wrist
+    centre, joints 4-6 at 0; the ``dh-fit`` table of the ``ibes-table9``
+    report) gives a2 = 0.4318, a3 = -0.02032, d3 = 0.14909, d4 = 0.43307 m with
+    residuals of 3e-9 m, with alpha1 = -pi/2, alpha3 = +pi/2; T1's solutions
+    then reach (0.6, 0.14909, 0.2), so its printed y = 0.15 is d3 rounded.
+    alpha4, alpha5 (-pi/2, +pi/2) do not move the wrist centre; limits
+    [-pi, pi] as in the paper's simulations.
     """
     return _ibes(
         "puma560-kalra",
         [
             (0, 0, 0, -PI / 2),
             (0, 0, 0.4318, 0),
-            (0, 0.1491, -0.0203, PI / 2),
-            (0, 0.4331, 0, -PI / 2),
+            (0, 0.14909, -0.02032, PI / 2),
+            (0, 0.43307, 0, -PI / 2),
             (0, 0, 0, PI / 2),
             (0, 0, 0, 0),
         ],
-        "I-BES paper (2024), Table 9 geometric solutions (Kalra et al.); lengths and "
-        "twists fitted to them",
+        "I-BES paper (2024), Table 9 (Kalra et al.'s Puma); a2, a3, d3, d4 from a "
+        "least-squares fit to the paper's I-BES solutions of T2-T5 (residual 3e-9 m; "
+        "ibes-table9 report, dh-fit table)",
     )
 
 

@@ -11,10 +11,30 @@ Levenberg-Marquardt),
 :mod:`~moik.solver.path` (a path kept on one branch).
 """
 
-from moik.solver.batch import IKBatchResult, solve_ik_batch
-from moik.solver.pareto import ParetoIKResult, solve_ik_pareto
-from moik.solver.path import PathResult, solve_path
-from moik.solver.solve_ik import IKResult, solve_ik
+from typing import TYPE_CHECKING
+
+from moik._lazy import lazy_names
+
+if TYPE_CHECKING:
+    from moik.solver.batch import IKBatchResult, solve_ik_batch
+    from moik.solver.pareto import ParetoIKResult, solve_ik_pareto
+    from moik.solver.path import PathResult, solve_path
+    from moik.solver.solve_ik import IKResult, solve_ik
+
+_LAZY: dict[str, tuple[str, str | None]] = {
+    "IKBatchResult": ("moik.solver.batch", "IKBatchResult"),
+    "solve_ik_batch": ("moik.solver.batch", "solve_ik_batch"),
+    "ParetoIKResult": ("moik.solver.pareto", "ParetoIKResult"),
+    "solve_ik_pareto": ("moik.solver.pareto", "solve_ik_pareto"),
+    "PathResult": ("moik.solver.path", "PathResult"),
+    "solve_path": ("moik.solver.path", "solve_path"),
+    "IKResult": ("moik.solver.solve_ik", "IKResult"),
+    "solve_ik": ("moik.solver.solve_ik", "solve_ik"),
+}
+"""Public name -> (module, attribute): each loads at first use (start-up time: the
+single-pose solver need not import the search, Pareto and path machinery)."""
 
 __all__ = ["IKBatchResult", "IKResult", "ParetoIKResult", "PathResult", "solve_ik",
            "solve_ik_batch", "solve_ik_pareto", "solve_path"]
+
+__getattr__, __dir__ = lazy_names("moik.solver", _LAZY, globals(), __all__)

@@ -103,7 +103,7 @@ def lm_batch(F, types, lo, hi, Q0, Rts, pts, has_rot, inv_len, stop_pos, stop_or
                                         best)
             n_evals[i] += ne
             solved[i] = k > 0
-        if not solved[i]:
+        if not solved[i] and n_evals[i] < max_evals:  # no start begins past the budget
             k, ne, _, _ = lm_multistart(F, types, lo, hi, Q0[i], Rts[i], pts[i], has_rot,
                                         inv_len, stop_pos, stop_ori, max_iter, 0, distinct,
                                         STALL_RATIO, max(max_evals - n_evals[i], 1), one, best)

@@ -11,10 +11,13 @@ solve of the damped normal equations
 (Levenberg 1944; Marquardt 1963, with Marquardt's diagonal scaling; ``mu``, 1e-9
 of the mean diagonal, keeps a redundant arm's singular ``J^T J`` invertible). A
 trial point is projected onto the joint limits and kept when the cost
-``0.5 |r|^2`` decreases (``lambda /= 3``), else ``lambda *= 4``. Joints at a
-limit whose step points outwards are held there and the step is solved for the
-others (an active-set projection, as in dogbox). Every iterate is within the
-limits.
+``0.5 |r|^2`` decreases (``lambda /= 3``), else ``lambda *= 4``. A revolute
+joint that steps past a limit is first moved by the multiple of 2 pi that brings
+it back inside (the same arm configuration: on arms with +-180 deg joints, such as
+the Puma 560, clipping there instead stops 3 of 4 random starts short of the
+pose); otherwise joints at a limit whose step points outwards are held there and
+the step is solved for the others (an active-set projection, as in dogbox). Every
+iterate is within the limits.
 
 A start is abandoned (and the next one taken) when ``lambda`` exceeds 1e8, after
 ``max_iter`` iterations, or when its cost has not halved over the last 2
@@ -38,6 +41,7 @@ import numpy as np
 from moik._jit import jit
 from moik.kinematics.jacobian import pose_jacobian_into
 from moik.kinematics.so3 import inverse_left_jacobian_times, log_into
+from moik.robots.transforms import PRISMATIC
 
 LAMBDA0 = 1e-3
 LAMBDA_MAX = 1e8
@@ -116,8 +120,26 @@ def cholesky_solve(A, b, x):
 
 
 @jit
-def damped_step(JtJ, g, lam, q, lo, hi, A, gb, blocked, step):
-    """The damped Gauss-Newton step, joints at a limit that would leave it held fixed."""
+def into_limits(v, kind, lo, hi):
+    """Joint value ``v`` moved into ``[lo, hi]``: a revolute joint by the multiple of 2 pi
+    that brings it inside, when one does (the same arm configuration), else clipped."""
+    if v < lo or v > hi:
+        if kind != PRISMATIC:
+            turn = 2.0 * np.pi
+            if v < lo:
+                w = v + turn * np.ceil((lo - v) / turn)
+            else:
+                w = v - turn * np.ceil((v - hi) / turn)
+            if lo <= w <= hi:
+                return w
+        return min(max(v, lo), hi)
+    return v
+
+
+@jit
+def damped_step(JtJ, g, lam, q, lo, hi, types, A, gb, blocked, step):
+    """The damped Gauss-Newton step, joints at a limit that would leave it held fixed
+    (a revolute joint whose range spans a full turn is never held: it wraps round)."""
     dof = q.shape[0]
     mean_diag = 0.0
     for i in range(dof):
@@ -131,7 +153,8 @@ def damped_step(JtJ, g, lam, q, lo, hi, A, gb, blocked, step):
         return False
     held = False
     for i in range(dof):
-        blocked[i] = (q[i] <= lo[i] and step[i] < 0.0) or (q[i] >= hi[i] and step[i] > 0.0)
+        blocked[i] = ((q[i] <= lo[i] and step[i] < 0.0) or (q[i] >= hi[i] and step[i] > 0.0)) and (
+            types[i] == PRISMATIC or hi[i] - lo[i] < 2.0 * np.pi)
         held = held or blocked[i]
     if not held:
         return True
@@ -194,9 +217,9 @@ def lm_start(F, types, lo, hi, q, Rt, pt, has_rot, s_pos, s_rot, stop_pos, stop_
                 JtJ[j, i] = s
         accepted = False
         while lam < LAMBDA_MAX:
-            if damped_step(JtJ, g, lam, q, lo, hi, A, gb, blocked, step):
+            if damped_step(JtJ, g, lam, q, lo, hi, types, A, gb, blocked, step):
                 for j in range(dof):
-                    trial[j] = min(max(q[j] + step[j], lo[j]), hi[j])
+                    trial[j] = into_limits(q[j] + step[j], types[j], lo[j], hi[j])
                 cost_t = residual(F, types, trial, Rt, pt, has_rot, s_pos, s_rot, T, J, M, rt,
                                   Jrt)
                 n_eval += 1

@@ -13,8 +13,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from moik._jit import jit, kernel_array
+from moik.kinematics.orientation import GEODESIC, rotation_error
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
+from moik.robots.dh import fk_pose_into
 from moik.robots.transforms import PRISMATIC
 from moik.solver.lm import FRONT_STALL_RATIO, STALL_RATIO, lm_start
 
@@ -67,6 +69,76 @@ def lm_multistart(F, types, lo, hi, Q0, Rt, pt, has_rot, inv_len, stop_pos, stop
                 out_Q[n_found] = q
                 n_found += 1
     return n_found, n_eval, used, best_cost
+
+
+@jit
+def recheck_into(F, types, q, Rt, pt, has_rot, T, out):
+    """Position error (robot unit) and geodesic orientation error (rad) of ``q`` into
+    ``out (2,)``, by an FK pass of their own (not the optimizer's residual)."""
+    fk_pose_into(F, types, q, T)
+    d0, d1, d2 = T[0, 3] - pt[0], T[1, 3] - pt[1], T[2, 3] - pt[2]
+    out[0] = np.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
+    out[1] = 0.0
+    if has_rot:
+        rot = (T[0, 0], T[0, 1], T[0, 2], T[1, 0], T[1, 1], T[1, 2], T[2, 0], T[2, 1], T[2, 2])
+        out[1] = rotation_error(GEODESIC, rot, Rt, np.zeros(3))
+
+
+@jit
+def starts_checked(F, types, lo, hi, Q0, Rt, pt, has_rot, inv_len, tol_pos, tol_ori,
+                   stop_fraction, max_iter, distinct, stall_ratio, max_evals, found, found_err,
+                   n_known, best):
+    """:func:`lm_multistart` with the honest re-check fused in (one compiled call).
+
+    LM runs from the rows of ``Q0`` in turn, stopping at ``stop_fraction`` of the
+    tolerances; a converged end is re-checked by :func:`recheck_into` and appended to
+    ``found`` (its errors to ``found_err``) when within ``(tol_pos, tol_ori)`` and farther
+    than ``distinct`` from every solution in ``found`` (modulo 2 pi), until ``found`` is
+    full. ``best`` (``dof + 1``: the scaled error ``pos / L + ori``, then q) is replaced by
+    a re-checked candidate with a smaller error: the new solutions, or the lowest-cost end
+    when none was new. No start begins once ``max_evals`` evaluations are spent.
+    Returns ``(n_found, n_eval)``.
+    """
+    n, dof = Q0.shape
+    want = found.shape[0]
+    n_found, n_eval, low_cost = n_known, 0, np.inf
+    q, low_q, T, err = np.empty(dof), np.empty(dof), np.empty((4, 4)), np.empty(2)
+    for s in range(n):
+        if n_found >= want or n_eval >= max_evals:
+            break
+        q[:] = Q0[s]
+        conv, cost, ne = lm_start(F, types, lo, hi, q, Rt, pt, has_rot, inv_len, 1.0,
+                                  stop_fraction * tol_pos, stop_fraction * tol_ori, max_iter,
+                                  stall_ratio)
+        n_eval += ne
+        if cost < low_cost:
+            low_cost = cost
+            low_q[:] = q
+        if not conv:
+            continue
+        recheck_into(F, types, q, Rt, pt, has_rot, T, err)
+        if err[0] > tol_pos or err[1] > tol_ori:
+            continue
+        new = True
+        for k in range(n_found):
+            if wrapped_distance(found[k], q, types) <= distinct:
+                new = False
+                break
+        if new:
+            found[n_found] = q
+            found_err[n_found, 0], found_err[n_found, 1] = err[0], err[1]
+            n_found += 1
+            scaled = err[0] * inv_len + err[1]
+            if scaled < best[0]:
+                best[0] = scaled
+                best[1:] = q
+    if n_found == n_known and np.isfinite(low_cost):
+        recheck_into(F, types, low_q, Rt, pt, has_rot, T, err)
+        scaled = err[0] * inv_len + err[1]
+        if scaled < best[0]:
+            best[0] = scaled
+            best[1:] = low_q
+    return n_found, n_eval
 
 
 @jit

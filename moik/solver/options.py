@@ -9,14 +9,15 @@ before the search, whose options would otherwise never be looked at).
 from __future__ import annotations
 
 import functools
+import importlib
+import threading
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from moik._validate import choice, flag, integer, keywords, optional_integer, positive
 from moik._validate import seed as check_seed
-from moik.algorithms import get_algorithm
-from moik.algorithms.registry import is_multi_objective
 from moik.exceptions import ParameterError
 from moik.kinematics.orientation import available_metrics
 
@@ -26,6 +27,8 @@ SEARCH_DEFAULTS = {"method": "eosma", "orientation": "geodesic", "polish": True,
                    "n_solutions": 1, "max_evals": 50_000, "starts": 500, "pop_size": None,
                    "generations": 15, "candidates_per_round": 3, "distinct": 0.1,
                    "patience": 30, "front_method": "moeosma", "front_evals": 10_000}
+
+DEFAULT_POP_SIZES = (20, 40)  # search population: one solution wanted, several
 
 # (name, smallest value) of the integer options
 _COUNTS = (("n_solutions", 1), ("max_evals", 1), ("starts", 0), ("generations", 1),
@@ -67,7 +70,7 @@ class SearchOptions:
             object.__setattr__(self, name, integer(name, getattr(self, name), minimum=low))
         pop_size = optional_integer("pop_size", self.pop_size, minimum=2)
         if pop_size is None:
-            pop_size = 20 if self.n_solutions == 1 else 40
+            pop_size = DEFAULT_POP_SIZES[0] if self.n_solutions == 1 else DEFAULT_POP_SIZES[1]
         object.__setattr__(self, "pop_size", pop_size)
         object.__setattr__(self, "distinct", positive("distinct", self.distinct))
         object.__setattr__(self, "polish", flag("polish", self.polish))
@@ -79,30 +82,54 @@ class SearchOptions:
             _check_algorithms.__wrapped__(self.method, self.front_method, pop_size)
 
 
+def algorithm_registry() -> Any:
+    """:mod:`moik.algorithms.registry`, loaded when a search or a non-default method needs it.
+
+    Importing every algorithm (and pymoo's) takes about 0.2 s, most of a process's first
+    solve, while the first stage solves nearly every pose without one: deferred for
+    start-up time, not for an import cycle.
+    """
+    return importlib.import_module("moik.algorithms.registry")
+
+
 @functools.lru_cache(maxsize=64)
 def _check_algorithms(method: str, front_method: str, pop_size: int) -> None:
-    """The kinds of ``method`` / ``front_method`` and ``method``'s own limits on ``pop_size``."""
+    """The kinds of ``method`` / ``front_method`` and ``method``'s own limits on ``pop_size``.
+
+    The defaults (``"eosma"``, ``"moeosma"`` with the default population sizes) are
+    known to pass (a test checks them against the registry) and are not looked up.
+    """
+    if (method, front_method) == (SEARCH_DEFAULTS["method"], SEARCH_DEFAULTS["front_method"]) \
+            and pop_size in DEFAULT_POP_SIZES:
+        return
+    registry = algorithm_registry()
+    is_multi_objective = registry.is_multi_objective
     if is_multi_objective(method):  # also raises UnknownNameError for an unknown name
         raise ParameterError(f"method must be a single-objective algorithm, got {method!r}")
     if not is_multi_objective(front_method):
         raise ParameterError(f"front_method must be a multi-objective algorithm, got "
                              f"{front_method!r}")
-    get_algorithm(method, pop_size=pop_size)
+    registry.get_algorithm(method, pop_size=pop_size)
 
 
 def validated_options(**values) -> SearchOptions:
     """:class:`SearchOptions` of ``values``, cached (solve_ik's hot path validates the same
     options over and over). The key holds each value's type: ``True`` and ``1`` (or ``2.0``
     and ``2``) are equal and hash alike, but must not share a validation."""
+    given = tuple(values.values())
     try:
-        return _cached_options(tuple((k, type(v), v) for k, v in values.items()))
+        return _OPTIONS[(tuple(values), given, tuple(map(type, given)))]
+    except KeyError:
+        options = SearchOptions(**values)
+        if len(_OPTIONS) >= 256:
+            _OPTIONS.clear()
+        _OPTIONS[(tuple(values), given, tuple(map(type, given)))] = options
+        return options
     except TypeError:  # an unhashable value: validate uncached (it raises)
         return SearchOptions(**values)
 
 
-@functools.lru_cache(maxsize=256)
-def _cached_options(key: tuple) -> SearchOptions:
-    return SearchOptions(**{k: v for k, _, v in key})
+_OPTIONS: dict[tuple, SearchOptions] = {}  # validated options by (names, values, types)
 
 
 def search_options(owner: str, options: dict) -> SearchOptions:
@@ -119,3 +146,28 @@ def seed_sequence(seed) -> np.random.SeedSequence:
     """``seed`` validated (``None``, an integer >= 0 or a SeedSequence) as a ``SeedSequence``."""
     seed = check_seed("seed", seed)
     return seed if isinstance(seed, np.random.SeedSequence) else np.random.SeedSequence(seed)
+
+
+_PCG64_STATES: dict[int, dict] = {}  # PCG64(SeedSequence(seed)).state of integer seeds seen
+_MAX_STATES = 4096
+_LOCAL = threading.local()
+
+
+def start_generator(seed: int) -> np.random.Generator:
+    """``Generator(PCG64(SeedSequence(seed)))`` for an integer ``seed`` >= 0, bit for bit.
+
+    Seeding a PCG64 through a SeedSequence costs more than a whole first-stage solve
+    takes, so the initial state of each seed is kept (up to ``_MAX_STATES`` seeds) and
+    loaded into one generator per thread. The generator is reset by the next call on
+    the same thread: use it within one solve only.
+    """
+    state = _PCG64_STATES.get(seed)
+    if state is None:
+        if len(_PCG64_STATES) >= _MAX_STATES:
+            _PCG64_STATES.clear()
+        state = _PCG64_STATES[seed] = np.random.PCG64(np.random.SeedSequence(seed)).state
+    generator = getattr(_LOCAL, "generator", None)
+    if generator is None:
+        generator = _LOCAL.generator = np.random.Generator(np.random.PCG64(0))
+    generator.bit_generator.state = state
+    return generator

@@ -15,15 +15,24 @@ every iterate within the joint limits.
 
 from __future__ import annotations
 
+import importlib
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
-from scipy.optimize import least_squares
 
 from moik.kinematics.jacobian import pose_and_jacobian
 from moik.kinematics.so3 import pose_residual, pose_residual_jacobian
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
+
+
+def least_squares(*args: Any, **kwargs: Any) -> Any:
+    """``scipy.optimize.least_squares``, imported at the first polish: scipy.optimize
+    (with scipy.spatial and scipy.linalg) takes about 0.2 s to import, and the first
+    stage solves nearly every pose without it (start-up time, not an import cycle)."""
+    return importlib.import_module("scipy.optimize").least_squares(*args, **kwargs)
+
 
 # least_squares statuses meaning "stationary point reached" (not budget).
 CONVERGED_STATUS = (1, 2, 3, 4)

@@ -18,7 +18,8 @@ from moik.kinematics.criteria import nearest_copies_into
 from moik.kinematics.orientation import GEODESIC, rotation_error
 from moik.problems.targets import Target
 from moik.robots.chain import Robot, fk_reference
-from moik.solver.multistart import multistart
+from moik.solver.lm import STALL_RATIO
+from moik.solver.multistart import starts_checked
 from moik.solver.polish import polish as polish_q
 
 LM_ITERATIONS = 30  # Levenberg-Marquardt iterations per start of the first attempt
@@ -34,6 +35,8 @@ def tolerances(tol, robot: Robot) -> tuple[float, float]:
     Raises:
         ParameterError: Anything else, naming what was given.
     """
+    if type(tol) is float and 0.0 < tol < np.inf:  # the usual case, checked as below
+        return tol * robot.reach, tol
     if isinstance(tol, np.ndarray) and tol.ndim == 0:
         tol = tol.item()
     try:
@@ -138,6 +141,10 @@ class SolveSession:
         self.found: list[np.ndarray] = []
         self.found_errors: list[tuple[float, float]] = []  # (position, orientation) of each
         self.best: tuple[float, np.ndarray] | None = None  # (scaled error, q)
+        has_rot = target.rotation is not None
+        self._has_rot = has_rot
+        self._Rt = kernel_array(target.rotation if has_rot else np.eye(3))
+        self._pt = kernel_array(target.position)
 
     def refine(self, q0: np.ndarray, do_polish: bool, max_nfev: int = 60) -> None:
         """Least-squares polish of ``q0`` (or only clipping), then :meth:`consider`."""
@@ -155,19 +162,30 @@ class SolveSession:
     def local_starts(self, Q0: np.ndarray, patient: bool = False) -> bool:
         """Compiled Levenberg-Marquardt from the rows of ``Q0`` in turn, until
         :attr:`wanted` distinct solutions are known; whether it found any new one.
-        ``patient``: no start is abandoned for slow progress (a start near a solution)."""
-        out = multistart(self.robot, self.target, Q0,
-                         stop_position=STOP_FRACTION * self.tol_pos,
-                         stop_orientation=STOP_FRACTION * self.tol_ori, want=self.wanted,
-                         distinct=self.distinct,
-                         known=np.array(self.found) if self.found else None,
-                         max_iter=LM_ITERATIONS, patient=patient,
-                         max_evals=max(self.max_evals - self.n_eval, 1))
-        self.n_eval += out.n_eval
-        n_before = len(self.found)
-        new = out.solutions[n_before:]
-        self.consider(new if len(new) else out.best_q[None])
-        return len(self.found) > n_before
+        ``patient``: no start is abandoned for slow progress (a start near a solution).
+        Each converged end is re-checked by an FK pass of its own in the same compiled
+        call (:func:`~moik.solver.multistart.starts_checked`), as :meth:`consider` does."""
+        robot, dof = self.robot, self.robot.dof
+        chain = robot.kinematic_chain
+        n_known = len(self.found)
+        found = np.empty((self.wanted, dof))
+        for k, q in enumerate(self.found):
+            found[k] = q
+        found_err = np.empty((self.wanted, 2))
+        best = np.empty(dof + 1)
+        best[0] = np.inf if self.best is None else self.best[0]
+        n_found, n_eval = starts_checked(
+            chain.origins, chain.joint_types, robot.lower, robot.upper, kernel_array(Q0),
+            self._Rt, self._pt, self._has_rot, 1.0 / robot.reach, self.tol_pos, self.tol_ori,
+            STOP_FRACTION, LM_ITERATIONS, self.distinct, 1.0 if patient else STALL_RATIO,
+            max(self.max_evals - self.n_eval, 1), found, found_err, n_known, best)
+        self.n_eval += int(n_eval)
+        for k in range(n_known, n_found):
+            self.found.append(found[k])
+            self.found_errors.append((float(found_err[k, 0]), float(found_err[k, 1])))
+        if self.best is None or best[0] < self.best[0]:
+            self.best = (float(best[0]), best[1:])
+        return n_found > n_known
 
     def consider(self, Q: np.ndarray) -> None:
         """Check candidates with the reference FK; keep the distinct solutions and the best."""

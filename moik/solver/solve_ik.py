@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from pymoo.optimize import minimize
 
-from moik.algorithms import get_algorithm
+from moik._validate import seed as check_seed
 from moik.exceptions import ShapeError
 from moik.metrics.compromise import closest_to_utopia
 from moik.problems.ik import BiObjectiveIK, PoseIK, PositionIK
@@ -42,7 +42,13 @@ from moik.robots.catalog import as_robot
 from moik.robots.chain import Robot
 from moik.solver.front import FRONT_STARTS, polished_front, reach_excess
 from moik.solver.multistart import front as lm_front
-from moik.solver.options import SearchOptions, seed_sequence, validated_options
+from moik.solver.options import (
+    SearchOptions,
+    algorithm_registry,
+    seed_sequence,
+    start_generator,
+    validated_options,
+)
 from moik.solver.session import (
     SolveSession,
     is_distinct,
@@ -166,7 +172,9 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
                          pop_size=pop_size, generations=generations,
                          candidates_per_round=candidates_per_round, distinct=distinct,
                          patience=patience, front_method=front_method, front_evals=front_evals)
-    seeds = seed_sequence(seed)
+    seed = check_seed("seed", seed)
+    # an integer seed's SeedSequence is made only if a stage spawns from it
+    seeds = None if isinstance(seed, int) else seed_sequence(seed)
     q_current = None if q_current is None else robot.check_q(q_current, "q_current")
     if q_current is not None and q_current.ndim != 1:
         raise ShapeError(f"q_current must be one joint vector ({robot.dof},), got "
@@ -174,7 +182,8 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     n_solutions, polish = opts.n_solutions, opts.polish
     session = SolveSession(robot, target, tol_pos, tol_ori, opts.distinct, n_solutions,
                            opts.max_evals)
-    starts_rng = np.random.Generator(np.random.PCG64(seeds))  # first stage; later ones spawn
+    starts_rng = (start_generator(seed) if seeds is None  # first stage; later ones spawn
+                  else np.random.Generator(np.random.PCG64(seeds)))
     if reach_excess(robot, target) > 0:  # proven out of reach: no start or search can help
         return _out_of_reach(session, opts, starts_rng, q_current, t0)
     if polish and (q_current is not None or opts.starts):
@@ -182,14 +191,17 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
             session.local_starts(q_current[None], patient=True)
         first = min(opts.starts, FIRST_STARTS)  # most poses need one or two starts: draw
         Q0 = robot.random_q(first, rng=starts_rng)  # the rest only when they are needed
-        if len(session.found) < n_solutions and first:
+        if len(session.found) < n_solutions and first and session.n_eval < opts.max_evals:
             session.local_starts(Q0)
-        if len(session.found) < n_solutions and opts.starts > first:
+        if (len(session.found) < n_solutions and opts.starts > first
+                and session.n_eval < opts.max_evals):  # no start begins past the budget
             session.local_starts(robot.random_q(opts.starts - first, rng=starts_rng))
     elif q_current is not None:
         session.consider(np.clip(q_current, robot.lower, robot.upper)[None])
-    problem = None if len(session.found) >= n_solutions else _search_problem(
-        robot, target, opts.orientation)
+    if len(session.found) >= n_solutions:  # the usual end: the first stage solved it
+        return _result(session, q_current, t0, False, None, None)
+    problem = _search_problem(robot, target, opts.orientation)
+    seeds = np.random.SeedSequence(seed) if seeds is None else seeds
     idle_rounds = 0
     while (len(session.found) < n_solutions and session.n_eval < opts.max_evals
            and idle_rounds < opts.patience):
@@ -238,7 +250,7 @@ def _search_round(session: SolveSession, problem, opts: SearchOptions, run_seed:
     at once (early stop when that already solves the target), the best
     ``opts.candidates_per_round`` distinct ones after the last generation."""
     generations, n_solutions = opts.generations, opts.n_solutions
-    algorithm = get_algorithm(opts.method, pop_size=opts.pop_size)
+    algorithm = algorithm_registry().get_algorithm(opts.method, pop_size=opts.pop_size)
     algorithm.setup(problem, termination=("n_gen", generations), seed=run_seed)
     robot, gen = session.robot, 0
     while algorithm.has_next() and len(session.found) < n_solutions:
@@ -266,7 +278,7 @@ def _front(session: SolveSession, opts: SearchOptions, seeds) -> tuple[np.ndarra
     if it reaches the pose after all, the target is solved)."""
     robot, target = session.robot, session.target
     problem = BiObjectiveIK(robot, target, orientation=opts.orientation)
-    algorithm = get_algorithm(opts.front_method)
+    algorithm = algorithm_registry().get_algorithm(opts.front_method)
     run_seed = int(seeds.spawn(1)[0].generate_state(1)[0])
     res = minimize(problem, algorithm, ("n_eval", opts.front_evals), seed=run_seed,
                    copy_algorithm=False)

@@ -77,8 +77,8 @@ def test_schedule_length_and_limits_from_the_termination():
     assert find_limit(get_termination("n_gen", 7), "n_max_gen") == 7
     assert find_limit(get_termination("n_eval", 500), "n_max_gen") == np.inf
     assert find_limit(DefaultSingleObjectiveTermination(n_max_gen=40), "n_max_gen") == 40
-    assert schedule_length(get_termination("n_gen", 7), None, 10, 10.0) == 7
-    assert schedule_length(get_termination("n_eval", 2010), None, 10, 20.0) == 101
+    assert schedule_length(get_termination("n_gen", 7), None, 10, 10.0) == 6
+    assert schedule_length(get_termination("n_eval", 2010), None, 10, 20.0) == 100
     assert schedule_length(get_termination("n_gen", 7), 50, 10, 10.0) == 50
     assert schedule_length(get_termination("time", 1.0), None, 10, 10.0) == 1000
 

@@ -59,8 +59,8 @@ def test_n_eval_budget_is_exact(make, budget):
 def test_schedule_length_from_termination():
     algo = EOSMA(pop_size=10, q=1.0)
     res = minimize(Sphere(), algo, ("n_eval", 2010), seed=0)
-    assert res.algorithm.max_iter == 101  # 10 initial + 2N per iteration
-    assert minimize(Sphere(), EO(pop_size=10), ("n_gen", 7), seed=0).algorithm.max_iter == 7
+    assert res.algorithm.max_iter == 100  # 10 initial + 100 iterations of 2N
+    assert minimize(Sphere(), EO(pop_size=10), ("n_gen", 7), seed=0).algorithm.max_iter == 6
     assert minimize(Sphere(), EO(pop_size=10, max_iter=50), ("n_gen", 7),
                     seed=0).algorithm.max_iter == 50
 

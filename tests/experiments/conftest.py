@@ -13,7 +13,7 @@ TINY = {
     "targets": {"kind": "random", "n": 2, "seed": 1, "with_orientation": False},
     "algorithms": [{"name": "eosma"}, {"name": "pso"}],
     "pop_size": 8,
-    "n_gen": 6,
+    "iterations": 6,
     "runs": 2,
     "seed": 11,
     "analyses": ["summary", "ranksum"],

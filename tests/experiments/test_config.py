@@ -9,7 +9,7 @@ from moik.experiments.config import ExperimentConfig, load_config, merge
 @pytest.mark.parametrize("change, match", [
     ({"robot": "nope"}, "robot: unknown robot 'nope'"),
     ({"runs": 0}, "runs must be an integer >= 1, got 0"),
-    ({"n_gen": 2.5}, "n_gen must be an integer >= 1"),
+    ({"iterations": 2.5}, "iterations must be an integer >= 1"),
     ({"colour": 1}, "unknown key\\(s\\) colour"),
     ({"algorithms": [{"name": "nope"}]}, "algorithms\\[0\\].name: unknown algorithm 'nope'"),
     ({"algorithms": [{"name": "eosma", "params": {"zz": 1}}]}, "params: unknown key"),
@@ -25,6 +25,16 @@ from moik.experiments.config import ExperimentConfig, load_config, merge
 def test_bad_configs_raise_clear_errors(tiny, change, match):
     tiny.update(change)
     with pytest.raises(ConfigError, match=match):
+        ExperimentConfig.from_dict(tiny)
+
+
+def test_the_former_n_gen_key_is_refused_naming_iterations(tiny):
+    tiny["n_gen"] = tiny.pop("iterations")
+    with pytest.raises(ConfigError, match="'n_gen' was renamed 'iterations'.*n_gen=6"):
+        ExperimentConfig.from_dict(tiny)
+    tiny["iterations"] = tiny.pop("n_gen")
+    tiny["quick"] = {"n_gen": 2}
+    with pytest.raises(ConfigError, match="quick: the key 'n_gen' was renamed 'iterations'"):
         ExperimentConfig.from_dict(tiny)
 
 

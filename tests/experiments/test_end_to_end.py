@@ -22,6 +22,8 @@ def test_quick_runs_and_report(tmp_path, capsys):
     assert "## eosma-table8" in report and "## mpso-table5" in report
     assert "#### Hypervolume at P1" in report and "[2.088567, 2.466816]" in report
     assert "| moeosma | paper | 5.07631 | 0.0201 | 1.40 (1) |" in report
+    # the uncovered part of the P1 box [0, ref]: 2.088567 x 2.466816 - 5.07631 (paper row)
+    assert "| 0.0758 | 1.47 % |" in report and "box [0, ref] (5.1521)" in report
     assert "| m-pso | pso | paper | 0 | 465 |" in report
     assert "![Pareto fronts at P1 (first run)](eosma-table8/figures/front-0.png)" in report
     assert (out / "eosma-table8" / "figures" / "front-0.png").exists()
@@ -37,7 +39,7 @@ def test_joint_motion_experiment_draws_the_joint_history(tmp_path):
     store = ResultStore.open(out / "eosma-table9")
     recs = store.records()
     history = store.load_arrays(recs[0]["trial"])["best_x_history"]
-    assert history.shape == (20, 7)  # quick size: 20 generations, 7 joints
+    assert history.shape == (21, 7)  # quick size: the initial population + 20 iterations, 7 joints
     assert history[-1].tolist() == recs[0]["best_x"]
     assert main(["report", str(out)]) == 0
     assert (out / "eosma-table9" / "figures" / "joint-history.png").exists()

@@ -44,3 +44,34 @@ def test_figures_carry_units_and_emphasise_the_proposed(tmp_path, tiny_config, m
     assert bold == ["eosma (n=4)"]  # the config's proposed algorithm
     assert by_title["Final objective values"].get_ylabel().startswith("final objective (m)")
     assert by_title["Solve time per target"].get_ylabel().endswith("(s)")
+
+
+def _axes_of_figures(res, folder, monkeypatch):
+    monkeypatch.setattr(plt, "close", lambda *args: None)  # keep the figures to look at them
+    try:
+        made, notes = make_figures(res, folder)
+        axes = [ax for n in plt.get_fignums() for ax in plt.figure(n).axes]
+    finally:
+        monkeypatch.undo()
+        plt.close("all")
+    return made, notes, axes
+
+
+def test_one_unit_per_quantity_across_the_figures(tmp_path, monkeypatch):
+    """Joint values in degrees in every panel (motion, joint history, path), errors with units."""
+    from moik.experiments.registry import get_experiment
+
+    labels = []
+    for name in ("eosma-table9", "mpso-circle"):
+        out = tmp_path / name
+        run_experiment(get_experiment(name), quick=True, out=out)
+        made, notes, axes = _axes_of_figures(Results(ResultStore.open(out)), out / "f",
+                                             monkeypatch)
+        assert notes == [] and made
+        labels += [ax.get_ylabel() for ax in axes if ax.get_ylabel()]
+    joint = [y for y in labels if y.startswith("joint ")]
+    assert {y.split(" (")[1] for y in joint} == {"deg)", "deg/s)", "deg/s²)"}, joint
+    assert sum(y == "joint angle (deg)" for y in joint) >= 3  # motion, history, path panels
+    errors = [y for y in labels if "error" in y and "objective" not in y]
+    assert any(y.startswith("position error (cm)") for y in errors)  # the arm's unit
+    assert all("(rad)" in y for y in errors if y.startswith("orientation error")), errors

@@ -31,7 +31,7 @@ def test_the_reference_setting_is_zdt1_3_at_100_iterations():
     cfg = load_config(REFERENCE)
     assert [t.name for t in cfg.targets] == ["zdt1-30", "zdt2-30", "zdt3-30", "zdt1-5",
                                               "zdt2-5", "zdt3-5"]
-    assert "evaluations" not in cfg["problem"] and cfg["n_gen"] == 101
+    assert "evaluations" not in cfg["problem"] and cfg["iterations"] == 100
     assert {a.label: a.params["pop_size"] for a in cfg.algorithms}["mssa"] == 200
 
 

@@ -57,6 +57,7 @@ def test_the_packaged_configs_are_found_with_importlib_resources(tmp_path, monke
     (package / "tiny_test.py").write_text(f"EXPERIMENT = {tiny!r}\n")
     monkeypatch.syspath_prepend(str(tmp_path))
     monkeypatch.setattr(registry, "PACKAGE", "fake_paper_configs")
+    monkeypatch.setattr(registry, "_CHECKOUT", tmp_path / "no-checkout" / "experiments")
     monkeypatch.delenv(ENV_VAR, raising=False)
     try:
         assert registry.packaged_dir() == package
@@ -70,3 +71,17 @@ def test_a_checkout_without_the_installed_package_uses_its_experiments_folder(mo
     monkeypatch.setattr(registry, "PACKAGE", "moik_no_such_package_here")
     assert registry.packaged_dir() == registry._CHECKOUT
     assert set(PAPER_EXPERIMENTS) <= set(available_experiments())
+
+
+def test_a_source_checkout_uses_its_own_folder_over_an_installed_package(tmp_path, monkeypatch):
+    """An editable install made from another checkout maps the package elsewhere: the
+    configs still come from the tree the code runs from."""
+    package = tmp_path / "elsewhere_paper_configs"
+    package.mkdir()
+    (package / "__init__.py").write_text("")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    monkeypatch.setattr(registry, "PACKAGE", "elsewhere_paper_configs")
+    try:
+        assert registry.packaged_dir() == registry._CHECKOUT
+    finally:
+        sys.modules.pop("elsewhere_paper_configs", None)

@@ -64,9 +64,15 @@ def test_joint_history():
     H = np.cumsum(np.ones((50, 7)) * 0.01, axis=0)
     ax = plot_joint_history(H)
     assert len(ax.get_lines()) == 7
-    assert ax.get_ylabel() == "joint angle (rad)"
+    assert ax.get_ylabel() == "joint angle (deg)"  # given in rad, drawn in degrees
+    np.testing.assert_allclose(ax.get_lines()[3].get_ydata(), np.degrees(H[:, 3]))
+    mixed = plot_joint_history(H[:, :3], prismatic=[False, False, True], unit="m")
+    assert mixed.get_ylabel() == "joint value (deg | m for prismatic joints)"
+    np.testing.assert_allclose(mixed.get_lines()[2].get_ydata(), H[:, 2])  # prismatic as is
     assert [t.get_text() for t in ax.get_legend().get_texts()][-1] == "q7"
     with pytest.raises(ShapeError, match="joint_labels"):
         plot_joint_history(H, joint_labels=["a"])
+    with pytest.raises(ShapeError, match="prismatic has 2 entries, history has 7 joints"):
+        plot_joint_history(H, prismatic=[True, False])
     with pytest.raises(ShapeError, match="2-D"):
         plot_joint_history(np.ones(5))

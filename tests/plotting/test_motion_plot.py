@@ -37,12 +37,12 @@ def test_motion_figure(tmp_path, setup):
     t, Q, Qd, Qdd = quintic_trajectory(q0, q1, 3.0, 31)
     for ax, Y in ((axq, Q), (axv, Qd), (axa, Qdd)):
         assert len(ax.get_lines()) == robot.dof
-        np.testing.assert_allclose(ax.get_lines()[2].get_ydata(), Y[:, 2])
+        np.testing.assert_allclose(ax.get_lines()[2].get_ydata(), np.degrees(Y[:, 2]))
         np.testing.assert_allclose(ax.get_lines()[0].get_xdata(), t)
         assert ax.get_xlabel() == "time (s)"
-    assert axq.get_ylabel() == "angle (rad)"
-    assert axv.get_ylabel() == "velocity (rad/s)"
-    assert axa.get_ylabel() == "acceleration (rad/s²)"
+    assert axq.get_ylabel() == "joint angle (deg)"  # the same unit as every joint figure
+    assert axv.get_ylabel() == "joint velocity (deg/s)"
+    assert axa.get_ylabel() == "joint acceleration (deg/s²)"
     # 3-D panel: path of EOSMA ends at the FK of q1, i.e. the target
     path = ax3.get_lines()[0]
     x, y, z = path.get_data_3d()

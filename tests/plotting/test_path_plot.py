@@ -43,6 +43,8 @@ def test_path_full_figure(tmp_path, circle):
     assert axo.get_ylabel() == "orientation error (rad)"
     np.testing.assert_allclose(axo.get_lines()[0].get_ydata(), ori)
     assert len(axq.get_lines()) == 5
+    assert axq.get_ylabel() == "joint angle (deg)"  # Q in rad, drawn in degrees
+    np.testing.assert_allclose(axq.get_lines()[1].get_ydata(), np.degrees(Q[:, 1]))
     assert axq.get_xlabel() == "path point index"
     assert fig._suptitle.get_text() == "Path tracking (50 points)"
     assert (tmp_path / "p.png").exists() and (tmp_path / "p.pdf").exists()

@@ -63,3 +63,25 @@ def test_bad_targets():
         circle_path([0, 0, 0], -1, 10)
     with pytest.raises(TargetError, match="n must be an integer >= 1"):
         random_reachable_targets(get_robot("planar2"), 0, seed=0)
+
+
+def test_pose_fast_path_gives_private_contiguous_copies():
+    """A valid pose (checked in one compiled pass) gives the same target as the checks one
+    by one: contiguous copies, independent of the caller's array."""
+    T = get_robot("eosma7").fk(np.zeros(7))
+    target = as_target(T)
+    assert np.array_equal(target.position, T[:3, 3])
+    assert np.array_equal(target.rotation, T[:3, :3])
+    assert target.rotation.flags.c_contiguous and target.position.flags.c_contiguous
+    T[:3, :] = 0.0
+    assert np.any(target.rotation != 0.0) and target.q_source is None
+
+
+@pytest.mark.parametrize("where, value, error", [
+    ((3, 0), np.nan, TargetError), ((0, 0), np.nan, NonFiniteError),
+    ((0, 3), np.inf, NonFiniteError), ((3, 3), 2.0, TargetError), ((0, 1), 0.3, TargetError)])
+def test_pose_fast_path_falls_back_to_the_named_check(where, value, error):
+    T = np.eye(4)
+    T[where] = value
+    with pytest.raises(error):
+        as_target(T)

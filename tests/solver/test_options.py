@@ -1,9 +1,20 @@
 """SearchOptions: solve_ik's options validated and normalised together."""
 
+import subprocess
+import sys
+
+import numpy as np
 import pytest
 
+from moik.algorithms.registry import get_algorithm, is_multi_objective
 from moik.exceptions import ParameterError, UnknownNameError
-from moik.solver.options import SearchOptions, seed_sequence
+from moik.solver.options import (
+    DEFAULT_POP_SIZES,
+    SEARCH_DEFAULTS,
+    SearchOptions,
+    seed_sequence,
+    start_generator,
+)
 
 DEFAULTS = dict(method="eosma", orientation="geodesic", polish=True, n_solutions=1,
                 max_evals=50_000, starts=16, pop_size=None, generations=15,
@@ -41,3 +52,34 @@ def test_seed_sequence():
     assert seed_sequence(ss) is ss
     with pytest.raises(ParameterError, match="seed must be a non-negative integer"):
         seed_sequence(True)
+
+
+@pytest.mark.parametrize("seed", [0, 7, 2**40])
+def test_start_generator_is_a_fresh_seeded_generator_each_time(seed):
+    """Bit for bit ``Generator(PCG64(SeedSequence(seed)))``, reset on every call."""
+    for _ in range(2):
+        got = start_generator(seed).random(16)
+        want = np.random.Generator(np.random.PCG64(np.random.SeedSequence(seed))).random(16)
+        assert np.array_equal(got, want)
+
+
+def test_default_algorithms_pass_the_registry_check():
+    """The default method / front_method are not looked up in the registry at run time
+    (start-up time): this is the check they would get."""
+    assert not is_multi_objective(SEARCH_DEFAULTS["method"])
+    assert is_multi_objective(SEARCH_DEFAULTS["front_method"])
+    for pop_size in DEFAULT_POP_SIZES:
+        get_algorithm(SEARCH_DEFAULTS["method"], pop_size=pop_size)
+
+
+def test_a_first_stage_solve_imports_neither_the_algorithms_nor_scipy_optimize():
+    """Start-up time: a pose solved by the first stage loads no metaheuristic, pymoo
+    algorithm or scipy.optimize (about 0.3 s of imports)."""
+    code = ("import sys, numpy as np, moik\n"
+            "r = moik.solve_ik(moik.get_robot('puma560'), np.array([0.4, 0.2, 0.3]))\n"
+            "assert r.success\n"
+            "print([m for m in ('moik.algorithms.registry', 'scipy.optimize', "
+            "'pymoo.algorithms.moo.nsga2') if m in sys.modules])\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True)
+    assert out.stdout.strip() == "[]"

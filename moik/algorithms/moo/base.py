@@ -104,7 +104,8 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         archive_size: Archive capacity; None means ``pop_size`` (the papers).
         X0: Optional initial points (k rows within the bounds, k at most the
             initial population); the other rows are drawn uniformly.
-        max_iter: Schedule length T, fixed. None: planned before every iteration from
+        max_iter: Schedule length T (update iterations after initialization, the
+            papers' Max_t; ``t = 1 .. T``), fixed. None: planned before every iteration from
             the current termination (see the module doc), else
             :data:`DEFAULT_SCHEDULE_LENGTH`.
         **kwargs: pymoo ``Algorithm`` options (``output``, ``callback``, ``seed`` ...,
@@ -164,7 +165,7 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         if self._fixed_T is None:
             T = planned_iterations(self.termination, t=t, n_eval=n_eval, elapsed=elapsed,
                                    per_iteration=self._evals_per_iteration(), plans=self._plans)
-            self.max_iter = int(T) if math.isfinite(T) else max(DEFAULT_SCHEDULE_LENGTH, t + 1)
+            self.max_iter = int(T) if math.isfinite(T) else max(DEFAULT_SCHEDULE_LENGTH, t)
 
     def _begin_iteration(self) -> None:
         """Before an iteration's first batch: t and the planned schedule."""
@@ -253,7 +254,7 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         if k == 0:
             return self._pad(n, np.empty((0, self.problem.n_obj)),
                              np.empty(0) if self._constrained else None)
-        out = self.problem.evaluate(X if k == n else X[:k], return_as_dictionary=True)
+        out = self._problem_values(X if k == n else X[:k])
         self.evaluator.n_eval += k
         F, CV, GH = (out["F"], None, None) if not self._constrained else \
             self._constraint_values(out["F"], out.get("G"), out.get("H"))

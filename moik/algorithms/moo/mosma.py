@@ -44,6 +44,9 @@ Deviations and readings:
 - The reported front is the external archive (the paper reports the first
   front of the final population, at most N points; the archive holds every
   non-dominated point found, truncated to capacity).
+- Eq. 3 uses ``t / (T + 1)``, T the update iterations: SMA's code counts the
+  initial evaluation as its first iteration (:mod:`moik.algorithms.soo.sma`);
+  ``t / T = 1`` would send every ``vc X`` coordinate to exactly 0.
 - Coordinates are clipped to the bounds (as in the code); rows left without
   evaluation by an ``n_eval`` budget (``F = inf``) never survive.
 - Constraints (not in the paper): the elitist order puts the feasible rows first
@@ -144,7 +147,7 @@ class MOSMA(MOArrayAlgorithm):
         W = sma_weights(S, d, rng=rng)  # Eqs. 4-5
         n_first = int(np.sum(self.pop_rank == 0))
         food = self.pop_X[rng.integers(n_first, size=n)]
-        a, b = sma_schedule(self.t, self.max_iter)  # Eq. 3
+        a, b = sma_schedule(self.t, self.max_iter + 1)  # Eq. 3; Max_iter = T + 1 (module doc)
         X = sma_update(self.pop_X, W, food, S, 0.0, a, b, z=self.z, xl=self.xl, xu=self.xu,
                        rng=rng)  # Eqs. 1-2
         X = clip_to_bounds(X, self.xl, self.xu)

@@ -32,8 +32,9 @@ so the budget MAX decides the run. MAX is the ``n_eval`` termination's limit.
 Without one (``n_gen`` = T, a time limit, or pymoo's default), MAX is
 ``(N_init - 4) T / ln(N_init / 4)``, the budget at which the continuous
 reduction schedule reaches 4 agents at iteration T (T from ``max_iter``, else
-the ``n_gen`` limit, else 1000). For the EOSMA paper's equal-budget
-comparison (N, T for the others) run SASS with ``("n_eval", N * T)``. The
+the update iterations an ``n_gen`` limit allows, ``n_max_gen - 1``, else 1000). For
+the EOSMA paper's equal-budget comparison (N, T for the others) run SASS with
+``("n_eval", N + N * T)``. The
 population size changes between
 iterations; ``X``/``F`` always hold the current agents (ArrayAlgorithm
 reports whatever size they have).

@@ -11,9 +11,9 @@ DOI 10.1038/s41598-022-13516-3), which restates SMA as Eqs. 1-5:
 - Eq. 2: ``p = tanh|S_i - DF|`` (DF: best fitness so far);
 - Eq. 3: ``vb ~ U(-a, a)``, ``a = atanh(1 - t/T)``; ``vc ~ U(-b, b)``,
   ``b = 1 - t/T``;
-- Eqs. 4-5: ``W = 1 +/- r log10((bF - S_i)/(bF - wF) + 1)``, "+" for the better
-  half of the sorted population (``eps`` added to the denominator, as in the
-  authors' code).
+- Eqs. 4-5: ``W = 1 +/- r log10((bF - S_i)/(bF - wF - eps) + 1)``, "+" for the
+  better half of the sorted population (``eps`` keeps the denominator off zero;
+  see the deviations for its sign).
 
 Defaults (EOSMA paper, Table 3): z=0.03. Evaluations: N per iteration; no
 greedy selection (the original has none). Coordinates are clipped to the bounds,
@@ -28,6 +28,19 @@ Deviations:
 - The code draws one scalar ``rand`` for the restart of a whole row; here the
   restart is uniform per coordinate (Eq. 1 read as a vector).
 - Eq. 4 prints ``log``; the authors' code and this port use ``log10``.
+- The authors' code divides by ``bestFitness - worstFitness + eps``. For
+  minimisation ``bF - wF <= 0``, so ``+ eps`` shrinks the denominator's magnitude:
+  it is 0 when ``wF - bF = eps`` (``log10`` of ``-inf``) and positive below (the
+  argument drops under 0, ``log10`` gives NaN). Here ``eps`` is subtracted, so
+  ``|bF - wF - eps| >= eps`` and the argument stays in ``[1, 2]``; when
+  ``bF == wF`` both give ``W = 1``.
+- Eq. 3's ``T``: the paper's pseudo-code and the authors' code evaluate at the top
+  of ``while t <= Max_iter`` (``t = 1`` evaluates the initial population), so the
+  update made with ``t = Max_iter`` is never evaluated and their ``Max_iter``
+  counts the initial evaluation. Here T counts update iterations, so Eq. 3 uses
+  ``t / (T + 1)``: the last evaluated update has ``b = 1/(T + 1) > 0``, as in the
+  code (``t / T = 1`` would give ``vb = vc = 0`` and send every ``vc X``
+  coordinate to exactly 0, an artificial optimum on origin-centred problems).
 - Constrained problems: the fitness S is the feasibility-first ranking value of
   base.ranking_fitness (Deb's rules).
 
@@ -64,7 +77,8 @@ def weight_arguments(S, order, arg):
     """Eq. 5 and the argument of Eq. 4's log10, per rank, into ``order`` and ``arg``.
 
     ``order`` is numpy's stable ranking of ``S``; ``arg[i] = (bF - S_(i)) / (bF - wF -
-    eps) + 1`` for the i-th best fitness ``S_(i)``.
+    eps) + 1`` for the i-th best fitness ``S_(i)``, in ``[1, 2]`` (``- eps``: the
+    denominator is at most ``-eps``, module doc).
     """
     stable_order(S, order)
     bF, wF = S[order[0]], S[order[-1]]
@@ -179,7 +193,7 @@ class SMA(ArrayAlgorithm):
         S = ranking_fitness(self.F, self.CV)
         feasible_best = self.best_cv is None or self.best_cv <= 0.0
         DF = self.best_f if feasible_best else float(S.min())
-        a, b = sma_schedule(self.t, self.max_iter)
+        a, b = sma_schedule(self.t, self.max_iter + 1)  # the code's Max_iter: T + 1 (module doc)
         W = sma_weights(S, self.problem.n_var, rng=rng)
         X = sma_update(self.X, W, self.best_x, S, DF, a, b, z=self.z, xl=self.xl, xu=self.xu,
                        rng=rng)

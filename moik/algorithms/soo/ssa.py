@@ -32,8 +32,12 @@ from moik.algorithms.mechanics import clip_to_bounds
 
 
 def ssa_c1(t: int, T: int) -> float:
-    """Eq. 3.2 with l = t + 1 (the code's first update uses l = 2 of L)."""
-    return 2.0 * math.exp(-((4.0 * (t + 1) / T) ** 2))
+    """Eq. 3.2 as the authors' code counts: l = t + 1 of L = T + 1.
+
+    SSA.m counts the initial evaluation as iteration 1 (its first update uses
+    l = 2, its last l = L); here T counts the update iterations, so L = T + 1.
+    """
+    return 2.0 * math.exp(-((4.0 * (t + 1) / (T + 1)) ** 2))
 
 
 def salp_update(X, food, c1: float, n_leaders: int, xl, xu, *,

@@ -163,7 +163,7 @@ def run_trial(spec: TrialSpec, record: dict, arrays: dict) -> None:
     algorithm = algorithm_factory(spec, created)()
     algorithm.return_least_infeasible = True  # so res.X exists; feasibility is checked below
     t0 = time.perf_counter()
-    res = minimize(problem, algorithm, ("n_gen", spec.n_gen), seed=spec.seed,
+    res = minimize(problem, algorithm, ("n_gen", spec.iterations + 1), seed=spec.seed,
                    copy_algorithm=False)
     elapsed = time.perf_counter() - t0
     record.update(time=elapsed, n_eval=int(algorithm.evaluator.n_eval),

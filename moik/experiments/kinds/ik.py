@@ -274,7 +274,7 @@ def run_trial(spec: TrialSpec, record: dict, arrays: dict) -> None:
 def _single_objective(spec: TrialSpec, problem, record: dict, arrays: dict) -> None:
     created: list = []
     factory = algorithm_factory(spec, created)
-    termination = ("n_gen", spec.n_gen)
+    termination = ("n_gen", spec.iterations + 1)  # the initial population is generation 1
     t0 = time.perf_counter()
     if spec.protocol is not None:
         out = solve_until_success(problem, factory, termination, seed=spec.seed_sequence,
@@ -307,7 +307,7 @@ def _single_objective(spec: TrialSpec, problem, record: dict, arrays: dict) -> N
 def _multi_objective(spec: TrialSpec, problem, record: dict, arrays: dict) -> None:
     algorithm = get_algorithm(spec.algorithm, **spec.params)
     t0 = time.perf_counter()
-    res = minimize(problem, algorithm, ("n_gen", spec.n_gen), seed=spec.seed,
+    res = minimize(problem, algorithm, ("n_gen", spec.iterations + 1), seed=spec.seed,
                    copy_algorithm=False)
     elapsed = time.perf_counter() - t0
     F = np.atleast_2d(np.asarray(res.F, dtype=float))

@@ -14,7 +14,9 @@ Each entry of ``names`` is a problem of :data:`ANALYTIC_FRONTS` (pymoo's
 
 Budget: with ``evaluations`` every algorithm runs until that many evaluations
 (pymoo's ``("n_eval", evaluations)``; an algorithm may finish the generation it
-is in); without it, the config's generations (``n_gen``), as for the other kinds.
+is in; the config's ``iterations`` are then unused); without it, the config's
+``iterations`` (update iterations after the initial population, pymoo's
+``("n_gen", iterations + 1)``), as for the other kinds.
 
 Only problems whose Pareto front is analytic are accepted: pymoo's
 ``pareto_front()`` downloads some fronts (DTLZ7's with three objectives, the
@@ -26,8 +28,9 @@ with three objectives).
 
 Baselines beside the registry's algorithms (:data:`BASELINES`):
 ``random-search`` samples the same budget uniformly in the box (the
-``evaluations``, or ``pop_size x n_gen`` without them) with the trial's seed
-and keeps the non-dominated points.
+``evaluations``, or without them ``pop_size x (iterations + 1)``, the budget of
+an algorithm that evaluates its population once per iteration) with the
+trial's seed and keeps the non-dominated points.
 
 A trial records ``igd`` (pymoo's IGD of the returned front against the analytic
 one), ``hv`` (:func:`moik.metrics.hypervolume` with the reference point
@@ -184,7 +187,7 @@ def check_config(where: str, cfg: Mapping) -> tuple[dict, tuple[MooTarget, ...]]
 
 def _budget(spec: TrialSpec) -> int:
     """Evaluations of the random-search baseline (see the module docstring)."""
-    return spec.problem.get("evaluations") or spec.params["pop_size"] * spec.n_gen
+    return spec.problem.get("evaluations") or spec.params["pop_size"] * (spec.iterations + 1)
 
 
 def run_trial(spec: TrialSpec, record: dict, arrays: dict) -> None:
@@ -199,7 +202,8 @@ def run_trial(spec: TrialSpec, record: dict, arrays: dict) -> None:
     else:
         algorithm = get_algorithm(spec.algorithm, **spec.params)
         evaluations = spec.problem.get("evaluations")
-        termination = ("n_eval", evaluations) if evaluations else ("n_gen", spec.n_gen)
+        termination = (("n_eval", evaluations) if evaluations
+                       else ("n_gen", spec.iterations + 1))  # initialization is generation 1
         res = minimize(problem, algorithm, termination, seed=spec.seed, copy_algorithm=False)
         X = np.atleast_2d(np.asarray(res.X, dtype=float))
         F = np.atleast_2d(np.asarray(res.F, dtype=float))

@@ -79,7 +79,7 @@ def test_n_gen_time_verbose_and_callback(capsys):
     out = capsys.readouterr().out
     # pymoo's MultiObjectiveOutput: no known front here, so eps/indicator
     assert "n_nds" in out and "eps" in out and "indicator" in out
-    assert [s[0] for s in seen] == [0, 1, 2, 3, 4] and res.algorithm.max_iter == 5
+    assert [s[0] for s in seen] == [0, 1, 2, 3, 4] and res.algorithm.max_iter == 4
     assert all(s[2] == (10, 2) for s in seen)
     res = minimize(Schaffer(), MOEOSMA(pop_size=10), ("time", 0.2), seed=0)
     assert res.algorithm.n_gen > 2 and np.all(res.F[:, 0] < 5.0)

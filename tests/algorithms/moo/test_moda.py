@@ -47,11 +47,12 @@ def test_evaluations_per_iteration_and_archive_default():
 
 
 def test_zdt1_hypervolume_sanity_against_nsga2(check):
-    """ZDT1 (10 variables), 5,000 evaluations, N = 50, seed 0: measured HV / NSGA2's HV
-    0.516; the bound checks that MODA converges at all, not that it matches NSGA2."""
+    """ZDT1 (10 variables), 5,050 evaluations (N = 50 and 100 iterations of N), seed 0:
+    measured HV / NSGA2's HV 0.516; the bound checks that MODA converges at all, not that
+    it matches NSGA2."""
     hv = check.zdt1_hypervolume(lambda: get_algorithm("moda", pop_size=50), n_var=10,
-                                n_eval=5000)
-    assert hv / check.nsga2_zdt1_hypervolume(n_var=10, n_eval=5000, pop_size=50) >= 0.45
+                                n_eval=5050)
+    assert hv / check.nsga2_zdt1_hypervolume(n_var=10, n_eval=5050, pop_size=50) >= 0.45
 
 
 def test_bad_parameters():

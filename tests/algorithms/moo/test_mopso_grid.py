@@ -67,8 +67,9 @@ def test_same_seed_bit_identical_within_bounds_nondominated(check, problem_name)
 
 
 def test_zdt1_hypervolume_against_nsga2_same_budget(check):
-    """ZDT1 (30 variables), 6,000 evaluations, seed 0: NSGA2 0.741, MOPSO 0.405 (its
+    """ZDT1 (30 variables), 6,100 evaluations (N = 100 and 60 iterations of N), seed 0:
+    NSGA2 0.749, MOPSO 0.413 (its
     schedule, inferred from the budget, is short here; at 25,000 evaluations see the
     report)."""
-    hv = check.zdt1_hypervolume(lambda: get_algorithm("mopso"), n_var=30, n_eval=6000)
-    assert hv >= 0.4 * check.nsga2_zdt1_hypervolume(n_var=30, n_eval=6000, pop_size=100)
+    hv = check.zdt1_hypervolume(lambda: get_algorithm("mopso"), n_var=30, n_eval=6100)
+    assert hv >= 0.4 * check.nsga2_zdt1_hypervolume(n_var=30, n_eval=6100, pop_size=100)

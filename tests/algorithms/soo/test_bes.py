@@ -127,3 +127,11 @@ def test_ibes_planar2_position_target_below_1e_12_m():
     res = minimize(problem, IBES(pop_size=30), ("n_gen", 100), seed=0)
     assert res.F[0] < 1e-12
     assert np.all(np.abs(res.X) <= math.pi)
+
+
+def test_levy_scale_reading_multiplies_the_eq9_step():
+    assert IBES().levy_scale == 0.01  # Eq. 9 as printed
+    L = levy_step((1, 2), 1.5, rng=ScriptedRng([[1.0, -2.0]], [[0.125, -1.0]]), scale=1.0)
+    np.testing.assert_allclose(L, [[levy_sigma(1.5) * 4.0, -2.0 * levy_sigma(1.5)]], rtol=1e-14)
+    with pytest.raises(ParameterError, match="levy_scale must be a positive finite number"):
+        IBES(levy_scale=0.0)

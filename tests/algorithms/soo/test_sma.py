@@ -5,13 +5,26 @@ import math
 import numpy as np
 import pytest
 
-from moik.algorithms.soo.sma import sma_schedule, sma_update, sma_weights
+from moik.algorithms.soo.sma import EPS, sma_schedule, sma_update, sma_weights
 from moik.testing import ScriptedRng
 
 
 def test_sma_schedule():
     a, b = sma_schedule(500, 1000)
     assert a == math.atanh(0.5) and b == 0.5
+
+
+def test_sma_weights_stay_finite_when_the_fitness_spread_is_zero_or_below_eps():
+    """bF == wF: every weight is 1. A spread of eps or less (where the authors' code's
+    ``bF - wF + eps`` is 0 or positive, giving log10 of -inf or of a negative number):
+    the weights stay finite, within 1 +/- log10(2)."""
+    rng = np.random.default_rng(0)
+    np.testing.assert_array_equal(sma_weights(np.full(6, 0.25), 3, rng=rng), np.ones((6, 3)))
+    for spread in (EPS / 2, EPS, 2 * EPS):
+        S = np.array([0.0, spread, 0.0, spread, spread / 2, 0.0])
+        W = sma_weights(S, 3, rng=rng)
+        assert np.all(np.isfinite(W))
+        assert np.all(np.abs(W - 1.0) <= math.log10(2.0))
 
 
 def test_sma_weights_eq4():

@@ -12,7 +12,8 @@ from moik.testing import ScriptedRng
 
 
 def test_salp_leader_and_followers():
-    assert ssa_c1(0, 4) == 2.0 * math.exp(-1.0)
+    assert ssa_c1(0, 3) == 2.0 * math.exp(-1.0)  # l = 1 of L = 4
+    assert ssa_c1(3, 3) == 2.0 * math.exp(-16.0)  # the last iteration: l = L
     X = np.array([[0.0], [4.0], [8.0]])
     out = salp_update(X, np.array([1.0]), 0.5, 1, np.array([-2.0]), np.array([2.0]),
                       rng=ScriptedRng([[0.75]], [[0.7]]))

@@ -16,7 +16,7 @@ BENCH = {
                 "params": {"n_var": 5}},
     "algorithms": [{"name": "ibes"}, {"name": "pso"}],
     "pop_size": 6,
-    "n_gen": 4,
+    "iterations": 4,
     "runs": 3,
     "seed": 3,
     "analyses": ["per-target", "per-target-ranksum"],
@@ -86,7 +86,7 @@ def test_benchmark_run_records_and_tables(tmp_path):
     for r in recs:
         assert r["feasible"] == (r["cv"] == 0.0)
         assert (r["best_f"] is None) == (not r["feasible"])  # never an infeasible best_f
-        assert store.load_arrays(r["trial"])["convergence"].size == 4
+        assert store.load_arrays(r["trial"])["convergence"].size == 5  # initial + 4 iterations
     f1 = [r for r in recs if r["target_name"] == "F1"]
     assert all(r["f_opt"] == 0.0 and r["error"] == r["best_f"] for r in f1)
     _, tables = analyze(store)

@@ -22,7 +22,7 @@ MOO = {
         {"name": "dtlz2", "label": "dtlz2-3", "params": {"n_var": 5, "n_obj": 3}}]},
     "algorithms": [{"name": "nsga2"}, {"name": "mogwo"}, {"name": "random-search"}],
     "pop_size": 12,
-    "n_gen": 5,
+    "iterations": 4,
     "runs": 2,
     "seed": 4,
     "analyses": ["front-quality", "mean-ranks"],
@@ -155,6 +155,6 @@ def test_without_evaluations_the_generations_bound_the_run():
     cfg = ExperimentConfig.from_dict(data)
     by_id = {s.trial_id: s for s in build_trials(cfg)}
     rec, _ = run_trial(by_id["nsga2/0/0"])
-    assert rec["n_eval"] == 12 * 5
+    assert rec["n_eval"] == 12 + 4 * 12  # the initial population and 4 iterations
     rec, _ = run_trial(by_id["random-search/0/0"])
-    assert rec["n_eval"] == 12 * 5
+    assert rec["n_eval"] == 12 + 4 * 12  # the initial population and 4 iterations

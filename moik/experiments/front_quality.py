@@ -15,7 +15,9 @@ For experiments of the kind :mod:`moik.experiments.kinds.moo_functions`
   problems. Only problems where every algorithm has runs are ranked.
 
 The computations are plain functions of numbers (:func:`mean_ranks`,
-:func:`ranksum_verdicts`); the table functions only gather the records.
+:func:`ranksum_verdicts`); the table functions only gather the records. The
+headline of a generated docs block (:data:`HEADLINES`): the lowest mean IGD per
+problem, and the mean ranks with the +/=/- counts.
 """
 
 from __future__ import annotations
@@ -168,5 +170,34 @@ def mean_ranks_table(res: Results) -> list[Table]:
                   + [f"{n} IGD rank" for n in ranked], rows, notes)]
 
 
+def front_quality_lines(res: Results) -> list[str]:
+    """Headline: per problem, the lowest mean IGD and the reference algorithm's."""
+    reference = res.config.get("proposed")
+    parts = []
+    for ti, target in enumerate(res.meta["targets"]):
+        igd = {lab: v for lab, v in _samples(res, ti, "igd").items() if v.size}
+        if not igd:
+            continue
+        best = min(igd, key=lambda lab: float(np.mean(igd[lab])))
+        ref = (f", {reference} {fmt(float(np.mean(igd[reference])), 3)}"
+               if reference in igd and reference != best else "")
+        parts.append(f"{target['name']} {best} {fmt(float(np.mean(igd[best])), 3)}{ref}")
+    return ["- lowest mean IGD per problem: " + "; ".join(parts)] if parts else []
+
+
+def mean_ranks_lines(res: Results) -> list[str]:
+    """Headline: the mean-ranks table without its per-problem columns."""
+    tables = mean_ranks_table(res)
+    if not tables:
+        return []
+    (table,) = tables
+    lines = ["| " + " | ".join(table.header[:4]) + " |", "|---|---|---|---|"]
+    return lines + ["| " + " | ".join(row[:4]) + " |" for row in table.rows] + [
+        f"- {table.notes[0]}"]
+
+
 FUNCTIONS = {"front-quality": front_quality_table, "mean-ranks": mean_ranks_table}
 """Analysis name -> table function, merged into those of :mod:`moik.experiments.analysis`."""
+
+HEADLINES = {"front-quality": front_quality_lines, "mean-ranks": mean_ranks_lines}
+"""Analysis name -> headline function, merged into :data:`moik.experiments.headlines.HEADLINES`."""

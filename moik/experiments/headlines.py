@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from moik.experiments.analysis import front_hv
+from moik.experiments.front_quality import HEADLINES as FRONT_HEADLINES
 from moik.experiments.per_target import cluster_solutions
 from moik.experiments.tables import Results, fmt
 from moik.metrics import ranksum_pvalues, signed_rank, success_rate, summarize
@@ -221,7 +222,7 @@ HEADLINES = {"summary": summary_lines, "ranksum": ranksum_lines,
              "friedman-hv": friedman_hv_lines, "joint-motion": joint_motion_lines,
              "compromise": compromise_lines, "signed-rank": signed_rank_lines,
              "per-target": per_target_lines, "per-target-ranksum": per_target_ranksum_lines,
-             "branches": branches_lines}
+             "branches": branches_lines, **FRONT_HEADLINES}
 """Analysis name -> headline function (every name of ``ANALYSES`` has one)."""
 
 

@@ -91,3 +91,13 @@ def test_mean_ranks_table_leaves_out_problems_without_every_algorithm():
     (table,) = mean_ranks_table(res)
     assert table.header[-1] == "p1 IGD rank" and any("left out" in n and "p2" in n
                                                       for n in table.notes)
+
+
+def test_headlines():
+    from moik.experiments.front_quality import front_quality_lines, mean_ranks_lines
+
+    assert front_quality_lines(_case()) == ["- lowest mean IGD per problem: p1 good 0.12, ref "
+                                            "0.52; p2 ref 0.32"]
+    lines = mean_ranks_lines(_case())
+    assert lines[0] == "| algorithm | mean IGD rank | mean HV rank | IGD vs ref +/=/- |"
+    assert lines[2] == "| good | 1.50 | 1.25 | 1/1/0 |" and lines[-1].startswith("- ranks of")

@@ -65,3 +65,16 @@ def test_the_report_has_the_tables(quick_results):
     assert "| algorithm | IGD mean | IGD std | IGD vs nsga2 |" in report
     assert "200 evaluations per run" in report
     assert "HV reference point [1.1, 1.1, 1.1]" in report
+
+
+def test_the_docs_pages_and_blocks_are_generated(quick_results, tmp_path):
+    docs = tmp_path / "docs"
+    docs.mkdir()
+    (docs / "reproducing.md").write_text("<!-- generated: moo-suite summary -->\n"
+                                         "<!-- end generated -->\n")
+    assert main(["report", str(quick_results), "--docs", str(docs), "--no-figures"]) == 0
+    page = (docs / "results" / "moo-suite-quick.md").read_text()
+    assert "#### Mean ranks over the problems (1 = best)" in page
+    block = (docs / "reproducing.md").read_text()
+    assert "- lowest mean IGD per problem: zdt1 " in block
+    assert "| algorithm | mean IGD rank | mean HV rank | IGD vs nsga2 +/=/- |" in block

@@ -15,6 +15,7 @@ import numpy as np
 from moik.experiments.analysis import front_hv
 from moik.experiments.consistency import FUNCTIONS as CONSISTENCY_FUNCTIONS
 from moik.experiments.dh_fit import FUNCTIONS as DH_FIT_FUNCTIONS
+from moik.experiments.front_quality import HEADLINES as FRONT_HEADLINES
 from moik.experiments.per_target import cluster_solutions
 from moik.experiments.solution_sets import FUNCTIONS as RANK_FUNCTIONS
 from moik.experiments.tables import Results, fmt
@@ -235,7 +236,8 @@ HEADLINES = {"summary": summary_lines, "ranksum": ranksum_lines,
              "branches": branches_lines,
              "dh-fit": notes_of(DH_FIT_FUNCTIONS["dh-fit"]),
              "solution-rank": notes_of(RANK_FUNCTIONS["solution-rank"]),
-             "paper-consistency": notes_of(CONSISTENCY_FUNCTIONS["paper-consistency"])}
+             "paper-consistency": notes_of(CONSISTENCY_FUNCTIONS["paper-consistency"]),
+             **FRONT_HEADLINES}
 """Analysis name -> headline function (every name of ``ANALYSES`` has one)."""
 
 

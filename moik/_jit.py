@@ -96,7 +96,8 @@ def jit(func: Callable | None = None, *, inline: bool = False) -> Any:
     dispatcher = numba.njit(cache=False, fastmath=False,
                             inline="always" if inline else "never")(func)
     try:
-        dispatcher._cache = _KernelCache(func)  # what cache=True does, with our key
+        # what cache=True does, with our key (numba's types omit the private _cache)
+        dispatcher._cache = _KernelCache(func)  # type: ignore[attr-defined]
     except RuntimeError as exc:  # numba found no writable cache location: stay uncached
         if "no locator available" not in str(exc):
             raise

@@ -19,7 +19,7 @@ Each validator takes the ``name`` of the argument for its message and an
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from typing import Any
+from typing import Any, TypeGuard
 
 import numpy as np
 
@@ -29,7 +29,7 @@ _INTEGER = (int, np.integer)
 _REAL = (int, float, np.integer, np.floating)
 
 
-def is_integer(value: object) -> bool:
+def is_integer(value: object) -> TypeGuard[int | np.integer]:
     """Whether ``value`` is an integer under moik's rule (int or numpy integer, not bool)."""
     return isinstance(value, _INTEGER) and not isinstance(value, (bool, np.bool_))
 
@@ -52,7 +52,7 @@ def integer(name: str, value: object, *, minimum: int | None = None, maximum: in
         expected = "an integer"
     if not is_integer(value):
         raise error(f"{name} must be {expected}, got {value!r}")
-    v = int(value)  # type: ignore[call-overload]
+    v = int(value)
     if (minimum is not None and v < minimum) or (maximum is not None and v > maximum):
         raise error(f"{name} must be {expected}, got {v}")
     return v
@@ -108,7 +108,7 @@ def _real_in(value: object, lo: float, hi: float, lo_open: bool, hi_open: bool) 
     """``value`` as a float if it is a finite real (not a bool) in the range, else None."""
     if not isinstance(value, _REAL) or isinstance(value, (bool, np.bool_)):
         return None
-    v = float(value)  # type: ignore[arg-type]
+    v = float(value)
     inside = (lo < v if lo_open else lo <= v) and (v < hi if hi_open else v <= hi)
     return v if bool(np.isfinite(v)) and inside else None
 
@@ -116,8 +116,8 @@ def _real_in(value: object, lo: float, hi: float, lo_open: bool, hi_open: bool) 
 def positive(name: str, value: object, *, allow_zero: bool = False,
              error: type[MoikError] = ParameterError) -> float:
     """A finite number ``> 0`` (or ``>= 0`` with ``allow_zero``)."""
-    ok = isinstance(value, _REAL) and not isinstance(value, (bool, np.bool_))
-    v = float(value) if ok else np.nan  # type: ignore[arg-type]
+    real = isinstance(value, _REAL) and not isinstance(value, (bool, np.bool_))
+    v = float(value) if real and isinstance(value, _REAL) else np.nan
     if not (np.isfinite(v) and (v >= 0 if allow_zero else v > 0)):
         kind = "a finite number >= 0" if allow_zero else "a positive finite number"
         raise error(f"{name} must be {kind}, got {value!r}")
@@ -203,10 +203,10 @@ def seed(name: str, value: object, *, error: type[MoikError] = ParameterError
     """``None``, a non-negative integer, or a ``numpy.random.SeedSequence``."""
     if value is None or isinstance(value, np.random.SeedSequence):
         return value
-    if not is_integer(value) or int(value) < 0:  # type: ignore[call-overload]
+    if not is_integer(value) or int(value) < 0:
         raise error(f"{name} must be a non-negative integer, a numpy SeedSequence or None, "
                     f"got {value!r}")
-    return int(value)  # type: ignore[call-overload]
+    return int(value)
 
 
 def choice(kind: str, value: object, valid: Iterable[str] | Mapping[str, Any]) -> str:
@@ -219,7 +219,7 @@ def choice(kind: str, value: object, valid: Iterable[str] | Mapping[str, Any]) -
     key = value.lower() if isinstance(value, str) else value
     if key not in {n.lower() for n in names}:
         raise UnknownNameError(kind, value, names)
-    return key  # type: ignore[return-value]
+    return key
 
 
 def keywords(owner: str, given: Mapping[str, Any], accepted: Iterable[str]) -> None:

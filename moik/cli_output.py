@@ -80,9 +80,9 @@ def print_robot(robot: Robot, as_json: bool) -> None:
     for j in range(robot.dof):
         row = (f"{j + 1:>3} {robot.joint_names[j]:<{width}}{robot.joint_types[j]:<11}"
                f"{lower[j]:>12.6g}{upper[j]:>12.6g}")
-        if robot.is_dh:
-            row += (f"{robot.a[j]:>12.6g}{np.degrees(robot.alpha[j]):>12.6g}"
-                    f"{robot.d[j]:>12.6g}{np.degrees(robot.theta[j]):>12.6g}")
+        if dh is not None:
+            row += (f"{dh['a'][j]:>12.6g}{np.degrees(dh['alpha'][j]):>12.6g}"
+                    f"{dh['d'][j]:>12.6g}{np.degrees(dh['theta'][j]):>12.6g}")
         print(row)
     for key in ("base", "tool"):
         T = getattr(robot, key)

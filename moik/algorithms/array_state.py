@@ -15,6 +15,7 @@ from __future__ import annotations
 import functools
 import inspect
 import math
+from collections.abc import Generator
 
 import numpy as np
 from pymoo.core.algorithm import Algorithm
@@ -22,9 +23,12 @@ from pymoo.core.population import Population
 from pymoo.core.termination import TerminateIfAll, TerminateIfAny
 from pymoo.termination.default import DefaultTermination
 
-from moik._validate import integer, is_integer, keywords
+from moik._validate import integer, is_integer, keywords, seed
 from moik.algorithms.mechanics import clip_to_bounds, uniform_population
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError
+
+Step = Generator[np.ndarray, tuple, None]
+"""One generation: yields candidate arrays ``X``, receives ``(F, CV)`` for each."""
 
 PYMOO_OPTIONS: frozenset[str] = frozenset(
     p.name for p in inspect.signature(Algorithm.__init__).parameters.values()
@@ -79,9 +83,11 @@ def check_sizes(pop_size: object, min_pop_size: int, max_iter: object) -> tuple[
             or is out of range.
     """
     pop_size = integer("pop_size", pop_size, minimum=min_pop_size)
-    if max_iter is not None and not (is_integer(max_iter) and max_iter >= 1):
+    if max_iter is None:
+        return pop_size, None
+    if not (is_integer(max_iter) and max_iter >= 1):
         raise ParameterError(f"max_iter must be a positive integer or None, got {max_iter!r}")
-    return pop_size, None if max_iter is None else int(max_iter)
+    return pop_size, int(max_iter)
 
 
 def finite_bounds(problem, name: str) -> tuple[np.ndarray, np.ndarray]:
@@ -142,14 +148,16 @@ def planned_iterations(termination, *, t: int, n_eval: int, elapsed: float,
     Returns:
         T as an integer-valued float, or inf when no criterion bounds the run.
     """
-    kw = {"t": t, "n_eval": n_eval, "elapsed": elapsed, "per_iteration": per_iteration,
-          "plans": plans}
+    def plan(criterion) -> float:
+        return planned_iterations(criterion, t=t, n_eval=n_eval, elapsed=elapsed,
+                                  per_iteration=per_iteration, plans=plans)
+
     if isinstance(termination, TerminateIfAll):
-        return max((planned_iterations(c, **kw) for c in termination.criteria), default=math.inf)
+        return max((plan(c) for c in termination.criteria), default=math.inf)
     if isinstance(termination, (TerminateIfAny, DefaultTermination)):
-        return min((planned_iterations(c, **kw) for c in termination.criteria), default=math.inf)
+        return min((plan(c) for c in termination.criteria), default=math.inf)
     if hasattr(termination, "termination"):  # RobustTermination wraps one criterion
-        return planned_iterations(termination.termination, **kw)
+        return plan(termination.termination)
     T = math.inf
     if getattr(termination, "n_max_gen", None) is not None:
         T = float(termination.n_max_gen) - 1.0
@@ -188,10 +196,11 @@ def budget_left(max_evals: float, n_eval: int, n: int) -> int:
     return n if left >= n else int(max(left, 0))
 
 
-class ArrayStateMixin:
+class ArrayStateMixin(Algorithm):
     """What both array-state bases share on pymoo's side.
 
-    Mixed in before pymoo's ``Algorithm``. ``pop`` and ``opt`` are properties
+    A subclass of pymoo's ``Algorithm``, listed before it by both bases (the method
+    resolution order is base, this class, ``Algorithm``). ``pop`` and ``opt`` are properties
     built from arrays only when read: a base marks them stale
     (``_pop_stale``/``_opt_stale``) and implements ``_build_pop()``/
     ``_build_opt()``; pymoo's own assignments go to the setters. ``_infill``
@@ -200,6 +209,22 @@ class ArrayStateMixin:
     generator directly; ``_set_optimum`` does nothing
     because ``opt`` is built lazily.
     """
+
+    t: int
+    """The iteration of the paper's schedule (0 while the initial population is built)."""
+    _max_evals: float
+    _step: Step | None
+    _pending: np.ndarray | None
+
+    def setup(self, problem, **kwargs):
+        """pymoo's ``setup`` (``minimize`` calls it), after checking the seed it will use.
+
+        Raises:
+            ParameterError: If the seed (``seed=`` of ``minimize`` or of the constructor)
+                is not None, a non-negative integer or a numpy ``SeedSequence``.
+        """
+        seed("seed", kwargs.get("seed", self.seed))
+        return super().setup(problem, **kwargs)
 
     def next(self) -> None:
         """One iteration through the array fast path: run ``_generation()``,
@@ -239,6 +264,7 @@ class ArrayStateMixin:
             self.t = self.n_iter - 1
             self._step = self._generation()
             self._pending = next(self._step)
+        assert self._pending is not None  # a batch is pending while an iteration is open
         n = budget_left(self._max_evals, self.evaluator.n_eval, len(self._pending))
         return Population.new("X", self._pending[:n])
 

@@ -25,7 +25,7 @@ always evaluated in full.
 
 from __future__ import annotations
 
-from collections.abc import Generator
+from typing import cast
 
 import numpy as np
 from pymoo.core.algorithm import Algorithm
@@ -35,6 +35,7 @@ from pymoo.util.display.output import Output
 
 from moik.algorithms.array_state import (
     ArrayStateMixin,
+    Step,
     budget_left,
     check_sizes,
     find_limit,
@@ -45,8 +46,6 @@ from moik.algorithms.array_state import (
 )
 from moik.algorithms.mechanics import best_index, constraint_violation, is_better
 from moik.exceptions import ParameterError
-
-Step = Generator[np.ndarray, tuple, None]
 
 
 def _avg_f(algorithm) -> float | None:
@@ -95,15 +94,26 @@ class ArrayAlgorithm(ArrayStateMixin, Algorithm):
 
     min_pop_size = 2
 
+    # pymoo's life cycle: X, F and max_iter are arrays / an int from setup() on, None (or the
+    # max_iter given) before; the types are those of the run (callbacks, _generation)
+    X: np.ndarray
+    F: np.ndarray
+    CV: np.ndarray | None
+    best_x: np.ndarray
+    best_cv: float | None
+    max_iter: int
+
     def __init__(self, *, pop_size: int = 100, X0: np.ndarray | None = None,
                  max_iter: int | None = None, **kwargs):
         refuse_unknown_keywords(type(self), kwargs)
         kwargs.setdefault("output", ArrayOutput())
         super().__init__(**kwargs)
-        self.pop_size, self.max_iter = check_sizes(pop_size, self.min_pop_size, max_iter)
+        self.pop_size, max_iter = check_sizes(pop_size, self.min_pop_size, max_iter)
+        self.max_iter = cast(int, max_iter)  # None: planned in setup() (schedule_length)
         self.X0 = X0
-        self.X = self.F = self.CV = None
-        self.best_x, self.best_f, self.best_cv = None, np.inf, None
+        self.X = self.F = cast(np.ndarray, None)  # set by setup() (the initial population)
+        self.CV = None
+        self.best_x, self.best_f, self.best_cv = cast(np.ndarray, None), np.inf, None
         self.t = 0
 
     # ---- lazily built pymoo objects (ArrayStateMixin) -------------------------------------
@@ -145,13 +155,17 @@ class ArrayAlgorithm(ArrayStateMixin, Algorithm):
                                   rng=self.random_state)
 
     def _initialize_advance(self, infills=None, **kwargs) -> None:
-        self._convergence, self._best_x_history, self._best_gh, self._step = [], [], {}, None
+        self._convergence: list[float] = []
+        self._best_x_history: list[np.ndarray] = []
+        self._best_gh: dict[str, np.ndarray] = {}
+        self._step = None
         F, CV, G, H = self._values_of(infills)
         self.X, self.F, self.CV = infills.get("X"), F, CV
         self._receive(self.X, F, CV, G, H)
         self._initialize_state()
 
     def _advance(self, infills=None, **kwargs) -> bool:
+        assert self._step is not None and self._pending is not None  # an iteration is open
         F, CV, G, H = self._values_of(infills)
         F, CV = self._pad(len(self._pending), F, CV)
         self._receive(self._pending, F, CV, G, H)

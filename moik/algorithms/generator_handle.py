@@ -55,7 +55,7 @@ class GeneratorHandles:
 
     def of(self, rng: np.random.Generator) -> GeneratorHandle:
         """The handle of ``rng``."""
-        if rng is not self._rng:
+        if rng is not self._rng or self._handle is None:
             self._rng, self._handle = rng, wrap_generator(rng)
         return self._handle
 

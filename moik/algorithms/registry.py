@@ -24,6 +24,7 @@ from __future__ import annotations
 import inspect
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import cast
 
 from pymoo.algorithms.moo.nsga2 import NSGA2
 from pymoo.algorithms.moo.sms import SMSEMOA
@@ -275,7 +276,8 @@ def accepted_parameters(name: str) -> list[str]:
     """Keyword names ``get_algorithm(name, ...)`` accepts (class and pymoo options), sorted."""
     cls = entry(name).cls
     if issubclass(cls, ArrayStateMixin) or cls.__module__.startswith("moik."):
-        return sorted(constructor_keywords(cls))  # what the class itself accepts
+        # type[Algorithm] is type[Any] to mypy (pymoo has no types), which is not Hashable
+        return sorted(constructor_keywords(cast(type, cls)))  # what the class itself accepts
     own = {p.name for p in inspect.signature(cls.__init__).parameters.values()
            if p.kind in (p.KEYWORD_ONLY, p.POSITIONAL_OR_KEYWORD) and p.name != "self"}
     return sorted(own | PYMOO_OPTIONS | set(_FORWARDED.get(cls, ())))

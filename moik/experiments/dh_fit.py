@@ -62,6 +62,7 @@ def full_q(robot: Robot, q, locked_deg) -> np.ndarray:
 
 def with_lengths(robot: Robot, lengths, values) -> Robot:
     """``robot`` with the DH entries ``lengths`` (``[("a" | "d", row), ...]``) set to ``values``."""
+    assert robot.a is not None and robot.d is not None  # the fitted arms are DH chains
     cols = {"a": robot.a.copy(), "d": robot.d.copy()}
     for (key, row), v in zip(lengths, values, strict=True):
         cols[key][row] = v

@@ -70,7 +70,9 @@ def _short(commit: str | None) -> str:
     return commit[:12] + (" (with uncommitted changes)" if dirty else "")
 
 
-def _time(text: str) -> _dt.datetime | None:
+def _time(text: str | None) -> _dt.datetime | None:
+    if text is None:
+        return None
     try:
         return _dt.datetime.fromisoformat(text)
     except (TypeError, ValueError):

@@ -132,9 +132,9 @@ class Progress:
         if enabled:
             try:
                 from tqdm import tqdm
-            except ImportError:
-                tqdm = None
-            if tqdm is not None:
+            except ImportError:  # optional: a plain line per trial instead
+                pass
+            else:
                 self._bar = tqdm(total=total, desc=self.label, unit="trial", file=sys.stderr)
 
     def update(self, ok: bool) -> None:

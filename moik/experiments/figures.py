@@ -39,8 +39,9 @@ from moik.robots import get_robot
 def _curves(res: Results, labels) -> dict[str, np.ndarray]:
     out = {}
     for lab in labels:
-        runs = [res.store.load_arrays(r["trial"]).get("convergence") for r in res.by_label[lab]]
-        runs = [c for c in runs if c is not None and c.size]
+        found = [res.store.load_arrays(r["trial"]).get("convergence")
+                 for r in res.by_label[lab]]
+        runs = [c for c in found if c is not None and c.size]
         if runs:
             n = min(c.size for c in runs)
             out[lab] = np.array([c[:n] for c in runs])
@@ -89,8 +90,8 @@ def _benchmark_plans(res: Results) -> list[tuple[str, str, Callable]]:
         curves = {}
         for lab in res.labels:
             recs = [r for r in res.by_label[lab] if r["target"] == ti]
-            runs = [res.store.load_arrays(r["trial"]).get("convergence") for r in recs]
-            runs = [c for c in runs if c is not None and c.size]
+            found = [res.store.load_arrays(r["trial"]).get("convergence") for r in recs]
+            runs = [c for c in found if c is not None and c.size]
             if not runs:
                 continue
             n = min(c.size for c in runs)
@@ -133,7 +134,8 @@ def _error_boxes_per_target(res: Results, formula: str, units: str, proposed
 
 def _plans(res: Results) -> list[tuple[str, str, Callable]]:
     """(file stem, caption, draw(save_stem)) of every figure that applies."""
-    cfg, labels, plans = res.config, res.labels, []
+    cfg, labels = res.config, res.labels
+    plans: list[tuple[str, str, Callable]] = []
     if cfg["problem"]["kind"] == "benchmark":
         return _benchmark_plans(res)
     robot = get_robot(cfg["robot"])
@@ -208,10 +210,10 @@ def _plans(res: Results) -> list[tuple[str, str, Callable]]:
                               title=f"Best candidate joint angles ({first})", save=s)))
     if "compromise" in analyses and cfg["targets"]["kind"] == "circle" and labels:
         lab = labels[0]
-        recs = {r["target"]: r for r in res.by_label[lab] if r["run"] == 0}
-        if len(recs) == len(targets):
-            Q = np.array([recs[t]["best_x"] for t in range(len(targets))])
-            ori = np.array([recs[t]["orientation_error"] for t in range(len(targets))])
+        first_runs = {r["target"]: r for r in res.by_label[lab] if r["run"] == 0}
+        if len(first_runs) == len(targets):
+            Q = np.array([first_runs[t]["best_x"] for t in range(len(targets))])
+            ori = np.array([first_runs[t]["orientation_error"] for t in range(len(targets))])
             plans.append(("path", f"Circle tracked by {lab}", lambda s: mp.plot_path_tracking(
                 pos, robot.fk_position(Q), orientation_errors=ori, Q=Q,
                 prismatic=robot.is_prismatic, unit=unit, log=True, save=s)))

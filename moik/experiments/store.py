@@ -216,7 +216,8 @@ class ResultStore:
                       **({"arrays": sorted(arrays)} if arrays else {}))
         if arrays:
             buf = io.BytesIO()
-            np.savez(buf, **{k: np.asarray(v) for k, v in arrays.items()})
+            # numpy's stub matches **arrays against savez's allow_pickle: bool too
+            np.savez(buf, **{k: np.asarray(v) for k, v in arrays.items()})  # type: ignore[arg-type]
             atomic_write_bytes(self.folder / "arrays" / self.array_name(record["trial"]),
                                buf.getvalue())
         line = (json.dumps(_clean(record), allow_nan=False) + "\n").encode()

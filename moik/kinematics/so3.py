@@ -153,6 +153,7 @@ def pose_residual(p: np.ndarray, R: np.ndarray | None, p_target: np.ndarray,
     r_pos = (p - p_target) / length
     if R_target is None:
         return r_pos
+    assert R is not None  # rotations come with a rotation target
     # R R_t^T written out by columns of R: (R R_t^T)_ab = sum_k R_ak (R_t)_bk
     M = (R[:, :, 0, None] * R_target[:, 0] + R[:, :, 1, None] * R_target[:, 1]
          + R[:, :, 2, None] * R_target[:, 2])

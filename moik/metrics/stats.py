@@ -22,10 +22,11 @@ For minimized errors, R+ = 0 means the first algorithm was better in every pair.
 from __future__ import annotations
 
 import importlib
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError
 
@@ -77,7 +78,7 @@ class Summary:
                 "median": self.median, "std": self.std, "n": self.n, "time": self.time}
 
 
-def summarize(values: Sequence[float], times: Sequence[float] | None = None) -> Summary:
+def summarize(values: ArrayLike, times: ArrayLike | None = None) -> Summary:
     """Best, worst, mean, median, std of ``values`` and the mean of ``times``.
 
     Args:
@@ -107,7 +108,7 @@ def summarize(values: Sequence[float], times: Sequence[float] | None = None) -> 
                    median=float(np.median(v)), std=std, n=int(v.size), time=t)
 
 
-def success_rate(values: Sequence[float], threshold: float) -> float:
+def success_rate(values: ArrayLike, threshold: float) -> float:
     """Fraction of ``values`` strictly below ``threshold`` (in [0, 1]).
 
     Raises:
@@ -119,7 +120,7 @@ def success_rate(values: Sequence[float], threshold: float) -> float:
     return float(np.mean(v < threshold))
 
 
-def ranksum_pvalues(samples: Mapping[str, Sequence[float]], proposed: str) -> dict[str, float]:
+def ranksum_pvalues(samples: Mapping[str, ArrayLike], proposed: str) -> dict[str, float]:
     """Two-sided Wilcoxon rank-sum p-value of ``proposed`` against every other sample.
 
     Uses ``scipy.stats.mannwhitneyu(method="auto")`` (exact for small samples
@@ -175,7 +176,7 @@ class SignedRank:
         return first if self.r_plus < self.r_minus else second
 
 
-def signed_rank(a: Sequence[float], b: Sequence[float]) -> SignedRank:
+def signed_rank(a: ArrayLike, b: ArrayLike) -> SignedRank:
     """Wilcoxon signed-rank test with R+ and R- (MO-m-PSO Table 5).
 
     ``R+`` is the statistic of ``scipy.stats.wilcoxon(a - b,
@@ -214,7 +215,7 @@ class FriedmanResult:
     p_value: float
 
 
-def friedman_ranks(samples: Mapping[str, Sequence[float]], *,
+def friedman_ranks(samples: Mapping[str, ArrayLike], *,
                    higher_is_better: bool = False) -> FriedmanResult:
     """Friedman mean ranks of algorithms over blocks (EOSMA Table 8 "FR").
 

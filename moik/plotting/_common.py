@@ -21,6 +21,7 @@ problem's length unit and orientation errors in rad, the unit in the label.
 from __future__ import annotations
 
 from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 
@@ -102,8 +103,8 @@ def sparse_markers(index: int, n_points: int, n_marks: int = 10):
     return (index * max(1, step // 4) % step, step)
 
 
-def check_mapping(data: Mapping, what: str) -> dict[str, object]:
-    """Reject an empty or non-mapping ``data``; return it as a plain dict."""
+def check_mapping(data: Mapping, what: str) -> dict[str, Any]:
+    """Reject an empty or non-mapping ``data``; return it as a plain dict (values unchecked)."""
     if not isinstance(data, Mapping):
         raise ParameterError(f"{what} must be a dict name -> array, got {type(data).__name__}")
     if len(data) == 0:

@@ -172,7 +172,7 @@ def plot_motion(
                             title="(a) end-effector trajectory\n(grey: arm at start and goals; "
                                   "black square: base)",
                             proposed=proposed)
-    panels = []
+    panels: list[tuple[np.ndarray, str, str]] = []
     for Y, name, rate in ((Q, "angle", ""), (Qd, "velocity", "/s"), (Qdd, "acceleration", "/s²")):
         shown, u = joint_display(Y, robot.is_prismatic, robot.unit, rate=rate)
         panels.append((shown, f"({'bcd'[len(panels)]}) joint {name}", f"joint {name} ({u})"))

@@ -67,6 +67,7 @@ def plot_path_tracking(
             optional array with another number of points.
     """
     import matplotlib.pyplot as plt
+    from matplotlib.layout_engine import ConstrainedLayoutEngine
     from mpl_toolkits.mplot3d.art3d import Line3DCollection
 
     D = as_array(desired, "desired points", shape=(None, 3))
@@ -96,7 +97,9 @@ def plot_path_tracking(
 
     n_right = 1 + (ori is not None) + (joints is not None)
     fig = plt.figure(figsize=(12.5, 3.0 * max(n_right, 2)), layout="constrained")
-    fig.get_layout_engine().set(wspace=0.12)  # room for the 3-D z label beside the panels
+    engine = fig.get_layout_engine()
+    assert isinstance(engine, ConstrainedLayoutEngine)  # layout="constrained"
+    engine.set(wspace=0.12)  # room for the 3-D z label beside the panels
     grid = fig.add_gridspec(n_right, 2, width_ratios=(1.1, 1.0))
     ax3 = fig.add_subplot(grid[:, 0], projection="3d")
     ax3.plot(D[:, 0], D[:, 1], D[:, 2], "r-o", markersize=3, label="desired")

@@ -90,8 +90,9 @@ def eosma7_m() -> Robot:
     is :func:`eosma7`.
     """
     robot = eosma7()
-    return Robot(name="eosma7-m", a=robot.a / 100.0, alpha=robot.alpha, d=robot.d / 100.0,
-                 theta=robot.theta, lower=robot.lower, upper=robot.upper, unit="m",
+    return Robot(name="eosma7-m", a=np.asarray(robot.a) / 100.0, alpha=robot.alpha,
+                 d=np.asarray(robot.d) / 100.0, theta=robot.theta, lower=robot.lower,
+                 upper=robot.upper, unit="m",
                  source="EOSMA paper (Yin et al. 2022, Sci. Rep.), Table 1 as printed (m)")
 
 

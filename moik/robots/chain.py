@@ -18,12 +18,13 @@ beyond one turn, look like degrees and raise a :class:`~moik.exceptions.DegreesW
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from moik._jit import kernel_array
 from moik._validate import integer, is_integer, number, real_array
@@ -99,11 +100,24 @@ class Robot:
     origins: np.ndarray | None = None
     joint_types: tuple[str, ...] = ()
     joint_names: tuple[str, ...] = ()
-    base: np.ndarray | None = None
-    tool: np.ndarray | None = None
+    if TYPE_CHECKING:  # __post_init__ always sets them (the identity when None is given)
+        base: np.ndarray
+        tool: np.ndarray
+    else:
+        base: np.ndarray | None = None
+        tool: np.ndarray | None = None
     convention: Convention = "standard"
     unit: str = "m"
     source: str = ""
+
+    if TYPE_CHECKING:  # what the constructor accepts (the fields hold the checked arrays)
+        def __init__(self, *, name: str, lower: ArrayLike, upper: ArrayLike,
+                     a: ArrayLike | None = None, alpha: ArrayLike | None = None,
+                     d: ArrayLike | None = None, theta: ArrayLike | None = None,
+                     origins: ArrayLike | None = None, joint_types: Sequence[str] = (),
+                     joint_names: Sequence[str] = (), base: ArrayLike | None = None,
+                     tool: ArrayLike | None = None, convention: Convention = "standard",
+                     unit: str = "m", source: str = "") -> None: ...
 
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not self.name:
@@ -351,6 +365,7 @@ def fk_reference(robot: Robot, q) -> np.ndarray:
         T = dh.fk_reference(robot.a, robot.alpha, robot.d, robot.theta, robot.is_prismatic,
                             robot.convention, Q2)
     else:
+        assert robot.origins is not None  # a chain not given by DH rows has origins
         T = fk_general_reference(robot.origins, robot.is_prismatic, Q2)
     if not np.array_equal(robot.base, _IDENTITY):
         T = robot.base @ T

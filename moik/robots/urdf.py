@@ -121,6 +121,8 @@ def _parse(root: ET.Element, label: str) -> tuple[set, dict]:
     parent_of: dict[str, str] = {}
     for el in root.findall("joint"):
         name = el.get("name")
+        if not name:
+            raise URDFError(f"{label!r}: every <joint> needs a name=, one has none")
         parent, child = el.find("parent"), el.find("child")
         if parent is None or child is None or parent.get("link") is None \
                 or child.get("link") is None:
@@ -132,7 +134,7 @@ def _parse(root: ET.Element, label: str) -> tuple[set, dict]:
             if end not in links:
                 raise URDFError(f"joint {name!r} refers to link {end!r}, which is not declared "
                                 f"as a <link> in {label!r}")
-        kid = child.get("link")
+        kid = _link(el, "child")
         if kid in parent_of:
             raise URDFError(f"link {kid!r} has two parent joints ({parent_of[kid]!r} and "
                             f"{name!r}): a URDF must be a tree")
@@ -145,14 +147,14 @@ def _parse(root: ET.Element, label: str) -> tuple[set, dict]:
                 raise URDFError(f"{label!r}: the joints form a cycle through link {link!r}; "
                                 "a URDF must be a tree")
             seen.add(link)
-            link = joints[parent_of[link]].find("parent").get("link")
+            link = _link(joints[parent_of[link]], "parent")
     return links, joints
 
 
 def _children(joints: dict) -> dict[str, list[ET.Element]]:
     out: dict[str, list[ET.Element]] = {}
     for el in joints.values():
-        out.setdefault(el.find("parent").get("link"), []).append(el)
+        out.setdefault(_link(el, "parent"), []).append(el)
     return out
 
 
@@ -162,31 +164,39 @@ def _has_movable(link: str, children: dict) -> bool:
         for el in children.get(stack.pop(), []):
             if el.get("type") != "fixed":
                 return True
-            stack.append(el.find("child").get("link"))
+            stack.append(_child(el))
     return False
 
 
+def _link(joint: ET.Element, end: str) -> str:
+    """The ``link`` of a joint's ``<parent>`` or ``<child>`` (``_parse`` checked both)."""
+    tag = joint.find(end)
+    link = None if tag is None else tag.get("link")
+    assert link is not None  # every joint of a parsed tree has both
+    return link
+
+
 def _child(el: ET.Element) -> str:
-    return el.find("child").get("link")
+    return _link(el, "child")
 
 
 def _leaves(link: str, children: dict) -> list[str]:
     kids = children.get(link, [])
     if not kids:
         return [link]
-    return [leaf for el in kids for leaf in _leaves(el.find("child").get("link"), children)]
+    return [leaf for el in kids for leaf in _leaves(_child(el), children)]
 
 
 def _chain_joints(links, joints, base: str, tip: str | None) -> list[ET.Element]:
     children = _children(joints)
     if tip is not None:  # walk up from the tip
-        parent_of = {el.find("child").get("link"): el for el in joints.values()}
+        parent_of = {_child(el): el for el in joints.values()}
         chain, link = [], tip
         while link != base:
             if link not in parent_of:
                 raise URDFError(f"link {tip!r} is not below base link {base!r}")
             chain.append(parent_of[link])
-            link = parent_of[link].find("parent").get("link")
+            link = _link(parent_of[link], "parent")
         return chain[::-1]
     chain, link = [], base
     while children.get(link):
@@ -200,10 +210,10 @@ def _chain_joints(links, joints, base: str, tip: str | None) -> list[ET.Element]
             break
         else:
             leaves = sorted(leaf for el in movable
-                            for leaf in _leaves(el.find("child").get("link"), children))
+                            for leaf in _leaves(_child(el), children))
             raise URDFError(f"the chain branches at link {link!r}; pass tip_link= one of {leaves}")
         chain.append(nxt)
-        link = nxt.find("child").get("link")
+        link = _child(nxt)
     return chain
 
 
@@ -231,7 +241,7 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
         if given is not None and given not in links:
             raise UnknownNameError("link", given, links)
     if base_link is None:
-        childs = {el.find("child").get("link") for el in joints.values()}
+        childs = {_child(el) for el in joints.values()}
         roots = sorted(links - childs)
         if len(roots) != 1:
             raise URDFError(f"expected one root link, found {roots}; pass base_link=")
@@ -239,7 +249,7 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
     chain = _chain_joints(links, joints, base_link, tip_link)
     origins, lower, upper, types, names = [np.eye(4)], [], [], [], []
     for el in chain:
-        jname, jtype = el.get("name"), el.get("type")
+        jname, jtype = el.get("name", ""), el.get("type")  # named: _parse checked
         T = origins[-1] @ _origin(el, jname)
         if jtype == "fixed":
             origins[-1] = T
@@ -270,12 +280,12 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
         types.append("prismatic" if jtype == "prismatic" else "revolute")
         names.append(jname)
     if not types:
-        end = tip_link if tip_link is not None else (chain[-1].find("child").get("link")
-                                                     if chain else base_link)
+        end = tip_link if tip_link is not None else (_child(chain[-1]) if chain else base_link)
         raise URDFError(f"no movable joint between {base_link!r} and {end!r}")
-    tip = chain[-1].find("child").get("link")
+    tip = _child(chain[-1])
     stem = Path(label).stem if label != "<URDF string>" else "urdf"
-    return Robot(name=name or root.get("name", stem),
+    default_name = root.get("name", stem)
+    return Robot(name=name or default_name,
                  origins=np.array(origins), lower=lower, upper=upper, joint_types=tuple(types),
                  joint_names=tuple(names), unit="m",
                  source=f"URDF {Path(label).name}: {base_link} -> {tip}")
@@ -285,9 +295,10 @@ def _limits(el: ET.Element, name: str, jtype: str) -> tuple[float, float]:
     if jtype == "continuous":
         return -np.pi, np.pi
     lim = el.find("limit")
-    if lim is None or lim.get("lower") is None or lim.get("upper") is None:
+    lo, hi = (None, None) if lim is None else (lim.get("lower"), lim.get("upper"))
+    if lo is None or hi is None:
         raise URDFError(f"joint {name!r} ({jtype}) needs <limit lower= upper=>")
     try:
-        return float(lim.get("lower")), float(lim.get("upper"))
+        return float(lo), float(hi)
     except ValueError:
         raise URDFError(f"joint {name!r} limits must be numbers") from None

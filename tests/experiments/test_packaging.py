@@ -34,6 +34,12 @@ def test_every_package_folder_is_listed():
     assert folders <= set(_setuptools()["packages"])
 
 
+def test_the_type_marker_ships_in_the_wheel():
+    """PEP 561: ``moik/py.typed`` exists and is package data of ``moik``."""
+    assert (ROOT / "moik" / "py.typed").is_file()
+    assert "py.typed" in _setuptools()["package-data"]["moik"]
+
+
 def test_the_packaged_configs_list_every_config():
     packaged = registry.packaged_dir()
     assert packaged is not None

@@ -6,8 +6,10 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from pymoo.optimize import minimize
 from scipy.spatial.transform import Rotation
 
+from moik.algorithms import EOSMA
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetError
 from moik.kinematics.orientation import (
     available_metrics,
@@ -218,3 +220,29 @@ def test_euler_target_angles_make_the_source_exact(metric):
     for target in random_reachable_targets(robot, 5, seed=9):
         F = BiObjectiveIK(robot, target, orientation=metric).evaluate(target.q_source[None])
         assert F[0, 1] == 0.0
+
+
+@pytest.mark.parametrize("make", [
+    lambda r, t: PositionIK(r, t.position),
+    lambda r, t: PoseIK(r, t, orientation="eosma-euler"),
+    lambda r, t: BiObjectiveIK(r, t, orientation="zyx-euler"),
+    lambda r, t: PoseIK(r, t, displacement_weight=0.1, q_start=np.zeros(r.dof)),
+])
+def test_batch_objectives_equal_pymoos_evaluate_bit_for_bit(make):
+    robot = get_robot("eosma7")
+    problem = make(robot, random_reachable_targets(robot, 1, seed=3)[0])
+    X = robot.random_q(9, rng=np.random.default_rng(0))
+    assert np.array_equal(problem.batch_objectives(X), problem.evaluate(X))
+
+
+def test_batch_objectives_step_aside_for_a_subclass_that_evaluates_differently():
+    class Shifted(PositionIK):
+        def _evaluate(self, X, out, *args, **kwargs):
+            super()._evaluate(X, out, *args, **kwargs)
+            out["F"] = out["F"] + 1.0
+
+    robot = get_robot("eosma7")
+    problem = Shifted(robot, np.array([30.0, 20.0, 40.0]))
+    assert problem.batch_objectives(robot.random_q(3, rng=np.random.default_rng(0))) is None
+    res = minimize(problem, EOSMA(pop_size=10), ("n_gen", 3), seed=1)
+    assert res.F[0] >= 1.0  # the subclass's own objective was used

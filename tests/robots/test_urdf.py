@@ -132,6 +132,9 @@ def test_malformed_trees_get_precise_messages():
         load_urdf(_chain(_joint("j1", "a", "b"), _joint("j1", "b", "c")))
     with pytest.raises(URDFError, match="link 'b' has two parent joints"):
         load_urdf(_chain(_joint("j1", "a", "b"), _joint("j2", "c", "b")))
+    unnamed = _chain(_joint("j1", "a", "b").replace(" name='j1'", ""), links=("a", "b"))
+    with pytest.raises(URDFError, match="every <joint> needs a name="):
+        load_urdf(unnamed)
 
 
 def test_xacro_floating_and_mimic_are_explained(tmp_path):

@@ -37,6 +37,7 @@ from __future__ import annotations
 import abc
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from moik._jit import jit, kernel_array
 from moik._validate import finite_array, is_integer, positive
@@ -74,9 +75,9 @@ def check_count(name: str, value: object, minimum: int) -> int:
     Raises:
         ParameterError: If ``value`` is not an integer or is below ``minimum``.
     """
-    if not (is_integer(value) and value >= minimum):  # type: ignore[operator]
+    if not (is_integer(value) and value >= minimum):
         raise ParameterError(f"{name} must be an integer >= {minimum}; got {value!r}")
-    return int(value)  # type: ignore[call-overload]
+    return int(value)
 
 
 def check_positive(name: str, value: object, *, allow_zero: bool = False) -> float:
@@ -239,8 +240,8 @@ class ArchiveBase(abc.ABC):
     def __len__(self) -> int:
         return self._F.shape[0]
 
-    def add(self, X: object, F: object, *, rng: np.random.Generator, CV: object = None,
-            extra: object = None) -> None:
+    def add(self, X: object, F: object, *, rng: np.random.Generator,
+            CV: ArrayLike | None = None, extra: object = None) -> None:
         """Merge new solutions into the archive and truncate it to ``capacity``.
 
         Args:
@@ -272,7 +273,8 @@ class ArchiveBase(abc.ABC):
         if CV is not None:
             CV = as_finite_2d("CV", np.reshape(CV, (-1, 1)), 1)[:, 0]
         if extra is not None:
-            extra = as_finite_2d("extra", extra, None if empty else self._extra.shape[1])
+            extra = as_finite_2d("extra", extra, None if empty or self._extra is None
+                                 else self._extra.shape[1])
         for name, arr in (("CV", CV), ("extra", extra)):
             if arr is not None and arr.shape[0] != X.shape[0]:
                 raise ShapeError(f"{name} must have one entry per row of X ({X.shape[0]}); "

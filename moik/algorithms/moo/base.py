@@ -48,7 +48,7 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Generator
+from typing import cast
 
 import numpy as np
 from pymoo.core.algorithm import Algorithm
@@ -59,6 +59,7 @@ from moik._validate import optional_integer
 from moik.algorithms.archive import ArchiveBase, CrowdingArchive
 from moik.algorithms.array_state import (
     ArrayStateMixin,
+    Step,
     budget_left,
     check_sizes,
     find_limit,
@@ -76,7 +77,6 @@ from moik.algorithms.moo.dominance import (
 )
 from moik.exceptions import ParameterError
 
-Step = Generator[np.ndarray, tuple, None]
 DEFAULT_SCHEDULE_LENGTH = 1000
 """T when neither ``max_iter`` nor any termination criterion bounds the run."""
 
@@ -118,17 +118,27 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
 
     min_pop_size = 2
 
+    # pymoo's life cycle: X, F, pareto_archive and max_iter are set from setup() on (None, or
+    # the max_iter given, before); the types are those of the run (callbacks, _generation)
+    X: np.ndarray
+    F: np.ndarray
+    CV: np.ndarray | None
+    pareto_archive: ArchiveBase
+    max_iter: int
+
     def __init__(self, *, pop_size: int = 100, archive_size: int | None = None,
                  X0: np.ndarray | None = None, max_iter: int | None = None, **kwargs):
         refuse_unknown_keywords(type(self), kwargs)
         kwargs.setdefault("output", MOArrayOutput())
         super().__init__(**kwargs)
         self.pop_size, self._fixed_T = check_sizes(pop_size, self.min_pop_size, max_iter)
-        self.max_iter = self._fixed_T
+        self.max_iter = cast(int, self._fixed_T)  # None: planned in setup() (_plan_schedule)
         archive_size = optional_integer("archive_size", archive_size, minimum=1)
         self.X0 = X0
         self.archive_size = self.pop_size if archive_size is None else archive_size
-        self.X = self.F = self.CV = self.pareto_archive = None
+        self.X = self.F = cast(np.ndarray, None)  # set by setup() (the initial population)
+        self.CV = None
+        self.pareto_archive = cast(ArchiveBase, None)  # made by setup() (_make_archive)
         self.t = 0
 
     # ---- lazily built pymoo objects (ArrayStateMixin) -------------------------------------
@@ -143,9 +153,10 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         args = ["X", A.X.copy(), "F", A.F.copy()]
         if A.CV is None:
             return Population.new(*args, "CV", np.zeros((len(A), 1)))
-        n_ieq = self.problem.n_ieq_constr
-        args += ["CV", A.CV[:, None].copy(), "G", A.extra[:, :n_ieq].copy(),
-                 "H", A.extra[:, n_ieq:].copy()]
+        n_ieq, GH = self.problem.n_ieq_constr, A.extra
+        assert GH is not None  # constrained runs store G and H with every member
+        args += ["CV", A.CV[:, None].copy(), "G", GH[:, :n_ieq].copy(),
+                 "H", GH[:, n_ieq:].copy()]
         return Population.new(*args)
 
     # ---- pymoo hooks ----------------------------------------------------------------------
@@ -192,7 +203,8 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         self.pareto_archive = self._make_archive(self.archive_size)
         X = infills.get("X")
         F, CV, GH = self._values_of(infills)
-        self._buffer = []
+        self._buffer: list[tuple[np.ndarray, np.ndarray, np.ndarray | None,
+                                 np.ndarray | None]] = []
         self._receive(X, F, CV, GH)
         self._flush()
         self.X, self.F, self.CV = X, F, CV
@@ -203,6 +215,7 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         self._flush()
 
     def _advance(self, infills=None, **kwargs) -> bool:
+        assert self._step is not None and self._pending is not None  # an iteration is open
         F, CV, GH = self._values_of(infills)
         self._receive(self._pending[: len(F)], F, CV, GH)
         try:

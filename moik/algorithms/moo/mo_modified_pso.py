@@ -136,7 +136,8 @@ class MOMPSO(ObjectiveSwarms):
             f_mean = own_objective(F_mean, np.arange(M))
         else:
             f_mean = self.pbest_S.reshape(M, N).sum(axis=1) / N
-            cv_mean = None if self.CV is None else self.pbest_CV.reshape(M, N).sum(axis=1) / N
+            cv_mean = (None if self.CV is None or self.pbest_CV is None
+                       else self.pbest_CV.reshape(M, N).sum(axis=1) / N)
         self.classic = is_better(np.repeat(f_mean, N),  # f(x_i) > f(xmean)
                                  None if cv_mean is None else np.repeat(cv_mean, N),
                                  self.S, self.CV)

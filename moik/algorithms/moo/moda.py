@@ -130,6 +130,8 @@ class MODA(MOArrayAlgorithm):
         self.w_start = interval("w_start", w_start, 0.0, 1.0)
         self.w_end = interval("w_end", w_end, 0.0, 1.0)
 
+    pareto_archive: CrowdingArchive
+
     def _make_archive(self, capacity: int) -> ArchiveBase:
         return CrowdingArchive.mirjalili(capacity)
 

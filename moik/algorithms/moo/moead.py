@@ -21,6 +21,7 @@ handling (:mod:`moik.algorithms.moo.mopso_cd`).
 from __future__ import annotations
 
 from math import comb
+from typing import Any
 
 import numpy as np
 from pymoo.algorithms.moo import moead
@@ -58,6 +59,9 @@ class MOEAD(moead.MOEAD):
         ParameterError: For a keyword pymoo's ``MOEAD`` does not take (listing the
             accepted ones) or a bad ``pop_size``.
     """
+
+    ref_dirs: np.ndarray
+    decomposition: Any  # pymoo's decomposition (Tchebicheff, PBI ...), chosen in setup()
 
     def __init__(self, *, ref_dirs: np.ndarray | None = None, pop_size: int = 100, **kwargs):
         refuse_unknown_keywords(type(self), kwargs)

@@ -78,6 +78,7 @@ import numpy as np
 
 from moik._jit import kernel_array
 from moik._validate import choice, interval
+from moik.algorithms.archive import CrowdingArchive
 from moik.algorithms.mechanics import ranking_fitness
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step
 from moik.algorithms.moo.dominance import dominance_memory
@@ -126,6 +127,8 @@ class MOEOSMA(MOArrayAlgorithm):
     """
 
     min_pop_size = 3
+
+    pareto_archive: CrowdingArchive  # the base's default (MOEOSMA's crowding count)
 
     def __init__(self, *, pop_size: int = 100, archive_size: int | None = None, z: float = 0.5,
                  q: float = 1.0, V: float = 1.0, GP: float = 0.5, a1: float = 2.0,

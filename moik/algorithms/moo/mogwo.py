@@ -87,6 +87,8 @@ class MOGWO(MOArrayAlgorithm):
         **kwargs: pymoo ``Algorithm`` options.
     """
 
+    pareto_archive: GridArchive
+
     def _make_archive(self, capacity: int) -> ArchiveBase:
         return GridArchive.mogwo(capacity)
 

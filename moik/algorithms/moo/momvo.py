@@ -142,4 +142,4 @@ class MOMVO(MOArrayAlgorithm):
         X = clip_to_bounds(moved, self.xl, self.xu)
         F, CV = yield X
         self.X, self.F = np.concatenate([X_s[:1], X]), np.concatenate([F_s[:1], F])
-        self.CV = None if CV is None else np.concatenate([CV_s[:1], CV])
+        self.CV = None if CV is None or CV_s is None else np.concatenate([CV_s[:1], CV])

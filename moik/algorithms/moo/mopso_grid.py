@@ -159,5 +159,5 @@ class MOPSO(MOArrayAlgorithm):
         take = pareto_accept(F, self.pbest_F, rng=rng, CV_new=CV, CV_old=self.pbest_CV)
         self.pbest_X = np.where(take[:, None], X, self.pbest_X)
         self.pbest_F = np.where(take[:, None], F, self.pbest_F)
-        if CV is not None:
+        if CV is not None and self.pbest_CV is not None:
             self.pbest_CV = np.where(take, CV, self.pbest_CV)

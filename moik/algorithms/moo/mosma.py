@@ -93,15 +93,16 @@ def elitist_order(F: np.ndarray, n: int, CV: np.ndarray | None = None
         return (np.concatenate([index, bad]),
                 np.concatenate([rank, start + np.arange(bad.size)]))
     fronts = NonDominatedSorting().do(F, n_stop_if_ranked=n)
-    index, rank = [], []
+    kept: list[np.ndarray] = []
+    ranks: list[np.ndarray] = []
     for r, front in enumerate(fronts):
         cd = calc_crowding_distance(F[front])
         front = front[np.argsort(-cd, kind="stable")]
-        index.append(front[: n - sum(map(len, index))])
-        rank.append(np.full(len(index[-1]), r))
-        if sum(map(len, index)) == n:
+        kept.append(front[: n - sum(map(len, kept))])
+        ranks.append(np.full(len(kept[-1]), r))
+        if sum(map(len, kept)) == n:
             break
-    return np.concatenate(index), np.concatenate(rank)
+    return np.concatenate(kept), np.concatenate(ranks)
 
 
 class MOSMA(MOArrayAlgorithm):

@@ -46,6 +46,8 @@ Readings and deviations:
 
 from __future__ import annotations
 
+from typing import TypedDict
+
 import numpy as np
 
 from moik._validate import flag, interval, positive
@@ -113,6 +115,13 @@ def random_replacement(X_new, xl, xu, *, rng: np.random.Generator) -> np.ndarray
     return np.where(out, xl + k * (xu - xl), X_new)
 
 
+class BESPreset(TypedDict):
+    """The defaults a class fixes for ``levy`` and ``bounds`` (BES, I-BES)."""
+
+    levy: bool
+    bounds: str
+
+
 class BES(ArrayAlgorithm):
     """Bald eagle search with array state; ``IBES`` is the I-BES preset.
 
@@ -137,7 +146,7 @@ class BES(ArrayAlgorithm):
     """
 
     min_pop_size = 3
-    preset = {"levy": False, "bounds": "clip"}
+    preset: BESPreset = {"levy": False, "bounds": "clip"}
 
     def __init__(self, *, pop_size: int = 150, alpha: float = 1.8, a: float = 8.0,
                  R: float = 1.4, c1: float = 1.5, c2: float = 1.5, levy: bool | None = None,
@@ -172,7 +181,7 @@ class BES(ArrayAlgorithm):
         PX, PF, PCV = greedy_memory(X, F, CV, self.X[rows], self.F[rows], cv_old)
         self.X, self.F = self.X.copy(), self.F.copy()
         self.X[rows], self.F[rows] = PX, PF
-        if CV is not None:
+        if CV is not None and self.CV is not None:
             self.CV = self.CV.copy()
             self.CV[rows] = PCV
 
@@ -200,4 +209,4 @@ class BES(ArrayAlgorithm):
 class IBES(BES):
     """I-BES (Zhao et al. 2024): BES with the Levy search phase and Eq. 13 bounds."""
 
-    preset = {"levy": True, "bounds": "random"}
+    preset: BESPreset = {"levy": True, "bounds": "random"}

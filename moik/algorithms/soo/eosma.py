@@ -201,6 +201,8 @@ class EOSMA(ArrayAlgorithm):
         public attributes are views of them."""
         self.pbest_X, self._PM, self._pool, self._QM = PX, PM, pool, QM
         self.pbest_F, self.pool_X, self.pool_F = PM[0], pool[:-1], QM[0]
+        self.pbest_CV: np.ndarray | None
+        self.pool_CV: np.ndarray | None
         self.pbest_CV, self.pool_CV = (PM[1], QM[1]) if self._constrained else (None, None)
 
     def _remember(self, X, F, CV, mutate: bool) -> np.ndarray:

@@ -128,7 +128,7 @@ class HHO(ArrayAlgorithm):
         # Eqs. 10-11: a diving hawk keeps Y only if it improves, else tries Z, else stays
         stay = np.flatnonzero(dive & ~is_better(FY, CVY, self.F, self.CV))
         X[stay], F[stay] = self.X[stay], self.F[stay]
-        if CV is not None:
+        if CV is not None and self.CV is not None:
             CV[stay] = self.CV[stay]
         if stay.size:
             S = rng.random((stay.size, Y.shape[1]))

@@ -96,7 +96,8 @@ class MPSO(ArrayAlgorithm):
             f_mean, cv_mean = yield self.pbest_X.sum(axis=0, keepdims=True) / self.pop_size
             self.classic = is_better(f_mean, cv_mean, self.F, self.CV)  # f(x_i) > f(xmean)
         else:
-            cv_mean = None if self.CV is None else self.pbest_CV.sum() / self.pop_size
+            cv_mean = (None if self.CV is None or self.pbest_CV is None
+                       else self.pbest_CV.sum() / self.pop_size)
             self.classic = is_better(self.pbest_F.sum() / self.pop_size, cv_mean, self.F, self.CV)
         g = self.pbest_X[best_index(self.pbest_F, self.pbest_CV)]
         V = mpso_velocity(self.V, self.X, self.pbest_X, g, self.classic, w=self.w, c1=self.c1,

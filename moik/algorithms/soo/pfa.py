@@ -107,7 +107,7 @@ class PFA(ArrayAlgorithm):
                                    None if self.CV is None else self.CV[:1])
         self.X = np.concatenate([X, self.X[1:]])
         self.F = np.concatenate([Fm, self.F[1:]])
-        self.CV = None if CVm is None else np.concatenate([CVm, self.CV[1:]])
+        self.CV = None if CVm is None or self.CV is None else np.concatenate([CVm, self.CV[1:]])
         Y = follower_move(self.X, self.X[0], t, T, alpha, beta, rng=rng)
         Y = clip_to_bounds(Y, self.xl, self.xu)
         F, CV = yield Y
@@ -115,6 +115,6 @@ class PFA(ArrayAlgorithm):
         X, Fm, CVm = greedy_memory(Y, F, CV, self.X[1:], self.F[1:], CVf)
         self.X = np.concatenate([self.X[:1], X])
         self.F = np.concatenate([self.F[:1], Fm])
-        self.CV = None if CVm is None else np.concatenate([self.CV[:1], CVm])
+        self.CV = None if CVm is None or self.CV is None else np.concatenate([self.CV[:1], CVm])
         self.X, self.F, self.CV = sort_herd(self.X, self.F, self.CV)
         self.xp_prev = xp_old

@@ -218,8 +218,11 @@ def _check_locked_joints(where: str, p: Mapping, dof: int) -> None:
 
 
 def _rotation(spec: Mapping) -> np.ndarray:
-    return Target.from_euler([0.0, 0.0, 0.0], spec["euler_deg"],
-                             convention=spec.get("convention", "zyx-euler"), degrees=True).rotation
+    rotation = Target.from_euler([0.0, 0.0, 0.0], spec["euler_deg"],
+                                 convention=spec.get("convention", "zyx-euler"),
+                                 degrees=True).rotation
+    assert rotation is not None  # from_euler always gives one
+    return rotation
 
 
 def _targets(where: str, spec: Any, problem: Mapping, robot: Robot,
@@ -243,8 +246,8 @@ def _targets(where: str, spec: Any, problem: Mapping, robot: Robot,
                                   f"{', '.join(RANDOM_ORIENTATIONS)}, got {reading!r}")
             ts = random_reachable_targets(robot, n, seed=seed, with_orientation=with_orientation)
             if with_orientation and reading == "independent":
-                rot = Rotation.random(n, random_state=np.random.default_rng([seed, 1]))
-                ts = [Target(x.position, R) for x, R in zip(ts, rot.as_matrix(), strict=True)]
+                drawn = Rotation.random(n, random_state=np.random.default_rng([seed, 1]))
+                ts = [Target(x.position, R) for x, R in zip(ts, drawn.as_matrix(), strict=True)]
             return [NamedTarget(f"T{i + 1}", x) for i, x in enumerate(ts)]
         if kind == "circle":
             numbers(f"{where}.center", t.get("center"), 3)
@@ -292,6 +295,8 @@ def _point(where: str, raw: Any, oriented: bool, problem: Mapping, robot: Robot,
 
 def run_trial(spec: TrialSpec, record: dict, arrays: dict) -> None:
     """Run one IK trial; fills ``record`` and ``arrays`` (see the module docstring)."""
+    # an IK trial names its robot and carries a NamedTarget (moik.experiments.trials)
+    assert spec.robot is not None and isinstance(spec.target, NamedTarget)
     robot = experiment_robot(spec.robot, spec.problem)
     problem = build_problem(robot, spec.problem, spec.target)
     if problem.n_obj == 1:
@@ -346,6 +351,8 @@ def _multi_objective(spec: TrialSpec, problem, record: dict, arrays: dict) -> No
                   position_error=float(F[i, 0]), orientation_error=float(F[i, 1]),
                   min_position_error=float(F[:, 0].min()),
                   min_orientation_error=float(F[:, 1].min()), best_x=X[i].tolist())
-    if spec.target.hv_ref_point is not None:
-        record["hv"] = hypervolume(F, spec.target.hv_ref_point)
+    target = spec.target
+    assert isinstance(target, NamedTarget)  # an IK trial's target (run_trial)
+    if target.hv_ref_point is not None:
+        record["hv"] = hypervolume(F, target.hv_ref_point)
     arrays.update(front_F=F, front_X=X, best_x=X[i])

@@ -9,6 +9,7 @@ pymoo's indicators and tolerance terminations can use them.
 from __future__ import annotations
 
 import numpy as np
+from numpy.typing import ArrayLike
 from pymoo.core.problem import Problem
 
 from moik._validate import integer
@@ -44,7 +45,7 @@ class Benchmark(Problem):
         xl: float | np.ndarray,
         xu: float | np.ndarray,
         f_opt: float,
-        x_opt: np.ndarray | None,
+        x_opt: ArrayLike | None,
         n_ieq_constr: int = 0,
     ) -> None:
         super().__init__(n_var=n_var, n_obj=1, n_ieq_constr=n_ieq_constr, xl=xl, xu=xu, vtype=float)

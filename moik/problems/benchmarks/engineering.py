@@ -34,6 +34,7 @@ of 0.0625 before evaluation (the original formulation); with it the classical
 from __future__ import annotations
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from moik.problems.benchmarks._base import Benchmark
 
@@ -98,6 +99,7 @@ class PressureVessel(Benchmark):
 
     def __init__(self, *, discrete: bool = False) -> None:
         self.discrete = bool(discrete)
+        x_opt: ArrayLike
         if self.discrete:
             f_opt, x_opt = 6059.714335, [0.8125, 0.4375, 42.098446, 176.636596]
         else:

@@ -5,14 +5,14 @@ Run: ``.venv/bin/python benchmarks/moo_quality.py [--quick] [--jobs J] [--sectio
 Every number in the multi-objective part of docs/algorithms.md and in
 docs/results/moo-quality.md comes from this script (``--write`` regenerates both).
 
-Problems: ZDT1/2/3 (30 variables), ZDT4/6 (10), DTLZ1 (7) and DTLZ2 (12) with three
-objectives; only problems whose ``pareto_front()`` is analytic (nothing is
-downloaded: DTLZ5-7 and the WFG fronts are not). IGD against the front (ZDT: 1,000
-points; DTLZ: 496 Das-Dennis points), hypervolume with the reference point 1.1 x the
-front's nadir per objective. "random" is uniform sampling of the same budget,
-non-dominated filtered. Algorithms: every multi-objective name of the registry with
-its defaults (population 100), MOEOSMA's ``diversity="nsga2-gaussian"`` option, and
-the line-by-line ports of the reference codes (``benchmarks/moo_reference.py``).
+Problems: ZDT1/2/3 (30 variables), ZDT4/6 (10), DTLZ1 (7) and DTLZ2 (10, pymoo's
+default: k = 8) with three objectives; only problems whose ``pareto_front()`` is
+analytic (nothing is downloaded: DTLZ5-7 and the WFG fronts are not). IGD against the
+front (ZDT: 1,000 points; DTLZ: 496 Das-Dennis points), hypervolume with the reference
+point 1.1 x the front's nadir per objective. "random" is uniform sampling of the same
+budget, non-dominated filtered. Algorithms: every multi-objective name of the registry
+with its defaults (population 100), MOEOSMA's ``diversity="nsga2-gaussian"`` option,
+and the line-by-line ports of the reference codes (``benchmarks/moo_reference.py``).
 
 Sections:
 

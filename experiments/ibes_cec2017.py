@@ -5,7 +5,8 @@ N=30, T=500, 30 independent runs, Table 1's parameters (PSO as the
 ``PSO.ibes()`` preset written as params, with N=30); best/mean/std (Table 12)
 and the Wilcoxon rank-sum test of I-BES vs each at alpha 5% (Table 13; the
 paper's text also says "signed-rank", its table and method are rank-sum). The
-official functions and data come from opfunu (extra ``cec``). Full size:
+official functions and data come from minionpy, a C++ port of the official
+``cec17_func.cpp`` (extra ``cec``). Full size:
 9 functions x 6 algorithms x 30 runs = 1620 trials of 15,000 evaluations.
 """
 

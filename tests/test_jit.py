@@ -14,7 +14,7 @@ import pytest
 import moik
 from moik._jit import COMPILE_NOTICE, kernel_array
 from moik.kinematics import jacobian as jac
-from moik.kinematics import orientation
+from moik.kinematics import rotation_metrics
 from moik.kinematics.jacobian import pose_and_jacobian
 from moik.kinematics.orientation import orientation_error
 from moik.problems import BiObjectiveIK, PoseIK, PositionIK, ik, random_reachable_targets
@@ -69,7 +69,7 @@ def test_one_compiled_version_per_kernel():
         orientation_error(robot.fk_parts(Q)[0], target.rotation, "frobenius")
     kernels = [dh.fk_poses, dh.fk_positions, dh.fk_rotations_positions, dh.fk_frames,
                dh.all_finite, jac.poses_and_jacobians, jac.parts_and_jacobians,
-               ik.ik_objectives, orientation.rotation_errors]
+               ik.ik_objectives, rotation_metrics.rotation_errors]
     for kernel in kernels:
         assert len(kernel.signatures) == 1, (kernel.py_func.__name__, kernel.signatures)
 

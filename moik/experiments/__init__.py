@@ -4,7 +4,8 @@ Configs (one file per table/figure in the repository's ``experiments/``,
 shipped as ``moik.paper_configs``; see :mod:`moik.experiments.registry`) are
 validated into :class:`ExperimentConfig` by their kind
 (:mod:`moik.experiments.kinds`: IK problems on robot arms, benchmark
-functions); :func:`run_experiment` runs their trials (serially, in a process
+functions, multi-objective benchmark functions with analytic fronts);
+:func:`run_experiment` runs their trials (serially, in a process
 pool or on Dask) and stores each as it finishes in a :class:`ResultStore`;
 :func:`write_report` writes the Markdown report; :func:`load_results` returns
 the stored trials as records (or a pandas DataFrame).

@@ -1,7 +1,9 @@
 """Tables computed from a results folder, with the paper's numbers side by side.
 
 One function per analysis name of :data:`moik.experiments.config.ANALYSES`
-(the per-target ones in :mod:`moik.experiments.per_target`); each returns
+(the per-target ones in :mod:`moik.experiments.per_target`, the front-quality
+ones of multi-objective benchmark problems in
+:mod:`moik.experiments.front_quality`); each returns
 :class:`~moik.experiments.tables.Table` objects that
 :mod:`moik.experiments.report` prints as Markdown. Paper rows come from the
 config's ``paper`` dict (keys ``summary``, ``hv``, ``joint_motion``,
@@ -18,6 +20,7 @@ import numpy as np
 from moik.experiments.consistency import FUNCTIONS as CONSISTENCY_FUNCTIONS
 from moik.experiments.consistency import smallest_p_values
 from moik.experiments.dh_fit import FUNCTIONS as DH_FIT_FUNCTIONS
+from moik.experiments.front_quality import FUNCTIONS as FRONT_FUNCTIONS
 from moik.experiments.per_target import FUNCTIONS
 from moik.experiments.solution_sets import FUNCTIONS as RANK_FUNCTIONS
 from moik.experiments.store import ResultStore
@@ -254,7 +257,8 @@ def analyze(store: ResultStore) -> tuple[Results, list[Table]]:
     if res.ok:
         for name in res.config.get("analyses", ["summary"]):
             tables += {**ANALYSIS_FUNCTIONS, **FUNCTIONS, **DH_FIT_FUNCTIONS,
-                       **RANK_FUNCTIONS, **CONSISTENCY_FUNCTIONS}[name](res)
+                       **RANK_FUNCTIONS, **CONSISTENCY_FUNCTIONS,
+                       **FRONT_FUNCTIONS}[name](res)
     for table in tables:
         if res.paper_note and any("paper" in row for row in table.rows):
             table.notes.append(res.paper_note)

@@ -40,7 +40,8 @@ def cmd_run(args: argparse.Namespace) -> int:
     try:
         summary = run_experiment(config, out=out, quick=args.quick, workers=args.workers,
                                  resume=args.resume, dask_scheduler=args.dask_scheduler,
-                                 progress=not args.no_progress, limit=args.limit)
+                                 progress=not args.no_progress, limit=args.limit,
+                                 by_run=args.by_run)
     except KeyboardInterrupt:
         print(f"\nmoik: interrupted; finished trials are stored in {out}; continue with "
               f"`moik experiment run {what}{' --quick' if args.quick else ''} --out {out} "
@@ -130,6 +131,9 @@ def add_subcommands(sub) -> None:
                    help="run on a Dask distributed scheduler (needs moik[dask])")
     q.add_argument("--limit", type=_positive_int, default=None,
                    help="run at most this many pending trials, then stop")
+    q.add_argument("--by-run", action="store_true",
+                   help="run trials run by run (run 0 of every algorithm and target first), so "
+                        "a partial run compares every algorithm")
     q.add_argument("--no-progress", action="store_true", help="no progress bar")
     q.set_defaults(func=cmd_run)
     p = sub.add_parser("report", help="write a Markdown report of results folders, or the docs",

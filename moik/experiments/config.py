@@ -12,10 +12,12 @@ An experiment is one Python file in an experiments folder that defines a dict
   (:mod:`moik.experiments.kinds.ik`); ``"benchmark"`` lists test functions
   and design problems, with no robot and no targets
   (:mod:`moik.experiments.kinds.functions`; ``requires`` lists its optional
-  extras);
+  extras); ``"moo-benchmark"`` lists ZDT/DTLZ problems with analytic fronts
+  (:mod:`moik.experiments.kinds.moo_functions`);
 - ``algorithms``: list of ``{"name": registry name, "label": shown name,
   "params": {...}, "optional": bool}`` (an optional algorithm that is not
-  registered is left out); ``pop_size``,
+  registered is left out; a kind's baselines, such as ``random-search``, are
+  accepted beside the registry's names); ``pop_size``,
   ``archive_size`` (multi-objective only), ``iterations``, ``runs`` (per target)
   and ``seed`` apply to all; ``iterations`` is the papers' Max_t (T): the update
   iterations after the initial population, so a run evaluates the initial
@@ -50,11 +52,11 @@ from moik.algorithms import available, get_algorithm
 from moik.algorithms.registry import accepted_parameters, is_multi_objective
 from moik.exceptions import ConfigError, MoikError
 from moik.experiments.checks import check_keys, flag, integer, number
-from moik.experiments.kinds import KINDS, kind_of
+from moik.experiments.kinds import KINDS, MULTI_OBJECTIVE_PROBLEMS, baselines, kind_of
 
 ANALYSES = ("summary", "ranksum", "friedman-hv", "joint-motion", "compromise", "signed-rank",
             "per-target", "per-target-ranksum", "branches", "dh-fit", "solution-rank",
-            "paper-consistency")
+            "paper-consistency", "front-quality", "mean-ranks")
 """Report tables an experiment can ask for (see :mod:`moik.experiments.analysis`)."""
 
 _TOP_KEYS = {"name", "title", "source", "robot", "problem", "targets", "algorithms", "pop_size",
@@ -86,36 +88,42 @@ class AlgorithmSpec:
     multi_objective: bool
 
 
-def _algorithms(where: str, raw: Any, cfg: Mapping
+def _algorithms(where: str, raw: Any, cfg: Mapping, kind: str, multi: bool
                 ) -> tuple[tuple[AlgorithmSpec, ...], tuple[str, ...]]:
     if not isinstance(raw, list) or not raw:
         raise ConfigError(f"{where} must be a non-empty list of algorithms")
+    own = baselines(kind)
     specs, labels, skipped = [], set(), []
     for i, entry in enumerate(raw):
         w = f"{where}[{i}]"
         entry = check_keys(w, entry, {"name", "label", "params", "optional"}, ("name",))
         name = entry["name"]
-        if flag(f"{w}.optional", entry.get("optional", False)) and name not in available():
+        known = name in own or name in available()
+        if flag(f"{w}.optional", entry.get("optional", False)) and not known:
             skipped.append(name)
             continue
-        if name not in available():
+        if not known:
             raise ConfigError(f"{w}.name: unknown algorithm {name!r}; expected one of: "
-                              f"{', '.join(available())}")
+                              f"{', '.join([*available(), *own])}")
         label = entry.get("label", name)
         if not isinstance(label, str) or not _NAME.match(label) or label in labels:
             raise ConfigError(f"{w}.label must be a unique lower-case name, got {label!r}")
         labels.add(label)
-        params = dict(check_keys(f"{w}.params", entry.get("params", {}),
-                                 set(accepted_parameters(name))))
+        accepted = own[name] if name in own else accepted_parameters(name)
+        params = dict(check_keys(f"{w}.params", entry.get("params", {}), set(accepted)))
         params.setdefault("pop_size", cfg["pop_size"])
-        if cfg.get("archive_size") is not None and "archive_size" in accepted_parameters(name):
+        if cfg.get("archive_size") is not None and "archive_size" in accepted:
             params.setdefault("archive_size", cfg["archive_size"])
-        try:
-            get_algorithm(name, **params)
-        except MoikError as exc:
-            raise ConfigError(f"{w}.params: {exc}") from None
+        if name in own:
+            integer(f"{w}.params.pop_size", params["pop_size"], 1)
+        else:
+            try:
+                get_algorithm(name, **params)
+            except MoikError as exc:
+                raise ConfigError(f"{w}.params: {exc}") from None
         specs.append(AlgorithmSpec(name=name, label=label, params=params,
-                                   multi_objective=is_multi_objective(name)))
+                                   multi_objective=multi if name in own
+                                   else is_multi_objective(name)))
     if not specs:
         raise ConfigError(f"{where}: none of the algorithms is registered")
     return tuple(specs), tuple(skipped)
@@ -176,8 +184,9 @@ class ExperimentConfig:
         integer(f"{where}: seed", cfg["seed"], 0)
         cfg["problem"], targets = KINDS[kind].check_config(where, cfg)
         problem = cfg["problem"]
-        algorithms, skipped = _algorithms(f"{where}: algorithms", cfg["algorithms"], cfg)
-        want_mo = problem["kind"] == "bi-objective"
+        want_mo = problem["kind"] in MULTI_OBJECTIVE_PROBLEMS
+        algorithms, skipped = _algorithms(f"{where}: algorithms", cfg["algorithms"], cfg, kind,
+                                          want_mo)
         for a in algorithms:
             if a.multi_objective != want_mo:
                 which = "multi-objective" if a.multi_objective else "single-objective"
@@ -241,8 +250,10 @@ def _check_rest(where: str, cfg: dict, algorithms: tuple[AlgorithmSpec, ...],
     if proposed is not None and proposed not in labels:
         raise ConfigError(f"{where}: proposed {proposed!r} is not an algorithm label: "
                           f"{', '.join(labels)}")
-    if {"ranksum", "signed-rank"} & set(analyses) and proposed is None:
-        raise ConfigError(f"{where}: analyses ranksum/signed-rank need 'proposed'")
+    if {"ranksum", "signed-rank", "front-quality", "mean-ranks"} & set(analyses) \
+            and proposed is None:
+        raise ConfigError(f"{where}: analyses ranksum/signed-rank/front-quality/mean-ranks "
+                          "need 'proposed'")
     if "paper" in cfg and not isinstance(cfg["paper"], Mapping):
         raise ConfigError(f"{where}: paper must be a dict of the paper's numbers")
 

@@ -13,7 +13,11 @@ from __future__ import annotations
 import numpy as np
 
 from moik.experiments.analysis import front_hv
+from moik.experiments.consistency import FUNCTIONS as CONSISTENCY_FUNCTIONS
+from moik.experiments.dh_fit import FUNCTIONS as DH_FIT_FUNCTIONS
+from moik.experiments.front_quality import HEADLINES as FRONT_HEADLINES
 from moik.experiments.per_target import cluster_solutions
+from moik.experiments.solution_sets import FUNCTIONS as RANK_FUNCTIONS
 from moik.experiments.tables import Results, fmt
 from moik.metrics import ranksum_pvalues, signed_rank, success_rate, summarize
 from moik.robots import get_robot
@@ -217,11 +221,23 @@ def branches_lines(res: Results) -> list[str]:
     return [f"- {lab}, distinct solutions (f < {thr:g}): " + "; ".join(parts)]
 
 
+def notes_of(tables_of):
+    """Headline of an analysis whose tables carry their own verdict in their notes."""
+    def lines(res: Results) -> list[str]:
+        return [f"- {note}" for table in tables_of(res) for note in table.notes]
+    lines.__doc__ = f"The notes of :func:`{tables_of.__name__}`'s tables, one line each."
+    return lines
+
+
 HEADLINES = {"summary": summary_lines, "ranksum": ranksum_lines,
              "friedman-hv": friedman_hv_lines, "joint-motion": joint_motion_lines,
              "compromise": compromise_lines, "signed-rank": signed_rank_lines,
              "per-target": per_target_lines, "per-target-ranksum": per_target_ranksum_lines,
-             "branches": branches_lines}
+             "branches": branches_lines,
+             "dh-fit": notes_of(DH_FIT_FUNCTIONS["dh-fit"]),
+             "solution-rank": notes_of(RANK_FUNCTIONS["solution-rank"]),
+             "paper-consistency": notes_of(CONSISTENCY_FUNCTIONS["paper-consistency"]),
+             **FRONT_HEADLINES}
 """Analysis name -> headline function (every name of ``ANALYSES`` has one)."""
 
 

@@ -84,12 +84,17 @@ def experiment_section(store: ResultStore, *, figures: bool, link: Callable[[Pat
     lines = [f"## {cfg['name']}: {cfg['title']} ({size})", "",
              f"- source: {cfg['source']}",
              (f"- benchmark problems {', '.join(t['name'] for t in meta['targets'])}, "
-              if cfg["problem"]["kind"] == "benchmark" else
+              + (f"{cfg['problem']['evaluations']} evaluations per run, "
+                 if cfg["problem"].get("evaluations") else "")
+              if cfg["problem"]["kind"] in ("benchmark", "moo-benchmark") else
               f"- robot `{cfg['robot']}`, problem `{cfg['problem']['kind']}`"
               + ("" if cfg["problem"]["kind"] == "position" else
                  f" (orientation `{cfg['problem'].get('orientation')}`)") + ", ")
              + f"{len(meta['targets'])} target(s), runs per target {cfg['runs']}, "
-             f"population {cfg['pop_size']}, iterations {cfg['iterations']}, seed {cfg['seed']}",
+             f"population {cfg['pop_size']}, "
+             + ("" if cfg["problem"].get("evaluations")
+                else f"iterations {cfg['iterations']}, ")
+             + f"seed {cfg['seed']}",
              f"- algorithms: {algs}",
              f"- moik {meta['versions']['moik']}, pymoo {meta['versions']['pymoo']}, numpy "
              f"{meta['versions']['numpy']}, commit {meta.get('git_commit') or 'unknown'}; "
@@ -118,6 +123,8 @@ def _relative(png: Path, base: Path) -> str:
 def _figures(res: Results, folder: Path):
     if not res.ok:
         return [], ["no finished trials: no figures"]
+    if res.config["problem"]["kind"] == "moo-benchmark":
+        return [], ["multi-objective benchmark experiments have tables only"]
     return make_figures(res, folder)
 
 

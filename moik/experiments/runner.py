@@ -7,7 +7,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from moik._validate import integer, optional_integer
+from moik._validate import flag, integer, optional_integer
 from moik.experiments.config import ExperimentConfig
 from moik.experiments.executors import Progress, connect_dask, execute
 from moik.experiments.kinds.functions import check_requirements
@@ -58,7 +58,7 @@ def check_workers(workers: int | None) -> int:
 def run_experiment(config: ExperimentConfig, *, out: str | Path | None = None,
                    quick: bool = False, workers: int | None = 1, resume: bool = False,
                    dask_scheduler: str | None = None, progress: bool = False,
-                   limit: int | None = None) -> RunSummary:
+                   limit: int | None = None, by_run: bool = False) -> RunSummary:
     """Run ``config`` (or its quick size) and store every trial as it finishes.
 
     A Dask scheduler is connected before the folder is made; the folder's run
@@ -75,6 +75,10 @@ def run_experiment(config: ExperimentConfig, *, out: str | Path | None = None,
         dask_scheduler: Address of a Dask scheduler (overrides ``workers``).
         progress: Show a progress bar on stderr.
         limit: Run at most this many of the pending trials (to split long runs).
+        by_run: Run the pending trials run by run (run 0 of every algorithm and target,
+            then run 1, ...) instead of algorithm by algorithm, so that a partial run
+            (``limit``, an interruption) has every algorithm on every target for the
+            runs it finished. The trials and their results are the same either way.
 
     Returns:
         A :class:`RunSummary`.
@@ -89,6 +93,7 @@ def run_experiment(config: ExperimentConfig, *, out: str | Path | None = None,
     cfg = config.quick() if quick else config
     workers = check_workers(workers)
     limit = optional_integer("limit", limit, minimum=0)
+    by_run = flag("by_run", by_run)
     check_requirements(cfg)
     targets = list(cfg.targets)
     specs = build_trials(cfg, targets)
@@ -99,7 +104,7 @@ def run_experiment(config: ExperimentConfig, *, out: str | Path | None = None,
     try:
         return _run(cfg, specs, targets, folder, executor, client=client, workers=workers,
                     dask_scheduler=dask_scheduler, resume=resume, progress=progress,
-                    limit=limit, t0=t0)
+                    limit=limit, by_run=by_run, t0=t0)
     finally:
         if client is not None:
             client.close()
@@ -107,7 +112,7 @@ def run_experiment(config: ExperimentConfig, *, out: str | Path | None = None,
 
 def _run(cfg: ExperimentConfig, specs, targets, folder: Path, executor: str, *, client,
          workers: int, dask_scheduler: str | None, resume: bool, progress: bool,
-         limit: int | None, t0: float) -> RunSummary:
+         limit: int | None, by_run: bool, t0: float) -> RunSummary:
     """The run under the folder's lock (see :func:`run_experiment`)."""
     store = ResultStore.create(folder, config=cfg, targets=[t.as_dict() for t in targets],
                                trials=[spec_summary(s) for s in specs], resume=resume,
@@ -125,6 +130,8 @@ def _run(cfg: ExperimentConfig, specs, targets, folder: Path, executor: str, *, 
                          + "; ".join(damaged.values()))
         pending = [s for s in specs if s.trial_id not in done]
         skipped = len(specs) - len(pending)
+        if by_run:
+            pending.sort(key=lambda s: s.run)  # stable: algorithm-major within a run
         if limit is not None:
             pending = pending[:limit]
         bar = Progress(total=len(pending), done=skipped, label=cfg.name, enabled=progress)

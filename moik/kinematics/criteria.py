@@ -39,7 +39,8 @@ from moik._jit import jit, kernel_array
 from moik._validate import choice
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError
 from moik.kinematics.jacobian import pose_jacobian_into
-from moik.kinematics.orientation import GEODESIC, check_rotation, rotation_errors
+from moik.kinematics.orientation import check_rotation
+from moik.kinematics.rotation_metrics import GEODESIC, rotation_errors
 from moik.robots.chain import Robot
 from moik.robots.transforms import PRISMATIC
 

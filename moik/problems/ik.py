@@ -28,7 +28,7 @@ from pymoo.core.problem import Problem
 from moik._jit import jit, kernel_array
 from moik._validate import positive, real_array
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetError
-from moik.kinematics.orientation import metric_code, metric_target, rotation_error
+from moik.kinematics.rotation_metrics import metric_code, metric_target, rotation_error
 from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.chain import Robot
 from moik.robots.dh import BLOCK, all_finite, block_workspace, chain_block

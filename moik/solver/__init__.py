@@ -17,7 +17,8 @@ from moik._lazy import lazy_names
 
 # imported here, not lazily: the submodule's name is the function's, and a lazy name would
 # be shadowed by the submodule once anything imports it
-from moik.solver.solve_ik import IKResult, solve_ik
+from moik.solver.result import IKResult
+from moik.solver.solve_ik import solve_ik
 
 if TYPE_CHECKING:
     from moik.solver.batch import IKBatchResult, solve_ik_batch

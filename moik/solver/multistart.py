@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from moik._jit import jit, kernel_array
-from moik.kinematics.orientation import geodesic_angle
+from moik.kinematics.rotation_metrics import geodesic_angle
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
 from moik.robots.dh import fk_pose_into
@@ -215,7 +215,7 @@ def multistart(robot: Robot, target: Target, Q0: np.ndarray, *, stop_position: f
     Rt, pt, has_rot = _target_arrays(target)
     out = np.empty((want, robot.dof))
     n_known = 0 if known is None else min(len(known), want)
-    if n_known:
+    if known is not None and n_known:
         out[:n_known] = known[:n_known]
     best = np.empty(robot.dof)
     n_found, n_eval, used, best_cost = lm_multistart(

@@ -148,7 +148,7 @@ def seed_sequence(seed) -> np.random.SeedSequence:
     return seed if isinstance(seed, np.random.SeedSequence) else np.random.SeedSequence(seed)
 
 
-_PCG64_STATES: dict[int, dict] = {}  # PCG64(SeedSequence(seed)).state of integer seeds seen
+_PCG64_STATES: dict[int, Any] = {}  # PCG64(SeedSequence(seed)).state of integer seeds seen
 _MAX_STATES = 4096
 _LOCAL = threading.local()
 

@@ -88,10 +88,10 @@ def local_search(projector: Projector, starts: np.ndarray, weights: np.ndarray, 
         lengths = h[act, None] * STEP_FACTORS
         trials = P[act, None, :] + lengths[..., None] * (d / norm[:, None])[:, None, :]
         Pt, ok, _ = projector.project(trials.reshape(-1, dof))
-        St = np.full(len(Pt), np.inf)
-        St[ok] = scaled_scores(projector.objectives(Pt[ok]), np.repeat(W[act], len(
+        scores = np.full(len(Pt), np.inf)
+        scores[ok] = scaled_scores(projector.objectives(Pt[ok]), np.repeat(W[act], len(
             STEP_FACTORS), axis=0)[ok], span)
-        St = St.reshape(len(act), -1)
+        St = scores.reshape(len(act), -1)
         b = np.argmin(St, axis=1)
         better = St[np.arange(len(act)), b] < S[act]
         Pt = Pt.reshape(len(act), len(STEP_FACTORS), dof)

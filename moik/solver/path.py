@@ -108,7 +108,10 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
     tol_pos, tol_ori = tolerances(tol, robot)
     prev = None if q_start is None else robot.check_q(q_start, "q_start")
     seeds = seed_sequence(seed).spawn(len(targets))
-    Q, statuses, warm_flags, n_eval = [], [], [], 0
+    Q: list[np.ndarray] = []
+    statuses: list[str] = []
+    warm_flags: list[bool] = []
+    n_eval = 0
     warm = _WarmStart(robot, tol_pos, tol_ori, max_step)
     tracked: list[np.ndarray] = []  # warm-start solutions already found by the branch choice
     for i, target in enumerate(targets):
@@ -128,14 +131,16 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
                            **solve_options)
             n_eval += res.n_eval
             q, status = res.q, res.status
+        assert status is not None  # set by the warm start or by solve_ik
         Q.append(q)
         statuses.append(status)
         warm_flags.append(used_warm)
         prev = q
-    Q = np.array(Q)
-    pos_err, ori_err = pose_errors_all(robot, targets, Q)
-    steps = np.max(np.abs(np.diff(Q, axis=0)), axis=1) if len(Q) > 1 else np.zeros(0)
-    return PathResult(Q=Q, position_errors=pos_err, orientation_errors=ori_err,
+    Q_path = np.array(Q)
+    pos_err, ori_err = pose_errors_all(robot, targets, Q_path)
+    steps = (np.max(np.abs(np.diff(Q_path, axis=0)), axis=1) if len(Q_path) > 1
+             else np.zeros(0))
+    return PathResult(Q=Q_path, position_errors=pos_err, orientation_errors=ori_err,
                       success=(pos_err <= tol_pos) & (ori_err <= tol_ori),
                       statuses=tuple(statuses), warm_started=np.array(warm_flags),
                       joint_steps=steps, max_joint_step=float(steps.max()) if steps.size else 0.0,
@@ -175,7 +180,7 @@ class _WarmStart:
                 best, best_track = q0, track
             if len(track) == len(rest):
                 break
-        return best, best_track
+        return best, best_track if best_track is not None else []
 
 
 def pose_errors_all(robot: Robot, targets, Q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -15,7 +15,7 @@ from moik._jit import jit, kernel_array
 from moik._validate import positive
 from moik.exceptions import ParameterError
 from moik.kinematics.criteria import nearest_copies_into
-from moik.kinematics.orientation import geodesic_angle
+from moik.kinematics.rotation_metrics import geodesic_angle
 from moik.problems.targets import Target
 from moik.robots.chain import Robot, fk_reference
 from moik.solver.lm import STALL_RATIO

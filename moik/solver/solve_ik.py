@@ -28,14 +28,12 @@ closest to the utopia point as ``q``.
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
 
 import numpy as np
 from pymoo.optimize import minimize
 
 from moik._validate import seed as check_seed
 from moik.exceptions import ShapeError
-from moik.metrics.compromise import closest_to_utopia
 from moik.problems.ik import BiObjectiveIK, PoseIK, PositionIK
 from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.catalog import as_robot
@@ -49,53 +47,18 @@ from moik.solver.options import (
     start_generator,
     validated_options,
 )
+from moik.solver.result import IKResult, ik_result
 from moik.solver.session import (
     SolveSession,
     is_distinct,
-    nearest_copies,
-    pose_errors,
     tolerances,
 )
 
 STATUSES = ("solved", "unreachable", "not-converged")
-UNREACHABLE_FACTOR = 1e3  # best error beyond this many tolerances after a full search
 FINAL_NFEV = 300  # extended refinement of the best candidate before giving up
 FIRST_STARTS = 8  # random starts drawn first; the remaining ``starts`` only when needed
 FOUND_PATIENCE = 1  # idle search rounds once all starts found some, not all, solutions
 QUICK_NFEV = 12  # a good start converges in ~5-10 evaluations; a bad one is dropped early
-
-
-@dataclass(frozen=True)
-class IKResult:
-    """Outcome of :func:`solve_ik`.
-
-    Attributes:
-        q: Joint vector (always within the limits): the solution, or the best
-            compromise when not solved.
-        position_error: ``||p(q) - p_target||`` in the robot's unit, recomputed by FK.
-        orientation_error: Geodesic angle (rad) between ``R(q)`` and the target
-            rotation, recomputed by FK (0 for position-only targets).
-        success: Both errors within tolerance.
-        status: ``"solved"``, ``"unreachable"`` or ``"not-converged"``.
-        n_eval: Forward-kinematics evaluations (search + polish + front).
-        time: Wall time in seconds.
-        solutions: Distinct solutions found (``(k, dof)``), nearest to
-            ``q_current`` first when it was given.
-        front: Pareto front ``(m, 2)`` of (position, orientation) errors (the
-            ``orientation`` metric) when a pose was not solved (``None``
-            otherwise), with ``front_q`` its joint vectors.
-    """
-
-    q: np.ndarray
-    position_error: float
-    orientation_error: float
-    success: bool
-    status: str
-    n_eval: int
-    time: float
-    solutions: np.ndarray
-    front: np.ndarray | None = None
-    front_q: np.ndarray | None = field(default=None, repr=False)
 
 
 def _search_problem(robot: Robot, target: Target, orientation: str):
@@ -203,7 +166,7 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     elif q_current is not None:
         session.consider(np.clip(q_current, robot.lower, robot.upper)[None])
     if len(session.found) >= n_solutions:  # the usual end: the first stage solved it
-        return _result(session, q_current, t0, False, None, None)
+        return ik_result(session, q_current, t0, False, None, None)
     problem = _search_problem(robot, target, opts.orientation)
     seeds = np.random.SeedSequence(seed) if seeds is None else seeds
     idle_rounds, patience = 0, opts.patience
@@ -215,8 +178,8 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
         _search_round(session, problem, opts, int(seeds.spawn(1)[0].generate_state(1)[0]))
         idle_rounds = 0 if len(session.found) > n_found else idle_rounds + 1
     searched_out = idle_rounds >= patience  # ended for lack of progress, not for budget
-    if not session.found and polish and session.n_eval < opts.max_evals:  # a near miss may
-        # only need more iterations
+    if (not session.found and session.best is not None and polish
+            and session.n_eval < opts.max_evals):  # a near miss may need more iterations
         session.refine(session.best[1], polish, max_nfev=FINAL_NFEV)
     front = front_q = None
     if not session.found and target.rotation is not None:
@@ -226,7 +189,7 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
                                                robot.random_q(FRONT_STARTS, rng=starts_rng),
                                                front_q)
             session.n_eval += n
-    return _result(session, q_current, t0, searched_out, front, front_q)
+    return ik_result(session, q_current, t0, searched_out, front, front_q)
 
 
 def _out_of_reach(session: SolveSession, opts: SearchOptions, rng: np.random.Generator,
@@ -248,7 +211,7 @@ def _out_of_reach(session: SolveSession, opts: SearchOptions, rng: np.random.Gen
         session.consider(Q)
     else:
         session.consider(np.clip(starts, robot.lower, robot.upper))
-    return _result(session, q_current, t0, True, front, front_q, proven=True)
+    return ik_result(session, q_current, t0, True, front, front_q, proven=True)
 
 
 def _search_round(session: SolveSession, problem, opts: SearchOptions, run_seed: int) -> None:
@@ -293,32 +256,3 @@ def _front(session: SolveSession, opts: SearchOptions, seeds) -> tuple[np.ndarra
     best = int(np.argmin(front[:, 0] / robot.reach + front[:, 1]))
     session.refine(front_q[best], opts.polish, max_nfev=FINAL_NFEV)
     return front, front_q
-
-
-def _result(session: SolveSession, q_current, t0: float, searched_out: bool, front, front_q,
-            proven: bool = False) -> IKResult:
-    robot, target = session.robot, session.target
-    errors = None
-    if session.found:
-        sols = np.array(session.found)
-        if q_current is not None:  # 2 pi copies nearest to the current configuration first
-            sols = nearest_copies(robot, sols, q_current)
-            sols = sols[np.argsort(np.linalg.norm(sols - q_current, axis=1), kind="stable")]
-        else:
-            errors = session.found_errors[0]
-        q, status, front, front_q = sols[0], "solved", None, None
-    else:
-        sols = np.empty((0, robot.dof))
-        tol = session.tol_pos / robot.reach + session.tol_ori
-        far = session.best[0] > UNREACHABLE_FACTOR * tol
-        status = "unreachable" if proven or (searched_out and far) else "not-converged"
-        q = session.best[1]
-        if status == "unreachable" and front is not None:
-            q = np.clip(front_q[closest_to_utopia(front)], robot.lower, robot.upper)
-    if errors is None:  # unsolved: the independent reference FK has the last word
-        errors = tuple(float(v[0]) for v in pose_errors(robot, target, q,
-                                                         reference=status != "solved"))
-    pos, ori = errors
-    return IKResult(q=q, position_error=pos, orientation_error=ori, success=status == "solved",
-                    status=status, n_eval=session.n_eval, time=time.perf_counter() - t0,
-                    solutions=sols, front=front, front_q=front_q)

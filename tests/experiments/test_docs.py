@@ -7,8 +7,10 @@ import pytest
 
 from moik.cli import main
 from moik.experiments import docs as docs_module
+from moik.experiments.config import ANALYSES
 from moik.experiments.docs import BLOCK, write_docs
 from moik.experiments.files import git_commit
+from moik.experiments.headlines import HEADLINES
 from moik.experiments.store import ResultStore
 
 PAGE = """# Reproducing
@@ -140,3 +142,8 @@ def test_wall_time_of_an_old_folder_comes_from_the_timestamps(quick_run):
         s.pop("wall_time_s")
     seconds, measured = docs_module.wall_time(store, store.records())
     assert not measured and 0 <= seconds < 600
+
+
+def test_every_analysis_has_a_headline():
+    """The docs command summarises every analysis a config may ask for."""
+    assert set(ANALYSES) <= set(HEADLINES)

@@ -10,7 +10,7 @@ NAMES = ["ibes-table8", "ibes-table9", "ibes-cec2017", "ibes-engineering", "mcho
 
 @pytest.fixture(scope="module")
 def quick_results(tmp_path_factory):
-    pytest.importorskip("opfunu")
+    pytest.importorskip("minionpy")
     out = tmp_path_factory.mktemp("paper-quick")
     for name in NAMES:
         assert main(["experiment", "run", name, "--quick", "--workers", "1", "--no-progress",

@@ -14,11 +14,10 @@ from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetEr
 from moik.kinematics.orientation import (
     available_metrics,
     eosma_euler,
-    metric_code,
-    metric_target,
     orientation_error,
     orientation_metric,
 )
+from moik.kinematics.rotation_metrics import metric_code, metric_target
 from moik.problems import BiObjectiveIK, PoseIK, PositionIK, Target, random_reachable_targets
 from moik.problems.ik import WEIGHTED_POSE, ik_objectives
 from moik.robots import available_robots, fk_reference, get_robot

@@ -13,7 +13,14 @@ Constraints: pymoo's MOEA/D refuses constrained problems. Here an offspring
 replaces a neighbour by constraint-domination of the decomposed values (feasible
 first, then smaller total violation, then the smaller decomposed value), the rule
 pymoo's source leaves commented out; ``res.F`` is pymoo's feasible non-dominated
-set of the population. Unconstrained runs are pymoo's, bit for bit.
+set of the population. The decomposed values of feasible points are taken from
+the best feasible value per objective seen so far (``feasible_ideal``), not from
+pymoo's ideal point of every evaluated point: infeasible points may lie far
+beyond the feasible front (OSY: f1 of infeasible points goes far below the
+feasible minimum), and an ideal point there draws all subproblems to the same
+few feasible points (measured on OSY, 25,000 evaluations, 3 seeds: 26 feasible
+members reported in all, HV 61 % of NSGA-II's; with the feasible ideal point
+100 per run, 72 %). Unconstrained runs are pymoo's, bit for bit.
 pymoo's NSGA2 and SMS-EMOA are registered unchanged, MOPSO-CD with constraint
 handling (:mod:`moik.algorithms.moo.mopso_cd`).
 """
@@ -83,17 +90,27 @@ class MOEAD(moead.MOEAD):
         if self.decomposition is None:
             self.decomposition = moead.default_decomp(problem)
 
+    def _initialize_advance(self, infills=None, **kwargs) -> None:
+        super()._initialize_advance(infills, **kwargs)
+        if self.problem.has_constraints():
+            F, CV = self.pop.get("F"), self.pop.get("CV")[:, 0]
+            self.feasible_ideal = np.min(np.vstack([np.full(F.shape[1], np.inf), F[CV <= 0.0]]),
+                                         axis=0)
+
     def _replace(self, k, off) -> None:
         """pymoo's replacement; with constraints by constraint-domination (module doc)."""
         if not self.problem.has_constraints():
             super()._replace(k, off)
             return
         pop, N = self.pop, self.neighbors[k]
-        FV = self.decomposition.do(pop[N].get("F"), weights=self.ref_dirs[N, :],
-                                   ideal_point=self.ideal)
-        off_FV = self.decomposition.do(off.F[None, :], weights=self.ref_dirs[N, :],
-                                       ideal_point=self.ideal)
         CV, off_CV = pop[N].get("CV")[:, 0], float(off.CV[0])
-        better = np.where(CV <= 0.0, (off_CV <= 0.0) & (off_FV < FV),
-                          (off_CV <= 0.0) | (off_CV < CV))
+        if off_CV > 0.0:  # replaces only infeasible neighbours of a larger violation
+            better = (CV > 0.0) & (off_CV < CV)
+        else:
+            self.feasible_ideal = np.minimum(self.feasible_ideal, off.F)
+            FV = self.decomposition.do(pop[N].get("F"), weights=self.ref_dirs[N, :],
+                                       ideal_point=self.feasible_ideal)
+            off_FV = self.decomposition.do(off.F[None, :], weights=self.ref_dirs[N, :],
+                                           ideal_point=self.feasible_ideal)
+            better = np.where(CV <= 0.0, off_FV < FV, True)
         pop[N[np.flatnonzero(better)]] = off

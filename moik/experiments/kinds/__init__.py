@@ -3,12 +3,17 @@
 A kind is a module with ``PROBLEM_KINDS`` (the ``problem.kind`` values it
 takes), ``check_config(where, cfg)`` (validates its part of a config by
 building it; returns the problem dict and the targets) and
-``run_trial(spec, record, arrays)``. The kind of an experiment is chosen once,
+``run_trial(spec, record, arrays)``; optionally ``MULTI_OBJECTIVE`` (those of
+its problem kinds that take multi-objective algorithms) and ``BASELINES``
+(algorithm names it runs itself, beside the registry's, each with the keywords
+it takes). The kind of an experiment is chosen once,
 from its ``problem.kind``, when the config is validated
 (:func:`kind_of`); its name travels in every :class:`~moik.experiments.spec.TrialSpec`.
 
 - ``"ik"`` (:mod:`moik.experiments.kinds.ik`): ``position``, ``pose``, ``bi-objective``;
-- ``"functions"`` (:mod:`moik.experiments.kinds.functions`): ``benchmark``.
+- ``"functions"`` (:mod:`moik.experiments.kinds.functions`): ``benchmark``;
+- ``"moo-functions"`` (:mod:`moik.experiments.kinds.moo_functions`): ``moo-benchmark``
+  (ZDT/DTLZ problems with analytic fronts, and the ``random-search`` baseline).
 """
 
 from __future__ import annotations
@@ -18,12 +23,22 @@ from types import ModuleType
 from typing import Any
 
 from moik.exceptions import ConfigError
-from moik.experiments.kinds import functions, ik
+from moik.experiments.kinds import functions, ik, moo_functions
 
-KINDS: dict[str, ModuleType] = {"ik": ik, "functions": functions}
+KINDS: dict[str, ModuleType] = {"ik": ik, "functions": functions,
+                                 "moo-functions": moo_functions}
 """Kind name -> its module."""
 
 _BY_PROBLEM_KIND = {pk: name for name, module in KINDS.items() for pk in module.PROBLEM_KINDS}
+
+MULTI_OBJECTIVE_PROBLEMS = frozenset(pk for module in KINDS.values()
+                                     for pk in getattr(module, "MULTI_OBJECTIVE", ()))
+"""The ``problem.kind`` values whose algorithms are multi-objective."""
+
+
+def baselines(kind: str) -> dict[str, tuple[str, ...]]:
+    """The baselines the kind ``kind`` runs itself: name -> the keywords each takes."""
+    return dict(getattr(KINDS[kind], "BASELINES", {}))
 
 
 def kind_of(where: str, problem: Any) -> str:
@@ -41,4 +56,5 @@ def kind_of(where: str, problem: Any) -> str:
     return _BY_PROBLEM_KIND[kind]
 
 
-__all__ = ["KINDS", "functions", "ik", "kind_of"]
+__all__ = ["KINDS", "MULTI_OBJECTIVE_PROBLEMS", "baselines", "functions", "ik", "kind_of",
+           "moo_functions"]

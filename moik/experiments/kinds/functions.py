@@ -15,7 +15,7 @@ The problems take the place of the targets: trials are (algorithm x problem x
 run), with the same seeds for every algorithm. Validation builds every problem
 (except those of an extra, built only when run).
 
-The experiment key ``requires`` lists optional extras (``"cec"``: opfunu for
+The experiment key ``requires`` lists optional extras (``"cec"``: minionpy for
 the CEC2017 functions); a run checks them first and fails with one clear line.
 
 A trial records ``best_f`` (the objective of the best design, or None when that
@@ -46,7 +46,7 @@ from moik.experiments.spec import TrialSpec
 from moik.problems.benchmarks import _REGISTRY, available_benchmarks, get_benchmark
 
 PROBLEM_KINDS = ("benchmark",)
-EXTRAS = {"cec": ("opfunu", "the CEC2017 functions")}
+EXTRAS = {"cec": ("minionpy", "the CEC2017 functions")}
 """Optional extras an experiment may require: name -> (module, what needs it)."""
 
 _KEYS = {"kind", "names", "params"}
@@ -123,7 +123,7 @@ def check_config(where: str, cfg: Mapping) -> tuple[dict, tuple[BenchmarkTarget,
             except MoikError as exc:
                 raise ConfigError(f"{where}: problem.names[{i}]: {exc}") from None
         elif "cec" not in requires:
-            raise ConfigError(f"{where}: {e['name']} needs requires: ['cec'] (opfunu)")
+            raise ConfigError(f"{where}: {e['name']} needs requires: ['cec'] (minionpy)")
     problem = {"kind": "benchmark", "names": entries, **({"params": common} if common else {})}
     targets = tuple(BenchmarkTarget(e["label"], e["name"], dict(e["params"])) for e in entries)
     return problem, targets

@@ -65,6 +65,8 @@ from moik.problems.targets import circle_path, random_reachable_targets
 from moik.robots import Robot, get_robot
 
 PROBLEM_KINDS = ("position", "pose", "bi-objective")
+MULTI_OBJECTIVE = ("bi-objective",)
+"""The problem kinds of this module whose algorithms are multi-objective."""
 TARGET_KINDS = ("random", "fixed", "circle")
 _PROBLEM_KEYS = {"kind", "orientation", "weights", "displacement_weight", "q_start_deg",
                  "locked_joints_deg", "joint_limits_deg"}

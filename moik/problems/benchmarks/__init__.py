@@ -3,8 +3,8 @@
 * ``F1`` ... ``F23``: the classical functions of the MChOA paper's Table 2
   (:mod:`moik.problems.benchmarks.classical`, :mod:`moik.problems.benchmarks.fixed`).
 * ``cec2017_F<i>``: official CEC2017 functions used by the I-BES paper
-  (Section 5.2), through the optional dependency opfunu
-  (:mod:`moik.problems.benchmarks.cec2017`).
+  (Section 5.2), through the optional dependency minionpy, a port of the
+  official C code (:mod:`moik.problems.benchmarks.cec2017`).
 * ``spring``, ``pressure_vessel``: the constrained design problems of the
   I-BES paper, Section 5.3 (:mod:`moik.problems.benchmarks.engineering`).
 * ``F24``: the MChOA paper's IRB-2600 pose IK objective (Eq. 6), with the

@@ -1,6 +1,8 @@
 """MOEA/D with default reference directions (moik.algorithms.moo.moead)."""
 
+import numpy as np
 import pytest
+from pymoo.core.problem import Problem
 from pymoo.optimize import minimize
 from pymoo.problems import get_problem
 
@@ -23,3 +25,31 @@ def test_pymoo_options_pass_and_unknown_keywords_are_refused():
     with pytest.raises(ParameterError, match=r"unknown parameter\(s\) n_neighbours for MOEAD; "
                                              r"accepted: .*n_neighbors"):
         MOEAD(n_neighbours=10)
+
+
+class _ShiftedFront(Problem):
+    """f = (x1, 1 - sqrt(x1) + x2); feasible only for x1 >= 0.4: infeasible points have lower f1.
+
+    Records every evaluated row, to check the ideal point against all of them.
+    """
+
+    def __init__(self):
+        super().__init__(n_var=3, n_obj=2, n_ieq_constr=1, xl=0.0, xu=1.0)
+        self.seen_F, self.seen_G = [], []
+
+    def _evaluate(self, X, out, *args, **kwargs):
+        F = np.column_stack([X[:, 0], 1.0 - np.sqrt(X[:, 0]) + X[:, 1:].sum(axis=1)])
+        G = 0.4 - X[:, :1]
+        self.seen_F.append(F)
+        self.seen_G.append(G)
+        out["F"], out["G"] = F, G
+
+
+def test_with_constraints_the_decomposition_uses_the_best_feasible_values():
+    problem = _ShiftedFront()
+    res = minimize(problem, MOEAD(pop_size=20), ("n_eval", 600), seed=1)
+    F, G = np.vstack(problem.seen_F), np.vstack(problem.seen_G)[:, 0]
+    algorithm = res.algorithm
+    np.testing.assert_array_equal(algorithm.feasible_ideal, F[G <= 0.0].min(axis=0))
+    assert algorithm.feasible_ideal[0] >= 0.4 > algorithm.ideal[0]  # pymoo's: every point
+    assert np.all(problem.evaluate(res.X, return_values_of=["G"]) <= 0.0)

@@ -1,0 +1,160 @@
+"""Multi-objective benchmark experiments (moik.experiments.kinds.moo_functions)."""
+
+import copy
+import inspect
+import socket
+
+import numpy as np
+import pytest
+from pymoo.util.nds.non_dominated_sorting import NonDominatedSorting
+
+from moik.exceptions import ConfigError
+from moik.experiments.config import ExperimentConfig
+from moik.experiments.kinds import moo_functions as mf
+from moik.experiments.trials import build_trials, run_trial
+
+MOO = {
+    "name": "moo-test",
+    "title": "tiny multi-objective benchmark experiment",
+    "source": "test",
+    "problem": {"kind": "moo-benchmark", "evaluations": 120, "names": [
+        {"name": "zdt1", "params": {"n_var": 4}},
+        {"name": "dtlz2", "label": "dtlz2-3", "params": {"n_var": 5, "n_obj": 3}}]},
+    "algorithms": [{"name": "nsga2"}, {"name": "mogwo"}, {"name": "random-search"}],
+    "pop_size": 12,
+    "iterations": 4,
+    "runs": 2,
+    "seed": 4,
+    "analyses": ["front-quality", "mean-ranks"],
+    "proposed": "nsga2",
+}
+
+
+def _moo(**changes):
+    d = copy.deepcopy(MOO)
+    d.update(changes)
+    return d
+
+
+def test_config_builds_targets_and_accepts_the_random_baseline():
+    cfg = ExperimentConfig.from_dict(MOO)
+    assert [t.name for t in cfg.targets] == ["zdt1", "dtlz2-3"]
+    assert cfg.targets[1].as_dict() == {"name": "dtlz2-3", "benchmark": "dtlz2",
+                                        "params": {"n_var": 5, "n_obj": 3}}
+    assert cfg.labels == ["nsga2", "mogwo", "random-search"]
+    assert all(a.multi_objective for a in cfg.algorithms)
+    assert cfg["problem"]["evaluations"] == 120
+
+
+@pytest.mark.parametrize("change, match", [
+    ({"robot": "planar2"}, "takes no 'robot'"),
+    ({"problem": {"kind": "moo-benchmark", "names": ["dtlz7"]}}, "analytic front"),
+    ({"problem": {"kind": "moo-benchmark", "names": ["zdt1"], "evaluations": 0}},
+     "evaluations must be an integer >= 1"),
+    ({"problem": {"kind": "moo-benchmark", "names": ["zdt1"], "evaluations": 100.0}},
+     "evaluations must be an integer"),
+    ({"problem": {"kind": "moo-benchmark", "names": [{"name": "zdt1",
+                                                       "params": {"n_obj": 3}}]}},
+     "unknown key.*n_obj"),
+    ({"problem": {"kind": "moo-benchmark", "names": [{"name": "dtlz2",
+                                                       "params": {"n_obj": 4}}]}},
+     "n_obj must be an integer in \\[2, 3\\]"),
+    ({"problem": {"kind": "moo-benchmark", "names": [{"name": "zdt1",
+                                                       "params": {"n_var": True}}]}},
+     "n_var must be an integer"),
+    ({"problem": {"kind": "moo-benchmark", "names": ["zdt1", "zdt1"]}}, "labels must be unique"),
+    ({"problem": {"kind": "moo-benchmark", "names": []}}, "non-empty list"),
+    ({"algorithms": [{"name": "random-search", "params": {"archive_size": 3}}]},
+     "unknown key.*archive_size"),
+    ({"algorithms": [{"name": "ga"}]}, "'ga' is single-objective"),
+    ({"analyses": ["front-quality"], "proposed": None}, "need 'proposed'"),
+])
+def test_config_errors(change, match):
+    data = _moo(**change)
+    if data.get("proposed") is None:
+        data.pop("proposed")
+    with pytest.raises(ConfigError, match=match):
+        ExperimentConfig.from_dict(data)
+
+
+def test_random_search_is_not_a_baseline_of_the_other_kinds(tiny):
+    tiny["algorithms"] = [{"name": "random-search"}]
+    with pytest.raises(ConfigError, match="unknown algorithm 'random-search'"):
+        ExperimentConfig.from_dict(tiny)
+
+
+@pytest.mark.parametrize("name", mf.ANALYTIC_FRONTS)
+def test_every_accepted_front_is_closed_form(name):
+    """pymoo downloads some fronts (DTLZ7's, WFG's) through Remote: none accepted here does."""
+    problem = mf.build_problem(name, {})
+    source = inspect.getsource(type(problem)._calc_pareto_front)
+    assert "Remote" not in source and "load(" not in source
+
+
+def test_the_fronts_never_touch_the_network(monkeypatch):
+    def refuse(*args, **kwargs):
+        raise AssertionError("network access")
+
+    monkeypatch.setattr(socket, "socket", refuse)
+    monkeypatch.setattr(socket, "create_connection", refuse)
+    import pymoo.util.remote as remote
+    monkeypatch.setattr(remote.Remote, "load", refuse)
+    for name in mf.ANALYTIC_FRONTS:
+        problem = mf.build_problem(name, {})
+        front = mf.analytic_front(problem, name)
+        assert front.ndim == 2 and front.shape[1] == problem.n_obj and np.isfinite(front).all()
+    assert len(mf.analytic_front(mf.build_problem("dtlz2", {"n_obj": 3}), "dtlz2")) == 496
+    assert len(mf.analytic_front(mf.build_problem("zdt1", {}), "zdt1")) == mf.ZDT_FRONT_POINTS
+
+
+def test_front_scores_of_the_front_itself():
+    front = mf.analytic_front(mf.build_problem("zdt1", {}), "zdt1")
+    igd, hv = mf.front_scores(front, front)
+    assert igd == 0.0
+    # ZDT1: 1.1^2 minus the area above f2 = 1 - sqrt(f1) over [0, 1] (2/3), to the grid's accuracy
+    assert hv == pytest.approx(1.21 - 1.0 / 3.0, abs=2e-3)
+    np.testing.assert_allclose(mf.hv_reference(front), [1.1, 1.1])
+
+
+def test_random_search_samples_the_budget_and_keeps_the_non_dominated():
+    problem = mf.build_problem("zdt1", {"n_var": 3})
+    X, F = mf.random_search(problem, 500, np.random.default_rng(7))
+    assert np.all((X - problem.xl >= 0) & (problem.xu - X >= 0))
+    assert len(NonDominatedSorting().do(F, only_non_dominated_front=True)) == len(F)
+    np.testing.assert_array_equal(F, problem.evaluate(X, return_values_of=["F"]))
+    X2, _ = mf.random_search(problem, 500, np.random.default_rng(7))
+    np.testing.assert_array_equal(X, X2)
+    rng = np.random.default_rng(7)
+    sample = problem.xl + rng.random((500, 3)) * (problem.xu - problem.xl)
+    assert all(any(np.array_equal(x, s) for s in sample) for x in X)
+
+
+def test_trials_record_igd_hv_and_the_budget():
+    cfg = ExperimentConfig.from_dict(MOO)
+    specs = build_trials(cfg)
+    assert len(specs) == 3 * 2 * 2
+    by_id = {s.trial_id: s for s in specs}
+    rec, arrays = run_trial(by_id["random-search/1/0"])
+    assert rec["status"] == "ok", rec.get("error")
+    assert rec["n_eval"] == 120 and rec["n_front"] == len(arrays["front_F"])
+    assert rec["hv_ref_point"] == pytest.approx([1.1 * 1.0] * 3)  # DTLZ2 nadir (1, 1, 1)
+    assert rec["igd"] > 0 and rec["hv"] >= 0
+    again, _ = run_trial(by_id["random-search/1/0"])
+    assert again["igd"] == rec["igd"]
+    rec, arrays = run_trial(by_id["nsga2/0/1"])
+    assert rec["status"] == "ok", rec.get("error")
+    assert 120 <= rec["n_eval"] < 120 + 12 and arrays["front_F"].shape[1] == 2
+    igd, hv = mf.front_scores(arrays["front_F"], mf.analytic_front(
+        mf.build_problem("zdt1", {"n_var": 4}), "zdt1"))
+    assert (igd, hv) == (rec["igd"], rec["hv"])
+
+
+def test_without_evaluations_the_generations_bound_the_run():
+    data = _moo()
+    del data["problem"]["evaluations"]
+    cfg = ExperimentConfig.from_dict(data)
+    by_id = {s.trial_id: s for s in build_trials(cfg)}
+    rec, _ = run_trial(by_id["nsga2/0/0"])
+    assert rec["n_eval"] == 12 + 4 * 12  # the initial population and 4 iterations
+    rec, _ = run_trial(by_id["random-search/0/0"])
+    assert rec["n_eval"] == 12 + 4 * 12  # the initial population and 4 iterations

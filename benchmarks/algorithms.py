@@ -1,7 +1,8 @@
 """Speed of moik's algorithms, printed side by side.
 
-Run: ``.venv/bin/python benchmarks/algorithms.py [--quick] [a] [b] [c] [d]`` (the letters
-pick sections; all by default)
+Run: ``.venv/bin/python benchmarks/algorithms.py [--quick] [a] [b] [c] [d] [--out FILE]``
+(the letters pick sections, all by default; ``--out`` also writes the printed table to
+FILE, e.g. docs/results/algorithms.txt, which docs/performance.md links to)
 
 (a) Per-generation cost of each algorithm run through ``pymoo.optimize.minimize``
     against a plain numpy loop of the same update rule (the same kernel
@@ -24,12 +25,13 @@ pick sections; all by default)
 
 from __future__ import annotations
 
+import argparse
 import os
 import platform
-import sys
 import time
 
 import numpy as np
+from _output import OUT_HELP, table_output
 from pymoo.core.problem import Problem
 from pymoo.optimize import minimize
 
@@ -56,6 +58,7 @@ from moik.problems import PoseIK, PositionIK, random_reachable_targets
 from moik.robots import fk_reference, get_robot
 
 N, D, LO, HI = 100, 7, -10.0, 10.0
+SECTIONS = ("a", "b", "c", "d")
 
 
 def sphere(X: np.ndarray) -> np.ndarray:
@@ -302,19 +305,28 @@ def section_d(epochs: int) -> None:
 
 
 def main() -> None:
-    quick = "--quick" in sys.argv
-    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
-    print(f"numpy {np.__version__}, {platform.processor() or platform.machine()}, "
-          f"{os.cpu_count()} CPUs, load average {load:.2f}, {time.strftime('%Y-%m-%d %H:%M')}")
-    only = [a for a in sys.argv[1:] if a in ("a", "b", "c", "d")]
-    if not only or "a" in only:
-        section_a(T=300 if quick else 1000, repeats=3 if quick else 7)
-    if not only or "b" in only:
-        section_b(repeats=5 if quick else 21)
-    if not only or "c" in only:
-        section_c(n_targets=5 if quick else 20)
-    if not only or "d" in only:
-        section_d(epochs=100 if quick else 1000)
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("sections", nargs="*", metavar="SECTION",
+                        help="sections to run, of a b c d (all by default)")
+    parser.add_argument("--quick", action="store_true", help="a short smoke run")
+    parser.add_argument("--out", help=OUT_HELP)
+    args = parser.parse_args()
+    quick, only = args.quick, args.sections
+    unknown = sorted(set(only) - set(SECTIONS))
+    if unknown:
+        parser.error(f"sections are {', '.join(SECTIONS)}; got {', '.join(unknown)}")
+    with table_output(args.out):
+        load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+        print(f"numpy {np.__version__}, {platform.processor() or platform.machine()}, "
+              f"{os.cpu_count()} CPUs, load average {load:.2f}, {time.strftime('%Y-%m-%d %H:%M')}")
+        if not only or "a" in only:
+            section_a(T=300 if quick else 1000, repeats=3 if quick else 7)
+        if not only or "b" in only:
+            section_b(repeats=5 if quick else 21)
+        if not only or "c" in only:
+            section_c(n_targets=5 if quick else 20)
+        if not only or "d" in only:
+            section_d(epochs=100 if quick else 1000)
 
 
 if __name__ == "__main__":

@@ -10,11 +10,13 @@ population of 100 against the numpy path (``fk_reference`` + the metric's numpy
 function). Each cell is the median of interleaved repeats (moik, numpy, moik, ...),
 so load on the machine hits both sides alike.
 
-Run: python benchmarks/fk.py
+Run: python benchmarks/fk.py [--out FILE] (``--out`` also writes the printed table to
+FILE, e.g. docs/results/fk.txt, which docs/performance.md links to).
 """
 
 from __future__ import annotations
 
+import argparse
 import os
 import tempfile
 import timeit
@@ -22,6 +24,7 @@ from pathlib import Path
 
 import numba
 import numpy as np
+from _output import OUT_HELP, table_output
 
 import moik
 from moik.kinematics.orientation import orientation_metric
@@ -125,12 +128,16 @@ def objective_table() -> None:
 
 
 def main() -> None:
-    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
-    print(f"numpy {np.__version__}, numba {numba.__version__}, {os.cpu_count()} CPUs, "
-          f"load average {load:.2f}; medians of {REPEATS} interleaved repeats; "
-          f"moik from {Path(moik.__file__).parent}\n")
-    fk_table([get_robot("eosma7"), get_robot("puma560"), iiwa_like(), ur5_like()])
-    objective_table()
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", help=OUT_HELP)
+    args = parser.parse_args()
+    with table_output(args.out):
+        load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+        print(f"numpy {np.__version__}, numba {numba.__version__}, {os.cpu_count()} CPUs, "
+              f"load average {load:.2f}; medians of {REPEATS} interleaved repeats; "
+              f"moik from {Path(moik.__file__).parent}\n")
+        fk_table([get_robot("eosma7"), get_robot("puma560"), iiwa_like(), ur5_like()])
+        objective_table()
 
 
 if __name__ == "__main__":

@@ -26,11 +26,10 @@ docs/solver.md quotes).
 from __future__ import annotations
 
 import argparse
-import builtins
-import platform
 import time
 
 import numpy as np
+from _output import OUT_HELP, table_output
 from scipy.spatial.transform import Rotation
 
 from moik import get_robot, solve_ik, solve_ik_batch
@@ -194,35 +193,29 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--n", type=int, default=1000, help="reachable poses per robot")
     parser.add_argument("--robots", default="eosma7,puma560,sawyer7,iiwa14,panda,ur5")
-    parser.add_argument("--out", help="also write the printed table to this file")
+    parser.add_argument("--out", help=OUT_HELP)
     args = parser.parse_args()
-    if args.out:
-        sink = open(args.out, "w")  # noqa: SIM115 (kept open for the whole run)
-        plain = builtins.print
+    with table_output(args.out):
+        compare(args.n, args.robots.split(","))
 
-        def tee(*a, **k):
-            plain(*a, **k)
-            plain(*a, **{**k, "file": sink, "flush": True})
-        globals()["print"] = tee
-        print(f"# benchmarks/solve_ik.py --n {args.n} --robots {args.robots}; "
-              f"{time.strftime('%Y-%m-%d %H:%M')}, {platform.machine()}, "
-              f"{platform.python_version()}")
+
+def compare(n: int, names: list[str]) -> None:
+    """Print every row of the goal table for the arms ``names``, ``n`` poses each."""
     try:
         import roboticstoolbox  # noqa: F401
         have_rtb = True
     except ImportError:
         have_rtb = False
         print("roboticstoolbox-python not installed (pip install -e '.[bench]'): moik only")
-    names = args.robots.split(",")
-    models = {n: rtb_robot(get_robot(n)) if have_rtb else None for n in names}
+    models = {name: rtb_robot(get_robot(name)) if have_rtb else None for name in names}
     for name in names:
-        reachable(name, args.n, models[name])
+        reachable(name, n, models[name])
     for name in names:
-        unreachable(name, max(args.n // 10, 5), models[name])
+        unreachable(name, max(n // 10, 5), models[name])
     if "ur5" in names:
-        many_branches("ur5", max(args.n // 50, 5), models["ur5"])
+        many_branches("ur5", max(n // 50, 5), models["ur5"])
     for name in names:
-        batch(name, args.n, models[name])
+        batch(name, n, models[name])
 
 
 if __name__ == "__main__":

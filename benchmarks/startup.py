@@ -7,7 +7,8 @@ scipy.linalg); ``moik`` imports moik and solves a Puma 560 pose. Samples interle
 two; medians are printed. Cold start (no kernel cache): ``--cold`` also times one first
 solve with an empty NUMBA_CACHE_DIR (wall and CPU seconds).
 
-Run: python benchmarks/startup.py [--n 15] [--cold]
+Run: python benchmarks/startup.py [--n 15] [--cold] [--out FILE] (``--out`` also writes the
+printed table to FILE, e.g. docs/results/startup.txt, which docs/performance.md links to).
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ import tempfile
 import time
 
 import numpy as np
+from _output import OUT_HELP, table_output
 
 FLOOR = ("import numpy as np, numba\n"
          "@numba.njit(cache=True)\n"
@@ -53,19 +55,26 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--n", type=int, default=15, help="samples of each")
     parser.add_argument("--cold", action="store_true", help="also time a cold first solve")
+    parser.add_argument("--out", help=OUT_HELP)
     args = parser.parse_args()
+    with table_output(args.out):
+        measure(args.n, cold=args.cold)
+
+
+def measure(n: int, *, cold: bool) -> None:
+    """Print the medians of ``n`` interleaved samples, and the cold first solve if asked."""
     wall(MOIK)  # make sure the kernels are cached
     wall(FLOOR)
     floor, moik = [], []
-    for _ in range(args.n):
+    for _ in range(n):
         floor.append(wall(FLOOR)[0])
         moik.append(wall(MOIK)[0])
     load = os.getloadavg()[0]
-    print(f"# benchmarks/startup.py --n {args.n}; load average {load:.1f}")
+    print(f"{n} samples of each, interleaved; load average {load:.1f} after them")
     print(f"numba floor (numpy + numba + one cached kernel): median {np.median(floor):.3f} s")
     print(f"moik import + first solve (cached kernels):      median {np.median(moik):.3f} s "
           f"(goal <= 0.5 s); moik above the floor: {np.median(moik) - np.median(floor):.3f} s")
-    if args.cold:
+    if cold:
         with tempfile.TemporaryDirectory() as cache:
             seconds, cpu = wall(MOIK, env={**os.environ, "NUMBA_CACHE_DIR": cache})
         print(f"cold first solve (empty kernel cache): {seconds:.1f} s wall, {cpu:.1f} s CPU "

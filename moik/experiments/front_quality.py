@@ -34,7 +34,7 @@ ALPHA = 0.05
 """Significance level of the rank-sum verdicts."""
 
 
-def ranksum_verdicts(samples: Mapping[str, Sequence[float]], reference: str, *,
+def ranksum_verdicts(samples: Mapping[str, Sequence[float] | np.ndarray], reference: str, *,
                      higher_is_better: bool) -> dict[str, tuple[float, str]]:
     """Rank-sum p-value and verdict of every sample against ``reference``.
 
@@ -138,7 +138,10 @@ def mean_ranks_table(res: Results) -> list[Table]:
     """Mean ranks by IGD and HV over the problems, and the IGD test's +/=/- counts."""
     reference = res.config.get("proposed")
     names = [t["name"] for t in res.meta["targets"]]
-    igd_means, hv_means, signs, left_out = {}, {}, {lab: [] for lab in res.labels}, []
+    igd_means: dict[str, dict[str, float]] = {}
+    hv_means: dict[str, dict[str, float]] = {}
+    signs: dict[str, list[str]] = {lab: [] for lab in res.labels}
+    left_out: list[str] = []
     for ti, name in enumerate(names):
         igd, hv = _samples(res, ti, "igd"), _samples(res, ti, "hv")
         if not res.labels or any(igd[lab].size == 0 for lab in res.labels):

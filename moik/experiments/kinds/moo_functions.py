@@ -176,7 +176,7 @@ def check_config(where: str, cfg: Mapping) -> tuple[dict, tuple[MooTarget, ...]]
     labels = [e["label"] for e in entries]
     if len(set(labels)) != len(labels):
         raise ConfigError(f"{where}: problem.names: labels must be unique, got {labels}")
-    problem = {"kind": "moo-benchmark", "names": entries}
+    problem: dict[str, Any] = {"kind": "moo-benchmark", "names": entries}
     if "evaluations" in p:
         problem["evaluations"] = integer(f"{where}: problem.evaluations", p["evaluations"], 1)
     for e in entries:
@@ -193,6 +193,7 @@ def _budget(spec: TrialSpec) -> int:
 def run_trial(spec: TrialSpec, record: dict, arrays: dict) -> None:
     """Run one (algorithm, problem, run) trial; fills ``record`` and ``arrays``."""
     target = spec.target
+    assert isinstance(target, MooTarget)  # this kind's targets
     problem = build_problem(target.benchmark, target.params)
     front = analytic_front(problem, target.benchmark)
     t0 = time.perf_counter()

@@ -51,6 +51,7 @@ def plot_convergence_panels(
             :func:`~moik.plotting.plot_convergence` refuses.
     """
     import matplotlib.pyplot as plt
+    from matplotlib.ticker import MaxNLocator
 
     panels = check_mapping(panels, "panels")
     ncols = min(integer("ncols", ncols, minimum=1), len(panels))
@@ -63,6 +64,7 @@ def plot_convergence_panels(
         ax.get_legend().remove()
         ax.title.set_fontsize("medium")
         ax.yaxis.label.set_fontsize("x-small")
+        ax.xaxis.set_major_locator(MaxNLocator(nbins=4, integer=True))  # labels apart
     for ax in axes.flat[len(panels):]:
         ax.set_visible(False)
     handles, labels = axes.flat[0].get_legend_handles_labels()

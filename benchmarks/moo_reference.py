@@ -40,6 +40,17 @@ def _evaluate(problem, X):
     return problem.evaluate(X, return_values_of=["F"])
 
 
+def _evaluate_cv(problem, X):
+    """``(F, CV)``: CV the total violation (positive G plus abs(H)), 0 when feasible."""
+    F, G, H = problem.evaluate(X, return_values_of=["F", "G", "H"])
+    cv = np.zeros(len(F))
+    for part in (np.maximum(G, 0.0) if G is not None else None,
+                 np.abs(H) if H is not None else None):
+        if part is not None and part.size:
+            cv += part.reshape(len(F), -1).sum(axis=1)
+    return F, cv
+
+
 def _dominates(a, b):
     return bool(np.all(a <= b) and np.any(a < b))
 
@@ -58,13 +69,22 @@ def _roulette(weights, rng) -> int:
 
 
 # ---- Mirjalili's archive (MSSA, MOALO, MODA) ------------------------------------------
-def mirjalili_update_archive(AX, AF, X, F):
-    """UpdateArchive.m: the non-dominated rows; rows with an equal twin are dropped, both."""
-    TX, TF = np.vstack([AX, X]), np.vstack([AF, F])
+def mirjalili_update_archive(AX, AF, X, F, ACV, CV):
+    """UpdateArchive.m: the non-dominated rows; rows with an equal twin are dropped, both.
+
+    Constrained problems (not in the code, which is unconstrained): constraint-domination
+    first, the rule of moik's archives: only the feasible rows compete once one is
+    feasible, before that only the rows of the smallest violation.
+    """
+    TX, TF, TCV = np.vstack([AX, X]), np.vstack([AF, F]), np.concatenate([ACV, CV])
+    best = TCV <= 0.0
+    if not best.any():
+        best = TCV.min() == TCV
+    TX, TF, TCV = TX[best], TF[best], TCV[best]
     keep = _nondominated_fast(TF)
     _, inverse, counts = np.unique(TF, axis=0, return_inverse=True, return_counts=True)
     keep &= counts[inverse.reshape(-1)] == 1
-    return TX[keep], TF[keep]
+    return TX[keep], TF[keep], TCV[keep]
 
 
 def _nondominated_fast(F):
@@ -81,19 +101,20 @@ def mirjalili_ranks(AF, divisor=20.0):
     return np.all(np.abs(AF[None, :, :] - AF[:, None, :]) < r, axis=2).sum(axis=1).astype(float)
 
 
-def mirjalili_handle_full(AX, AF, ranks, capacity, rng):
+def mirjalili_handle_full(AX, AF, ACV, ranks, capacity, rng):
     """HandleFullArchive.m: remove by roulette on the ranks, without recounting."""
     for _ in range(len(AF) - capacity):
         i = max(_roulette(ranks, rng), 0)
-        AX, AF, ranks = np.delete(AX, i, 0), np.delete(AF, i, 0), np.delete(ranks, i)
-    return AX, AF
+        AX, AF, ACV = np.delete(AX, i, 0), np.delete(AF, i, 0), np.delete(ACV, i)
+        ranks = np.delete(ranks, i)
+    return AX, AF, ACV
 
 
-def _mirjalili_archive_step(AX, AF, X, F, capacity, rng):
-    AX, AF = mirjalili_update_archive(AX, AF, X, F)
+def _mirjalili_archive_step(AX, AF, ACV, X, F, CV, capacity, rng):
+    AX, AF, ACV = mirjalili_update_archive(AX, AF, X, F, ACV, CV)
     if len(AF) > capacity:
-        AX, AF = mirjalili_handle_full(AX, AF, mirjalili_ranks(AF), capacity, rng)
-    return AX, AF, mirjalili_ranks(AF)
+        AX, AF, ACV = mirjalili_handle_full(AX, AF, ACV, mirjalili_ranks(AF), capacity, rng)
+    return AX, AF, ACV, mirjalili_ranks(AF)
 
 
 def _leader(AX, ranks, rng, inverse=True):
@@ -108,14 +129,14 @@ def _leader(AX, ranks, rng, inverse=True):
 def mssa_reference(problem, N, max_iter, rng, capacity=100):
     lb, ub = problem.xl.astype(float), problem.xu.astype(float)
     dim = problem.n_var
-    AX, AF = np.zeros((0, dim)), np.zeros((0, problem.n_obj))
+    AX, AF, ACV = np.zeros((0, dim)), np.zeros((0, problem.n_obj)), np.zeros(0)
     X = lb + rng.random((N, dim)) * (ub - lb)
     n_eval = 0
     for it in range(1, max_iter + 1):
         c1 = 2 * math.exp(-((4 * it / max_iter) ** 2))  # Eq. 3.2
-        F = _evaluate(problem, X)
+        F, CV = _evaluate_cv(problem, X)
         n_eval += N
-        AX, AF, ranks = _mirjalili_archive_step(AX, AF, X, F, capacity, rng)
+        AX, AF, ACV, ranks = _mirjalili_archive_step(AX, AF, ACV, X, F, CV, capacity, rng)
         food = _leader(AX, ranks, rng)
         for i in range(N):
             if i + 1 <= N / 2:
@@ -147,13 +168,13 @@ def _walk_around(antlion, it, max_iter, lb, ub, rng):
 def malo_reference(problem, N, max_iter, rng, capacity=100):
     lb, ub = problem.xl.astype(float), problem.xu.astype(float)
     dim = problem.n_var
-    AX, AF = np.zeros((0, dim)), np.zeros((0, problem.n_obj))
+    AX, AF, ACV = np.zeros((0, dim)), np.zeros((0, problem.n_obj)), np.zeros(0)
     X = lb + rng.random((N, dim)) * (ub - lb)
     n_eval = 0
     for it in range(1, max_iter + 1):
-        F = _evaluate(problem, X)
+        F, CV = _evaluate_cv(problem, X)
         n_eval += N
-        AX, AF, ranks = _mirjalili_archive_step(AX, AF, X, F, capacity, rng)
+        AX, AF, ACV, ranks = _mirjalili_archive_step(AX, AF, ACV, X, F, CV, capacity, rng)
         elite = _leader(AX, ranks, rng)
         antlion = AX[0]  # MALO.m: the first archive member, for every ant
         for i in range(N):
@@ -173,7 +194,7 @@ def _levy(d, rng, beta=1.5):
 def moda_reference(problem, N, max_iter, rng, capacity=100):
     lb, ub = problem.xl.astype(float), problem.xu.astype(float)
     dim = problem.n_var
-    AX, AF = np.zeros((0, dim)), np.zeros((0, problem.n_obj))
+    AX, AF, ACV = np.zeros((0, dim)), np.zeros((0, problem.n_obj)), np.zeros(0)
     v_max = (ub[0] - lb[0]) / 10
     X = lb + rng.random((N, dim)) * (ub - lb)
     dX = lb + rng.random((N, dim)) * (ub - lb)
@@ -184,9 +205,9 @@ def moda_reference(problem, N, max_iter, rng, capacity=100):
         my_c = max(0.1 - it * ((0.1 - 0) / (max_iter / 2)), 0.0)
         k = my_c if it < 3 * max_iter / 4 else my_c / it
         f = 2 * rng.random()
-        F = _evaluate(problem, X)
+        F, CV = _evaluate_cv(problem, X)
         n_eval += N
-        AX, AF, ranks = _mirjalili_archive_step(AX, AF, X, F, capacity, rng)
+        AX, AF, ACV, ranks = _mirjalili_archive_step(AX, AF, ACV, X, F, CV, capacity, rng)
         food = _leader(AX, ranks, rng)
         enemy = _leader(AX, ranks, rng, inverse=False)
         for i in range(N):  # in place: later dragonflies see the moved ones

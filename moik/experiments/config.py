@@ -56,7 +56,7 @@ from moik.experiments.kinds import KINDS, MULTI_OBJECTIVE_PROBLEMS, baselines, k
 
 ANALYSES = ("summary", "ranksum", "friedman-hv", "joint-motion", "compromise", "signed-rank",
             "per-target", "per-target-ranksum", "branches", "dh-fit", "solution-rank",
-            "paper-consistency", "front-quality", "mean-ranks")
+            "paper-consistency", "front-quality", "mean-ranks", "versus-random", "hv-shares")
 """Report tables an experiment can ask for (see :mod:`moik.experiments.analysis`)."""
 
 _TOP_KEYS = {"name", "title", "source", "robot", "problem", "targets", "algorithms", "pop_size",
@@ -250,10 +250,10 @@ def _check_rest(where: str, cfg: dict, algorithms: tuple[AlgorithmSpec, ...],
     if proposed is not None and proposed not in labels:
         raise ConfigError(f"{where}: proposed {proposed!r} is not an algorithm label: "
                           f"{', '.join(labels)}")
-    if {"ranksum", "signed-rank", "front-quality", "mean-ranks"} & set(analyses) \
+    if {"ranksum", "signed-rank", "front-quality", "mean-ranks", "hv-shares"} & set(analyses) \
             and proposed is None:
-        raise ConfigError(f"{where}: analyses ranksum/signed-rank/front-quality/mean-ranks "
-                          "need 'proposed'")
+        raise ConfigError(f"{where}: analyses ranksum/signed-rank/front-quality/mean-ranks/"
+                          "hv-shares need 'proposed'")
     if "paper" in cfg and not isinstance(cfg["paper"], Mapping):
         raise ConfigError(f"{where}: paper must be a dict of the paper's numbers")
 

@@ -8,11 +8,18 @@ For experiments of the kind :mod:`moik.experiments.kinds.moo_functions`
   config's ``proposed`` label (the reference algorithm, NSGA-II in
   ``moo-suite``) and its verdict: ``+`` the row's algorithm is better (lower
   IGD / higher HV by median, p < 0.05), ``-`` worse, ``=`` no significant
-  difference; HV as a share of the reference's mean HV.
+  difference; HV as a share of the reference's mean HV. On constrained
+  problems (records with ``n_infeasible``) the members are the feasible ones
+  and a column counts the infeasible members reported over the runs.
 - ``mean-ranks``: per problem, the algorithms ranked by mean IGD (1 = lowest)
   and by mean HV (1 = highest), ties sharing the mean of their ranks; the mean
   over the problems, and the ``+``/``=``/``-`` counts of the IGD test over the
   problems. Only problems where every algorithm has runs are ranked.
+- ``versus-random``: per algorithm and problem, its mean IGD divided by the
+  ``random-search`` baseline's (uniform sampling of the same budget); 1 or more
+  is flagged "not below".
+- ``hv-shares``: per algorithm and problem, its mean HV as a share of the
+  ``proposed`` algorithm's.
 
 The computations are plain functions of numbers (:func:`mean_ranks`,
 :func:`ranksum_verdicts`); the table functions only gather the records. The
@@ -27,11 +34,15 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 from scipy.stats import rankdata
 
+from moik.experiments.kinds.moo_fronts import CONSTRAINED
 from moik.experiments.tables import Results, Table, fmt
 from moik.metrics import ranksum_pvalues
 
 ALPHA = 0.05
 """Significance level of the rank-sum verdicts."""
+
+BASELINE = "random-search"
+"""The uniform-sampling baseline's label (see :mod:`moik.experiments.kinds.moo_functions`)."""
 
 
 def ranksum_verdicts(samples: Mapping[str, Sequence[float] | np.ndarray], reference: str, *,
@@ -48,7 +59,13 @@ def ranksum_verdicts(samples: Mapping[str, Sequence[float] | np.ndarray], refere
         better than ``reference`` by median at p < :data:`ALPHA`, ``"-"`` worse,
         ``"="`` no significant difference.
     """
-    pvalues = ranksum_pvalues({k: list(v) for k, v in samples.items()}, reference)
+    finite = np.concatenate([np.asarray(v, dtype=float) for v in samples.values()])
+    finite = finite[np.isfinite(finite)]
+    # a rank test needs only the order: an infinite value (IGD of a run without a
+    # feasible member) becomes one above every finite one, a -inf one below
+    top = float(np.max(np.abs(finite))) * 2.0 + 1.0 if finite.size else 1.0
+    pvalues = ranksum_pvalues({k: list(np.clip(np.asarray(v, dtype=float), -top, top))
+                               for k, v in samples.items()}, reference)
     ref_median = float(np.median(samples[reference]))
     out = {}
     for label, p in pvalues.items():
@@ -85,11 +102,15 @@ def mean_ranks(means: Mapping[str, Mapping[str, float]], *, higher_is_better: bo
 
 
 def _samples(res: Results, ti: int, key: str) -> dict[str, np.ndarray]:
-    return {lab: np.array([r[key] for r in res.by_label[lab] if r["target"] == ti], dtype=float)
-            for lab in res.labels}
+    """Per label, ``key`` of its runs on target ``ti``; a missing IGD (a run without a
+    feasible member, stored as null) reads as inf."""
+    return {lab: np.array([np.inf if r[key] is None else r[key] for r in res.by_label[lab]
+                           if r["target"] == ti], dtype=float) for lab in res.labels}
 
 
 def _std(v: np.ndarray) -> float:
+    if not np.all(np.isfinite(v)):
+        return float("nan")  # printed "-"
     return float(np.std(v, ddof=1)) if v.size > 1 else 0.0
 
 
@@ -105,6 +126,7 @@ def front_quality_table(res: Results) -> list[Table]:
                                         higher_is_better=key == "hv")
                   for key, s in (("igd", igd), ("hv", hv))} if compare else {})
         ref_hv = float(np.mean(hv[reference])) if compare else np.nan
+        constrained = target.get("benchmark") in CONSTRAINED
         rows = []
         for lab in labels:
             recs = [r for r in res.by_label[lab] if r["target"] == ti]
@@ -115,13 +137,20 @@ def front_quality_table(res: Results) -> list[Table]:
                           f"{test[1]} ({test[0]:.2g})" if test else "-"]
             share = float(np.mean(hv[lab])) / ref_hv if compare and ref_hv > 0 else np.nan
             cells += ["-" if np.isnan(share) else f"{100 * share:.1f}%",
-                      fmt(float(np.mean([r["n_front"] for r in recs])), 4),
-                      fmt(float(np.mean([r["time"] for r in recs])), 3), str(len(recs))]
+                      fmt(float(np.mean([r["n_front"] for r in recs])), 4)]
+            if constrained:
+                cells.append(str(sum(int(r.get("n_infeasible", 0)) for r in recs)))
+            cells += [fmt(float(np.mean([r["time"] for r in recs])), 3), str(len(recs))]
             rows.append(cells)
         first = [r for lab in labels for r in res.by_label[lab] if r["target"] == ti][:1]
         ref_point = first[0].get("hv_ref_point") if first else None
         notes = [f"HV reference point {np.round(ref_point, 6).tolist() if ref_point else '-'} "
-                 "(1.1 x the analytic front's nadir per objective); std with ddof=1"]
+                 "(the analytic front's nadir + 0.1 x its magnitude per objective: 1.1 x the "
+                 "nadir where positive); std with ddof=1"]
+        if constrained:
+            notes.append("members re-evaluated: front size counts the feasible members (IGD "
+                         "and HV score only those); infeasible reported: the members with a "
+                         "violated constraint returned, summed over the runs")
         if compare:
             notes.append(f"vs {reference}: two-sided Wilcoxon rank-sum test; + the row's "
                          f"algorithm better by median (p < {ALPHA:g}), - worse, = no "
@@ -129,7 +158,9 @@ def front_quality_table(res: Results) -> list[Table]:
         tables.append(Table(f"{target['name']}: IGD and HV over the runs",
                             ["algorithm", "IGD mean", "IGD std", f"IGD vs {reference}",
                              "HV mean", "HV std", f"HV vs {reference}",
-                             f"HV / {reference}", "front size", "time (s)", "runs"],
+                             f"HV / {reference}", "front size"]
+                            + (["infeasible reported"] if constrained else [])
+                            + ["time (s)", "runs"],
                             rows, notes))
     return tables
 
@@ -173,6 +204,58 @@ def mean_ranks_table(res: Results) -> list[Table]:
                   + [f"{n} IGD rank" for n in ranked], rows, notes)]
 
 
+def _means(res: Results, key: str) -> tuple[list[str], dict[str, dict[str, float]]]:
+    """Problem names, and per label the mean of ``key`` per problem (where it has runs)."""
+    names = [t["name"] for t in res.meta["targets"]]
+    means: dict[str, dict[str, float]] = {lab: {} for lab in res.labels}
+    for ti, name in enumerate(names):
+        for lab, v in _samples(res, ti, key).items():
+            if v.size:
+                means[lab][name] = float(np.mean(v))
+    return names, means
+
+
+def versus_random_table(res: Results) -> list[Table]:
+    """Per algorithm and problem, its mean IGD over the ``random-search`` baseline's."""
+    if BASELINE not in res.labels:
+        return []
+    names, igd = _means(res, "igd")
+    rows, behind = [], 0
+    for lab in res.labels:
+        if lab == BASELINE:
+            continue
+        cells = [lab]
+        for n in names:
+            if n not in igd[lab] or n not in igd[BASELINE]:
+                cells.append("-")
+                continue
+            ratio = igd[lab][n] / igd[BASELINE][n]
+            behind += ratio >= 1.0
+            cells.append(f"{fmt(ratio, 3)}" + (" (not below)" if ratio >= 1.0 else ""))
+        rows.append(cells)
+    return [Table(f"Mean IGD over {BASELINE}'s (below 1: better than uniform sampling)",
+                  ["algorithm"] + names, rows,
+                  [f"{behind} cell(s) not below 1; {BASELINE}: the same budget sampled "
+                   "uniformly in the box, non-dominated (and feasible) points kept"])]
+
+
+def hv_shares_table(res: Results) -> list[Table]:
+    """Per algorithm and problem, its mean HV as a share of the ``proposed`` algorithm's."""
+    reference = res.config.get("proposed")
+    if reference not in res.labels:
+        return []
+    names, hv = _means(res, "hv")
+    rows = []
+    for lab in res.labels:
+        cells = [lab]
+        for n in names:
+            ref = hv[reference].get(n, 0.0)
+            cells.append(f"{100 * hv[lab][n] / ref:.1f}%" if n in hv[lab] and ref > 0 else "-")
+        rows.append(cells)
+    return [Table(f"Mean HV as a share of {reference}'s", ["algorithm"] + names, rows,
+                  ["HV reference point per problem as in the front-quality tables"])]
+
+
 def front_quality_lines(res: Results) -> list[str]:
     """Headline: per problem, the lowest mean IGD and the reference algorithm's."""
     reference = res.config.get("proposed")
@@ -199,7 +282,8 @@ def mean_ranks_lines(res: Results) -> list[str]:
         f"- {table.notes[0]}"]
 
 
-FUNCTIONS = {"front-quality": front_quality_table, "mean-ranks": mean_ranks_table}
+FUNCTIONS = {"front-quality": front_quality_table, "mean-ranks": mean_ranks_table,
+             "versus-random": versus_random_table, "hv-shares": hv_shares_table}
 """Analysis name -> table function, merged into those of :mod:`moik.experiments.analysis`."""
 
 HEADLINES = {"front-quality": front_quality_lines, "mean-ranks": mean_ranks_lines}

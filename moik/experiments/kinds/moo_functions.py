@@ -1,4 +1,4 @@
-"""Multi-objective benchmark-function experiments: ZDT and DTLZ problems with analytic fronts.
+"""Multi-objective benchmark experiments: problems with analytic fronts (ZDT, DTLZ, BNH, OSY ...).
 
 Such an experiment has no robot and no targets; its problem is::
 
@@ -9,8 +9,9 @@ Such an experiment has no robot and no targets; its problem is::
 
 Each entry of ``names`` is a problem of :data:`ANALYTIC_FRONTS` (pymoo's
 ``get_problem`` name) or a dict with that ``name``, an optional display
-``label`` and ``params`` (``n_var``; ``n_obj`` for DTLZ, 2 or 3). Trials are
-(algorithm x problem x run), with the same seeds for every algorithm.
+``label`` and ``params`` (``n_var``; ``n_obj`` for DTLZ, 2 or 3; none for the
+constrained BNH, OSY, SRN, TNK). Trials are (algorithm x problem x run), with
+the same seeds for every algorithm.
 
 Budget: with ``evaluations`` every algorithm runs until that many evaluations
 (pymoo's ``("n_eval", evaluations)``; an algorithm may finish the generation it
@@ -18,25 +19,27 @@ is in; the config's ``iterations`` are then unused); without it, the config's
 ``iterations`` (update iterations after the initial population, pymoo's
 ``("n_gen", iterations + 1)``), as for the other kinds.
 
-Only problems whose Pareto front is analytic are accepted: pymoo's
-``pareto_front()`` downloads some fronts (DTLZ7's with three objectives, the
-WFG ones) at run time, and nothing here touches the network. The fronts
-(:func:`analytic_front`): ZDT, :data:`ZDT_FRONT_POINTS` points of pymoo's
-closed-form front; DTLZ1-4, pymoo's closed-form front at Das-Dennis reference
-directions (:data:`DTLZ_PARTITIONS` partitions per objective count: 496 points
-with three objectives).
+Only problems whose Pareto front is analytic are accepted (pymoo downloads
+some fronts at run time; nothing here touches the network): the fronts are
+those of :mod:`moik.experiments.kinds.moo_fronts`.
 
 Baselines beside the registry's algorithms (:data:`BASELINES`):
 ``random-search`` samples the same budget uniformly in the box (the
 ``evaluations``, or without them ``pop_size x (iterations + 1)``, the budget of
 an algorithm that evaluates its population once per iteration) with the
-trial's seed and keeps the non-dominated points.
+trial's seed and keeps the non-dominated points (constrained problems: the
+feasible non-dominated ones).
 
-A trial records ``igd`` (pymoo's IGD of the returned front against the analytic
-one), ``hv`` (:func:`moik.metrics.hypervolume` with the reference point
-:func:`hv_reference`: 1.1 x the analytic front's nadir per objective; points
-outside that box add nothing), ``n_front``, ``time``, ``n_eval``; the arrays
-``front_F`` and ``front_X``.
+Every returned member is re-evaluated for its constraints: ``n_front`` counts
+the feasible members, ``n_infeasible`` the infeasible ones reported (0 for a
+correct algorithm), and ``igd``, ``hv`` score the feasible members only (no
+feasible member: IGD inf, HV 0). A trial records ``igd`` (pymoo's IGD of the
+feasible members against the analytic front), ``hv``
+(:func:`moik.metrics.hypervolume` with the reference point
+:func:`~moik.experiments.kinds.moo_fronts.hv_reference`: the front's nadir plus
+a tenth of its magnitude per objective; points outside that box add nothing),
+``n_front``, ``n_infeasible``, ``time``, ``n_eval``; the arrays ``front_F`` and
+``front_X`` (every returned member).
 """
 
 from __future__ import annotations
@@ -52,30 +55,23 @@ from pymoo.indicators.igd import IGD
 from pymoo.optimize import minimize
 from pymoo.problems import get_problem
 from pymoo.util.nds.non_dominated_sorting import NonDominatedSorting
-from pymoo.util.ref_dirs import get_reference_directions
 
 from moik import _validate
 from moik.algorithms import get_algorithm
 from moik.exceptions import ConfigError
 from moik.experiments.checks import check_keys, integer
+from moik.experiments.kinds.moo_fronts import (
+    ANALYTIC_FRONTS,
+    CONSTRAINED,
+    analytic_front,
+    hv_reference,
+)
 from moik.experiments.spec import TrialSpec
 from moik.metrics import hypervolume
 
 PROBLEM_KINDS = ("moo-benchmark",)
 MULTI_OBJECTIVE = PROBLEM_KINDS
 """The problem kinds of this module whose algorithms are multi-objective."""
-
-ANALYTIC_FRONTS = ("zdt1", "zdt2", "zdt3", "zdt4", "zdt6", "dtlz1", "dtlz2", "dtlz3", "dtlz4")
-"""pymoo problems whose ``_calc_pareto_front`` is closed-form (never downloaded)."""
-
-ZDT_FRONT_POINTS = 1000
-"""Points of a ZDT front (pymoo's ``pareto_front(n)``)."""
-
-DTLZ_PARTITIONS = {2: 999, 3: 30}
-"""Das-Dennis partitions of the DTLZ fronts per objective count (1000 and 496 points)."""
-
-HV_FACTOR = 1.1
-"""The HV reference point is this factor times the analytic front's nadir, per objective."""
 
 BASELINES = {"random-search": ("pop_size",)}
 """Baseline name -> the keywords it takes (run here, not through the registry)."""
@@ -102,31 +98,39 @@ def build_problem(name: str, params: Mapping) -> Problem:
     return get_problem(name, **dict(params))
 
 
-def analytic_front(problem: Problem, name: str) -> np.ndarray:
-    """The closed-form Pareto front of the problem ``name`` (see the module docstring)."""
-    if name.startswith("dtlz"):
-        dirs = get_reference_directions("das-dennis", problem.n_obj,
-                                        n_partitions=DTLZ_PARTITIONS[problem.n_obj])
-        return np.asarray(problem.pareto_front(dirs), dtype=float)
-    return np.asarray(problem.pareto_front(ZDT_FRONT_POINTS), dtype=float)
-
-
-def hv_reference(front: np.ndarray) -> np.ndarray:
-    """The HV reference point: :data:`HV_FACTOR` x the front's nadir, per objective."""
-    return HV_FACTOR * np.max(front, axis=0)
-
-
 def front_scores(F: np.ndarray, front: np.ndarray) -> tuple[float, float]:
-    """``(IGD, HV)`` of the front ``F`` against the analytic ``front``."""
-    F = np.atleast_2d(np.asarray(F, dtype=float))
+    """``(IGD, HV)`` of the front ``F`` against the analytic ``front``; no rows: (inf, 0)."""
+    F = np.asarray(F, dtype=float).reshape(-1, front.shape[1])
+    if not len(F):
+        return float("inf"), 0.0
     return float(IGD(front).do(F)), hypervolume(F, hv_reference(front))
+
+
+def violation(problem: Problem, X: np.ndarray) -> np.ndarray:
+    """Total constraint violation of the rows of ``X`` (positive G plus abs(H)), 0 if feasible."""
+    X = np.asarray(X, dtype=float).reshape(-1, problem.n_var)
+    cv = np.zeros(len(X))
+    if problem.n_ieq_constr + problem.n_eq_constr == 0 or not len(X):
+        return cv
+    G, H = problem.evaluate(X, return_values_of=["G", "H"])
+    for part in (np.maximum(G, 0.0), np.abs(H)):
+        if part is not None and np.size(part):
+            cv += np.reshape(part, (len(X), -1)).sum(axis=1)
+    return cv
 
 
 def random_search(problem: Problem, budget: int, rng: np.random.Generator
                   ) -> tuple[np.ndarray, np.ndarray]:
-    """``budget`` uniform samples of the box, non-dominated filtered: ``(X, F)``."""
+    """``budget`` uniform samples of the box, non-dominated filtered: ``(X, F)``.
+
+    Constrained problems: the feasible samples compete (constraint-domination);
+    with none feasible, those of the smallest violation.
+    """
     X = problem.xl + rng.random((budget, problem.n_var)) * (problem.xu - problem.xl)
     F = np.asarray(problem.evaluate(X, return_values_of=["F"]), dtype=float)
+    cv = violation(problem, X)
+    best = cv <= 0.0 if np.any(cv <= 0.0) else cv.min() == cv
+    X, F = X[best], F[best]
     keep = NonDominatedSorting().do(F, only_non_dominated_front=True)
     return X[keep], F[keep]
 
@@ -139,8 +143,8 @@ def _entry(where: str, raw: Any) -> dict:
         raise ConfigError(f"{where}: unknown problem {name!r}; expected one with an analytic "
                           f"front: {', '.join(ANALYTIC_FRONTS)}")
     dtlz = name.startswith("dtlz")
-    params = dict(check_keys(f"{where}.params", entry.get("params", {}),
-                             {"n_var", "n_obj"} if dtlz else {"n_var"}))
+    allowed = {"n_var", "n_obj"} if dtlz else set() if name in CONSTRAINED else {"n_var"}
+    params = dict(check_keys(f"{where}.params", entry.get("params", {}), allowed))
     n_obj = params.get("n_obj", 3) if dtlz else 2
     if dtlz:
         _validate.integer(f"{where}.params.n_obj", n_obj, minimum=2, maximum=3,
@@ -206,11 +210,15 @@ def run_trial(spec: TrialSpec, record: dict, arrays: dict) -> None:
         termination = (("n_eval", evaluations) if evaluations
                        else ("n_gen", spec.iterations + 1))  # initialization is generation 1
         res = minimize(problem, algorithm, termination, seed=spec.seed, copy_algorithm=False)
-        X = np.atleast_2d(np.asarray(res.X, dtype=float))
-        F = np.atleast_2d(np.asarray(res.F, dtype=float))
+        empty = res.X is None  # pymoo: nothing to report
+        X = np.zeros((0, problem.n_var)) if empty else np.asarray(res.X, dtype=float)
+        F = np.zeros((0, problem.n_obj)) if empty else np.asarray(res.F, dtype=float)
+        X, F = X.reshape(-1, problem.n_var), F.reshape(-1, problem.n_obj)
         n_eval = int(algorithm.evaluator.n_eval)
     elapsed = time.perf_counter() - t0
-    igd, hv = front_scores(F, front)
-    record.update(time=elapsed, n_eval=n_eval, n_front=int(len(F)), igd=igd, hv=hv,
+    feasible = violation(problem, X) <= 0.0
+    igd, hv = front_scores(F[feasible], front)
+    record.update(time=elapsed, n_eval=n_eval, n_front=int(feasible.sum()),
+                  n_infeasible=int((~feasible).sum()), igd=igd, hv=hv,
                   hv_ref_point=hv_reference(front).tolist())
     arrays.update(front_F=F, front_X=X)

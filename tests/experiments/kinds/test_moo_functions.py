@@ -1,8 +1,6 @@
 """Multi-objective benchmark experiments (moik.experiments.kinds.moo_functions)."""
 
 import copy
-import inspect
-import socket
 
 import numpy as np
 import pytest
@@ -83,39 +81,6 @@ def test_random_search_is_not_a_baseline_of_the_other_kinds(tiny):
         ExperimentConfig.from_dict(tiny)
 
 
-@pytest.mark.parametrize("name", mf.ANALYTIC_FRONTS)
-def test_every_accepted_front_is_closed_form(name):
-    """pymoo downloads some fronts (DTLZ7's, WFG's) through Remote: none accepted here does."""
-    problem = mf.build_problem(name, {})
-    source = inspect.getsource(type(problem)._calc_pareto_front)
-    assert "Remote" not in source and "load(" not in source
-
-
-def test_the_fronts_never_touch_the_network(monkeypatch):
-    def refuse(*args, **kwargs):
-        raise AssertionError("network access")
-
-    monkeypatch.setattr(socket, "socket", refuse)
-    monkeypatch.setattr(socket, "create_connection", refuse)
-    import pymoo.util.remote as remote
-    monkeypatch.setattr(remote.Remote, "load", refuse)
-    for name in mf.ANALYTIC_FRONTS:
-        problem = mf.build_problem(name, {})
-        front = mf.analytic_front(problem, name)
-        assert front.ndim == 2 and front.shape[1] == problem.n_obj and np.isfinite(front).all()
-    assert len(mf.analytic_front(mf.build_problem("dtlz2", {"n_obj": 3}), "dtlz2")) == 496
-    assert len(mf.analytic_front(mf.build_problem("zdt1", {}), "zdt1")) == mf.ZDT_FRONT_POINTS
-
-
-def test_front_scores_of_the_front_itself():
-    front = mf.analytic_front(mf.build_problem("zdt1", {}), "zdt1")
-    igd, hv = mf.front_scores(front, front)
-    assert igd == 0.0
-    # ZDT1: 1.1^2 minus the area above f2 = 1 - sqrt(f1) over [0, 1] (2/3), to the grid's accuracy
-    assert hv == pytest.approx(1.21 - 1.0 / 3.0, abs=2e-3)
-    np.testing.assert_allclose(mf.hv_reference(front), [1.1, 1.1])
-
-
 def test_random_search_samples_the_budget_and_keeps_the_non_dominated():
     problem = mf.build_problem("zdt1", {"n_var": 3})
     X, F = mf.random_search(problem, 500, np.random.default_rng(7))
@@ -158,3 +123,43 @@ def test_without_evaluations_the_generations_bound_the_run():
     assert rec["n_eval"] == 12 + 4 * 12  # the initial population and 4 iterations
     rec, _ = run_trial(by_id["random-search/0/0"])
     assert rec["n_eval"] == 12 + 4 * 12  # the initial population and 4 iterations
+
+
+def test_constrained_problems_take_no_params():
+    with pytest.raises(ConfigError, match=r"params"):
+        ExperimentConfig.from_dict(_moo(problem={"kind": "moo-benchmark", "names": [
+            {"name": "osy", "params": {"n_var": 4}}]}))
+
+
+def test_constrained_trials_count_the_infeasible_members_and_score_the_feasible():
+    cfg = ExperimentConfig.from_dict(_moo(problem={"kind": "moo-benchmark", "evaluations": 300,
+                                                   "names": ["osy", "tnk"]}))
+    by_id = {s.trial_id: s for s in build_trials(cfg)}
+    problem = mf.build_problem("osy", {})
+    front = mf.analytic_front(problem, "osy")
+    for trial in ("nsga2/0/0", "random-search/0/1", "mogwo/0/0"):
+        rec, arrays = run_trial(by_id[trial])
+        assert rec["status"] == "ok", rec.get("error")
+        X, F = arrays["front_X"], arrays["front_F"]
+        ok = mf.violation(problem, X) <= 0.0
+        assert rec["n_front"] == ok.sum() and rec["n_infeasible"] == (~ok).sum() == 0
+        igd, hv = mf.front_scores(F[ok], front)
+        assert (igd, hv) == (rec["igd"], rec["hv"])
+        np.testing.assert_allclose(rec["hv_ref_point"], [-42.0 * 0.9, 76.0 * 1.1])
+
+
+def test_violation_and_scores_without_feasible_members():
+    problem = mf.build_problem("tnk", {})
+    X = np.array([[0.05, 0.05], [1.1, 1.1], [0.9, 0.9]])  # g1 violated; g2 violated; feasible
+    cv = mf.violation(problem, X)
+    assert cv[0] > 0 and cv[1] > 0 and cv[2] == 0.0
+    front = mf.analytic_front(problem, "tnk")
+    assert mf.front_scores(np.zeros((0, 2)), front) == (float("inf"), 0.0)
+    assert np.all(mf.violation(mf.build_problem("zdt1", {}), np.full((2, 30), 0.5)) == 0.0)
+
+
+def test_random_search_keeps_only_feasible_points_when_some_are():
+    problem = mf.build_problem("tnk", {})
+    X, F = mf.random_search(problem, 400, np.random.default_rng(3))
+    assert len(X) and np.all(mf.violation(problem, X) == 0.0)
+    np.testing.assert_array_equal(F, X)  # TNK: f = x

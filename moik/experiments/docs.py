@@ -7,7 +7,7 @@ F``, or a parent folder holding several):
   whole: a stamp line, then the experiment's full report section (tables,
   analyses, figure links; :func:`moik.experiments.report.experiment_section`),
   its PNG figures in ``DOCS/results/figures/NAME/``;
-- in ``DOCS/reproducing.md`` every block ::
+- in ``DOCS/reproducing.md`` and the other :data:`SUMMARY_PAGES` every block ::
 
       <!-- generated: NAME summary -->
       ...
@@ -179,6 +179,11 @@ def _page(store: ResultStore, docs: Path, name: str, line: str, *, figures: bool
     return path
 
 
+SUMMARY_PAGES = ("reproducing.md", "algorithms.md")
+"""Pages of DOCS whose ``generated`` blocks are replaced (absent ones are skipped; a
+missing ``reproducing.md`` is warned about)."""
+
+
 def replace_blocks(text: str, summaries: dict[str, str], update: DocsUpdate,
                    where: str = "reproducing.md") -> str:
     """``text`` with the blocks of the experiments in ``summaries`` replaced by their summary.
@@ -247,12 +252,13 @@ def write_docs(folders, docs: str | Path, *, figures: bool = True) -> DocsUpdate
     if not used:
         raise ResultsError("no results folder could be used for the docs: "
                            + ("; ".join(update.warnings) or "none given"))
-    page = docs / "reproducing.md"
-    if page.is_file():
-        old = page.read_text()
-        new = replace_blocks(old, summaries, update)
-        if new != old:
-            atomic_write_bytes(page, new.encode())
-    else:
-        _warn(update, f"{page} does not exist: only the results pages were written")
+    for page_file in SUMMARY_PAGES:
+        page = docs / page_file
+        if page.is_file():
+            old = page.read_text()
+            new = replace_blocks(old, summaries, update, where=page_file)
+            if new != old:
+                atomic_write_bytes(page, new.encode())
+        elif page_file == SUMMARY_PAGES[0]:
+            _warn(update, f"{page} does not exist: only the results pages were written")
     return update

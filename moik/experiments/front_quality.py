@@ -282,9 +282,31 @@ def mean_ranks_lines(res: Results) -> list[str]:
         f"- {table.notes[0]}"]
 
 
+def _table_lines(tables: list[Table]) -> list[str]:
+    """A table of one row per algorithm as markdown lines, with its notes."""
+    lines: list[str] = []
+    for table in tables:
+        lines += [f"{table.title}:", "", "| " + " | ".join(table.header) + " |",
+                  "|" + "---|" * len(table.header)]
+        lines += ["| " + " | ".join(row) + " |" for row in table.rows]
+        lines += [f"- {note}" for note in table.notes] + [""]
+    return lines
+
+
+def versus_random_lines(res: Results) -> list[str]:
+    """Headline: the versus-random table whole."""
+    return _table_lines(versus_random_table(res))
+
+
+def hv_shares_lines(res: Results) -> list[str]:
+    """Headline: the hv-shares table whole."""
+    return _table_lines(hv_shares_table(res))
+
+
 FUNCTIONS = {"front-quality": front_quality_table, "mean-ranks": mean_ranks_table,
              "versus-random": versus_random_table, "hv-shares": hv_shares_table}
 """Analysis name -> table function, merged into those of :mod:`moik.experiments.analysis`."""
 
-HEADLINES = {"front-quality": front_quality_lines, "mean-ranks": mean_ranks_lines}
+HEADLINES = {"front-quality": front_quality_lines, "mean-ranks": mean_ranks_lines,
+             "versus-random": versus_random_lines, "hv-shares": hv_shares_lines}
 """Analysis name -> headline function, merged into :data:`moik.experiments.headlines.HEADLINES`."""

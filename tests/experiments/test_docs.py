@@ -147,3 +147,12 @@ def test_wall_time_of_an_old_folder_comes_from_the_timestamps(quick_run):
 def test_every_analysis_has_a_headline():
     """The docs command summarises every analysis a config may ask for."""
     assert set(ANALYSES) <= set(HEADLINES)
+
+
+def test_blocks_in_algorithms_md_are_replaced_too(quick_run, docs):
+    (docs / "algorithms.md").write_text(PAGE)
+    assert main(["report", str(quick_run), "--docs", str(docs), "--no-figures"]) == 0
+    for page in ("reproducing.md", "algorithms.md"):
+        text = (docs / page).read_text()
+        assert "old numbers" not in _blocks(text)["mpso-single"]
+        assert _outside(text) == _outside(PAGE)

@@ -37,7 +37,7 @@ EXPERIMENT = {
     "iterations": 249,  # unused: problem.evaluations bound the runs
     "runs": 10,
     "seed": 2000,
-    "analyses": ["front-quality", "mean-ranks"],
+    "analyses": ["front-quality", "hv-shares", "versus-random", "mean-ranks"],
     "proposed": "nsga2",
     "quick": {"problem": {"evaluations": 200, "names": [
         {"name": "zdt1", "params": {"n_var": 5}},

@@ -8,7 +8,8 @@ same suite outside it). Problems with analytic Pareto fronts only (nothing is
 downloaded): ZDT1/2/3 with 30 variables, ZDT4 and ZDT6 with 10 (their standard
 sizes, pymoo's defaults), DTLZ1 (7 variables) and DTLZ2 (12) with three
 objectives. Every multi-objective algorithm of the registry with its defaults,
-population 100, 10,000 evaluations per run (``problem.evaluations``; the
+and two documented options (MOEOSMA's ``diversity="nsga2-gaussian"``, MOALO's
+``antlion="first"``, MALO.m's rule), population 100, 10,000 evaluations per run (``problem.evaluations``; the
 iteration count is then unused), 5 runs; ``random-search`` samples the same
 10,000 points uniformly and keeps the non-dominated ones. IGD against the
 analytic front (ZDT 1,000 points, DTLZ 496 Das-Dennis points) and HV with the
@@ -34,7 +35,11 @@ EXPERIMENT = {
         {"name": "dtlz1", "params": {"n_var": 7, "n_obj": 3}},
         {"name": "dtlz2", "params": {"n_var": 12, "n_obj": 3}},
     ]},
-    "algorithms": [{"name": n} for n in _MO] + [{"name": "random-search"}],
+    "algorithms": [{"name": n} for n in _MO] + [
+        {"name": "moeosma", "label": "moeosma-nsga2-gaussian",
+         "params": {"diversity": "nsga2-gaussian"}},
+        {"name": "moalo", "label": "moalo-first", "params": {"antlion": "first"}},
+        {"name": "random-search"}],
     "pop_size": 100,
     "iterations": 99,  # unused: problem.evaluations bound the runs
     "runs": 5,

@@ -21,6 +21,7 @@ from moik.experiments.consistency import FUNCTIONS as CONSISTENCY_FUNCTIONS
 from moik.experiments.consistency import smallest_p_values
 from moik.experiments.dh_fit import FUNCTIONS as DH_FIT_FUNCTIONS
 from moik.experiments.front_quality import FUNCTIONS as FRONT_FUNCTIONS
+from moik.experiments.front_shares import FUNCTIONS as SHARES_FUNCTIONS
 from moik.experiments.per_target import FUNCTIONS
 from moik.experiments.solution_sets import FUNCTIONS as RANK_FUNCTIONS
 from moik.experiments.store import ResultStore
@@ -258,7 +259,7 @@ def analyze(store: ResultStore) -> tuple[Results, list[Table]]:
         for name in res.config.get("analyses", ["summary"]):
             tables += {**ANALYSIS_FUNCTIONS, **FUNCTIONS, **DH_FIT_FUNCTIONS,
                        **RANK_FUNCTIONS, **CONSISTENCY_FUNCTIONS,
-                       **FRONT_FUNCTIONS}[name](res)
+                       **FRONT_FUNCTIONS, **SHARES_FUNCTIONS}[name](res)
     for table in tables:
         if res.paper_note and any("paper" in row for row in table.rows):
             table.notes.append(res.paper_note)

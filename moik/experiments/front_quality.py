@@ -15,11 +15,9 @@ For experiments of the kind :mod:`moik.experiments.kinds.moo_functions`
   and by mean HV (1 = highest), ties sharing the mean of their ranks; the mean
   over the problems, and the ``+``/``=``/``-`` counts of the IGD test over the
   problems. Only problems where every algorithm has runs are ranked.
-- ``versus-random``: per algorithm and problem, its mean IGD divided by the
-  ``random-search`` baseline's (uniform sampling of the same budget); 1 or more
-  is flagged "not below".
-- ``hv-shares``: per algorithm and problem, its mean HV as a share of the
-  ``proposed`` algorithm's.
+
+The compact per-algorithm x per-problem tables (``hv-shares``,
+``versus-random``) are in :mod:`moik.experiments.front_shares`.
 
 The computations are plain functions of numbers (:func:`mean_ranks`,
 :func:`ranksum_verdicts`); the table functions only gather the records. The
@@ -40,10 +38,6 @@ from moik.metrics import ranksum_pvalues
 
 ALPHA = 0.05
 """Significance level of the rank-sum verdicts."""
-
-BASELINE = "random-search"
-"""The uniform-sampling baseline's label (see :mod:`moik.experiments.kinds.moo_functions`)."""
-
 
 def ranksum_verdicts(samples: Mapping[str, Sequence[float] | np.ndarray], reference: str, *,
                      higher_is_better: bool) -> dict[str, tuple[float, str]]:
@@ -101,7 +95,7 @@ def mean_ranks(means: Mapping[str, Mapping[str, float]], *, higher_is_better: bo
     return ranks, mean_rank
 
 
-def _samples(res: Results, ti: int, key: str) -> dict[str, np.ndarray]:
+def samples(res: Results, ti: int, key: str) -> dict[str, np.ndarray]:
     """Per label, ``key`` of its runs on target ``ti``; a missing IGD (a run without a
     feasible member, stored as null) reads as inf."""
     return {lab: np.array([np.inf if r[key] is None else r[key] for r in res.by_label[lab]
@@ -119,7 +113,7 @@ def front_quality_table(res: Results) -> list[Table]:
     reference = res.config.get("proposed")
     tables = []
     for ti, target in enumerate(res.meta["targets"]):
-        igd, hv = _samples(res, ti, "igd"), _samples(res, ti, "hv")
+        igd, hv = samples(res, ti, "igd"), samples(res, ti, "hv")
         labels = [lab for lab in res.labels if igd[lab].size]
         compare = reference in labels and len(labels) > 1
         tests = ({key: ranksum_verdicts({lab: s[lab] for lab in labels}, reference,
@@ -174,7 +168,7 @@ def mean_ranks_table(res: Results) -> list[Table]:
     signs: dict[str, list[str]] = {lab: [] for lab in res.labels}
     left_out: list[str] = []
     for ti, name in enumerate(names):
-        igd, hv = _samples(res, ti, "igd"), _samples(res, ti, "hv")
+        igd, hv = samples(res, ti, "igd"), samples(res, ti, "hv")
         if not res.labels or any(igd[lab].size == 0 for lab in res.labels):
             left_out.append(name)
             continue
@@ -204,64 +198,12 @@ def mean_ranks_table(res: Results) -> list[Table]:
                   + [f"{n} IGD rank" for n in ranked], rows, notes)]
 
 
-def _means(res: Results, key: str) -> tuple[list[str], dict[str, dict[str, float]]]:
-    """Problem names, and per label the mean of ``key`` per problem (where it has runs)."""
-    names = [t["name"] for t in res.meta["targets"]]
-    means: dict[str, dict[str, float]] = {lab: {} for lab in res.labels}
-    for ti, name in enumerate(names):
-        for lab, v in _samples(res, ti, key).items():
-            if v.size:
-                means[lab][name] = float(np.mean(v))
-    return names, means
-
-
-def versus_random_table(res: Results) -> list[Table]:
-    """Per algorithm and problem, its mean IGD over the ``random-search`` baseline's."""
-    if BASELINE not in res.labels:
-        return []
-    names, igd = _means(res, "igd")
-    rows, behind = [], 0
-    for lab in res.labels:
-        if lab == BASELINE:
-            continue
-        cells = [lab]
-        for n in names:
-            if n not in igd[lab] or n not in igd[BASELINE]:
-                cells.append("-")
-                continue
-            ratio = igd[lab][n] / igd[BASELINE][n]
-            behind += ratio >= 1.0
-            cells.append(f"{fmt(ratio, 3)}" + (" (not below)" if ratio >= 1.0 else ""))
-        rows.append(cells)
-    return [Table(f"Mean IGD over {BASELINE}'s (below 1: better than uniform sampling)",
-                  ["algorithm"] + names, rows,
-                  [f"{behind} cell(s) not below 1; {BASELINE}: the same budget sampled "
-                   "uniformly in the box, non-dominated (and feasible) points kept"])]
-
-
-def hv_shares_table(res: Results) -> list[Table]:
-    """Per algorithm and problem, its mean HV as a share of the ``proposed`` algorithm's."""
-    reference = res.config.get("proposed")
-    if reference not in res.labels:
-        return []
-    names, hv = _means(res, "hv")
-    rows = []
-    for lab in res.labels:
-        cells = [lab]
-        for n in names:
-            ref = hv[reference].get(n, 0.0)
-            cells.append(f"{100 * hv[lab][n] / ref:.1f}%" if n in hv[lab] and ref > 0 else "-")
-        rows.append(cells)
-    return [Table(f"Mean HV as a share of {reference}'s", ["algorithm"] + names, rows,
-                  ["HV reference point per problem as in the front-quality tables"])]
-
-
 def front_quality_lines(res: Results) -> list[str]:
     """Headline: per problem, the lowest mean IGD and the reference algorithm's."""
     reference = res.config.get("proposed")
     parts = []
     for ti, target in enumerate(res.meta["targets"]):
-        igd = {lab: v for lab, v in _samples(res, ti, "igd").items() if v.size}
+        igd = {lab: v for lab, v in samples(res, ti, "igd").items() if v.size}
         if not igd:
             continue
         best = min(igd, key=lambda lab: float(np.mean(igd[lab])))
@@ -282,31 +224,8 @@ def mean_ranks_lines(res: Results) -> list[str]:
         f"- {table.notes[0]}"]
 
 
-def _table_lines(tables: list[Table]) -> list[str]:
-    """A table of one row per algorithm as markdown lines, with its notes."""
-    lines: list[str] = []
-    for table in tables:
-        lines += [f"{table.title}:", "", "| " + " | ".join(table.header) + " |",
-                  "|" + "---|" * len(table.header)]
-        lines += ["| " + " | ".join(row) + " |" for row in table.rows]
-        lines += [f"- {note}" for note in table.notes] + [""]
-    return lines
-
-
-def versus_random_lines(res: Results) -> list[str]:
-    """Headline: the versus-random table whole."""
-    return _table_lines(versus_random_table(res))
-
-
-def hv_shares_lines(res: Results) -> list[str]:
-    """Headline: the hv-shares table whole."""
-    return _table_lines(hv_shares_table(res))
-
-
-FUNCTIONS = {"front-quality": front_quality_table, "mean-ranks": mean_ranks_table,
-             "versus-random": versus_random_table, "hv-shares": hv_shares_table}
+FUNCTIONS = {"front-quality": front_quality_table, "mean-ranks": mean_ranks_table}
 """Analysis name -> table function, merged into those of :mod:`moik.experiments.analysis`."""
 
-HEADLINES = {"front-quality": front_quality_lines, "mean-ranks": mean_ranks_lines,
-             "versus-random": versus_random_lines, "hv-shares": hv_shares_lines}
+HEADLINES = {"front-quality": front_quality_lines, "mean-ranks": mean_ranks_lines}
 """Analysis name -> headline function, merged into :data:`moik.experiments.headlines.HEADLINES`."""

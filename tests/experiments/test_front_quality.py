@@ -126,23 +126,3 @@ def test_ranksum_with_infinite_values_only_uses_their_order():
     finite = ranksum_verdicts({"ref": [1, 2, 3, 4, 5], "x": [6, 7, 8, 100, 100]}, "ref",
                               higher_is_better=False)["x"]
     assert with_inf == finite
-
-
-def test_versus_random_and_hv_shares_tables():
-    from moik.experiments.front_quality import hv_shares_table, versus_random_table
-
-    res = _case()
-    res.labels.append("random-search")
-    res.by_label["random-search"] = [
-        {"target": ti, "run": r, "igd": v, "hv": 0.2, "n_front": 5, "time": 0.1}
-        for ti, v in ((0, 0.6), (1, 0.5)) for r in range(5)]
-    (table,) = versus_random_table(res)
-    rows = {r[0]: r for r in table.rows}
-    assert "random-search" not in rows
-    assert rows["good"][1:] == ["0.2", "0.65"]  # 0.12 / 0.6, 0.325 / 0.5
-    assert rows["bad"][1:] == ["1.53 (not below)", "1.84 (not below)"]
-    assert table.notes[0].startswith("2 cell(s) not below 1")
-    (shares,) = hv_shares_table(res)
-    rows = {r[0]: r for r in shares.rows}
-    assert rows["ref"][1:] == ["100.0%", "100.0%"] and rows["good"][1:] == ["160.0%", "100.0%"]
-    assert versus_random_table(_case()) == []

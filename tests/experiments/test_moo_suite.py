@@ -1,4 +1,4 @@
-"""The moo-suite and moo-reference configs: what they list, and their quick size end to end."""
+"""The moo-suite(-10k), moo-constrained and moo-reference configs: what they list, quick runs."""
 
 from pathlib import Path
 
@@ -12,12 +12,22 @@ from moik.experiments.store import ResultStore
 ROOT = Path(__file__).resolve().parents[2]
 SUITE = ROOT / "experiments" / "moo_suite.py"
 REFERENCE = ROOT / "experiments" / "moo_reference.py"
+SUITE_10K = ROOT / "experiments" / "moo_suite_10k.py"
+CONSTRAINED = ROOT / "experiments" / "moo_constrained.py"
+OPTIONS = {"moeosma-nsga2-gaussian": ("moeosma", {"diversity": "nsga2-gaussian"}),
+           "moalo-first": ("moalo", {"antlion": "first"})}
 
 
-def test_the_suite_lists_every_multi_objective_algorithm_and_the_random_baseline():
-    cfg = load_config(SUITE)
-    assert sorted(cfg.labels) == sorted([*available("multi-objective"), "random-search"])
-    assert cfg["problem"]["evaluations"] == 25_000 and cfg["runs"] == 10
+@pytest.mark.parametrize(("path", "evaluations", "runs"), [(SUITE, 25_000, 10),
+                                                          (SUITE_10K, 10_000, 5)])
+def test_the_suite_lists_every_multi_objective_algorithm_and_the_random_baseline(
+        path, evaluations, runs):
+    cfg = load_config(path)
+    assert sorted(cfg.labels) == sorted([*available("multi-objective"), *OPTIONS,
+                                         "random-search"])
+    assert {a.label: (a.name, {k: v for k, v in a.params.items() if k != "pop_size"})
+            for a in cfg.algorithms if a.label in OPTIONS} == OPTIONS
+    assert cfg["problem"]["evaluations"] == evaluations and cfg["runs"] == runs
     assert cfg["pop_size"] == 100 and cfg["proposed"] == "nsga2"
     assert [t.name for t in cfg.targets] == ["zdt1", "zdt2", "zdt3", "zdt4", "zdt6", "dtlz1",
                                               "dtlz2"]
@@ -25,6 +35,13 @@ def test_the_suite_lists_every_multi_objective_algorithm_and_the_random_baseline
     assert n_var == {"zdt1": 30, "zdt2": 30, "zdt3": 30, "zdt4": 10, "zdt6": 10, "dtlz1": 7,
                      "dtlz2": 12}
     assert {t.params.get("n_obj") for t in cfg.targets if t.name.startswith("dtlz")} == {3}
+
+
+def test_the_constrained_suite_lists_every_algorithm_on_bnh_osy_srn_tnk():
+    cfg = load_config(CONSTRAINED)
+    assert sorted(cfg.labels) == sorted([*available("multi-objective"), "random-search"])
+    assert [t.name for t in cfg.targets] == ["bnh", "osy", "srn", "tnk"]
+    assert cfg["problem"]["evaluations"] == 25_000 and cfg["runs"] == 10
 
 
 def test_the_reference_setting_is_zdt1_3_at_100_iterations():
@@ -38,7 +55,7 @@ def test_the_reference_setting_is_zdt1_3_at_100_iterations():
 @pytest.fixture(scope="module")
 def quick_results(tmp_path_factory):
     out = tmp_path_factory.mktemp("moo-quick")
-    for path in (SUITE, REFERENCE):
+    for path in (SUITE, REFERENCE, CONSTRAINED):
         name = path.stem.replace("_", "-")
         assert main(["experiment", "run", "--config", str(path), "--quick", "--workers", "1",
                      "--no-progress", "--out", str(out / name)]) == 0
@@ -47,12 +64,13 @@ def quick_results(tmp_path_factory):
 
 
 def test_every_quick_trial_finishes_with_its_metrics(quick_results):
-    for name in ("moo-suite", "moo-reference"):
+    for name in ("moo-suite", "moo-reference", "moo-constrained"):
         recs = ResultStore.open(quick_results / name).records()
         assert recs and all(r["status"] == "ok" for r in recs), name
-        assert all(r["igd"] >= 0 and r["hv"] >= 0 for r in recs)
+        assert all((r["igd"] is None or r["igd"] >= 0) and r["hv"] >= 0 for r in recs)
+        assert all(r["n_infeasible"] == 0 for r in recs), name  # no infeasible member reported
     recs = ResultStore.open(quick_results / "moo-suite").records()
-    assert len(recs) == 18 * 2 * 2
+    assert len(recs) == 20 * 2 * 2
     assert {r["n_eval"] for r in recs if r["algorithm"] == "random-search"} == {200}
 
 
@@ -65,6 +83,10 @@ def test_the_report_has_the_tables(quick_results):
     assert "| algorithm | IGD mean | IGD std | IGD vs nsga2 |" in report
     assert "200 evaluations per run" in report
     assert "HV reference point [1.1, 1.1, 1.1]" in report
+    assert "## moo-constrained:" in report and "#### osy: IGD and HV over the runs" in report
+    assert "HV reference point [-37.8, 83.6]" in report and "infeasible reported" in report
+    assert "#### Mean HV as a share of nsga2's" in report
+    assert "#### Mean IGD over random-search's (below 1: better than uniform sampling)" in report
 
 
 def test_the_docs_pages_and_blocks_are_generated(quick_results, tmp_path):

@@ -56,8 +56,9 @@ PROBLEMS = {"dtlz2": {"n_obj": 3}}
 OPTION = "moeosma-nsga2-gaussian"
 REFERENCE_CASES = [("moeosma", "zdt2"), ("moeosma", "zdt6"), ("mogwo", "dtlz2"),
                    ("mogwo", "zdt2"), ("moalo", "dtlz2"), ("mssa", "dtlz2"), ("mssa", "zdt1"),
-                   ("moda", "zdt1"), ("moda", "dtlz2"), ("moalo", "osy"), ("moalo", "tnk"),
-                   ("moda", "osy"), ("moda", "tnk"), ("mssa", "osy")]
+                   ("moda", "zdt1"), ("moda", "dtlz2"), ("momvo", "dtlz2"), ("momvo", "zdt1"),
+                   ("moalo", "osy"), ("moalo", "tnk"), ("moda", "osy"), ("moda", "tnk"),
+                   ("mssa", "osy"), ("momvo", "osy")]
 SMALL = {"mssa": 200, "moalo": 100, "moda": 100, "momvo": 100, "mogwo": 100, "mo-csa": 100,
          "nsga2": 100}
 TABLE8_POSES = {"P1": (-0.25, 1.00, 0.50), "P2": (0.50, -0.25, 0.75)}

@@ -17,11 +17,18 @@ others seeing the result. Ports (files as published):
 - ``malo_reference``: Mirjalili's MOALO 1.0 (``MALO.m``, ``Random_walk_around_antlion.m``);
 - ``mssa_reference``: Mirjalili's MSSA 1.0 (``MSSA.m``);
 - ``moda_reference``: Mirjalili's MODA 1.0 (``MODA.m``, ``Levy.m``);
-  the last three with Mirjalili's shared archive files (``UpdateArchive.m``,
+- ``momvo_reference``: Mirjalili's MOMVO 1.0 (``MOMVO.m``);
+  the last four with Mirjalili's shared archive files (``UpdateArchive.m``,
   ``RankingProcess.m``, ``HandleFullArchive.m``, ``RouletteWheelSelection.m``).
 
-The Mirjalili codes were read in the copies of github.com/mxd888/MOAOA_For_MOVRPD
-(``MO_For_CEC2020/``), which carry Mirjalili's version-1.0 headers.
+The MSSA/MOALO/MODA codes were read in the copies of github.com/mxd888/MOAOA_For_MOVRPD
+(``MO_For_CEC2020/``), which carry Mirjalili's version-1.0 headers. MOMVO.m is not
+there; it was read in github.com/Natee-Panagant/Comparative-study-of-truss-sizing-
+optimisation-problems-in-MATLAB, ``Algorithms/MOMVO.m`` (commit aeb246c7), which carries
+Mirjalili's MOMVO version-1.0 header (its adapter added a penalty and constraint values
+G around the loop), and in github.com/Zionist1923/MOMVO_Based_MMGEMS, ``MOMVO.m``
+(commit bda128e7, a re-headed copy without constraints); their main loops agree line
+for line.
 
 Every function takes a pymoo problem, the population size, the number of iterations
 and a numpy Generator and returns ``(archive_X, archive_F, n_eval)``.
@@ -240,6 +247,68 @@ def moda_reference(problem, N, max_iter, rng, capacity=100):
     return AX, AF, n_eval
 
 
+# ---- MOMVO.m -----------------------------------------------------------------------------
+def momvo_reference(problem, N, max_iter, rng, capacity=100):
+    """MOMVO.m (Mirjalili's MOMVO 1.0), read in Natee-Panagant/Comparative-study-of-truss-
+    sizing-optimisation-problems-in-MATLAB ``Algorithms/MOMVO.m`` (aeb246c7) and
+    Zionist1923/MOMVO_Based_MMGEMS ``MOMVO.m`` (bda128e7).
+
+    The code keeps the MVO.m statements that were written for a row of N scalar
+    inflation rates and runs them on the (N, M) objective matrix; MATLAB's matrix
+    semantics then decide what they do (kept here, noted inline). Unconstrained in the
+    code: on constrained problems the universes are sorted on the raw objectives and the
+    archive update uses constraint-domination (``mirjalili_update_archive``). Assumes
+    N >= M (``length`` of the (N, M) matrix in RouletteWheelSelection is then N).
+    """
+    lb, ub = problem.xl.astype(float), problem.xu.astype(float)
+    dim, M = problem.n_var, problem.n_obj
+    AX, AF, ACV = np.zeros((0, dim)), np.zeros((0, M)), np.zeros(0)
+    wep_max, wep_min = 1.0, 0.2
+    U = lb + rng.random((N, dim)) * (ub - lb)  # initialization.m
+    n_eval = 0
+    for t in range(1, max_iter + 1):
+        wep = wep_min + t * ((wep_max - wep_min) / max_iter)  # Eq. 3.3
+        tdr = 1 - t ** (1 / 6) / max_iter ** (1 / 6)  # Eq. 3.4
+        U = np.clip(U, lb, ub)  # Flag4ub / Flag4lb, before the evaluation
+        I, CV = _evaluate_cv(problem, U)  # noqa: E741
+        n_eval += N
+        # (the code's dominance "elitism" here sets Best_universe, which is overwritten by
+        # the archive draw below before any use: left out)
+        S = np.sort(I, axis=0, kind="stable")  # sort(Inflation_rates): each column on its own
+        order = np.argsort(I[:, 0], kind="stable")  # sorted_indexes(newindex), newindex <= N:
+        sorted_U = U[order]  # linear indexing reads the first column -> the order of f1
+        with np.errstate(invalid="ignore", divide="ignore"):
+            # normr: each row of the column-sorted matrix to unit length (a zero row is NaN
+            # or 0: no tunnel either way); NI(i) reads column 1 by linear indexing
+            NI = S[:, 0] / np.sqrt(np.sum(S**2, axis=1))
+        U[0] = sorted_U[0]  # the elite, before the archive update: the archive gets the
+        # elite's X with the F (and CV) of the universe it replaced (row 1's, as in the code)
+        TX, TF, TCV = mirjalili_update_archive(AX, AF, U, I, ACV, CV)
+        if len(TF):  # empty when every best row has an equal twin (copies of the elite):
+            AX, AF, ACV = TX, TF, TCV  # MATLAB then stops with an error; the archive is kept
+            if len(AF) > capacity:
+                AX, AF, ACV = mirjalili_handle_full(AX, AF, ACV, mirjalili_ranks(AF), capacity,
+                                                    rng)
+        best = _leader(AX, mirjalili_ranks(AF), rng)
+        # RouletteWheelSelection(-sorted_Inflation_rates) on the matrix: cumsum runs down
+        # each column, accumulation(end) is the total of the LAST objective's column, and
+        # the scan over 1:length() reads the first column (f1) by linear indexing
+        acc = np.cumsum(-S, axis=0)
+        scan, total = acc.ravel(order="F")[:max(N, M)], acc[-1, -1]
+        for i in range(1, N):  # row i of the unsorted universes, with the i-th sorted NI
+            for j in range(dim):
+                if rng.random() < NI[i]:  # Eq. 3.1 (the white hole: -1 read as the first)
+                    hit = np.flatnonzero(scan > rng.random() * total)
+                    U[i, j] = sorted_U[int(hit[0]) if hit.size else 0, j]
+                if rng.random() < wep:  # Eq. 3.2, per-variable bounds (dim > 1)
+                    r3 = rng.random()
+                    if r3 < 0.5:
+                        U[i, j] = best[j] + tdr * ((ub[j] - lb[j]) * rng.random() + lb[j])
+                    if r3 > 0.5:
+                        U[i, j] = best[j] - tdr * ((ub[j] - lb[j]) * rng.random() + lb[j])
+    return AX, AF, n_eval
+
+
 # ---- MOGWO.m -----------------------------------------------------------------------------
 def _hypercubes(AF, n_grid, alpha):
     """CreateHypercubes.m: per objective n_grid - 1 edges over the inflated range, +-inf ends."""
@@ -413,5 +482,6 @@ REFERENCES = {
     "moalo": malo_reference,
     "mssa": mssa_reference,
     "moda": moda_reference,
+    "momvo": momvo_reference,
 }
 """moik registry name -> port of its reference code."""

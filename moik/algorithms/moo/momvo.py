@@ -5,7 +5,10 @@ multiple objectives using the multi-verse optimization algorithm",
 Knowledge-Based Systems 134, 50-71 (2017), DOI 10.1016/j.knosys.2017.07.018,
 with the operators of MVO (Mirjalili, Mirjalili & Hatamlou, Neural Computing
 and Applications 27, 495-513 (2016), DOI 10.1007/s00521-015-1870-7, Eqs.
-3.1-3.4), and Mirjalili's MOMVO.m (version 1.0):
+3.1-3.4), and Mirjalili's MOMVO.m (version 1.0; read in
+github.com/Natee-Panagant/Comparative-study-of-truss-sizing-optimisation-problems-in-MATLAB,
+``Algorithms/MOMVO.m``, and github.com/Zionist1923/MOMVO_Based_MMGEMS, ``MOMVO.m``; its
+line-by-line port is ``momvo_reference`` in ``benchmarks/moo_reference.py``):
 
 - inflation rates: the universes are sorted on the first objective and
   normalised, ``NI = I / ||I||_2`` over the population (Eq. 3.1, MATLAB's
@@ -41,7 +44,20 @@ Deviations and readings:
   objective if feasible, else the worst feasible value plus its violation
   (:func:`~moik.algorithms.mechanics.ranking_fitness`), so feasible universes sort
   first; the archive uses constraint-domination.
+- MOMVO.m's RouletteWheelSelection on the (N, M) matrix ``-sorted_Inflation_rates``
+  scans the cumulative sums of the first column against ``rand`` times the total of
+  the *last* column; here the first objective's own total. With non-negative rates
+  both always return the first (best) universe (the cumulative sums only fall), so
+  the white hole is the elite; they differ only where rates are negative.
+- MOMVO.m writes the elite into row 1 of the *unsorted* universes before the archive
+  update, so the archive receives the elite's position with the objectives of the
+  universe it replaced; that universe is lost, and the elite is moved in its own row
+  as well (rows 2..N move). Here the archive gets evaluated pairs only, and the N - 1
+  universes other than the elite move.
 - Random streams differ from MATLAB's; only the distributions match.
+
+Beside the port on the same problems and budget (``benchmarks/moo_quality.py``, section
+``reference``), moik's MOMVO and MOMVO.m give the same picture, neither consistently ahead.
 """
 
 from __future__ import annotations
@@ -64,8 +80,8 @@ def mvo_roulette(weights: np.ndarray, u: np.ndarray) -> np.ndarray:
     """MVO.m's RouletteWheelSelection for each draw ``u`` (index 0 when it returns -1).
 
     The first index whose cumulative weight exceeds ``u * sum(weights)``. On
-    MVO's negative weights ``-I`` this favours the front of the sorted
-    population (the best universes), as the reference code does.
+    MVO's weights ``-I`` with non-negative rates I the cumulative sums only fall,
+    so it always returns 0 (the best universe), as the reference code does.
     """
     acc = np.cumsum(weights)
     hit = acc[None, :] > (u * acc[-1])[:, None]

@@ -24,6 +24,17 @@ def test_multiverse_tunnels_roulette_and_schedule():
     assert set(out[:, 0]) <= set(X_s[:, 0]) and set(out[:, 1]) <= set(X_s[:, 1])
 
 
+def test_white_hole_is_the_best_universe_when_rates_are_non_negative():
+    """MOMVO.m's roulette on -I: with I >= 0 the cumulative sums only fall, so every draw
+    (u in [0, 1), including u = 0 and draws past the total) gives the first universe."""
+    rng = np.random.default_rng(1)
+    I_sorted = np.sort(rng.random(50) * 10.0)
+    I_sorted[:3] = 0.0
+    u = np.concatenate([[0.0, 1.0 - 1e-12], rng.random(1000)])
+    np.testing.assert_array_equal(mvo_roulette(-I_sorted, u), 0)
+    np.testing.assert_array_equal(mvo_roulette(-np.sort(rng.random(50)) - 1.0, u), 0)
+
+
 @pytest.mark.parametrize("problem_name", ["zdt1", "ik"])
 def test_deterministic_within_bounds_nondominated_exact_budget(check, problem_name):
     check.mo_reproducible_front(lambda: get_algorithm("momvo", pop_size=20),

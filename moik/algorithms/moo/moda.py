@@ -6,13 +6,20 @@ Computing and Applications 27, 1053-1073 (2016), DOI 10.1007/s00521-015-1920-1,
 Section 3 (Eqs. 3.1-3.10) and Section 3.3 (MODA), and Mirjalili's MODA.m
 (version 1.0):
 
+- the dragonflies move one after another, in place, as in MODA.m's loop: dragonfly i
+  finds its neighbours among the current positions (those of dragonflies 0..i-1
+  already moved and clipped in this iteration, the others not yet), averages the
+  neighbours' steps as they are at that moment (the moved ones' new steps), then
+  moves and is clipped to the bounds before dragonfly i + 1 looks
+  (:func:`dragonflies_in_turn`, compiled);
 - neighbours of dragonfly i: every j with ``|X_jk - X_ik| <= r_k`` and
   ``X_jk != X_ik`` in every coordinate k, ``r = (ub - lb) (1/4 + 2 t / T)``;
 - separation ``S = -sum_j (X_j - X)`` (Eq. 3.1), alignment ``A`` = mean of the
   neighbours' steps (Eq. 3.2), cohesion ``C`` = mean of their positions minus X
   (Eq. 3.3), food ``F = X+ - X`` (Eq. 3.4), enemy ``E = X- + X`` (Eq. 3.5, as
   printed), each used only with more than one neighbour (F, E only when the
-  food / enemy lies within the radius in every coordinate);
+  food / enemy lies within the radius in every coordinate, measured from dragonfly
+  i's position before its move);
 - weights: ``w`` from ``w_start`` to ``w_end`` linearly, ``s = a = c = e =
   max(0.1 - 0.2 t / T, 0)`` (divided by t after 3T/4), ``f = 2 r`` (one draw
   per iteration);
@@ -24,7 +31,7 @@ Section 3 (Eqs. 3.1-3.10) and Section 3.3 (MODA), and Mirjalili's MODA.m
 - food = archive member by roulette on 1 / crowding count, enemy by roulette on
   the count (most crowded), one of each per iteration
   (:meth:`CrowdingArchive.mirjalili`: radius (max - min) / 20);
-- positions clipped to the bounds.
+- each moved position clipped to the bounds (the last operation of a dragonfly's turn).
 
 Defaults (EOSMA paper, Yin et al. 2022, Table 4): inertia weight w from 0.9 to
 0.7 (the row printed "0.9-0.7"; MODA.m decreases it from 0.9 to 0.2); N =
@@ -35,21 +42,25 @@ Deviations and readings:
   coordinate's range for all).
 - Steps start uniform in ``[lb, ub]`` (MODA.m's ``initialization``).
 - MODA.m's wrap-around of out-of-bound coordinates before the move never
-  fires (positions are clipped at the end of every iteration) and is omitted.
-- Neighbour distances are computed from the positions at the start of the
-  iteration for everyone at once (MODA.m moves dragonflies one by one, so later
-  ones see some already moved neighbours).
-- Random streams differ from MATLAB's; only the distributions match.
+  fires (every position is clipped at the end of its move, and initial points lie
+  within the bounds) and is omitted.
+- Random numbers are drawn per iteration before the moves, on the algorithm's
+  Generator: the three uniforms of the exploring step (3, N, d), then a Levy step
+  (N, d) for every dragonfly, whichever branch each takes (MODA.m draws only those
+  it uses; drawing them all keeps the compiled loop free of random draws and the
+  Levy step in one implementation, :func:`~moik.algorithms.mechanics.mantegna_levy`).
+  Random streams differ from MATLAB's; only the distributions match.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from moik._jit import jit, kernel_array
 from moik._validate import interval
 from moik.algorithms.archive import ArchiveBase, CrowdingArchive
 from moik.algorithms.archive.base import roulette
-from moik.algorithms.mechanics import clip_to_bounds, mantegna_levy
+from moik.algorithms.mechanics import mantegna_levy
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step
 
 
@@ -65,45 +76,90 @@ def swarm_weights(t: int, T: int, w_start: float, w_end: float) -> tuple[float, 
     return w, (my_c if t < 3 * T / 4 else my_c / t)
 
 
-def dragonfly_step(X, dX, food, enemy, r, w: float, k: float, f: float, vmax, *,
-                   rng: np.random.Generator):
-    """Eqs. 3.1-3.8 for every dragonfly at once.
+@jit
+def dragonflies_in_turn(X, dX, food, enemy, r, w: float, k: float, f: float, vmax, xl, xu,
+                        U, L):
+    """Eqs. 3.1-3.8 for dragonfly 0, 1, ..., N - 1 in turn, in place (MODA.m's loop).
+
+    Dragonfly i sees the positions and steps of the dragonflies before it as already
+    moved (and clipped) in this iteration, those after it as they were.
 
     Args:
-        X: Positions (N, d).
-        dX: Steps (N, d).
-        food: Food source (d,).
-        enemy: Enemy (d,).
+        X: Positions (N, d), overwritten with the new (clipped) positions.
+        dX: Steps (N, d), overwritten with the new steps.
+        food: Food source (d,). enemy: Enemy (d,).
         r: Neighbourhood radius per coordinate (d,).
-        w: Inertia weight.
-        k: Weight of separation, alignment, cohesion and enemy.
-        f: Food weight.
-        vmax: Step clamp per coordinate (d,).
-        rng: Random generator.
-
-    Returns:
-        New positions (not clipped) and steps, each (N, d).
+        w: Inertia weight. k: Weight of separation, alignment, cohesion and enemy.
+        f: Food weight. vmax: Step clamp per coordinate (d,). xl, xu: Bounds (d,).
+        U: Uniform numbers (3, N, d): those of A, C and S of dragonfly i's exploring step.
+        L: Levy steps (N, d) (already scaled by 0.01) of dragonfly i's lone flight.
     """
     n, d = X.shape
-    diff = X[None, :, :] - X[:, None, :]  # diff[i, j] = X_j - X_i
-    nb = np.all((np.abs(diff) <= r) & (diff != 0), axis=2)
-    count = nb.sum(axis=1)[:, None]
-    many = count > 1
-    safe = np.maximum(count, 1)
-    S = np.where(many, -(nb[:, :, None] * diff).sum(axis=1), 0.0)  # Eq. 3.1
-    A = np.where(many, (nb @ dX) / safe, dX)  # Eq. 3.2
-    C = np.where(many, (nb @ X) / safe - X, 0.0)  # Eq. 3.3
-    near_food = np.all(np.abs(food - X) <= r, axis=1)[:, None]
-    F = np.where(near_food, food - X, 0.0)  # Eq. 3.4
-    E = np.where(np.all(np.abs(enemy - X) <= r, axis=1)[:, None], enemy + X, 0.0)  # Eq. 3.5
-    swarm = k * S + k * A + k * C + f * F + k * E + w * dX  # Eq. 3.6
-    explore = w * dX + rng.random((n, d)) * A + rng.random((n, d)) * C + rng.random((n, d)) * S
-    new_dX = np.clip(np.where(near_food, swarm, explore), -vmax, vmax)
-    lone = ~near_food[:, 0] & ~many[:, 0]
-    X_new = X + new_dX  # Eq. 3.7
-    X_new[lone] = X[lone] + levy((int(lone.sum()), d), rng=rng) * X[lone]  # Eq. 3.8
-    new_dX[lone] = 0.0
-    return X_new, new_dX
+    S, A, C = np.empty(d), np.empty(d), np.empty(d)
+    for i in range(n):
+        count = 0
+        S[:] = 0.0
+        A[:] = 0.0
+        C[:] = 0.0
+        for j in range(n):  # neighbours: within r and distinct in every coordinate
+            near = True
+            for m in range(d):
+                dist = abs(X[i, m] - X[j, m])
+                if dist > r[m] or dist == 0.0:
+                    near = False
+                    break
+            if near:
+                count += 1
+                for m in range(d):
+                    S[m] += X[j, m] - X[i, m]
+                    A[m] += dX[j, m]
+                    C[m] += X[j, m]
+        many = count > 1
+        near_food, near_enemy = True, True
+        for m in range(d):
+            near_food = near_food and abs(X[i, m] - food[m]) <= r[m]
+            near_enemy = near_enemy and abs(X[i, m] - enemy[m]) <= r[m]
+        for m in range(d):
+            if many:
+                S[m] = -S[m]  # Eq. 3.1
+                A[m] = A[m] / count  # Eq. 3.2
+                C[m] = C[m] / count - X[i, m]  # Eq. 3.3
+            else:
+                S[m], A[m], C[m] = 0.0, dX[i, m], 0.0
+        for m in range(d):
+            if near_food:  # Eq. 3.6 with F (Eq. 3.4) and E (Eq. 3.5)
+                E = enemy[m] + X[i, m] if near_enemy else 0.0
+                step = (k * S[m] + k * A[m] + k * C[m] + f * (food[m] - X[i, m]) + k * E
+                        + w * dX[i, m])
+            elif many:
+                step = w * dX[i, m] + U[0, i, m] * A[m] + U[1, i, m] * C[m] + U[2, i, m] * S[m]
+            else:  # Eq. 3.8: Levy flight, the step is reset
+                X[i, m] = min(max(X[i, m] + L[i, m] * X[i, m], xl[m]), xu[m])
+                dX[i, m] = 0.0
+                continue
+            step = min(max(step, -vmax[m]), vmax[m])
+            dX[i, m] = step
+            X[i, m] = min(max(X[i, m] + step, xl[m]), xu[m])  # Eq. 3.7, clipped
+
+
+def dragonfly_step(X, dX, food, enemy, r, w: float, k: float, f: float, vmax, xl, xu, *,
+                   rng: np.random.Generator):
+    """One MODA iteration: draws its random numbers, then :func:`dragonflies_in_turn`.
+
+    Draws the uniforms of the exploring steps (3, N, d) and then the Levy steps (N, d)
+    for every dragonfly, whichever branch it takes.
+
+    Returns:
+        New positions (clipped to ``[xl, xu]``) and steps, each (N, d); the inputs are
+        not modified.
+    """
+    U = rng.random((3, *np.shape(X)))
+    L = levy(np.shape(X), rng=rng)
+    X_new, dX_new = np.array(X, dtype=float), np.array(dX, dtype=float)
+    dragonflies_in_turn(X_new, dX_new, kernel_array(food), kernel_array(enemy), kernel_array(r),
+                        float(w), float(k), float(f), kernel_array(vmax), kernel_array(xl),
+                        kernel_array(xu), U, L)
+    return X_new, dX_new
 
 
 class MODA(MOArrayAlgorithm):
@@ -148,7 +204,6 @@ class MODA(MOArrayAlgorithm):
         self.food = A.X[A.leaders(1, rng=rng)[0]]
         self.enemy = A.X[roulette(A.counts, 1, rng)[0]]  # the most crowded are likelier
         X, self.dX = dragonfly_step(self.X, self.dX, self.food, self.enemy, r, w, k, f,
-                                    self.vmax, rng=rng)
-        X = clip_to_bounds(X, self.xl, self.xu)
+                                    self.vmax, self.xl, self.xu, rng=rng)
         F, CV = yield X
         self.X, self.F, self.CV = X, F, CV

@@ -11,7 +11,8 @@ objective by the feasible population's range before the Tchebycheff decompositio
 (Zhang & Li 2007 discuss such a normalization for disparately scaled objectives; it is
 not in pymoo's MOEA/D and not an option of moik's). Budget 25,000 evaluations,
 population 100; the share of reported members that are feasible when re-evaluated;
-HV with 1.1 x NSGA-II's nadir, as ``benchmarks/moo_quality.py``'s constrained section.
+HV of the feasible ones with the reference point of the ``moo-constrained`` experiment
+(the analytic front's nadir + 0.1 x its magnitude), as a share of NSGA-II's.
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from pymoo.problems import get_problem
 
 from moik.algorithms import get_algorithm
 from moik.algorithms.moo.moead import MOEAD
+from moik.experiments.kinds.moo_fronts import analytic_front, hv_reference
 from moik.metrics import hypervolume
 
 
@@ -99,7 +101,7 @@ def main() -> None:
     for name in args.problems:
         runs = {v: [feasible_front(name, make, s, args.budget) for s in range(args.seeds)]
                 for v, make in VARIANTS.items()}
-        ref = 1.1 * np.max([F.max(axis=0) for F, _ in runs["nsga2"] if len(F)], axis=0)
+        ref = hv_reference(analytic_front(get_problem(name), name))
         base = np.mean([hypervolume(F, ref) for F, _ in runs["nsga2"]])
         for v, rs in runs.items():
             hv = np.mean([hypervolume(F, ref) for F, _ in rs])

@@ -38,7 +38,7 @@ from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 import numpy as np
-from moo_quality_report import SECTIONS_DOC, write_reports
+from moo_quality_report import CODE_READINGS, SECTIONS_DOC, port_of, write_reports
 from moo_reference import REFERENCES
 from pymoo.optimize import minimize
 from pymoo.problems import get_problem
@@ -58,7 +58,9 @@ REFERENCE_CASES = [("moeosma", "zdt2"), ("moeosma", "zdt6"), ("mogwo", "dtlz2"),
                    ("mogwo", "zdt2"), ("moalo", "dtlz2"), ("mssa", "dtlz2"), ("mssa", "zdt1"),
                    ("moda", "zdt1"), ("moda", "dtlz2"), ("momvo", "dtlz2"), ("momvo", "zdt1"),
                    ("moalo", "osy"), ("moalo", "tnk"), ("moda", "osy"), ("moda", "tnk"),
-                   ("mssa", "osy"), ("momvo", "osy")]
+                   ("mssa", "osy"), ("momvo", "osy"), ("moda-w-end-0.2", "osy"),
+                   ("moda-w-end-0.2", "tnk")]
+
 SMALL = {"mssa": 200, "moalo": 100, "moda": 100, "momvo": 100, "mogwo": 100, "mo-csa": 100,
          "nsga2": 100}
 TABLE8_POSES = {"P1": (-0.25, 1.00, 0.50), "P2": (0.50, -0.25, 0.75)}
@@ -76,6 +78,9 @@ def problem_and_front(name: str, n_var: int | None = None):
 def build(name: str, pop_size: int = 100):
     if name == OPTION:
         return MOEOSMA(pop_size=pop_size, diversity="nsga2-gaussian")
+    if name in CODE_READINGS:
+        base, options = CODE_READINGS[name]
+        return get_algorithm(base, pop_size=pop_size, **options)
     return get_algorithm(name, pop_size=pop_size)
 
 
@@ -118,8 +123,9 @@ def run_task(task: tuple) -> dict:
 def tasks(section: str, quick: bool) -> list[tuple]:
     if section == "reference":
         budget, k = (2500, 2) if quick else (25_000, 5)
-        cases = [(section, a, p, budget, s, {}) for name, p in REFERENCE_CASES
-                 for a in (name, f"port:{name}") for s in range(k)]
+        pairs = dict.fromkeys((a, p) for name, p in REFERENCE_CASES
+                              for a in (name, port_of(name)))
+        cases = [(section, a, p, budget, s, {}) for a, p in pairs for s in range(k)]
         return cases + [(section, "random", p, budget, s, {})
                         for p in dict.fromkeys(p for _, p in REFERENCE_CASES) for s in range(k)]
     if section == "small":

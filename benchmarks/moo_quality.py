@@ -58,8 +58,8 @@ REFERENCE_CASES = [("moeosma", "zdt2"), ("moeosma", "zdt6"), ("mogwo", "dtlz2"),
                    ("mogwo", "zdt2"), ("moalo", "dtlz2"), ("mssa", "dtlz2"), ("mssa", "zdt1"),
                    ("moda", "zdt1"), ("moda", "dtlz2"), ("momvo", "dtlz2"), ("momvo", "zdt1"),
                    ("moalo", "osy"), ("moalo", "tnk"), ("moda", "osy"), ("moda", "tnk"),
-                   ("mssa", "osy"), ("momvo", "osy"), ("moda-w-end-0.2", "osy"),
-                   ("moda-w-end-0.2", "tnk")]
+                   ("mssa", "osy"), ("momvo", "osy"), ("mogwo", "osy"),
+                   ("moda-w-end-0.2", "osy"), ("moda-w-end-0.2", "tnk")]
 
 SMALL = {"mssa": 200, "moalo": 100, "moda": 100, "momvo": 100, "mogwo": 100, "mo-csa": 100,
          "nsga2": 100}

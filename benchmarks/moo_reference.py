@@ -30,6 +30,12 @@ G around the loop), and in github.com/Zionist1923/MOMVO_Based_MMGEMS, ``MOMVO.m`
 (commit bda128e7, a re-headed copy without constraints); their main loops agree line
 for line.
 
+Constrained problems: the codes handle none. The MOGWO port and the ports on Mirjalili's
+shared archive (MSSA, MOALO, MODA, MOMVO) then use constraint-domination in their archive
+updates, the rule of moik's archives (only the feasible rows compete once one is
+feasible; before that only those of the smallest total violation); the search itself
+is the code's. The MOEOSMA port is for unconstrained problems only.
+
 Every function takes a pymoo problem, the population size, the number of iterations
 and a numpy Generator and returns ``(archive_X, archive_F, n_eval)``.
 """
@@ -98,6 +104,17 @@ def _nondominated_fast(F):
     leq = np.all(F[:, None, :] <= F[None, :, :], axis=2)  # leq[j, i]: F_j <= F_i
     lt = np.any(F[:, None, :] < F[None, :, :], axis=2)
     return ~np.any(leq & lt, axis=0)
+
+
+def _constrained_nondominated(F, CV):
+    """Constraint-domination first (not in the codes; the rule of moik's archives): the
+    non-dominated rows among the feasible ones, or among those of the smallest violation."""
+    best = CV <= 0.0
+    if not best.any():
+        best = CV.min() == CV
+    keep = np.zeros(len(F), dtype=bool)
+    keep[np.flatnonzero(best)[_nondominated_fast(F[best])]] = True
+    return keep
 
 
 def mirjalili_ranks(AF, divisor=20.0):
@@ -338,10 +355,10 @@ def mogwo_reference(problem, N, max_iter, rng, capacity=100, n_grid=10, alpha=0.
     lb, ub = problem.xl.astype(float), problem.xu.astype(float)
     dim = problem.n_var
     X = lb + rng.random((N, dim)) * (ub - lb)
-    F = _evaluate(problem, X)
+    F, CV = _evaluate_cv(problem, X)
     n_eval = N
-    keep = _nondominated_fast(F)
-    AX, AF = X[keep], F[keep]
+    keep = _constrained_nondominated(F, CV)
+    AX, AF, ACV = X[keep], F[keep], CV[keep]
     grid = _hypercubes(AF, n_grid, alpha)
     cells = _grid_index(AF, grid)
     for it in range(1, max_iter + 1):
@@ -364,17 +381,19 @@ def mogwo_reference(problem, N, max_iter, rng, capacity=100, n_grid=10, alpha=0.
                 A = 2 * a * (rng.random(dim) if k == 0 else rng.random()) - a
                 moves.append(AX[j] - A * np.abs(D))
             X[i] = np.clip(sum(moves) / 3, lb, ub)  # Eq. 3.11
-        F = _evaluate(problem, X)
+        F, CV = _evaluate_cv(problem, X)
         n_eval += N
-        nd = _nondominated_fast(F)
+        nd = _constrained_nondominated(F, CV)
         TX, TF = np.vstack([AX, X[nd]]), np.vstack([AF, F[nd]])
-        keep = _nondominated_fast(TF)  # duplicates stay (they do not dominate each other)
-        AX, AF = TX[keep], TF[keep]
+        TCV = np.concatenate([ACV, CV[nd]])
+        keep = _constrained_nondominated(TF, TCV)  # duplicates stay (no mutual dominance)
+        AX, AF, ACV = TX[keep], TF[keep], TCV[keep]
         cells = _grid_index(AF, grid)  # the grid of the last truncation
         if len(AX) > capacity:
             for _ in range(len(AX) - capacity):
                 j = _select_by_cell(cells, rng, gamma)
                 AX, AF, cells = np.delete(AX, j, 0), np.delete(AF, j, 0), np.delete(cells, j)
+                ACV = np.delete(ACV, j)
             grid = _hypercubes(AF, n_grid, alpha)  # the indices stay those of the old grid
     return AX, AF, n_eval
 

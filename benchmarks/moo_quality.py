@@ -59,7 +59,8 @@ REFERENCE_CASES = [("moeosma", "zdt2"), ("moeosma", "zdt6"), ("mogwo", "dtlz2"),
                    ("moda", "zdt1"), ("moda", "dtlz2"), ("momvo", "dtlz2"), ("momvo", "zdt1"),
                    ("moalo", "osy"), ("moalo", "tnk"), ("moda", "osy"), ("moda", "tnk"),
                    ("mssa", "osy"), ("momvo", "osy"), ("mogwo", "osy"),
-                   ("moda-w-end-0.2", "osy"), ("moda-w-end-0.2", "tnk")]
+                   ("moda-w-end-0.2", "osy"), ("moda-w-end-0.2", "tnk"), ("mo-csa", "zdt1"),
+                   ("mo-csa", "zdt3")]
 
 SMALL = {"mssa": 200, "moalo": 100, "moda": 100, "momvo": 100, "mogwo": 100, "mo-csa": 100,
          "nsga2": 100}
@@ -107,9 +108,12 @@ def run_task(task: tuple) -> dict:
     if alg == "random":
         X, F = random_search(problem, budget, np.random.default_rng(seed))
     elif alg.startswith("port:"):
-        name = alg[5:]
-        N, per = 100, (200 if name == "moeosma" else 100)
-        T = (budget - N) // per if name in ("moeosma", "mogwo") else budget // N
+        name, N, M = alg[5:], 100, problem.n_obj
+        # iterations of the budget: (initial evaluations, per iteration) where the code
+        # evaluates before its loop; the Mirjalili codes evaluate N at the top of each
+        init, per = {"moeosma": (N, 2 * N), "mogwo": (N, N),
+                     "mo-csa": (M * N, M * N)}.get(name, (0, N))
+        T = (budget - init) // per
         with np.errstate(all="ignore"):
             X, F, _ = REFERENCES[name](problem, N, T, np.random.default_rng(seed))
     else:

@@ -18,6 +18,8 @@ others seeing the result. Ports (files as published):
 - ``mssa_reference``: Mirjalili's MSSA 1.0 (``MSSA.m``);
 - ``moda_reference``: Mirjalili's MODA 1.0 (``MODA.m``, ``Levy.m``);
 - ``momvo_reference``: Mirjalili's MOMVO 1.0 (``MOMVO.m``);
+- ``mo_csa_reference``: Askarzadeh's ``CSA.m``, one flock per objective (the MO-m-PSO
+  paper's construction; it publishes no code), on the EOSMA authors' archive files;
   the last four with Mirjalili's shared archive files (``UpdateArchive.m``,
   ``RankingProcess.m``, ``HandleFullArchive.m``, ``RouletteWheelSelection.m``).
 
@@ -495,6 +497,47 @@ def moeosma_reference(problem, N, max_iter, rng, capacity=None, z=0.6, GP=0.5, m
     return AX, AF, n_eval
 
 
+# ---- CSA.m per objective (MO-CSA, the MO-m-PSO paper's construction) -------------------
+def mo_csa_reference(problem, N, max_iter, rng, capacity=None, AP=0.1, fl=2.0):
+    """Askarzadeh's CSA.m (crow search, Computers & Structures 2016, the code published with
+    the paper), one flock per objective, every evaluated point inside the box offered to a
+    shared archive: the construction of Rokbani et al. 2022 (Section 2.2, Algorithm 2),
+    which publish no code. The archive is the EOSMA authors' (``UpdateArchive.m``,
+    ``RankingProcess.m`` with radius (max - min) / capacity, ``HandleFullArchive.m``), the
+    one moik's MO-CSA uses. Unconstrained problems only."""
+    cap = capacity or N
+    lb, ub = problem.xl.astype(float), problem.xu.astype(float)
+    dim, M = problem.n_var, problem.n_obj
+    x = lb + rng.random((M, N, dim)) * (ub - lb)  # init.m, one flock per objective
+    F = _evaluate(problem, x.reshape(-1, dim)).reshape(M, N, M)
+    n_eval = M * N
+    mem, fit_mem = x.copy(), np.array([F[k, :, k] for k in range(M)])
+    AX, AF = _eosma_update_archive(np.zeros((0, dim)), np.zeros((0, M)), x.reshape(-1, dim),
+                                   F.reshape(-1, M))
+    for _ in range(max_iter):
+        xnew = np.empty_like(x)
+        for k in range(M):
+            num = rng.integers(0, N, N)  # ceil(n*rand(1,n)): a crow may follow itself
+            for i in range(N):
+                if rng.random() > AP:  # state 1
+                    xnew[k, i] = x[k, i] + fl * rng.random() * (mem[k, num[i]] - x[k, i])
+                else:  # state 2: a random position
+                    xnew[k, i] = lb - (lb - ub) * rng.random(dim)
+        Fn = _evaluate(problem, xnew.reshape(-1, dim)).reshape(M, N, M)  # all evaluated
+        n_eval += M * N
+        inside = np.all((xnew >= lb) & (xnew <= ub), axis=2)  # MATLAB ``if`` on a vector
+        for k in range(M):
+            for i in np.flatnonzero(inside[k]):
+                x[k, i] = xnew[k, i]
+                if Fn[k, i, k] < fit_mem[k, i]:
+                    mem[k, i], fit_mem[k, i] = xnew[k, i], Fn[k, i, k]
+        AX, AF = _eosma_update_archive(AX, AF, xnew[inside], Fn[inside])
+        if len(AF) > cap:
+            AX, AF, _ = mirjalili_handle_full(AX, AF, np.zeros(len(AF)), _eosma_ranks(AF, cap),
+                                              cap, rng)
+    return AX, AF, n_eval
+
+
 REFERENCES = {
     "moeosma": moeosma_reference,
     "mogwo": mogwo_reference,
@@ -502,5 +545,6 @@ REFERENCES = {
     "mssa": mssa_reference,
     "moda": moda_reference,
     "momvo": momvo_reference,
+    "mo-csa": mo_csa_reference,
 }
 """moik registry name -> port of its reference code."""

@@ -28,11 +28,11 @@ archive = 100 (Table 8: T = 1000). Evaluations per iteration: N.
 Deviations and readings:
 - Antlion: the paper selects it from the archive by roulette wheel on the
   crowding (``antlion="roulette"``, the default); MALO.m uses the first archive
-  member for every ant (``antlion="first"``). Measured (25,000 evaluations, 5 seeds,
-  ``benchmarks/moo_quality.py``): on DTLZ2 the paper's rule reaches IGD 0.56 and
-  MALO.m's rule 0.29 (the line-by-line port of MALO.m: 0.27), on ZDT1 (30 variables)
-  the paper's rule is better (HV 0.61 against 0.55); both stay behind uniform random
-  sampling on DTLZ2 (IGD 0.16), a weakness of the method.
+  member for every ant (``antlion="first"``). Both rules are measured side by side in
+  the ``moo-suite`` experiment (rows ``moalo`` and ``moalo-first``; the line-by-line port
+  of MALO.m in ``benchmarks/moo_quality.py``'s reference table): MALO.m's rule is the
+  better one on DTLZ2, the paper's on ZDT1 with 30 variables, and both stay behind
+  uniform random sampling on DTLZ2, as the port does: a weakness of the method.
 - ``I = 1 + 10^w t / T`` as in MALO.m (ALO's paper prints ``I = 10^w t / T``).
 - Walks are generated in full (T steps per coordinate, two per ant) as in the
   code, since the min and max of the whole walk set the scale: O(N d T) work

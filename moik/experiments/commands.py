@@ -88,8 +88,8 @@ def _docs(args: argparse.Namespace) -> int:
     for page in update.pages:
         print(f"written {page}")
     replaced = ", ".join(f"{name} {kind}" for name, kind in update.replaced) or "none"
-    print(f"{Path(args.docs) / 'reproducing.md'}: blocks regenerated: {replaced}; kept as they "
-          f"are: {len(update.kept)}")
+    pages = ", ".join(str(p) for p in update.block_pages) or str(Path(args.docs) / "reproducing.md")
+    print(f"{pages}: blocks regenerated: {replaced}; kept as they are: {len(update.kept)}")
     if update.warnings:
         print(f"{len(update.warnings)} warning(s) (see stderr)")
     return 1 if update.warnings else 0

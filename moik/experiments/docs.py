@@ -135,14 +135,16 @@ class DocsUpdate:
 
     Attributes:
         pages: The ``DOCS/results/*.md`` files written.
-        replaced: ``(experiment, kind)`` of every block of ``reproducing.md`` regenerated.
+        replaced: ``(experiment, kind)`` of every block of the summary pages regenerated.
         kept: Experiments whose blocks were kept as they are (not among the results).
+        block_pages: The summary pages (:data:`SUMMARY_PAGES`) that hold blocks.
         warnings: Folders left out, damaged trials, blocks without a stamp, unknown kinds.
     """
 
     pages: list[Path] = field(default_factory=list)
     replaced: list[tuple[str, str]] = field(default_factory=list)
     kept: list[str] = field(default_factory=list)
+    block_pages: list[Path] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
 
 
@@ -257,6 +259,8 @@ def write_docs(folders, docs: str | Path, *, figures: bool = True) -> DocsUpdate
         if page.is_file():
             old = page.read_text()
             new = replace_blocks(old, summaries, update, where=page_file)
+            if BLOCK.search(old):
+                update.block_pages.append(page)
             if new != old:
                 atomic_write_bytes(page, new.encode())
         elif page_file == SUMMARY_PAGES[0]:

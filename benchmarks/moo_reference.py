@@ -39,7 +39,10 @@ feasible; before that only those of the smallest total violation); the search it
 is the code's. The MOEOSMA port is for unconstrained problems only.
 
 Every function takes a pymoo problem, the population size, the number of iterations
-and a numpy Generator and returns ``(archive_X, archive_F, n_eval)``.
+and a numpy Generator and returns ``(archive_X, archive_F, n_eval)``. They live by
+family in ``ports_mirjalili.py`` (Mirjalili's shared archive), ``ports_mogwo.py``,
+``ports_eosma.py`` (the EOSMA authors' archive) and ``ports_common.py``; this module
+lists them (:data:`REFERENCES`).
 """
 
 

@@ -67,9 +67,10 @@ Eq. 18 is replaced by NSGA-II's elitist survival of the memory and the new batch
 spread over the front), and every Eq. 16 mutant then gets MOMPA's Gaussian search
 (one random coordinate moves by ``(ub - lb) N(0, 1)``,
 :func:`moik.algorithms.moo.mompa.gaussian_search`), the variation at the scale of
-the box the paper's operators lack. Measured (10 seeds): HV 96-98 % of NSGA-II's on
-ZDT1/2/3/6; Table 8 P1 HV 5.060 (paper 5.076, the paper's method here 5.038), P2 the
-full box as the paper's method (docs/results/moo-quality.md).
+the box the paper's operators lack. Measured: the ``moeosma-nsga2-gaussian`` rows of
+the ``moo-suite`` experiment (docs/results/moo-suite.md: 95 % of NSGA-II's HV or more
+on ZDT1/2/3/6) and Table 8 in docs/results/moo-quality.md (P1: about the paper's
+method's HV, with a front reaching further towards both ends; P2: the full box).
 """
 
 from __future__ import annotations

@@ -58,6 +58,7 @@ from pymoo.util.nds.non_dominated_sorting import NonDominatedSorting
 
 from moik import _validate
 from moik.algorithms import get_algorithm
+from moik.algorithms.mechanics import constraint_violation
 from moik.exceptions import ConfigError
 from moik.experiments.checks import check_keys, integer
 from moik.experiments.kinds.moo_fronts import (
@@ -107,16 +108,15 @@ def front_scores(F: np.ndarray, front: np.ndarray) -> tuple[float, float]:
 
 
 def violation(problem: Problem, X: np.ndarray) -> np.ndarray:
-    """Total constraint violation of the rows of ``X`` (positive G plus abs(H)), 0 if feasible."""
+    """Total constraint violation of the rows of ``X``, 0 if feasible: pymoo's default
+    (:func:`moik.algorithms.mechanics.constraint_violation`, the algorithms' own rule)."""
     X = np.asarray(X, dtype=float).reshape(-1, problem.n_var)
-    cv = np.zeros(len(X))
     if problem.n_ieq_constr + problem.n_eq_constr == 0 or not len(X):
-        return cv
+        return np.zeros(len(X))
     G, H = problem.evaluate(X, return_values_of=["G", "H"])
-    for part in (np.maximum(G, 0.0), np.abs(H)):
-        if part is not None and np.size(part):
-            cv += np.reshape(part, (len(X), -1)).sum(axis=1)
-    return cv
+    cv = constraint_violation(None if G is None else np.reshape(G, (len(X), -1)),
+                              None if H is None else np.reshape(H, (len(X), -1)))
+    return np.broadcast_to(cv, (len(X),)).astype(float)
 
 
 def random_search(problem: Problem, budget: int, rng: np.random.Generator

@@ -14,7 +14,7 @@ import numpy as np
 from moik._jit import jit, kernel_array
 from moik._validate import positive
 from moik.exceptions import ParameterError
-from moik.kinematics.criteria import nearest_copies_into
+from moik.kinematics.criteria_kernels import nearest_copies_into
 from moik.kinematics.rotation_metrics import geodesic_angle
 from moik.problems.targets import Target
 from moik.robots.chain import Robot, fk_reference

@@ -5,13 +5,8 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError, UnknownNameError
-from moik.kinematics.criteria import (
-    CRITERIA,
-    Criterion,
-    build_criteria,
-    build_criterion,
-    determinant,
-)
+from moik.kinematics.criteria import CRITERIA, Criterion, build_criteria, build_criterion
+from moik.kinematics.criteria_kernels import determinant
 from moik.robots import Robot, fk_reference, get_robot
 
 

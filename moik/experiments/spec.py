@@ -19,7 +19,7 @@ import numpy as np
 class TrialTarget(Protocol):
     """What a trial's target is to the runner: a display name and a JSON-ready form.
 
-    IK experiments have :class:`~moik.experiments.kinds.ik.NamedTarget`,
+    IK experiments have :class:`~moik.experiments.kinds.ik_targets.NamedTarget`,
     benchmark-function experiments
     :class:`~moik.experiments.kinds.functions.BenchmarkTarget`.
     """

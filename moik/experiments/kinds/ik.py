@@ -28,6 +28,7 @@ uniformly on SO(3), independent of the position (``"independent"``, from the
 generator seeded ``[seed, 1]``; MO-m-PSO Section 4.3 reads "each point is
 associated with a random orientation").
 
+The targets are parsed and built in :mod:`moik.experiments.kinds.ik_targets`.
 Validation builds what a run uses: the robots, every target (a
 :class:`~moik.problems.Target`, validated once and carried to the trials as it
 is) and the pymoo problem at every target; a :class:`~moik.exceptions.MoikError`
@@ -44,73 +45,29 @@ from __future__ import annotations
 
 import dataclasses
 import time
-from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
 from pymoo.optimize import minimize
-from scipy.spatial.transform import Rotation
 
 from moik.algorithms import get_algorithm
 from moik.exceptions import ConfigError, MoikError
-from moik.experiments.checks import check_keys, flag, integer, number, numbers
+from moik.experiments.checks import check_keys, number, numbers
 from moik.experiments.convergence import algorithm_factory, convergence_curve
+from moik.experiments.kinds.ik_targets import NamedTarget, build_targets
 from moik.experiments.protocol import solve_until_success
 from moik.experiments.spec import TrialSpec
 from moik.kinematics.orientation import orientation_metric
 from moik.metrics import closest_to_utopia, hypervolume
-from moik.problems import BiObjectiveIK, PoseIK, PositionIK, Target
-from moik.problems.targets import circle_path, random_reachable_targets
+from moik.problems import BiObjectiveIK, PoseIK, PositionIK
 from moik.robots import Robot, get_robot
 
 PROBLEM_KINDS = ("position", "pose", "bi-objective")
 MULTI_OBJECTIVE = ("bi-objective",)
 """The problem kinds of this module whose algorithms are multi-objective."""
-TARGET_KINDS = ("random", "fixed", "circle")
 _PROBLEM_KEYS = {"kind", "orientation", "weights", "displacement_weight", "q_start_deg",
                  "locked_joints_deg", "joint_limits_deg"}
-RANDOM_ORIENTATIONS = ("reachable", "independent")
-_TARGET_KEYS = {
-    "random": {"kind", "n", "seed", "with_orientation", "orientation"},
-    "fixed": {"kind", "points"},
-    "circle": {"kind", "center", "radius", "n_points", "euler_deg", "convention"},
-}
-_POINT_KEYS = {"name", "position", "fk_q_deg", "euler_deg", "convention", "hv_ref_point",
-               "robot"}
-
-
-@dataclass(frozen=True)
-class NamedTarget:
-    """A target of an IK experiment: display name, pose, HV reference point, own robot.
-
-    ``target`` is the validated :class:`~moik.problems.Target`; ``robot`` names the
-    arm of this target when it is not the experiment's.
-    """
-
-    name: str
-    target: Target
-    hv_ref_point: list[float] | None = None
-    robot: str | None = None
-
-    @property
-    def position(self) -> np.ndarray:
-        """``(3,)`` position in the robot's unit."""
-        return self.target.position
-
-    @property
-    def rotation(self) -> np.ndarray | None:
-        """``(3, 3)`` rotation, or None for a position target."""
-        return self.target.rotation
-
-    def as_dict(self) -> dict:
-        """JSON-ready form (floats round-trip exactly through ``json``)."""
-        rot = self.target.rotation
-        d = {"name": self.name, "position": self.target.position.tolist(),
-             "rotation": None if rot is None else rot.tolist(), "hv_ref_point": self.hv_ref_point}
-        return d if self.robot is None else {**d, "robot": self.robot}
-
-
 def experiment_robot(name: str, problem: Mapping) -> Robot:
     """The catalog robot ``name`` with the problem's ``locked_joints_deg`` applied."""
     return _locked(get_robot(name), problem)
@@ -175,7 +132,7 @@ def check_config(where: str, cfg: Mapping) -> tuple[dict, tuple[NamedTarget, ...
     robot = robot_of(cfg["robot"], f"{where}: robot")
     if "q_start_deg" in problem:
         numbers(f"{where}: problem.q_start_deg", problem["q_start_deg"], robot.dof)
-    targets = _targets(f"{where}: targets", cfg["targets"], problem, robot, robot_of)
+    targets = build_targets(f"{where}: targets", cfg["targets"], problem, robot, robot_of)
     for t in targets:
         try:
             build_problem(robots[t.robot or cfg["robot"]], problem, t)
@@ -217,82 +174,6 @@ def _check_locked_joints(where: str, p: Mapping, dof: int) -> None:
                               f"pairs, got {lim!r}")
         for i, pair in enumerate(lim):
             numbers(f"{where}.joint_limits_deg[{i}]", pair, 2)
-
-
-def _rotation(spec: Mapping) -> np.ndarray:
-    rotation = Target.from_euler([0.0, 0.0, 0.0], spec["euler_deg"],
-                                 convention=spec.get("convention", "zyx-euler"),
-                                 degrees=True).rotation
-    assert rotation is not None  # from_euler always gives one
-    return rotation
-
-
-def _targets(where: str, spec: Any, problem: Mapping, robot: Robot,
-             robot_of: Callable[[Any, str], Robot]) -> list[NamedTarget]:
-    kind = spec.get("kind") if isinstance(spec, Mapping) else None
-    if kind not in TARGET_KINDS:
-        raise ConfigError(f"{where}.kind must be one of {', '.join(TARGET_KINDS)}, got {kind!r}")
-    t = check_keys(where, spec, _TARGET_KEYS[kind], ("kind",))
-    oriented = problem["kind"] != "position"
-    try:
-        if kind == "random":
-            n = integer(f"{where}.n", t.get("n"), 1)
-            seed = integer(f"{where}.seed", t.get("seed"), 0)
-            with_orientation = flag(f"{where}.with_orientation", t.get("with_orientation", True))
-            if oriented and not with_orientation:
-                raise ConfigError(f"{where}: problem kind {problem['kind']!r} needs "
-                                  "with_orientation true")
-            reading = t.get("orientation", "reachable")
-            if reading not in RANDOM_ORIENTATIONS:
-                raise ConfigError(f"{where}.orientation must be one of "
-                                  f"{', '.join(RANDOM_ORIENTATIONS)}, got {reading!r}")
-            ts = random_reachable_targets(robot, n, seed=seed, with_orientation=with_orientation)
-            if with_orientation and reading == "independent":
-                drawn = Rotation.random(n, random_state=np.random.default_rng([seed, 1]))
-                ts = [Target(x.position, R) for x, R in zip(ts, drawn.as_matrix(), strict=True)]
-            return [NamedTarget(f"T{i + 1}", x) for i, x in enumerate(ts)]
-        if kind == "circle":
-            numbers(f"{where}.center", t.get("center"), 3)
-            number(f"{where}.radius", t.get("radius"), positive=True)
-            integer(f"{where}.n_points", t.get("n_points"), 2)
-            rot = None
-            if oriented or "euler_deg" in t:
-                numbers(f"{where}.euler_deg", t.get("euler_deg"), 3)
-                rot = _rotation(t)
-            ts = circle_path(t["center"], t["radius"], t["n_points"], rotation=rot)
-            return [NamedTarget(f"C{i + 1}", x) for i, x in enumerate(ts)]
-        points = t.get("points")
-        if not isinstance(points, list) or not points:
-            raise ConfigError(f"{where}.points must be a non-empty list")
-        return [_point(f"{where}.points[{i}]", raw, oriented, problem, robot, robot_of)
-                for i, raw in enumerate(points)]
-    except ConfigError:
-        raise
-    except MoikError as exc:
-        raise ConfigError(f"{where}: {exc}") from None
-
-
-def _point(where: str, raw: Any, oriented: bool, problem: Mapping, robot: Robot,
-           robot_of: Callable[[Any, str], Robot]) -> NamedTarget:
-    pt = check_keys(where, raw, _POINT_KEYS, ("name",))
-    if not isinstance(pt["name"], str) or not pt["name"]:
-        raise ConfigError(f"{where}.name must be a non-empty string, got {pt['name']!r}")
-    arm = robot_of(pt["robot"], f"{where}.robot") if "robot" in pt else robot
-    if ("position" in pt) == ("fk_q_deg" in pt):
-        raise ConfigError(f"{where}: give exactly one of position and fk_q_deg")
-    if "position" in pt:
-        pos, rot = np.asarray(numbers(f"{where}.position", pt["position"], 3)), None
-        if oriented and "euler_deg" not in pt:
-            raise ConfigError(f"{where}: problem kind {problem['kind']!r} needs euler_deg")
-    else:
-        T = arm.fk(np.radians(numbers(f"{where}.fk_q_deg", pt["fk_q_deg"], arm.dof)))
-        pos, rot = T[:3, 3], T[:3, :3]
-    if "euler_deg" in pt:
-        numbers(f"{where}.euler_deg", pt["euler_deg"], 3)
-        rot = _rotation(pt)
-    if "hv_ref_point" in pt:
-        numbers(f"{where}.hv_ref_point", pt["hv_ref_point"], 2)
-    return NamedTarget(pt["name"], Target(pos, rot), pt.get("hv_ref_point"), pt.get("robot"))
 
 
 def run_trial(spec: TrialSpec, record: dict, arrays: dict) -> None:

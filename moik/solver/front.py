@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from moik.algorithms.archive.base import nondominated_mask
+from moik.algorithms.archive.fronts import nondominated_mask
 from moik.problems.ik import BiObjectiveIK
 from moik.problems.targets import Target
 from moik.robots.chain import Robot

@@ -21,7 +21,7 @@ from pymoo.core.sampling import Sampling
 
 from moik._jit import jit, kernel_array
 from moik.algorithms import get_algorithm
-from moik.algorithms.archive.base import first_unique_mask, nondominated_mask
+from moik.algorithms.archive.fronts import first_unique_mask, nondominated_mask
 from moik.algorithms.registry import accepted_parameters
 from moik.problems.pareto_ik import ParetoIK
 from moik.solver.lm import STALL_RATIO, lm_start

@@ -9,13 +9,13 @@ Both keep ``X`` (m, n_var) and ``F`` (m, n_obj) arrays, merge with
 ``add(X, F, rng=rng)`` and draw leader row indices with ``leaders(k, rng=rng)``.
 """
 
-from moik.algorithms.archive.base import (
-    ArchiveBase,
+from moik.algorithms.archive.base import ArchiveBase
+from moik.algorithms.archive.crowding import CrowdingArchive, crowding_counts, crowding_radius
+from moik.algorithms.archive.fronts import (
     constrained_nondominated_mask,
     first_unique_mask,
     nondominated_mask,
 )
-from moik.algorithms.archive.crowding import CrowdingArchive, crowding_counts, crowding_radius
 from moik.algorithms.archive.grid import GridArchive, grid_bounds, grid_index
 
 __all__ = [

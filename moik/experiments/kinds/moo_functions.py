@@ -54,10 +54,10 @@ from pymoo.core.problem import Problem
 from pymoo.indicators.igd import IGD
 from pymoo.optimize import minimize
 from pymoo.problems import get_problem
-from pymoo.util.nds.non_dominated_sorting import NonDominatedSorting
 
 from moik import _validate
 from moik.algorithms import get_algorithm
+from moik.algorithms.archive import constrained_nondominated_mask
 from moik.algorithms.mechanics import constraint_violation
 from moik.exceptions import ConfigError
 from moik.experiments.checks import check_keys, integer
@@ -107,31 +107,37 @@ def front_scores(F: np.ndarray, front: np.ndarray) -> tuple[float, float]:
     return float(IGD(front).do(F)), hypervolume(F, hv_reference(front))
 
 
+def _violation(problem: Problem, G, H, n: int) -> np.ndarray:
+    """pymoo's default total violation of ``n`` rows from their ``G``, ``H`` (0 if feasible):
+    :func:`moik.algorithms.mechanics.constraint_violation`, the algorithms' own rule."""
+    if problem.n_ieq_constr + problem.n_eq_constr == 0 or not n:
+        return np.zeros(n)
+    cv = constraint_violation(None if G is None else np.reshape(G, (n, -1)),
+                              None if H is None else np.reshape(H, (n, -1)))
+    return np.broadcast_to(cv, (n,)).astype(float)
+
+
 def violation(problem: Problem, X: np.ndarray) -> np.ndarray:
-    """Total constraint violation of the rows of ``X``, 0 if feasible: pymoo's default
-    (:func:`moik.algorithms.mechanics.constraint_violation`, the algorithms' own rule)."""
+    """Total constraint violation of the rows of ``X`` (re-evaluated), 0 if feasible."""
     X = np.asarray(X, dtype=float).reshape(-1, problem.n_var)
     if problem.n_ieq_constr + problem.n_eq_constr == 0 or not len(X):
         return np.zeros(len(X))
     G, H = problem.evaluate(X, return_values_of=["G", "H"])
-    cv = constraint_violation(None if G is None else np.reshape(G, (len(X), -1)),
-                              None if H is None else np.reshape(H, (len(X), -1)))
-    return np.broadcast_to(cv, (len(X),)).astype(float)
+    return _violation(problem, G, H, len(X))
 
 
 def random_search(problem: Problem, budget: int, rng: np.random.Generator
                   ) -> tuple[np.ndarray, np.ndarray]:
     """``budget`` uniform samples of the box, non-dominated filtered: ``(X, F)``.
 
-    Constrained problems: the feasible samples compete (constraint-domination);
-    with none feasible, those of the smallest violation.
+    Constrained problems: constraint-domination, as the archives
+    (:func:`moik.algorithms.archive.constrained_nondominated_mask`): the feasible
+    samples compete; with none feasible, those of the smallest violation.
     """
     X = problem.xl + rng.random((budget, problem.n_var)) * (problem.xu - problem.xl)
-    F = np.asarray(problem.evaluate(X, return_values_of=["F"]), dtype=float)
-    cv = violation(problem, X)
-    best = cv <= 0.0 if np.any(cv <= 0.0) else cv.min() == cv
-    X, F = X[best], F[best]
-    keep = NonDominatedSorting().do(F, only_non_dominated_front=True)
+    F, G, H = problem.evaluate(X, return_values_of=["F", "G", "H"])
+    F = np.asarray(F, dtype=float)
+    keep = constrained_nondominated_mask(F, _violation(problem, G, H, len(X)))
     return X[keep], F[keep]
 
 

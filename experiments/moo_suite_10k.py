@@ -3,7 +3,7 @@
 The smaller budget of ``moo-suite`` (same problems, algorithms and analyses),
 for the goal "beats random search at 10,000 and 25,000 evaluations". Not a paper's
 table: the comparison behind the multi-objective part of
-docs/algorithms.md, on the runner (``benchmarks/moo_quality.py`` measures the
+docs/algorithms.md, on the runner (``studies/moo_quality.py`` measures the
 same suite outside it). Problems with analytic Pareto fronts only (nothing is
 downloaded): ZDT1/2/3 with 30 variables, ZDT4 and ZDT6 with 10 (their standard
 sizes, pymoo's defaults), DTLZ1 (7 variables) and DTLZ2 (12) with three

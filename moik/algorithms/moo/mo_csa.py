@@ -39,7 +39,7 @@ Readings and deviations:
   (default ``pop_size``), as for MO-m-PSO.
 
 Close to uniform random sampling on ZDT1/3 with 30 variables: a port of Askarzadeh's
-CSA.m run in the same construction gives the same picture (``benchmarks/moo_quality.py``,
+CSA.m run in the same construction gives the same picture (``studies/moo_quality.py``,
 reference table): the method's (a crow follows a random crow's memory, a tenth of the
 moves are random positions), not this implementation's.
 """

@@ -30,7 +30,7 @@ Deviations and readings:
   crowding (``antlion="roulette"``, the default); MALO.m uses the first archive
   member for every ant (``antlion="first"``). Both rules are measured side by side in
   the ``moo-suite`` experiment (rows ``moalo`` and ``moalo-first``; the line-by-line port
-  of MALO.m in ``benchmarks/moo_quality.py``'s reference table): MALO.m's rule is the
+  of MALO.m in ``studies/moo_quality.py``'s reference table): MALO.m's rule is the
   better one on DTLZ2, the paper's on ZDT1 with 30 variables, and both stay behind
   uniform random sampling on DTLZ2, as the port does: a weakness of the method.
 - ``I = 1 + 10^w t / T`` as in MALO.m (ALO's paper prints ``I = 10^w t / T``).

@@ -49,7 +49,7 @@ Deviations and readings:
   after them by violation (:func:`~moik.algorithms.mechanics.ranking_fitness`).
 
 The paper's method loses its front on some benchmark fronts (measured with
-``benchmarks/moo_quality.py``, 25,000 evaluations, population 100, 10 seeds): on ZDT2
+``studies/moo_quality.py``, 25,000 evaluations, population 100, 10 seeds): on ZDT2
 every archive member ends at f1 ~ 0 (HV 20 % of NSGA-II's, every seed), on ZDT6 the
 front is reached only in part (HV 64 %), on ZDT3 92 %. The line-by-line port of the authors'
 MOEOSMA.m collapses on ZDT2 alike (4 of 5 seeds), so it is the method, not this

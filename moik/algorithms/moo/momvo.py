@@ -8,7 +8,7 @@ and Applications 27, 495-513 (2016), DOI 10.1007/s00521-015-1870-7, Eqs.
 3.1-3.4), and Mirjalili's MOMVO.m (version 1.0; read in
 github.com/Natee-Panagant/Comparative-study-of-truss-sizing-optimisation-problems-in-MATLAB,
 ``Algorithms/MOMVO.m``, and github.com/Zionist1923/MOMVO_Based_MMGEMS, ``MOMVO.m``; its
-line-by-line port is ``momvo_reference`` in ``benchmarks/moo_reference.py``):
+line-by-line port is ``momvo_reference`` in ``reference/__init__.py``):
 
 - inflation rates: the universes are sorted on the first objective and
   normalised, ``NI = I / ||I||_2`` over the population (Eq. 3.1, MATLAB's
@@ -56,7 +56,7 @@ Deviations and readings:
   universes other than the elite move.
 - Random streams differ from MATLAB's; only the distributions match.
 
-Beside the port on the same problems and budget (``benchmarks/moo_quality.py``, section
+Beside the port on the same problems and budget (``studies/moo_quality.py``, section
 ``reference``), moik's MOMVO and MOMVO.m give the same picture, neither consistently ahead.
 """
 

@@ -1,9 +1,10 @@
-"""Port of Mirjalili's MOGWO 1.0 (``MOGWO.m`` and its grid files; see ``moo_reference.py``)."""
+"""Port of Mirjalili's MOGWO 1.0 (``MOGWO.m`` and its grid files; see ``reference/__init__.py``)."""
 
 from __future__ import annotations
 
 import numpy as np
-from ports_common import constrained_nondominated, evaluate_cv
+
+from .common import constrained_nondominated, evaluate_cv
 
 
 # ---- MOGWO.m -----------------------------------------------------------------------------

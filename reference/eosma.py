@@ -1,13 +1,14 @@
 """Ports on the EOSMA authors' archive files: MOEOSMA.m, and CSA.m per objective (MO-CSA);
-see ``moo_reference.py``."""
+see ``reference/__init__.py``."""
 
 from __future__ import annotations
 
 import math
 
 import numpy as np
-from ports_common import EPS, evaluate, roulette
-from ports_mirjalili import mirjalili_handle_full
+
+from .common import EPS, evaluate, roulette
+from .mirjalili import mirjalili_handle_full
 
 
 # ---- MOEOSMA.m ---------------------------------------------------------------------------

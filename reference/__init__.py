@@ -1,6 +1,6 @@
 """Line-by-line numpy ports of the authors' MATLAB codes, to run beside moik's implementations.
 
-Used by ``benchmarks/moo_quality.py`` (section "reference codes side by side") to tell a
+Used by ``studies/moo_quality.py`` (section "reference codes side by side") to tell a
 bug from a method's weakness: where moik's algorithm and the port of its reference
 code give the same picture on the same problem and budget, the weakness is the
 method's. Each port keeps the code's control flow, its order of operations and its
@@ -40,17 +40,17 @@ is the code's. The MOEOSMA port is for unconstrained problems only.
 
 Every function takes a pymoo problem, the population size, the number of iterations
 and a numpy Generator and returns ``(archive_X, archive_F, n_eval)``. They live by
-family in ``ports_mirjalili.py`` (Mirjalili's shared archive), ``ports_mogwo.py``,
-``ports_eosma.py`` (the EOSMA authors' archive) and ``ports_common.py``; this module
+family in ``reference/mirjalili.py`` (Mirjalili's shared archive), ``reference/mogwo.py``,
+``reference/eosma.py`` (the EOSMA authors' archive) and ``reference/common.py``; this module
 lists them (:data:`REFERENCES`).
 """
 
 
 from __future__ import annotations
 
-from ports_eosma import mo_csa_reference, moeosma_reference
-from ports_mirjalili import malo_reference, moda_reference, momvo_reference, mssa_reference
-from ports_mogwo import mogwo_reference
+from .eosma import mo_csa_reference, moeosma_reference
+from .mirjalili import malo_reference, moda_reference, momvo_reference, mssa_reference
+from .mogwo import mogwo_reference
 
 REFERENCES = {
     "moeosma": moeosma_reference,

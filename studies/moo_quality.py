@@ -1,13 +1,13 @@
 """Multi-objective quality checks beside the runner's experiments: reference codes, settings.
 
-Run: ``.venv/bin/python benchmarks/moo_quality.py [--quick] [--jobs J] [--sections ...]``
+Run: ``.venv/bin/python -m studies.moo_quality [--quick] [--jobs J] [--sections ...]``
 
 The suite itself (every algorithm on ZDT1-4/6 and DTLZ1-2 at 25,000 and 10,000
 evaluations, random search, rank-sum tests, mean ranks) and the constrained problems
 (BNH, OSY, SRN, TNK) run on the experiment runner: ``moik experiment run moo-suite``,
 ``moo-suite-10k``, ``moo-constrained`` (docs/results/moo-suite.md, ...). This script
 measures what the runner does not: moik's implementations beside line-by-line ports of
-their reference codes (``benchmarks/moo_reference.py``), the Mirjalili codes' own setting,
+their reference codes (``reference/__init__.py``), the Mirjalili codes' own setting,
 and MOEOSMA on the EOSMA paper's Table 8 poses. ``--write`` regenerates
 docs/results/moo-quality.md and the block of docs/algorithms.md between
 ``<!-- moo-quality:begin -->`` and ``<!-- moo-quality:end -->``.
@@ -38,8 +38,6 @@ from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 import numpy as np
-from moo_quality_report import CODE_READINGS, SECTIONS_DOC, port_of, write_reports
-from moo_reference import REFERENCES
 from pymoo.optimize import minimize
 from pymoo.problems import get_problem
 
@@ -50,6 +48,8 @@ from moik.metrics import EOSMA_TABLE8_REF_POINTS, hypervolume
 from moik.problems.ik import BiObjectiveIK
 from moik.problems.targets import Target
 from moik.robots import get_robot
+from reference import REFERENCES
+from studies.moo_quality_report import CODE_READINGS, SECTIONS_DOC, port_of, write_reports
 
 PROBLEMS = {"dtlz2": {"n_obj": 3}}
 """Problem options (pymoo's defaults otherwise: ZDT1-3 30 variables, DTLZ2 10)."""

@@ -1,12 +1,13 @@
 """Ports of Mirjalili's MSSA.m, MALO.m, MODA.m, MOMVO.m and their shared archive files
-(see ``moo_reference.py`` for the sources)."""
+(see ``reference/__init__.py`` for the sources)."""
 
 from __future__ import annotations
 
 import math
 
 import numpy as np
-from ports_common import evaluate_cv, nondominated_fast, roulette
+
+from .common import evaluate_cv, nondominated_fast, roulette
 
 
 # ---- Mirjalili's archive (MSSA, MOALO, MODA) ------------------------------------------

@@ -1,4 +1,4 @@
-"""Shared helpers of the reference-code ports (``moo_reference.py``): evaluation,
+"""Shared helpers of the reference-code ports (``reference/__init__.py``): evaluation,
 dominance, MATLAB's roulette wheel."""
 
 from __future__ import annotations

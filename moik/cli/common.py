@@ -1,4 +1,4 @@
-"""What several subcommands read from the command line: the robot, joint values, the target."""
+"""What several subcommands read from the command line: the robot and joint values."""
 
 from __future__ import annotations
 
@@ -8,7 +8,6 @@ from pathlib import Path
 import numpy as np
 
 from moik.exceptions import ParameterError, UnknownNameError
-from moik.problems.targets import Target
 from moik.robots import Robot, available_robots, get_robot
 from moik.robots.urdf import load_urdf
 
@@ -35,11 +34,3 @@ def joint_values(robot: Robot, values, degrees: bool, what: str) -> np.ndarray:
         raise ParameterError(f"robot {robot.name!r} needs {robot.dof} joint values, got "
                              f"{q.size}{'' if what == 'q' else f' ({what})'}")
     return np.where(robot.is_prismatic, q, np.radians(q)) if degrees else q
-
-
-def target(args: argparse.Namespace) -> Target:
-    """The target of ``--target`` and ``--euler`` (``--convention``, ``--deg``)."""
-    if args.euler is None:
-        return Target(args.target)
-    return Target.from_euler(args.target, args.euler, convention=args.convention,
-                             degrees=args.deg)

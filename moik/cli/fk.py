@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from moik.cli import output
+from moik.cli import solutions
 from moik.cli.common import joint_values, robot
 
 
@@ -14,7 +14,7 @@ def cmd_fk(args: argparse.Namespace) -> int:
     arm = robot(args)
     q = joint_values(arm, args.q, args.deg, "q")
     inside = bool(arm.within_limits(q)[0])
-    output.print_pose(arm, q, arm.fk(q), inside, args.json)
+    solutions.print_pose(arm, q, arm.fk(q), inside, args.json)
     if not inside:
         print("warning: q is outside the joint limits", file=sys.stderr)
     return 0

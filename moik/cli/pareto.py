@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from moik.cli.common import joint_values
-from moik.cli.common import target as target_of
+from moik.cli.solutions import target as target_of
 from moik.exceptions import ParameterError
 from moik.plotting.pareto import plot_pareto_ik
 from moik.problems.targets import Target

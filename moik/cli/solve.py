@@ -12,8 +12,9 @@ from pathlib import Path
 import numpy as np
 
 from moik._validate import integer
-from moik.cli import output, pareto
-from moik.cli.common import joint_values, robot, target
+from moik.cli import pareto, solutions
+from moik.cli.common import joint_values, robot
+from moik.cli.solutions import target
 from moik.exceptions import ParameterError
 from moik.kinematics.orientation import orientation_error
 from moik.problems.targets import Target
@@ -85,9 +86,9 @@ def cmd_solve(args: argparse.Namespace) -> int:
     if plots:
         _plot(arm, goal, Q, res.status, plots)
     if args.json:
-        output.print_solve_json(arm, goal, res, errors, plots)
+        solutions.print_solve_json(arm, goal, res, errors, plots)
     else:
-        output.print_solve(arm, goal, res, Q, errors, plots)
+        solutions.print_solve(arm, goal, res, Q, errors, plots)
     return 0 if res.success else 1
 
 

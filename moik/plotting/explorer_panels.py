@@ -110,7 +110,7 @@ def _postures(robot: Robot, X: np.ndarray, target) -> dict:
     frames = robot.frames(X)
     p_t, R_t = target_pose(target)
     digits = max(0, 5 - int(np.floor(np.log10(max(robot.reach, 1e-12)))))
-    out = {"q": np.round(X, 9).tolist(),
+    out = {"q": X.tolist(),  # unrounded: a member at a limit stays within it
            "origins": np.round(frames[:, :, :3, 3], digits).tolist(),
            "rotations": np.round(frames[:, :, :3, :3], 5).tolist(),
            "joints": np.round(joint_origins(robot, frames), digits).tolist()}
@@ -161,7 +161,7 @@ def front_panel_data(panel: FrontPanel, go) -> dict:
     for f in panel.fronts:
         F = as_array(f.F, f"front {f.name!r}", shape=(None, len(names)))
         colour = PALETTE[groups.index(f.group or f.name) % len(PALETTE)]
-        custom = np.column_stack([np.arange(len(F)), F])
+        custom = np.column_stack([np.arange(1, len(F) + 1), F])  # members numbered from 1
         hover = "<br>".join(f"{n}: %{{customdata[{k + 1}]:.5g}}" for k, n in enumerate(names))
         fig.add_trace(go.Scatter(
             x=F[:, 0], y=F[:, 1], mode="markers", name=f.name, legendgroup=f.group or f.name,

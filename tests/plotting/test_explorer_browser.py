@@ -55,6 +55,7 @@ def scene(tmp_path_factory):
     """A page with two fronts (the second without postures, hidden), curves and a table."""
     robot = get_robot("panda")
     X = robot.random_q(N_MEMBERS, rng=np.random.default_rng(7))
+    X[0, 3] = robot.upper[3]  # at a limit, not beyond it
     F = np.column_stack([np.linspace(0.1, 1.0, N_MEMBERS), 1.0 / np.linspace(1, 4, N_MEMBERS)])
     target = robot.fk(X[0])
     panels = [
@@ -121,6 +122,8 @@ def test_the_first_member_is_shown_when_the_page_opens(driver, scene):
     open_page(driver, scene["path"])
     details = driver.find_element(By.ID, "details-0").text
     assert f"member 1 of {N_MEMBERS}" in details
+    assert len(driver.find_elements(By.CSS_SELECTOR, "#details-0 table.joints tr")) == 8
+    assert not driver.find_elements(By.CSS_SELECTOR, "#details-0 tr.outside")
     np.testing.assert_allclose(links_tip(driver), scene["robot"].fk(scene["X"][0])[:3, 3],
                                atol=1e-5)
 
@@ -150,7 +153,7 @@ def test_hovering_a_point_shows_its_values(driver, scene):
     while time.monotonic() - t0 < 10 and "member" not in text:
         text = " ".join(e.text for e in driver.find_elements(By.CSS_SELECTOR, ".hovertext"))
         time.sleep(0.1)
-    assert f"alg run 0, member {k}" in text
+    assert f"alg run 0, member {k + 1}" in text  # numbered from 1, as the details
     assert f"{scene['F'][k, 0]:.5g}" in text and "orientation error (rad)" in text
 
 

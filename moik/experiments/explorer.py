@@ -3,12 +3,14 @@
 Per results folder (as :func:`moik.experiments.report.result_folders` finds them):
 the fronts of every algorithm and run at each target, linked to the postures behind
 their points (multi-objective IK experiments store each trial's ``front_F`` and
-``front_X``); the mean convergence curves the report's figure draws
-(:func:`moik.experiments.figures` ``_curves``: single-objective experiments store a
-``convergence`` array per trial); and the report's tables, from the same
-:func:`moik.experiments.analysis.analyze` the Markdown report prints. Statistics
-are never recomputed here. The page is written by :func:`moik.plotting.explorer.write_explorer`
-(plotly, the ``explorer`` extra).
+``front_X``; a multi-objective benchmark's fronts have no posture); the mean
+convergence curves the report's figures draw (single-objective experiments store a
+``convergence`` array per trial: IK ones pooled as the report's ``_curves``,
+benchmark-function ones one panel per problem as
+:func:`moik.experiments.figures.benchmark_curves`); and the report's tables, from the
+same :func:`moik.experiments.analysis.analyze` the Markdown report prints. Statistics
+are never recomputed here. The page is written by
+:func:`moik.plotting.explorer.write_explorer` (plotly, the ``explorer`` extra).
 """
 
 from __future__ import annotations
@@ -19,7 +21,12 @@ from pathlib import Path
 import numpy as np
 
 from moik.experiments.analysis import analyze
-from moik.experiments.figures import _curves, objective_label, orientation_unit
+from moik.experiments.figures import (
+    _curves,
+    benchmark_curves,
+    objective_label,
+    orientation_unit,
+)
 from moik.experiments.report import FOLDER_ERRORS, damaged_warning, result_folders
 from moik.experiments.store import ResultStore
 from moik.experiments.tables import Results
@@ -44,7 +51,10 @@ def front_panels(res: Results, *, posture_runs: int | None = 3) -> list[FrontPan
             first run are shown, the others one legend click away.
     """
     cfg = res.config
-    robot = get_robot(cfg["robot"]) if cfg["problem"]["kind"] != "moo-benchmark" else None
+    kind = cfg["problem"]["kind"]
+    if kind not in ("bi-objective", "moo-benchmark"):
+        return []  # single-objective trials store no front
+    robot = get_robot(cfg["robot"]) if kind == "bi-objective" else None
     unit = robot.unit if robot is not None else ""
     if robot is not None:
         metric = cfg["problem"].get("orientation", "geodesic")
@@ -82,7 +92,15 @@ def folder_panels(store: ResultStore, *, posture_runs: int | None = 3) -> list:
     res, tables = analyze(store)
     panels: list = front_panels(res, posture_runs=posture_runs)
     kind = res.config["problem"]["kind"]
-    curves = _curves(res, res.labels) if res.ok else {}
+    name = res.config["name"]
+    if kind == "benchmark":  # one panel per problem, as the report's figure
+        problems, shifted = benchmark_curves(res) if res.ok else ({}, set())
+        for problem, by_label in problems.items():
+            what = "f - f*" if problem in shifted else "best f"
+            panels.append(CurvePanel(f"{name}: mean convergence on {problem}", by_label,
+                                     ylabel=f"mean {what} (function value)",
+                                     notes=["Mean over the runs, as the report's figure."]))
+    curves = _curves(res, res.labels) if res.ok and kind != "benchmark" else {}
     if curves:
         ylabel = "mean best objective"
         if kind in ("position", "pose"):

@@ -104,7 +104,7 @@ def _as_front(name: str, result) -> tuple[Front, list[str], int]:
 
 
 def pareto_explorer(result, robot: Robot, path: str | Path, *, target=None,
-                    title: str | None = None) -> Path:
+                    title: str | None = None, obstacles: Sequence[dict] = ()) -> Path:
     """Write the explorer of one or several Pareto sets of IK solutions.
 
     Args:
@@ -118,6 +118,8 @@ def pareto_explorer(result, robot: Robot, path: str | Path, *, target=None,
         target: The target (position, ``(4, 4)`` pose or Target): drawn in the
             posture view, and each member's errors are recomputed against it.
         title: Page title.
+        obstacles: plotly 3-D trace dicts (e.g. ``{"type": "mesh3d", ...}``) drawn in
+            every posture: the hook for the obstacles of a collision scene.
 
     Returns:
         The path written.
@@ -139,7 +141,7 @@ def pareto_explorer(result, robot: Robot, path: str | Path, *, target=None,
         fronts.append(front)
     panel = FrontPanel(title="Pareto front: click a point to see its posture", fronts=fronts,
                        objectives=labels or [], robot=robot, target=target,
-                       initial=(0, first),
+                       initial=(0, first), obstacles=tuple(obstacles),
                        notes=["The ring marks the member shown; the first member shown is "
                               "the compromise (closest to the utopia point) when the result "
                               "has one."])

@@ -12,6 +12,7 @@ from moik.exceptions import ResultsError
 from moik.experiments.analysis import analyze
 from moik.experiments.config import ExperimentConfig
 from moik.experiments.explorer import report_explorer
+from moik.experiments.figures import benchmark_curves
 from moik.experiments.runner import run_experiment
 from moik.experiments.store import ResultStore
 from moik.robots import get_robot
@@ -91,3 +92,42 @@ def test_single_objective_results_get_their_convergence_curves(tmp_path, tiny_co
 def test_a_folder_without_results_is_an_error(tmp_path):
     with pytest.raises(ResultsError, match="holds no moik results"):
         report_explorer(tmp_path)
+
+
+BENCH = {
+    "name": "bench-test", "title": "tiny benchmark experiment", "source": "test",
+    "problem": {"kind": "benchmark", "names": ["F1", {"name": "spring", "label": "spring"}],
+                "params": {"n_var": 5}},
+    "algorithms": [{"name": "ibes"}, {"name": "pso"}],
+    "pop_size": 6, "iterations": 4, "runs": 2, "seed": 3,
+    "analyses": ["per-target"], "proposed": "ibes",
+}
+MOO = {
+    "name": "moo-test", "title": "tiny multi-objective benchmark experiment", "source": "test",
+    "problem": {"kind": "moo-benchmark", "evaluations": 120, "names": [
+        {"name": "zdt1", "params": {"n_var": 4}},
+        {"name": "dtlz2", "label": "dtlz2-3", "params": {"n_var": 5, "n_obj": 3}}]},
+    "algorithms": [{"name": "nsga2"}, {"name": "mogwo"}],
+    "pop_size": 12, "iterations": 4, "runs": 1, "seed": 4,
+    "analyses": ["front-quality"], "proposed": "nsga2",
+}
+
+
+def test_benchmark_functions_get_one_convergence_panel_per_problem(tmp_path):
+    out = tmp_path / "bench"
+    run_experiment(ExperimentConfig.from_dict(BENCH), out=out, workers=1, progress=False)
+    res, _ = analyze(ResultStore.open(out))
+    problems, _ = benchmark_curves(res)
+    curves = [p for p in data(report_explorer(out))["panels"] if p["kind"] == "curves"]
+    assert [p["title"] for p in curves] == [f"bench-test: mean convergence on {n}"
+                                            for n in problems]
+    assert problems  # F1's curves are finite and positive
+
+
+def test_multi_objective_benchmarks_show_fronts_without_postures(tmp_path):
+    out = tmp_path / "moo"
+    run_experiment(ExperimentConfig.from_dict(MOO), out=out, workers=1, progress=False)
+    fronts = [p for p in data(report_explorer(out))["panels"] if p["kind"] == "front"]
+    assert len(fronts) == 2 and all(p["postures"] is None for p in fronts)
+    assert fronts[1]["objectives"] == ["f1", "f2", "f3"]
+    assert [t["name"] for t in fronts[0]["traces"]] == ["nsga2 run 0", "mogwo run 0"]

@@ -38,8 +38,10 @@ def members(panda):
 
 def test_one_self_contained_file_with_plotly_inline_once(tmp_path, panda, members):
     X, F = members
+    box = {"type": "mesh3d", "x": [0, 1, 0], "y": [0, 0, 1], "z": [0, 0, 0], "name": "obstacle"}
     path = pareto_explorer({"X": X, "F": F, "objectives": ["a", "b"]}, panda,
-                           tmp_path / "p.html", target=panda.fk(X[0]))
+                           tmp_path / "p.html", target=panda.fk(X[0]), obstacles=[box])
+    assert page_data(path)["panels"][0]["obstacles"] == [box]  # drawn in every posture
     text = path.read_text()
     from plotly.offline import get_plotlyjs
 

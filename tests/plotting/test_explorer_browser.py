@@ -52,7 +52,8 @@ def driver():
 
 @pytest.fixture(scope="module")
 def scene(tmp_path_factory):
-    """A page with two fronts (the second without postures, hidden), curves and a table."""
+    """A page with two fronts (the second without postures, hidden) and an obstacle, curves
+    and a table."""
     robot = get_robot("panda")
     X = robot.random_q(N_MEMBERS, rng=np.random.default_rng(7))
     X[0, 3] = robot.upper[3]  # at a limit, not beyond it
@@ -62,13 +63,26 @@ def scene(tmp_path_factory):
         FrontPanel("fronts", [Front("alg run 0", F, X, group="alg"),
                               Front("alg run 1", F * 1.2, None, group="alg", visible=False)],
                    ["position error (m)", "orientation error (rad)"], robot=robot,
-                   target=target),
+                   target=target, obstacles=[{"type": "mesh3d", "name": "obstacle",
+                                              "x": [0.3, 0.5, 0.3, 0.3], "y": [0, 0, 0.2, 0],
+                                              "z": [0, 0, 0, 0.2], "opacity": 0.4,
+                                              "i": [0, 0, 0, 1], "j": [1, 1, 2, 2],
+                                              "k": [2, 3, 3, 3]}]),
         CurvePanel("convergence", {"alg": np.array([[3.0, 2.0, 1.0], [2.0, 1.0, 0.5]])}, "f"),
         TablePanel("statistics", ["algorithm", "HV mean"], [["alg", "0.123"]]),
     ]
     path = write_explorer(tmp_path_factory.mktemp("page") / "explorer.html", panels,
                           title="browser test")
     return {"path": path, "robot": robot, "X": X, "F": F}
+
+
+@pytest.fixture(scope="module")
+def loaded(driver, scene):
+    """The page opened once for the tests that only read it (each load takes seconds);
+    what the browser logged while it opened. The tests that click reopen it."""
+    driver.get_log("browser")  # drop what an earlier page logged
+    open_page(driver, scene["path"])
+    return driver.get_log("browser")
 
 
 def open_page(driver, path: Path) -> None:
@@ -95,31 +109,28 @@ def point(driver, trace: int, index: int):
     return traces[trace].find_elements(By.CSS_SELECTOR, "path.point")[index]
 
 
-def test_the_page_opens_from_a_file_without_console_errors(driver, scene):
-    driver.get_log("browser")  # drop what an earlier page logged
-    open_page(driver, scene["path"])
-    severe = [e for e in driver.get_log("browser") if e["level"] == "SEVERE"]
+def test_the_page_opens_from_a_file_without_console_errors(driver, loaded):
+    assert driver.current_url.startswith("file://")
+    severe = [e for e in loaded if e["level"] == "SEVERE"]
     assert not severe
     fetched = driver.execute_script(
         "return performance.getEntriesByType('resource').map(e => e.name)")
     assert not [u for u in fetched if u.startswith(("http:", "https:"))]
 
 
-def test_it_draws_every_trace(driver, scene):
-    open_page(driver, scene["path"])
+def test_it_draws_every_trace(driver, scene, loaded):
     n = driver.execute_script("return ['front-0', 'posture-0', 'figure-1'].map("
                               "i => document.getElementById(i).data.length)")
     # fronts: 2 fronts + the selection ring; posture: links, joints, base, 3 frame-axis
-    # traces, the target and its 3 axes; curves: 1 mean curve
-    assert n == [3, 10, 1]
+    # traces, the target and its 3 axes, the obstacle; curves: 1 mean curve
+    assert n == [3, 11, 1]
     drawn = driver.find_elements(By.CSS_SELECTOR, "#front-0 .scatterlayer .trace")
     assert len(drawn) == 2  # the hidden run is not drawn, the ring is
     assert len(drawn[0].find_elements(By.CSS_SELECTOR, "path.point")) == N_MEMBERS
     assert "0.123" in driver.find_element(By.CSS_SELECTOR, "table.stats").text
 
 
-def test_the_first_member_is_shown_when_the_page_opens(driver, scene):
-    open_page(driver, scene["path"])
+def test_the_first_member_is_shown_when_the_page_opens(driver, scene, loaded):
     details = driver.find_element(By.ID, "details-0").text
     assert f"member 1 of {N_MEMBERS}" in details
     assert len(driver.find_elements(By.CSS_SELECTOR, "#details-0 table.joints tr")) == 8
@@ -144,8 +155,7 @@ def test_clicking_a_point_shows_that_members_posture_and_joints(driver, scene):
     np.testing.assert_allclose(ring, scene["F"][k])
 
 
-def test_hovering_a_point_shows_its_values(driver, scene):
-    open_page(driver, scene["path"])
+def test_hovering_a_point_shows_its_values(driver, scene, loaded):
     k = 3
     ActionChains(driver).move_to_element(point(driver, 0, k)).perform()
     t0 = time.monotonic()
@@ -173,8 +183,7 @@ def test_a_legend_click_shows_a_hidden_run_whose_points_have_no_posture(driver, 
     np.testing.assert_array_equal(links_tip(driver), tip)  # the posture view stays
 
 
-def test_a_screenshot_shows_the_drawn_page(driver, scene):
-    open_page(driver, scene["path"])
+def test_a_screenshot_shows_the_drawn_page(driver, scene, loaded):
     shot = driver.execute_cdp_cmd("Page.captureScreenshot",
                                   {"format": "png", "captureBeyondViewport": True})
     import matplotlib.image

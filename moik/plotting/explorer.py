@@ -80,8 +80,9 @@ def _label(name: str, sense: str) -> str:
     return f"{name} ({'larger' if sense == 'max' else 'smaller'} is better{unit})"
 
 
-def _as_front(name: str, result) -> tuple[Front, list[str], int]:
-    """A ParetoIKResult, an IKResult with a front, or a dict of arrays as one trace."""
+def _as_front(name: str, result, unit: str) -> tuple[Front, list[str], int]:
+    """A ParetoIKResult, an IKResult with a front, or a dict of arrays as one trace, its
+    criteria's labels, and the member shown first (the compromise where there is one)."""
     if hasattr(result, "objectives") and hasattr(result, "senses"):  # ParetoIKResult
         labels = [_label(n, s) for n, s in zip(result.objectives, result.senses, strict=True)]
         first = result.compromise_index() if len(result.X) else 0
@@ -90,8 +91,10 @@ def _as_front(name: str, result) -> tuple[Front, list[str], int]:
         if result.front is None:
             raise ParameterError(f"{name}: this solve_ik result has no front (status "
                                  f"{result.status!r}: fronts come with unreachable poses)")
-        return (Front(name, np.asarray(result.front), np.asarray(result.front_q)),
-                ["position error (robot unit)", "orientation error (geodesic, rad)"], 0)
+        Q = np.asarray(result.front_q)  # the solver's compromise, res.q, is a member
+        first = int(np.argmin(np.linalg.norm(Q - np.asarray(result.q), axis=1)))
+        return (Front(name, np.asarray(result.front), Q),
+                [f"position error ({unit})", "orientation error (geodesic, rad)"], first)
     if isinstance(result, Mapping) and "F" in result:
         F = np.atleast_2d(np.asarray(result["F"], dtype=float))
         names = list(result.get("objectives") or [f"f{k + 1}" for k in range(F.shape[1])])
@@ -129,12 +132,13 @@ def pareto_explorer(result, robot: Robot, path: str | Path, *, target=None,
         ShapeError: Arrays of inconsistent shapes.
     """
     several = isinstance(result, Mapping) and "F" not in result
-    items = list(result.items()) if several else [("Pareto set", result)]
+    single = "error front" if hasattr(result, "front_q") else "Pareto set"
+    items = list(result.items()) if several else [(single, result)]
     fronts: list[Front] = []
     labels: list[str] | None = None
     first = 0
     for name, res in items:
-        front, names, best = _as_front(str(name), res)
+        front, names, best = _as_front(str(name), res, robot.unit)
         if labels is not None and names != labels:
             raise ShapeError(f"every front must have the same criteria: {labels} and {names}")
         labels, first = names, first if fronts else best
@@ -144,6 +148,7 @@ def pareto_explorer(result, robot: Robot, path: str | Path, *, target=None,
                        initial=(0, first), obstacles=tuple(obstacles),
                        notes=["The ring marks the member shown; the first member shown is "
                               "the compromise (closest to the utopia point) when the result "
-                              "has one."])
+                              "has one. Joint numbers shared by several joints mark joints "
+                              "at one place."])
     return write_explorer(path, [panel], title=title or f"{robot.name}: Pareto set of IK "
                           f"solutions ({sum(len(f.F) for f in fronts)} members)")

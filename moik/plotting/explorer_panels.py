@@ -114,12 +114,26 @@ def _postures(robot: Robot, X: np.ndarray, target) -> dict:
            "origins": np.round(frames[:, :, :3, 3], digits).tolist(),
            "rotations": np.round(frames[:, :, :3, :3], 5).tolist(),
            "joints": np.round(joint_origins(robot, frames), digits).tolist()}
+    out["joint_labels"] = [_joint_labels(J, robot.reach) for J in out["joints"]]
     if p_t is not None:
         out["position_error"] = np.linalg.norm(frames[:, -1, :3, 3] - p_t, axis=1).tolist()
         if R_t is not None:
             out["orientation_error"] = [float(geodesic_error(T[:3, :3], R_t))
                                         for T in frames[:, -1]]
     return out
+
+
+def _joint_labels(joints: list, scale: float) -> list[str]:
+    """Joint numbers, coincident joints sharing one label ("1,2") as plot_robot does."""
+    P = np.asarray(joints)
+    labels = [""] * len(P)
+    taken = np.zeros(len(P), dtype=bool)
+    for j in range(len(P)):
+        if not taken[j]:
+            same = ~taken & (np.linalg.norm(P - P[j], axis=1) <= 1e-3 * scale)
+            taken |= same
+            labels[j] = ",".join(str(k + 1) for k in np.flatnonzero(same))
+    return labels
 
 
 def _scene(robot: Robot, postures: list, target) -> dict:

@@ -64,6 +64,8 @@ def test_postures_come_from_the_robots_frames(tmp_path, panda, members):
     assert P["position_error"][4] < 1e-12 and P["orientation_error"][4] < 1e-7
     assert P["position_error"][0] > 1e-3
     assert panel["joint_names"] == list(panda.joint_names)
+    # panda's joints 1 and 2 are at one place: one label, as plot_robot writes it
+    assert P["joint_labels"][0][:3] == ["1,2", "", "3"]
     assert panel["traces"][0]["size"] == 12 and panel["initial"] == [0, 0]
     assert panel["objectives"] == ["f1 (smaller is better)", "f2 (smaller is better)"]
 
@@ -127,6 +129,9 @@ def test_an_unreachable_solve_ik_shows_its_front(tmp_path):
     assert res.status == "unreachable"
     panel = page_data(pareto_explorer(res, robot, tmp_path / "p.html", target=T))["panels"][0]
     np.testing.assert_array_equal(panel["traces"][0]["F"], res.front)
+    assert panel["objectives"][0] == "position error (m)"
+    assert panel["traces"][0]["name"] == "error front"
+    np.testing.assert_array_equal(res.front_q[panel["initial"][1]], res.q)  # the compromise
     # the front's errors are the ones the page recomputes by FK (geodesic, as solve_ik's)
     np.testing.assert_allclose(panel["postures"][0]["position_error"], res.front[:, 0],
                                rtol=1e-9)

@@ -25,6 +25,7 @@ from pymoo.termination.default import DefaultTermination
 
 from moik._validate import integer, is_integer, keywords, seed
 from moik.algorithms.mechanics import clip_to_bounds, uniform_population
+from moik.algorithms.nonfinite import sanitise
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError
 
 Step = Generator[np.ndarray, tuple, None]
@@ -224,7 +225,16 @@ class ArrayStateMixin(Algorithm):
                 is not None, a non-negative integer or a numpy ``SeedSequence``.
         """
         seed("seed", kwargs.get("seed", self.seed))
+        self._nonfinite_warned = False
         return super().setup(problem, **kwargs)
+
+    def _sanitise(self, X: np.ndarray, F: np.ndarray,
+                  CV: np.ndarray | None) -> tuple[np.ndarray, np.ndarray | None]:
+        """A batch's ``(F, CV)`` with rows holding a problem's NaN/inf set to ``F = CV = inf``
+        (infeasible and worst, warned once per run: :mod:`moik.algorithms.nonfinite`)."""
+        F, CV, self._nonfinite_warned = sanitise(
+            X, F, CV, problem=self.problem, warned=self.__dict__.get("_nonfinite_warned", False))
+        return F, CV
 
     def next(self) -> None:
         """One iteration through the array fast path: run ``_generation()``,

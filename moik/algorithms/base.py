@@ -124,6 +124,8 @@ class ArrayAlgorithm(ArrayStateMixin, Algorithm):
 
     def _build_opt(self) -> Population:
         cv = 0.0 if self.best_cv is None else self.best_cv
+        if not (np.isfinite(self.best_f) and np.isfinite(cv)):  # never report a non-finite row
+            return Population.empty()
         args = ["X", self.best_x[None], "F", np.array([[self.best_f]]), "CV", np.array([[cv]])]
         for key, val in self._best_gh.items():
             args += [key, val[None]]
@@ -194,9 +196,9 @@ class ArrayAlgorithm(ArrayStateMixin, Algorithm):
     def _values_of(self, pop: Population):
         F = pop.get("F")[:, 0].astype(float) if len(pop) else np.empty(0)
         if not self._constrained:
-            return F, None, None, None
+            return self._sanitise(pop.get("X"), F, None) + (None, None)
         G, H = pop.get("G"), pop.get("H")
-        return F, constraint_violation(G, H), G, H
+        return self._sanitise(pop.get("X"), F, constraint_violation(G, H)) + (G, H)
 
     def _evaluate(self, X: np.ndarray):
         """Evaluate candidates with the vectorized problem, counting n_eval exactly."""
@@ -210,6 +212,7 @@ class ArrayAlgorithm(ArrayStateMixin, Algorithm):
             if self._constrained:
                 G, H = out.get("G"), out.get("H")
                 CV = constraint_violation(G, H)
+            F, CV = self._sanitise(X, F, CV)
         if k < n:
             F, CV = self._pad(n, F, CV)
         self._receive(X, F, CV, G, H)

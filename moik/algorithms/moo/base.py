@@ -75,7 +75,8 @@ from moik.algorithms.moo.dominance import (
     dominates,
     pareto_memory,
 )
-from moik.exceptions import ParameterError
+from moik.algorithms.nonfinite import finite_rows
+from moik.exceptions import NonFiniteError, ParameterError
 
 DEFAULT_SCHEDULE_LENGTH = 1000
 """T when neither ``max_iter`` nor any termination criterion bounds the run."""
@@ -207,6 +208,11 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
                                  np.ndarray | None]] = []
         self._receive(X, F, CV, GH)
         self._flush()
+        if len(self.pareto_archive) == 0:
+            raise NonFiniteError(
+                f"{type(self.problem).__name__} returned NaN or infinite values at every one of "
+                f"the {len(F)} points of the initial population; {type(self).__name__} needs "
+                f"at least one point with finite values to start its archive")
         self.X, self.F, self.CV = X, F, CV
         self._initialize_state()
 
@@ -237,10 +243,11 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
             n_con = self.problem.n_ieq_constr + self.problem.n_eq_constr
             return (np.empty((0, self.problem.n_obj)),
                     np.empty(0) if self._constrained else None, np.empty((0, n_con)))
-        F = pop.get("F").astype(float)
+        F, X = pop.get("F").astype(float), pop.get("X")
         if not self._constrained:
-            return F, None, None
-        return self._constraint_values(F, pop.get("G"), pop.get("H"))
+            return self._sanitise(X, F, None) + (None,)
+        F, CV, GH = self._constraint_values(F, pop.get("G"), pop.get("H"))
+        return self._sanitise(X, F, CV) + (GH,)
 
     def _constraint_values(self, F, G, H):
         n = len(F)
@@ -271,16 +278,22 @@ class MOArrayAlgorithm(ArrayStateMixin, Algorithm):
         self.evaluator.n_eval += k
         F, CV, GH = (out["F"], None, None) if not self._constrained else \
             self._constraint_values(out["F"], out.get("G"), out.get("H"))
+        F, CV = self._sanitise(X, F, CV)
         self._receive(X[:k], F, CV, GH)
         return self._pad(n, F, CV)
 
     def _receive(self, X, F, CV, GH) -> None:
-        """Queue evaluated rows for the archive (merged once per iteration, see ``_flush``)."""
+        """Queue evaluated rows for the archive (merged once per iteration, see ``_flush``);
+        rows a problem's NaN/inf made ``F = CV = inf`` are never archived."""
+        ok = finite_rows(F, CV)
+        if not ok.all():
+            X, F = X[ok], F[ok]
+            CV, GH = (None if CV is None else CV[ok]), (None if GH is None else GH[ok])
         if len(F):
             self._buffer.append((X, F, CV, GH))
 
     def _flush(self) -> None:
-        """Merge the iteration's evaluated rows into the archive at once (NonFiniteError on NaN).
+        """Merge the iteration's evaluated (finite) rows into the archive at once.
 
         The archive is read only between iterations, so this gives the same
         non-dominated set as a merge per batch; the truncation runs once on the union.

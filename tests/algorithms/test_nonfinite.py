@@ -14,12 +14,12 @@ from pymoo.optimize import minimize
 from pymoo.problems import get_problem
 
 from moik.algorithms import available, get_algorithm
-from moik.algorithms.array_state import ArrayStateMixin
+from moik.algorithms.array_base import ArrayStateAlgorithm
 from moik.algorithms.nonfinite import finite_rows, sanitise
 from moik.algorithms.registry import entry, is_multi_objective
 from moik.exceptions import NonFiniteError, NonFiniteValuesWarning
 
-MOIK = [n for n in available() if issubclass(entry(n).cls, ArrayStateMixin)]
+MOIK = [n for n in available() if issubclass(entry(n).cls, ArrayStateAlgorithm)]
 MOIK_MO = [n for n in MOIK if is_multi_objective(n)]
 MOIK_SO = [n for n in MOIK if not is_multi_objective(n)]
 

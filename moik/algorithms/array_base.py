@@ -25,6 +25,13 @@ pymoo's default and robust terminations and their combinations), so t/T spans th
 budget, also after a checkpoint is resumed with a new termination;
 :data:`~moik.algorithms.array_state.DEFAULT_SCHEDULE_LENGTH` when nothing bounds the run.
 
+Evaluation (pymoo's contract): the initial population and ``ask()/tell()`` go through
+pymoo's ``Evaluator``; after them, a batch goes through ``self.evaluator`` too whenever
+anything is attached to it (an Evaluator subclass or callback, the ``archive=`` option, a
+problem with ``requires_kwargs=True``), else through the array fast path
+(``problem.evaluate`` on the array, asking the Evaluator's ``evaluate_values_of``, counting
+``evaluator.n_eval`` exactly; the same values without building a ``Population``).
+
 ``n_eval`` budgets are exact: rows of a batch beyond the budget are not evaluated and get
 ``F = CV = inf`` (never accepted by a memory, ranked last, never reported). The initial
 population is always evaluated in full. A problem's NaN/inf is handled once here
@@ -39,6 +46,7 @@ from typing import Any, cast
 
 import numpy as np
 from pymoo.core.algorithm import Algorithm
+from pymoo.core.evaluator import Evaluator
 from pymoo.core.population import Population
 
 from moik._validate import seed
@@ -250,8 +258,18 @@ class ArrayStateAlgorithm(Algorithm):
         F = np.concatenate([F, np.full((n - k,) + F.shape[1:], np.inf)])
         return F, None if CV is None else np.concatenate([CV, np.full(n - k, np.inf)])
 
+    def _evaluator_attached(self) -> bool:
+        """Whether anything is attached to pymoo's evaluation (then every batch goes through
+        ``self.evaluator``): an Evaluator subclass or callback, the ``archive=`` option, or a
+        problem with ``requires_kwargs=True`` (it receives ``algorithm=``)."""
+        ev = self.evaluator
+        return (type(ev) is not Evaluator or ev.callback is not None or self.archive is not None
+                or bool(getattr(self.problem, "requires_kwargs", False)))
+
     def _problem_values(self, X: np.ndarray) -> dict:
-        """``problem.evaluate(X, return_as_dictionary=True)``; an unconstrained problem that
+        """``problem.evaluate(X, return_values_of=evaluator.evaluate_values_of,
+        return_as_dictionary=True)`` (so meta-problems such as pymoo's
+        ``ConstraintsAsPenalty`` get the values they remove); an unconstrained problem that
         offers ``batch_objectives(X)`` (moik's IK problems: the same F bit for bit, without
         pymoo's per-call bookkeeping) is asked that instead, unless it answers None."""
         direct = None if self._constrained else getattr(self.problem, "batch_objectives", None)
@@ -259,7 +277,8 @@ class ArrayStateAlgorithm(Algorithm):
             F = direct(X)
             if F is not None:
                 return {"F": F}
-        return self.problem.evaluate(X, return_as_dictionary=True)
+        return self.problem.evaluate(X, return_values_of=self.evaluator.evaluate_values_of,
+                                     return_as_dictionary=True)
 
     def _evaluate(self, X: np.ndarray):
         """Evaluate a batch (vectorized), count n_eval exactly, give it to the incumbent.
@@ -273,12 +292,19 @@ class ArrayStateAlgorithm(Algorithm):
             return self._pad(n, self._objectives(np.empty((0, self.problem.n_obj))),
                              np.empty(0) if self._constrained else None)
         Xk = X if k == n else X[:k]
-        out = self._problem_values(Xk)
-        self.evaluator.n_eval += k
-        F, CV, GH = self._objectives(out["F"]), None, None
-        if self._constrained:
-            CV, GH = self._constraint_values(out.get("G"), out.get("H"), k)
-        F, CV = self._sanitise(Xk, F, CV)
+        if self._evaluator_attached():  # pymoo's contract: the Evaluator sees every batch
+            pop = Population.new("X", Xk)
+            self.evaluator.eval(self.problem, pop, algorithm=self)
+            if self.archive is not None:
+                self.archive = self.archive.add(pop)
+            F, CV, GH = self._values_of(pop)
+        else:  # the array fast path (same values, no Population)
+            out = self._problem_values(Xk)
+            self.evaluator.n_eval += k
+            F, CV, GH = self._objectives(out["F"]), None, None
+            if self._constrained:
+                CV, GH = self._constraint_values(out.get("G"), out.get("H"), k)
+            F, CV = self._sanitise(Xk, F, CV)
         if self.incumbent.receive(Xk, F, CV, GH):
             self._opt_stale = True
         return self._pad(n, F, CV)

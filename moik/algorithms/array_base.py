@@ -295,8 +295,9 @@ class ArrayStateAlgorithm(Algorithm):
         if self._evaluator_attached():  # pymoo's contract: the Evaluator sees every batch
             pop = Population.new("X", Xk)
             self.evaluator.eval(self.problem, pop, algorithm=self)
-            if self.archive is not None:
-                self.archive = self.archive.add(pop)
+            archive: Any = self.archive  # pymoo's optional Archive (the archive= option)
+            if archive is not None:
+                self.archive = archive.add(pop)
             F, CV, GH = self._values_of(pop)
         else:  # the array fast path (same values, no Population)
             out = self._problem_values(Xk)

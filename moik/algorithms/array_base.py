@@ -295,7 +295,7 @@ class ArrayStateAlgorithm(Algorithm):
         if self._evaluator_attached():  # pymoo's contract: the Evaluator sees every batch
             pop = Population.new("X", Xk)
             self.evaluator.eval(self.problem, pop, algorithm=self)
-            archive: Any = self.archive  # pymoo's optional Archive (the archive= option)
+            archive: Any = self.__dict__.get("archive")  # pymoo's optional Archive (the archive= option)
             if archive is not None:
                 self.archive = archive.add(pop)
             F, CV, GH = self._values_of(pop)

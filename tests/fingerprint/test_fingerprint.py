@@ -106,8 +106,8 @@ def _same_kind_of_machine():
     if recorded != machine_signature():
         pytest.fail("fingerprints.json was recorded on a machine whose numpy SIMD features are "
                     f"{recorded!r}; this one has {machine_signature()!r}. numpy's sorts and sums "
-                    "give other bits there: check on the recording machine kind that a change keeps "
-                    "the fingerprints, then re-record them here with "
+                    "give other bits there: check on the recording kind of machine that a "
+                    "change keeps the fingerprints, then re-record them here with "
                     "`python tests/fingerprint/test_fingerprint.py`.")
 
 

@@ -76,3 +76,11 @@ class DegreesWarning(MoikWarning):
     moik takes angles in radians; a value beyond a full turn (two turns for joint
     limits, which multi-turn joints exceed legitimately) is most likely in degrees.
     """
+
+
+class NonFiniteValuesWarning(MoikWarning, RuntimeWarning):
+    """A problem returned NaN or infinite objective or constraint values at some points.
+
+    moik's algorithms treat such a point as infeasible and worst (``F = CV = inf``) and
+    never report it; the warning is issued once per run.
+    """

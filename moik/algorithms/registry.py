@@ -33,7 +33,8 @@ from pymoo.algorithms.soo.nonconvex.ga import GA
 from pymoo.core.algorithm import Algorithm
 
 from moik._validate import choice, is_integer, keywords
-from moik.algorithms.array_state import PYMOO_OPTIONS, ArrayStateMixin, constructor_keywords
+from moik.algorithms.array_base import ArrayStateAlgorithm
+from moik.algorithms.array_state import PYMOO_OPTIONS, constructor_keywords
 from moik.algorithms.moo.base import MOArrayAlgorithm
 from moik.algorithms.moo.mo_classic_pso import MOClassicPSO
 from moik.algorithms.moo.mo_csa import MOCSA
@@ -275,7 +276,7 @@ def is_multi_objective(name: str) -> bool:
 def accepted_parameters(name: str) -> list[str]:
     """Keyword names ``get_algorithm(name, ...)`` accepts (class and pymoo options), sorted."""
     cls = entry(name).cls
-    if issubclass(cls, ArrayStateMixin) or cls.__module__.startswith("moik."):
+    if issubclass(cls, ArrayStateAlgorithm) or cls.__module__.startswith("moik."):
         # type[Algorithm] is type[Any] to mypy (pymoo has no types), which is not Hashable
         return sorted(constructor_keywords(cast(type, cls)))  # what the class itself accepts
     own = {p.name for p in inspect.signature(cls.__init__).parameters.values()

@@ -4,7 +4,8 @@
 in :mod:`moik.cli.parser`). It prints the members (joint values in degrees;
 prismatic ones in the robot's unit) with their criteria and marks the compromise,
 or with ``--json`` one JSON object (joint values in radians); ``--plot FILE``
-draws the front and postures (:func:`moik.plotting.pareto.plot_pareto_ik`). Exit
+draws the front and postures (:func:`moik.plotting.pareto.plot_pareto_ik`), ``--html
+FILE`` writes the interactive explorer (:func:`moik.plotting.pareto_explorer`). Exit
 status 0 when an exact solution was found, 1 otherwise.
 """
 
@@ -19,6 +20,7 @@ import numpy as np
 from moik.cli.common import joint_values
 from moik.cli.solutions import target as target_of
 from moik.exceptions import ParameterError
+from moik.plotting.explorer import pareto_explorer
 from moik.plotting.pareto import plot_pareto_ik
 from moik.problems.targets import Target
 from moik.robots import get_robot
@@ -40,6 +42,7 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
     default the catalog robot ``args.robot``."""
     robot = get_robot(args.robot) if robot is None else robot
     target = target_of(args)
+    html = html_file(args.html)
     rotation = None
     if args.preferred_euler is not None:
         rotation = Target.from_euler(args.target, args.preferred_euler,
@@ -59,7 +62,24 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
                        target=target.position, compromise=index, save=stem)
         if not args.json:
             print(f"plot written to {stem}.png and {stem}.pdf")
+    if html is not None and len(res.X):
+        pareto_explorer(res, robot, html, target=target)
+        if not args.json:
+            print(f"explorer written to {html}")
     return 0 if len(res.X) else 1
+
+
+def html_file(spec: str | None) -> Path | None:
+    """The file ``--html`` writes, checked before any solving (its folder must exist)."""
+    if spec is None:
+        return None
+    path = Path(spec)
+    if not spec or path.is_dir():
+        raise ParameterError(f"--html needs a file name, got {spec!r}")
+    if not path.parent.is_dir():
+        raise ParameterError(f"--html folder {str(path.parent)!r} does not exist (create it "
+                             "first)")
+    return path
 
 
 def as_json(robot, target: Target, res: ParetoIKResult, compromise: int | None) -> dict:

@@ -25,7 +25,7 @@ from pymoo.optimize import minimize
 from pymoo.problems import get_problem
 
 from moik.algorithms import get_algorithm
-from moik.algorithms.moo.moead import MOEAD
+from moik.algorithms.moo.moead_pymoo import PymooMOEAD
 from moik.experiments.kinds.moo_fronts import analytic_front, hv_reference
 from moik.metrics import hypervolume
 
@@ -69,7 +69,7 @@ class Normalized(MOEAD):
 
 
 VARIANTS = {"nsga2": lambda: get_algorithm("nsga2", pop_size=100),
-            "moead": lambda: MOEAD(pop_size=100),
+            "moead": lambda: PymooMOEAD(pop_size=100),
             "all-points": lambda: AllPointsIdeal(pop_size=100),
             "normalized": lambda: Normalized(pop_size=100)}
 

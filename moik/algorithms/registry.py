@@ -41,7 +41,7 @@ from moik.algorithms.moo.mo_jaya import MOJAYA
 from moik.algorithms.moo.mo_modified_pso import MOMPSO
 from moik.algorithms.moo.moalo import MOALO
 from moik.algorithms.moo.moda import MODA
-from moik.algorithms.moo.moead import MOEAD
+from moik.algorithms.moo.moead_pymoo import PymooMOEAD
 from moik.algorithms.moo.moeosma import MOEOSMA
 from moik.algorithms.moo.mogwo import MOGWO
 from moik.algorithms.moo.mompa import MOMPA
@@ -184,8 +184,10 @@ _MULTI = [
     ("mo-jaya", MOJAYA, f"{_ROKBANI_2022} (baseline, Section 5.2)"),
     ("mo-csa", MOCSA, f"{_ROKBANI_2022} (baseline, Section 5.2)"),
     ("nsga2", NSGA2, "pymoo: NSGA-II (Deb et al. 2002, DOI 10.1109/4235.996017)"),
-    ("moead", MOEAD, "pymoo: MOEA/D (Zhang & Li 2007, DOI 10.1109/TEVC.2007.892759), "
+    ("moead", PymooMOEAD, "pymoo: MOEA/D (Zhang & Li 2007, DOI 10.1109/TEVC.2007.892759), "
                      "Das-Dennis directions by default"),
+    ("moead-pymoo", PymooMOEAD, "pymoo: MOEA/D (Zhang & Li 2007, DOI 10.1109/TEVC.2007.892759), "
+                                "Das-Dennis directions by default"),
     ("sms-emoa", SMSEMOA, "pymoo: SMS-EMOA (Beume, Naujoks & Emmerich 2007, "
                           "DOI 10.1016/j.ejor.2006.08.008)"),
     ("mopso-cd", MOPSOCD, "pymoo: MOPSO-CD (Raquel & Naval 2005, DOI 10.1145/1068009.1068047), "
@@ -202,7 +204,7 @@ _REGISTRY: dict[str, AlgorithmEntry] = {
 _FORWARDED: dict[type, tuple[str, ...]] = {
     PymooDE: ("CR", "F", "jitter", "prob_mut", "control", "crossover", "selection", "n_diffs"),
 }
-_PYMOO_MULTI_OBJECTIVE = (NSGA2, MOEAD, SMSEMOA, MOPSOCD)
+_PYMOO_MULTI_OBJECTIVE = (NSGA2, PymooMOEAD, SMSEMOA, MOPSOCD)
 
 
 def register(name: str, cls: type[Algorithm] | None = None, *, kind: str | None = None,

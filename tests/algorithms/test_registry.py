@@ -65,7 +65,7 @@ def ik_problem():
 
 # ---- names, kinds and sources ---------------------------------------------------------------
 def test_available_names():
-    assert len(SINGLE) == 34 and len(MULTI) == 17 and len(available()) == 51
+    assert len(SINGLE) == 34 and len(MULTI) == 18 and len(available()) == 52
     assert set(MO_NAMES) <= set(MULTI)
     assert available() == sorted(available()) == sorted(SINGLE + MULTI)
     assert isinstance(get_algorithm("EOSMA"), EOSMA)

@@ -6,7 +6,7 @@ import pytest
 from pymoo.problems import get_problem
 
 from moik.algorithms import MOMPA, get_algorithm
-from moik.algorithms.moo.moead import default_ref_dirs
+from moik.algorithms.moo.reference_directions import default_ref_dirs
 from moik.algorithms.moo.mompa import front_numbers, gaussian_search, reference_point_selection
 from moik.exceptions import ParameterError
 

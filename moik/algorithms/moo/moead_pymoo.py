@@ -1,4 +1,4 @@
-"""MOEA/D: pymoo's, with default reference directions.
+"""MOEA/D: pymoo's, with default reference directions (registered as ``moead-pymoo``).
 
 Zhang & Li, "MOEA/D: A Multiobjective Evolutionary Algorithm Based on
 Decomposition", IEEE Transactions on Evolutionary Computation 11(6), 712-731
@@ -27,33 +27,19 @@ handling (:mod:`moik.algorithms.moo.mopso_cd`).
 
 from __future__ import annotations
 
-from math import comb
 from typing import Any
 
 import numpy as np
 from pymoo.algorithms.moo import moead
-from pymoo.util.ref_dirs import get_reference_directions
 from scipy.spatial.distance import cdist
 
 from moik._validate import integer
 from moik.algorithms.array_state import refuse_unknown_keywords
+from moik.algorithms.moo.reference_directions import default_ref_dirs
+from moik.exceptions import ParameterError
 
 
-def das_dennis_partitions(n_obj: int, pop_size: int) -> int:
-    """Largest ``p`` with ``C(p + n_obj - 1, n_obj - 1) <= pop_size`` (at least 1)."""
-    p = 1
-    while comb(p + 1 + n_obj - 1, n_obj - 1) <= pop_size:
-        p += 1
-    return p
-
-
-def default_ref_dirs(n_obj: int, pop_size: int) -> np.ndarray:
-    """Das-Dennis reference directions, at most ``pop_size`` of them (see module doc)."""
-    return get_reference_directions("das-dennis", n_obj,
-                                    n_partitions=das_dennis_partitions(n_obj, pop_size))
-
-
-class MOEAD(moead.MOEAD):
+class PymooMOEAD(moead.MOEAD):
     """pymoo's MOEA/D with default reference directions (see the module doc).
 
     Args:
@@ -64,7 +50,8 @@ class MOEAD(moead.MOEAD):
 
     Raises:
         ParameterError: For a keyword pymoo's ``MOEAD`` does not take (listing the
-            accepted ones) or a bad ``pop_size``.
+            accepted ones) or a bad ``pop_size``; at setup, for a problem with one
+            objective.
     """
 
     ref_dirs: np.ndarray
@@ -78,6 +65,9 @@ class MOEAD(moead.MOEAD):
         super().__init__(ref_dirs=dirs, **kwargs)
 
     def _setup(self, problem, **kwargs) -> None:
+        if problem.n_obj < 2:  # pymoo's fails with numpy's "larger sample than population"
+            raise ParameterError(f"MOEA/D is multi-objective; the problem has "
+                                 f"n_obj={problem.n_obj}")
         if self._default_dirs and self.ref_dirs.shape[1] != problem.n_obj:
             self.ref_dirs = default_ref_dirs(problem.n_obj, self._n_dirs)
         if not problem.has_constraints():

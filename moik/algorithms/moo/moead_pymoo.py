@@ -33,7 +33,7 @@ import numpy as np
 from pymoo.algorithms.moo import moead
 from scipy.spatial.distance import cdist
 
-from moik._validate import integer
+from moik._validate import integer, interval
 from moik.algorithms.array_state import refuse_unknown_keywords
 from moik.algorithms.moo.reference_directions import default_ref_dirs
 from moik.exceptions import ParameterError
@@ -50,7 +50,8 @@ class PymooMOEAD(moead.MOEAD):
 
     Raises:
         ParameterError: For a keyword pymoo's ``MOEAD`` does not take (listing the
-            accepted ones) or a bad ``pop_size``; at setup, for a problem with one
+            accepted ones), a bad ``pop_size``, ``n_neighbors`` (an integer >= 1) or
+            ``prob_neighbor_mating`` (in [0, 1]); at setup, for a problem with one
             objective.
     """
 
@@ -60,6 +61,10 @@ class PymooMOEAD(moead.MOEAD):
     def __init__(self, *, ref_dirs: np.ndarray | None = None, pop_size: int = 100, **kwargs):
         refuse_unknown_keywords(type(self), kwargs)
         self._n_dirs = integer("pop_size", pop_size, minimum=2)
+        if "n_neighbors" in kwargs:
+            integer("n_neighbors", kwargs["n_neighbors"], minimum=1)
+        if "prob_neighbor_mating" in kwargs:
+            interval("prob_neighbor_mating", kwargs["prob_neighbor_mating"], 0.0, 1.0)
         self._default_dirs = ref_dirs is None
         dirs = default_ref_dirs(2, self._n_dirs) if ref_dirs is None else ref_dirs
         super().__init__(ref_dirs=dirs, **kwargs)

@@ -51,6 +51,7 @@ from pymoo.algorithms.moo.mopso_cd import MOPSO_CD
 from pymoo.core.population import Population
 from pymoo.util.archive import MultiObjectiveArchive, Truncation
 
+from moik._validate import integer, number, positive
 from moik.algorithms.archive import constrained_nondominated_mask
 from moik.algorithms.array_state import refuse_unknown_keywords
 from moik.algorithms.moo.dominance import constrained_dominates
@@ -100,11 +101,20 @@ class MOPSOCD(MOPSO_CD):
 
     Raises:
         ParameterError: For a keyword pymoo's ``MOPSO_CD`` does not take (listing the
-            accepted ones).
+            accepted ones), or a size that is not a positive integer, a coefficient that is
+            not a finite number or a velocity rate that is not positive (pymoo checks none).
     """
 
     def __init__(self, **kwargs):
         refuse_unknown_keywords(type(self), kwargs)
+        for size in ("pop_size", "archive_size"):
+            if size in kwargs:
+                integer(size, kwargs[size], minimum=1)
+        for coefficient in ("w", "c1", "c2"):
+            if coefficient in kwargs:
+                number(coefficient, kwargs[coefficient])
+        if "max_velocity_rate" in kwargs:
+            positive("max_velocity_rate", kwargs["max_velocity_rate"])
         super().__init__(**kwargs)
         if kwargs.get("termination") is not None:
             self.termination = kwargs["termination"]  # pymoo's __init__ replaced it

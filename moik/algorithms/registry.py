@@ -10,10 +10,10 @@ moik's own algorithms validate their hyperparameters and refuse unknown
 keywords in ``__init__`` (a bad value raises
 :class:`~moik.exceptions.ParameterError` with the valid range). pymoo's DE (as
 ``pymoo-de``; ``de`` is moik's array-state DE/rand/1/bin), GA, NSGA2 and SMS-EMOA
-are registered as they are, for comparisons (MOEA/D and MOPSO-CD as moik
-subclasses that add default directions and constraint handling); for them
-:func:`get_algorithm` refuses an unknown keyword (pymoo's classes would swallow
-it through ``**kwargs``).
+are registered as they are, for comparisons (pymoo's MOEA/D as ``moead-pymoo`` and
+MOPSO-CD as moik subclasses that add default directions and constraint handling;
+``moead`` is moik's own MOEA/D); for them :func:`get_algorithm` refuses an unknown
+keyword (pymoo's classes would swallow it through ``**kwargs``) and checks their sizes.
 
 More entries are added with :func:`register`, either as ``register("name", cls)``
 or as a class decorator ``@register("name")``.
@@ -40,6 +40,7 @@ from moik.algorithms.moo.mo_jaya import MOJAYA
 from moik.algorithms.moo.mo_modified_pso import MOMPSO
 from moik.algorithms.moo.moalo import MOALO
 from moik.algorithms.moo.moda import MODA
+from moik.algorithms.moo.moead import MOEAD
 from moik.algorithms.moo.moead_pymoo import PymooMOEAD
 from moik.algorithms.moo.moeosma import MOEOSMA
 from moik.algorithms.moo.mogwo import MOGWO
@@ -183,8 +184,8 @@ _MULTI = [
     ("mo-jaya", MOJAYA, f"{_ROKBANI_2022} (baseline, Section 5.2)"),
     ("mo-csa", MOCSA, f"{_ROKBANI_2022} (baseline, Section 5.2)"),
     ("nsga2", NSGA2, "pymoo: NSGA-II (Deb et al. 2002, DOI 10.1109/4235.996017)"),
-    ("moead", PymooMOEAD, "pymoo: MOEA/D (Zhang & Li 2007, DOI 10.1109/TEVC.2007.892759), "
-                     "Das-Dennis directions by default"),
+    ("moead", MOEAD, "Zhang & Li 2007, IEEE Trans. Evol. Comput. 11(6), 712-731, "
+                     "DOI 10.1109/TEVC.2007.892759"),
     ("moead-pymoo", PymooMOEAD, "pymoo: MOEA/D (Zhang & Li 2007, DOI 10.1109/TEVC.2007.892759), "
                                 "Das-Dennis directions by default"),
     ("sms-emoa", SMSEMOA, "pymoo: SMS-EMOA (Beume, Naujoks & Emmerich 2007, "

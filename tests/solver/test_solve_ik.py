@@ -246,3 +246,15 @@ def test_max_evals_is_honoured_by_the_first_stage():
     assert res.status in ("solved", "not-converged")  # cut short by the budget: no verdict
     full = solve_ik(robot, target.position * 0.9 + 0.05, seed=0)
     assert full.n_eval >= res.n_eval
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_equal_seeds_for_targets_and_solver_share_no_stream(seed):
+    """The Quickstart's pattern: a target of ``seed=s`` solved with ``seed=s``. The first
+    random start is not the configuration the target came from (it was, when both drew
+    ``default_rng(s)``: ``solved`` with errors of exactly 0.0)."""
+    robot = get_robot("eosma7")
+    target = random_reachable_targets(robot, 1, seed=seed)[0]
+    res = solve_ik(robot, target.pose, seed=seed)
+    assert res.success and res.position_error > 0.0
+    assert not np.array_equal(res.q, target.q_source)

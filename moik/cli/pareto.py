@@ -16,7 +16,8 @@ from pathlib import Path
 
 import numpy as np
 
-from moik.cli.common import joint_values
+from moik.cli.common import PARETO_OPTIONS, joint_values, library_call
+from moik.cli.solutions import euler_angles
 from moik.cli.solutions import target as target_of
 from moik.exceptions import ParameterError
 from moik.plotting.pareto import plot_pareto_ik
@@ -42,13 +43,15 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
     target = target_of(args)
     rotation = None
     if args.preferred_euler is not None:
-        rotation = Target.from_euler(args.target, args.preferred_euler,
-                                     convention=args.convention, degrees=args.deg).rotation
+        angles = euler_angles(args.preferred_euler, args.deg, "--preferred-euler")
+        rotation = Target.from_euler(args.target, angles, convention=args.convention,
+                                     degrees=args.deg).rotation
     q_current = (None if args.q_current is None
                  else joint_values(robot, args.q_current, args.deg, "--q-current"))
-    res = solve_ik_pareto(robot, target, objectives=parse_criteria(args.pareto),
-                          q_current=q_current, n_solutions=args.pareto_size,
-                          seed=args.seed, method=args.pareto_method, rotation=rotation)
+    with library_call(PARETO_OPTIONS):
+        res = solve_ik_pareto(robot, target, objectives=parse_criteria(args.pareto),
+                              q_current=q_current, n_solutions=args.pareto_size,
+                              seed=args.seed, method=args.pareto_method, rotation=rotation)
     index = res.compromise_index() if len(res.X) else None
     print(json.dumps(as_json(robot, target, res, index)) if args.json
           else format_result(robot, target, res, index))

@@ -10,6 +10,7 @@ import argparse
 import numpy as np
 
 from moik.cli.output import display_q, floats, kind, print_json, q_units
+from moik.exceptions import TargetError
 from moik.kinematics.orientation import eosma_euler, zyx_euler
 from moik.problems.targets import Target
 from moik.robots import Robot
@@ -19,8 +20,17 @@ def target(args: argparse.Namespace) -> Target:
     """The target of ``--target`` and ``--euler`` (``--convention``, ``--deg``)."""
     if args.euler is None:
         return Target(args.target)
-    return Target.from_euler(args.target, args.euler, convention=args.convention,
-                             degrees=args.deg)
+    return Target.from_euler(args.target, euler_angles(args.euler, args.deg, "--euler"),
+                             convention=args.convention, degrees=args.deg)
+
+
+def euler_angles(angles: list[float], degrees: bool, option: str) -> list[float]:
+    """``angles`` as given; refused in the command's words when, without ``--deg``, one
+    exceeds 2 pi (the library says ``degrees=True``)."""
+    if not degrees and any(abs(a) > 2 * np.pi + 1e-9 for a in angles):
+        raise TargetError(f"{option} angles {angles} exceed 2 pi in magnitude; they are "
+                          "radians: add --deg to give degrees")
+    return angles
 
 
 def print_pose(robot: Robot, q: np.ndarray, T: np.ndarray, inside: bool, as_json: bool) -> None:

@@ -37,8 +37,9 @@ def print_pose(robot: Robot, q: np.ndarray, T: np.ndarray, inside: bool, as_json
     """The pose ``T`` of joint vector ``q``: matrix, position and Euler angles, full precision."""
     R = T[:3, :3]
     if as_json:
-        print_json({"robot": robot.name, "unit": robot.unit, "joint_names": robot.joint_names,
-                    "q": q.tolist(), "pose": T.tolist(), "position": T[:3, 3].tolist(),
+        print_json({"command": "fk", "robot": robot.name, "unit": robot.unit,
+                    "joint_names": list(robot.joint_names), "q": q.tolist(),
+                    "pose": T.tolist(), "position": T[:3, 3].tolist(),
                     "rotation": R.tolist(), "zyx_euler": zyx_euler(R).tolist(),
                     "eosma_euler": eosma_euler(R).tolist(), "within_limits": inside})
         return
@@ -51,13 +52,16 @@ def print_pose(robot: Robot, q: np.ndarray, T: np.ndarray, inside: bool, as_json
     print(f"EOSMA Eq. 26 Euler (alpha, beta, gamma) deg: {floats(np.degrees(eosma_euler(R)))}")
 
 
-def print_solve_json(robot: Robot, target: Target, res, errors: list, plots: list) -> None:
+def print_solve_json(robot: Robot, target: Target, res, errors: list, plots: list,
+                     n_solutions: int) -> None:
     """The ``solve`` document: status, q, errors, every solution with its errors, front."""
     print_json({
-        "robot": robot.name, "unit": robot.unit, "joint_names": robot.joint_names,
+        "command": "solve", "robot": robot.name, "unit": robot.unit,
+        "joint_names": list(robot.joint_names),
         "target": {"position": target.position.tolist(),
                    "rotation": None if target.rotation is None else target.rotation.tolist()},
         "status": res.status, "success": res.success, "n_eval": res.n_eval,
+        "n_solutions": n_solutions,
         "time_s": res.time, "q": res.q.tolist(), "position_error": res.position_error,
         "orientation_error": res.orientation_error,
         "solutions": [{"q": q.tolist(), "position_error": p, "orientation_error": o}

@@ -87,7 +87,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
     if plots:
         _plot(arm, goal, Q, res.status, plots)
     if args.json:
-        solutions.print_solve_json(arm, goal, res, errors, plots)
+        solutions.print_solve_json(arm, goal, res, errors, plots, args.n_solutions)
     else:
         solutions.print_solve(arm, goal, res, Q, errors, plots)
     return 0 if res.success else 1

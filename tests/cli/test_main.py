@@ -422,3 +422,24 @@ def test_the_limits_warning_names_each_joint_outside(capsys):
     err = capsys.readouterr().err
     assert ("q is outside the joint limits: joint 2 (q2) = 1 above its upper limit 0.523599; "
             "joint 7 (q7) = -1 below its lower limit -0.523599") in err
+
+
+def test_fk_solve_and_pareto_json_share_one_schema_family(capsys):
+    """The keys every document has, and those of the solving ones (moik.cli's docstring)."""
+    common = {"command", "robot", "unit", "joint_names", "q"}
+    solving = common | {"target", "status", "success", "n_eval", "time_s", "position_error",
+                        "orientation_error", "solutions", "plots"}
+    main(["fk", "planar2", "0.1", "0.2", "--json"])
+    fk = json.loads(capsys.readouterr().out)
+    target = ["--target", *map(str, fk["position"])]
+    main(["solve", "planar2", *target, "--json"])
+    solve = json.loads(capsys.readouterr().out)
+    main(["solve", "planar2", *target, "--pareto", "manipulability", "--json"])
+    pareto = json.loads(capsys.readouterr().out)
+    assert common <= set(fk) and fk["command"] == "fk"
+    assert solving <= set(solve) and solve["command"] == "solve" and solve["n_solutions"] == 1
+    assert solving <= set(pareto) and pareto["command"] == "pareto"
+    assert solve["status"] == pareto["status"] == "solved"
+    for doc in (solve, pareto):
+        assert set(doc["solutions"][0]) == {"q", "position_error", "orientation_error"}
+        assert set(doc["target"]) == {"position", "rotation"}

@@ -14,7 +14,7 @@ import numpy as np
 
 from moik._validate import integer
 from moik.cli import pareto, solutions
-from moik.cli.common import joint_values, robot
+from moik.cli.common import SOLVE_OPTIONS, joint_values, library_call, robot
 from moik.cli.solutions import target
 from moik.exceptions import ParameterError
 from moik.kinematics.orientation import orientation_error
@@ -81,15 +81,16 @@ def cmd_solve(args: argparse.Namespace) -> int:
     goal = target(args)
     q_current = (None if args.q_current is None
                  else joint_values(arm, args.q_current, args.deg, "--q-current"))
-    res = solve_ik(arm, goal, method=args.algorithm, seed=seed, tol=_tol(args.tol),
-                   n_solutions=args.n_solutions, starts=args.starts, max_evals=args.max_evals,
-                   q_current=q_current)
+    with library_call(SOLVE_OPTIONS):
+        res = solve_ik(arm, goal, method=args.algorithm, seed=seed, tol=_tol(args.tol),
+                       n_solutions=args.n_solutions, starts=args.starts,
+                       max_evals=args.max_evals, q_current=q_current)
     Q = res.solutions if len(res.solutions) else res.q[None]
     errors = [(res.position_error, res.orientation_error)] + _errors(arm, goal, Q[1:])
     if plots:
         _plot(arm, goal, Q, res.status, plots)
     if args.json:
-        solutions.print_solve_json(arm, goal, res, errors, plots)
+        solutions.print_solve_json(arm, goal, res, errors, plots, args.n_solutions)
     else:
         solutions.print_solve(arm, goal, res, Q, errors, plots)
     if html is not None:

@@ -20,12 +20,17 @@ arrays, about 1 us) inside the compiled start loop, once per call instead of onc
 per start.
 
 Extension points for collision terms (the collision issue): (1) add the collision
-model's arrays as fields of :class:`IKContext` (``FIELDS``, :func:`_new_context`, and
-one keyword of :func:`ik_context`: an empty array when a solve has none), (2) add the
-scratch of their distances and gradients to :class:`LMWorkspace` / :func:`lm_workspace`,
-(3) add their residual block in :func:`moik.solver.lm.residual` (rows after the 6 pose
-rows, scaled like them) and their acceptance test in :func:`accepted`; the start loop
-(:func:`moik.solver.starts.run_starts`) and its callers stay as they are.
+model's arrays (capsules on link frames, obstacles, a margin) as fields of
+:class:`IKContext` (``FIELDS``, :func:`_new_context`, and one keyword of
+:func:`ik_context`: empty arrays when a solve has none), (2) add the scratch of their
+distances and gradients to :class:`LMWorkspace` / :func:`lm_workspace`, (3) add their
+residual rows in :func:`moik.solver.lm.residual` (after the 6 pose rows, with ``r`` and
+``Jr`` sized for them in the workspace) or a distance test in
+:func:`moik.solver.starts.recheck` (the acceptance of an end). The start loop
+(:func:`moik.solver.starts.run_starts`, :func:`~moik.solver.starts.run_batch`) and its
+callers stay as they are. A context is not picklable or copyable (numba StructRef):
+objects that pymoo deep-copies build theirs per call, as
+:class:`~moik.solver.pareto_search.Projector` does.
 """
 
 from __future__ import annotations

@@ -9,8 +9,6 @@ before the search, whose options would otherwise never be looked at).
 from __future__ import annotations
 
 import importlib
-from collections.abc import Iterator
-from contextlib import contextmanager
 from dataclasses import dataclass, fields
 from typing import Any
 
@@ -75,11 +73,12 @@ class SearchOptions:
 
     @classmethod
     def of(cls, **values) -> SearchOptions:
-        """``SearchOptions(**values)``; when every value is its field's default (the
-        usual call), the one validated :data:`DEFAULT_OPTIONS` instead (solve_ik's hot
-        path: validating costs about 30 us, a first-stage solve about 100 us)."""
-        if all(type(v) is type(SEARCH_DEFAULTS[k]) and v == SEARCH_DEFAULTS[k]
-               for k, v in values.items()):
+        """``SearchOptions(**values)``; when every value is its field's default object
+        (``solve_ik``'s signature passes them through: an identity test, so ``True`` for
+        ``1`` is still validated), the one validated :data:`DEFAULT_OPTIONS` instead
+        (solve_ik's hot path: validating costs about 30 us, a first-stage solve about
+        100 us)."""
+        if all(v is SEARCH_DEFAULTS[k] for k, v in values.items()):
             return DEFAULT_OPTIONS
         return cls(**values)
 
@@ -138,8 +137,7 @@ _MAX_STATES = 4096
 _FREE: list[np.random.Generator] = []  # generators no solve holds
 
 
-@contextmanager
-def start_generator(seed: int) -> Iterator[np.random.Generator]:
+class start_generator:  # noqa: N801 (used as a function: ``with start_generator(seed)``)
     """``Generator(PCG64(SeedSequence(seed)))`` for an integer ``seed`` >= 0, bit for bit,
     held for the ``with`` block.
 
@@ -149,20 +147,25 @@ def start_generator(seed: int) -> Iterator[np.random.Generator]:
     a free list: a solve that re-enters ``solve_ik`` (or another thread) gets a generator
     of its own, never one another block still holds.
     """
-    state = _PCG64_STATES.get(seed)
-    if state is None:
-        if len(_PCG64_STATES) >= _MAX_STATES:
-            _PCG64_STATES.clear()
-        state = _PCG64_STATES[seed] = np.random.PCG64(np.random.SeedSequence(seed)).state
-    try:
-        generator = _FREE.pop()
-    except IndexError:
-        generator = np.random.Generator(np.random.PCG64(0))
-    generator.bit_generator.state = state
-    try:
-        yield generator
-    finally:
-        _FREE.append(generator)
+
+    def __init__(self, seed: int):
+        state = _PCG64_STATES.get(seed)
+        if state is None:
+            if len(_PCG64_STATES) >= _MAX_STATES:
+                _PCG64_STATES.clear()
+            state = _PCG64_STATES[seed] = np.random.PCG64(np.random.SeedSequence(seed)).state
+        self._state = state
+
+    def __enter__(self) -> np.random.Generator:
+        try:
+            self._generator = _FREE.pop()
+        except IndexError:
+            self._generator = np.random.Generator(np.random.PCG64(0))
+        self._generator.bit_generator.state = self._state
+        return self._generator
+
+    def __exit__(self, *exc) -> None:
+        _FREE.append(self._generator)
 
 
 DEFAULT_OPTIONS = SearchOptions()

@@ -172,13 +172,14 @@ class SolveSession:
         """Compiled Levenberg-Marquardt from the rows of ``Q0`` in turn, until
         :attr:`wanted` distinct solutions are known; whether it found any new one.
         ``patient``: no start is abandoned for slow progress (a start near a solution).
+        The rows of ``Q0`` are overwritten by the ends (pass a copy to keep them).
         Each converged end is re-checked by an FK pass of its own in the same compiled
         call (:func:`~moik.solver.starts.run_starts`), as :meth:`consider` does."""
         dof, n_known = self.robot.dof, len(self.found)
-        found = found_table(self.wanted, dof, np.array(self.found), np.array(self.found_errors))
+        found = found_table(self.wanted, dof, self.found, self.found_errors)
         best = np.empty(dof + 1)
         best[0] = np.inf if self.best is None else self.best[0]
-        starts = np.array(Q0, dtype=np.float64, order="C", copy=True)
+        starts = kernel_array(Q0)  # overwritten by the ends: the callers' rows are fresh
         policy = (CHECK | (PATIENT if patient else 0), max(self.max_evals - self.n_eval, 1))
         n_found, n_eval, _ = run_starts(self.ctx, starts, policy, found, best,
                                         np.empty((len(starts), 2)))

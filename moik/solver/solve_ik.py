@@ -170,7 +170,7 @@ def _solve(session: SolveSession, opts: SearchOptions, starts_rng: np.random.Gen
         return _out_of_reach(session, opts, starts_rng, q_current, t0)
     if polish and (q_current is not None or opts.starts):
         if q_current is not None:  # the user's hint: never abandoned for slow progress
-            session.local_starts(q_current[None], patient=True)
+            session.local_starts(q_current[None].copy(), patient=True)
         first = min(opts.starts, FIRST_STARTS)  # most poses need one or two starts: draw
         Q0 = robot.random_q(first, rng=starts_rng)  # the rest only when they are needed
         if len(session.found) < n_solutions and first and session.n_eval < opts.max_evals:

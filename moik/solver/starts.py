@@ -205,16 +205,14 @@ def lm_front(ctx, Q0, weights, budget, out_Q):
     return n_eval
 
 
-def found_table(want: int, dof: int, known: np.ndarray | None = None,
-                errors: np.ndarray | None = None) -> np.ndarray:
-    """The ``found`` table of :func:`run_starts`: ``known`` rows (and their ``errors``)
-    first, the rest NaN."""
+def found_table(want: int, dof: int, known=(), errors=()) -> np.ndarray:
+    """The ``found`` table of :func:`run_starts`: the ``known`` rows (and their
+    ``errors``) first, the rest NaN."""
     table = np.full((want, dof + 2), np.nan)
-    if known is not None and len(known):
-        k = min(len(known), want)
-        table[:k, :dof] = known[:k]
-        if errors is not None:
-            table[:k, dof:] = errors[:k]
+    for k in range(min(len(known), want)):
+        table[k, :dof] = known[k]
+        if len(errors):
+            table[k, dof:] = errors[k]
     return table
 
 
@@ -261,7 +259,8 @@ def multistart(robot: Robot, target: Target, Q0: np.ndarray, *, stop_position: f
     ctx = ik_context(robot, target, stop=(stop_position, stop_orientation), distinct=distinct,
                      max_iter=max_iter)
     starts = np.array(Q0, dtype=np.float64, order="C", copy=True)
-    found, best = found_table(want, robot.dof, known), np.full(robot.dof + 1, np.inf)
+    found = found_table(want, robot.dof, () if known is None else known)
+    best = np.full(robot.dof + 1, np.inf)
     n_found, n_eval, used = run_starts(ctx, starts, (PATIENT if patient else 0, max_evals),
                                        found, best, np.empty((len(starts), 2)))
     return MultiStartResult(found[:n_found, :robot.dof], best[1:], float(best[0]), int(n_eval),

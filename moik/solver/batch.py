@@ -24,7 +24,7 @@ from moik.kinematics.orientation import check_rotation
 from moik.problems.targets import Target
 from moik.robots.catalog import as_robot
 from moik.solver.context import ik_context
-from moik.solver.options import search_options, seed_sequence
+from moik.solver.options import search_options, seed_sequence, starts_sequence
 from moik.solver.session import (
     LM_ITERATIONS,
     STOP_FRACTION,
@@ -165,7 +165,8 @@ def _first_stage(robot, positions, rotations, qc, opts, tol, seeds, out_Q, solve
     if qc is not None:
         current = np.array(qc[:, None], dtype=np.float64, copy=True)  # run_batch moves it
         run_batch(ctx, current, targets, (PATIENT, opts.max_evals), found, n_evals)
-    rngs = [np.random.Generator(np.random.PCG64(s)) for s in seeds]  # as solve_ik's
+    rngs = [np.random.Generator(np.random.PCG64(starts_sequence(s)))  # as solve_ik's
+            for s in seeds]
     first_n = min(opts.starts, FIRST_STARTS)  # then the rest, for the unsolved only
     run_batch(ctx, kernel_array(np.stack([robot.random_q(first_n, rng=g) for g in rngs])),
               targets, (0, opts.max_evals), found, n_evals)

@@ -132,14 +132,30 @@ def seed_sequence(seed) -> np.random.SeedSequence:
     return seed if isinstance(seed, np.random.SeedSequence) else np.random.SeedSequence(seed)
 
 
-_PCG64_STATES: dict[int, Any] = {}  # PCG64(SeedSequence(seed)).state of integer seeds seen
+STARTS_KEY = 0x6D6F696B
+"""The spawn key of the random starts' stream: ``SeedSequence(seed, spawn_key=(STARTS_KEY,))``.
+
+Not the seed's own stream, which :func:`moik.problems.random_reachable_targets` (and
+``numpy.random.default_rng(seed)``) draws from: with one stream the first start of
+``solve_ik(..., seed=s)`` was the configuration a target of ``seed=s`` came from."""
+
+
+def starts_sequence(seed: int | np.random.SeedSequence) -> np.random.SeedSequence:
+    """The SeedSequence of the random starts of ``seed`` (:data:`STARTS_KEY`)."""
+    if isinstance(seed, np.random.SeedSequence):
+        return np.random.SeedSequence(seed.entropy, spawn_key=(*seed.spawn_key, STARTS_KEY),
+                                      pool_size=seed.pool_size)
+    return np.random.SeedSequence(seed, spawn_key=(STARTS_KEY,))
+
+
+_PCG64_STATES: dict[int, Any] = {}  # PCG64(starts_sequence(seed)).state of seeds seen
 _MAX_STATES = 4096
 _FREE: list[np.random.Generator] = []  # generators no solve holds
 
 
 class start_generator:  # noqa: N801 (used as a function: ``with start_generator(seed)``)
-    """``Generator(PCG64(SeedSequence(seed)))`` for an integer ``seed`` >= 0, bit for bit,
-    held for the ``with`` block.
+    """``Generator(PCG64(starts_sequence(seed)))`` for an integer ``seed`` >= 0, bit for
+    bit, held for the ``with`` block.
 
     Seeding a PCG64 through a SeedSequence costs about 35 us, a third of a first-stage
     solve; loading a kept state into an existing generator about 1.5 us. So the initial
@@ -153,7 +169,7 @@ class start_generator:  # noqa: N801 (used as a function: ``with start_generator
         if state is None:
             if len(_PCG64_STATES) >= _MAX_STATES:
                 _PCG64_STATES.clear()
-            state = _PCG64_STATES[seed] = np.random.PCG64(np.random.SeedSequence(seed)).state
+            state = _PCG64_STATES[seed] = np.random.PCG64(starts_sequence(seed)).state
         self._state = state
 
     def __enter__(self) -> np.random.Generator:

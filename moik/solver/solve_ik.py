@@ -45,6 +45,7 @@ from moik.solver.options import (
     algorithm_registry,
     seed_sequence,
     start_generator,
+    starts_sequence,
 )
 from moik.solver.result import IKResult, ik_result
 from moik.solver.session import SolveSession, tolerances
@@ -99,7 +100,9 @@ def solve_ik(robot: Robot, target, *, method: str = _D["method"],
             multiple of 2 pi (within the limits) that brings it nearest to
             ``q_current`` (EOSMA Eq. 31 idea).
         seed: Seed (int or ``numpy.random.SeedSequence``) of every random
-            choice: the same seed gives the same result bit for bit.
+            choice: the same seed gives the same result bit for bit. The random
+            starts draw from their own stream of it (``options.STARTS_KEY``), not
+            the stream ``random_reachable_targets(..., seed=seed)`` draws from.
         tol: Tolerance: a number ``t`` means position <= ``t * robot.reach`` and
             orientation <= ``t`` rad; or a pair (position in robot unit, rad).
         max_evals: FK evaluation budget of the first stage, the search and the
@@ -157,8 +160,8 @@ def solve_ik(robot: Robot, target, *, method: str = _D["method"],
     if seeds is None:  # the first stage's generator; later stages spawn from the seed
         with start_generator(seed) as starts_rng:
             return _solve(session, opts, starts_rng, q_current, seed, t0)
-    return _solve(session, opts, np.random.Generator(np.random.PCG64(seeds)), q_current,
-                  seeds, t0)
+    return _solve(session, opts, np.random.Generator(np.random.PCG64(starts_sequence(seeds))),
+                  q_current, seeds, t0)
 
 
 def _solve(session: SolveSession, opts: SearchOptions, starts_rng: np.random.Generator,

@@ -13,6 +13,7 @@ from moik.solver.options import (
     DEFAULT_OPTIONS,
     DEFAULT_POP_SIZES,
     SEARCH_DEFAULTS,
+    STARTS_KEY,
     SearchOptions,
     seed_sequence,
     start_generator,
@@ -58,17 +59,21 @@ def test_seed_sequence():
 
 @pytest.mark.parametrize("seed", [0, 7, 2**40])
 def test_start_generator_is_a_fresh_seeded_generator_each_time(seed):
-    """Bit for bit ``Generator(PCG64(SeedSequence(seed)))``, reset on every call."""
+    """Bit for bit ``Generator(PCG64(SeedSequence(seed, spawn_key=(STARTS_KEY,))))``, reset
+    on every call, and not the stream of ``default_rng(seed)`` (the targets' stream)."""
     for _ in range(2):
         with start_generator(seed) as g:
             got = g.random(16)
-        want = np.random.Generator(np.random.PCG64(np.random.SeedSequence(seed))).random(16)
+        want = np.random.Generator(np.random.PCG64(
+            np.random.SeedSequence(seed, spawn_key=(STARTS_KEY,)))).random(16)
         assert np.array_equal(got, want)
+        assert not np.any(got == np.random.default_rng(seed).random(16))
 
 
 def test_a_nested_start_generator_leaves_the_outer_stream_alone():
     """A stage that re-enters solve_ik gets a generator of its own."""
-    want = np.random.Generator(np.random.PCG64(np.random.SeedSequence(3))).random(8)
+    want = np.random.Generator(np.random.PCG64(
+        np.random.SeedSequence(3, spawn_key=(STARTS_KEY,)))).random(8)
     with start_generator(3) as outer:
         first = outer.random(4)
         with start_generator(5) as inner:

@@ -9,7 +9,7 @@ the results folder (remote Dask workers need no shared file system).
   of one trial); workers ignore SIGINT, so Ctrl-C reaches only the parent, which
   terminates the pool: the trials in flight are lost, the stored ones are not.
 - ``dask``: ``distributed.Client(address)`` (connected before the results folder
-  is made); ``client.map(run_trial, specs)`` and ``distributed.as_completed``;
+  is made); ``client.map(warm_trial, specs)`` and ``distributed.as_completed``;
   on interrupt the futures are cancelled.
   Needs the optional extra ``moik[dask]`` and moik installed on the workers.
 
@@ -19,6 +19,8 @@ stderr at most every two seconds: trials done/total, failures, ETA.
 
 from __future__ import annotations
 
+import dataclasses
+import json
 import multiprocessing
 import signal
 import sys
@@ -29,11 +31,29 @@ from moik.exceptions import ParameterError
 from moik.experiments.spec import TrialSpec
 from moik.experiments.trials import run_trial
 
+_WARMED: set[str] = set()  # this process's warmed-up (kind, algorithm, robot, problem)
+
+
+def warm_trial(spec: TrialSpec) -> tuple[dict, dict]:
+    """:func:`run_trial`, after an untimed warm-up the first time this process meets the
+    trial's algorithm and problem: the same trial with one iteration (and no evaluation
+    budget), so that the trial's ``time`` excludes the one-off load (or compilation) of
+    the compiled kernels, which a worker process would otherwise charge to its first
+    trial (2.8 s instead of 0.014 s per trial of ``mpso-single --quick`` on 2 workers)."""
+    key = json.dumps([spec.kind, spec.algorithm, spec.robot, spec.problem], sort_keys=True,
+                     default=str)
+    if key not in _WARMED:
+        _WARMED.add(key)
+        problem = {k: v for k, v in spec.problem.items() if k != "evaluations"}
+        run_trial(dataclasses.replace(spec, iterations=1, problem=problem, protocol=None,
+                                      record_history=False))
+    return run_trial(spec)
+
 
 def run_serial(specs: Sequence[TrialSpec]) -> Iterator[tuple[dict, dict]]:
-    """Run the trials one after another in this process."""
+    """Run the trials one after another in this process (each warmed up: :func:`warm_trial`)."""
     for spec in specs:
-        yield run_trial(spec)
+        yield warm_trial(spec)
 
 
 def _ignore_sigint() -> None:
@@ -46,7 +66,7 @@ def run_pool(specs: Sequence[TrialSpec], workers: int) -> Iterator[tuple[dict, d
     ctx = multiprocessing.get_context(method)
     pool = ctx.Pool(processes=workers, initializer=_ignore_sigint)
     try:
-        yield from pool.imap_unordered(run_trial, specs, chunksize=1)
+        yield from pool.imap_unordered(warm_trial, specs, chunksize=1)
         pool.close()
     except BaseException:
         pool.terminate()
@@ -82,7 +102,7 @@ def run_on_client(specs: Sequence[TrialSpec], client) -> Iterator[tuple[dict, di
 
     futures = []
     try:
-        futures = client.map(run_trial, list(specs), pure=False)
+        futures = client.map(warm_trial, list(specs), pure=False)
         for future in as_completed(futures):
             yield future.result()
     finally:

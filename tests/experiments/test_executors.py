@@ -3,9 +3,11 @@
 import pytest
 
 from moik.exceptions import ParameterError
+from moik.experiments import executors
 from moik.experiments.executors import Progress, run_dask
 from moik.experiments.runner import check_workers, run_experiment
 from moik.experiments.store import ResultStore
+from moik.experiments.trials import build_trials
 
 from .conftest import stable
 
@@ -57,3 +59,19 @@ def test_progress_fallback_line(capsys):
         bar.update(ok)
     err = capsys.readouterr().err
     assert "x (+2 resumed): 4/4 trials, 1 failed" in err
+
+
+def test_each_process_warms_each_algorithm_up_before_timing_it(monkeypatch, tiny_config):
+    """The first trial of an algorithm and problem in a process is preceded by an untimed
+    one-iteration run of it (so its time excludes the kernel load); later trials are not."""
+    calls = []
+    monkeypatch.setattr(executors, "run_trial", lambda spec: calls.append(spec) or ({}, {}))
+    monkeypatch.setattr(executors, "_WARMED", set())
+    specs = [s for s in build_trials(tiny_config) if s.target_index == 0]
+    eosma = [s for s in specs if s.label == "eosma"]
+    for spec in (*eosma, *specs):
+        executors.warm_trial(spec)
+    iterations = [(c.label, c.iterations) for c in calls]
+    assert iterations[:2] == [("eosma", 1), ("eosma", tiny_config["iterations"])]
+    assert iterations.count(("eosma", 1)) == 1 and iterations.count(("pso", 1)) == 1
+    assert len(calls) == len(eosma) + len(specs) + 2

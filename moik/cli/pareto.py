@@ -4,7 +4,8 @@
 in :mod:`moik.cli.parser`). It prints the members (joint values in degrees;
 prismatic ones in the robot's unit) with their criteria and marks the compromise,
 or with ``--json`` one JSON object (joint values in radians); ``--plot FILE``
-draws the front and postures (:func:`moik.plotting.pareto.plot_pareto_ik`). Exit
+draws the front and postures (:func:`moik.plotting.pareto.plot_pareto_ik`), ``--html
+FILE`` writes the interactive explorer (:func:`moik.plotting.pareto_explorer`). Exit
 status 0 when an exact solution was found, 1 otherwise.
 """
 
@@ -20,6 +21,7 @@ from moik.cli.common import PARETO_OPTIONS, joint_values, library_call
 from moik.cli.solutions import euler_angles
 from moik.cli.solutions import target as target_of
 from moik.exceptions import ParameterError
+from moik.plotting.explorer import pareto_explorer
 from moik.plotting.pareto import plot_pareto_ik
 from moik.problems.targets import Target
 from moik.robots import get_robot
@@ -41,6 +43,7 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
     default the catalog robot ``args.robot``."""
     robot = get_robot(args.robot) if robot is None else robot
     target = target_of(args)
+    html = html_file(args.html)
     rotation = None
     if args.preferred_euler is not None:
         angles = euler_angles(args.preferred_euler, args.deg, "--preferred-euler")
@@ -64,7 +67,24 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
           else format_result(robot, target, res, index))
     if plots and not args.json:
         print(f"plot written to {plots[0]} and {plots[1]}")
+    if html is not None and len(res.X):
+        pareto_explorer(res, robot, html, target=target)
+        if not args.json:
+            print(f"explorer written to {html}")
     return 0 if len(res.X) else 1
+
+
+def html_file(spec: str | None) -> Path | None:
+    """The file ``--html`` writes, checked before any solving (its folder must exist)."""
+    if spec is None:
+        return None
+    path = Path(spec)
+    if not spec or path.is_dir():
+        raise ParameterError(f"--html needs a file name, got {spec!r}")
+    if not path.parent.is_dir():
+        raise ParameterError(f"--html folder {str(path.parent)!r} does not exist (create it "
+                             "first)")
+    return path
 
 
 def as_json(robot, target: Target, res: ParetoIKResult, compromise: int | None,

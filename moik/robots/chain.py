@@ -146,6 +146,8 @@ class Robot:
             )
         if self.unit not in UNITS:
             raise ParameterError(f"unit must be one of {UNITS}, got {self.unit!r}")
+        with np.errstate(over="ignore", invalid="ignore"):  # inf is what is checked for
+            checks.finite_reach(self.name, self.reach, self.unit)
         checks.warn_if_degrees(self.name, cols, np.array([t == "prismatic" for t in types]),
                                stacklevel=3)
 

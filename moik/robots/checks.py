@@ -34,6 +34,7 @@ FULL_TURN = 2 * np.pi + 1e-6  # beyond this a DH twist or offset looks like degr
 LIMIT_TURNS = 2  # joint limits beyond two turns look like degrees (multi-turn joints
 # legitimately exceed one turn: the IRB-2600's axes 4 and 6 reach +-400 deg = 6.98 rad)
 RIGID_ATOL = 1e-6  # orthonormality tolerance of a rigid transform (as for target rotations)
+MAX_REACH = 1e100  # in the robot's unit: squares and sums of squares of lengths stay finite
 
 
 def _vector(name: str, values, dof: int) -> np.ndarray:
@@ -124,6 +125,23 @@ def rigid_transform(name: str, T) -> np.ndarray:
                              f"3x3) must be orthonormal with determinant +1, got {R.tolist()}")
     M.setflags(write=False)
     return M
+
+
+def finite_reach(robot: str, reach: float, unit: str) -> None:
+    """Refuses a chain whose reach (the bound on the tool's distance) is not a usable number.
+
+    Finite lengths can still add up to ``inf`` (``1e200`` m origins), and lengths
+    whose squares overflow break every error and tolerance computed from them
+    (a tolerance of ``1e-9 x inf`` accepts any answer).
+
+    Raises:
+        ParameterError: ``reach`` is NaN, infinite or above :data:`MAX_REACH`.
+    """
+    if not reach <= MAX_REACH:  # NaN fails the comparison too
+        raise ParameterError(
+            f"robot {robot!r}: its reach (the sum of its link offsets and prismatic strokes) is "
+            f"{reach:.3g} {unit}; expected a finite length below {MAX_REACH:.0e} {unit} "
+            "(larger lengths overflow double precision in FK errors and tolerances)")
 
 
 def warn_if_degrees(robot: str, cols: dict[str, np.ndarray], prismatic: np.ndarray,

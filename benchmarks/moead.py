@@ -2,7 +2,7 @@
 
 Run: ``.venv/bin/python benchmarks/moead.py [--repeats 3] [--evals 20000]``
 
-Setting (``experiments/eosma_table8.py``): the ``eosma7-m`` arm, objectives (position
+Setting (``experiments/eosma_table8.toml``): the ``eosma7-m`` arm, objectives (position
 error, Eq. 26 Euler orientation error), poses P1 = (-0.25, 1.00, 0.50) m and
 P2 = (0.50, -0.25, 0.75) m with Euler angles (0, 0, 0); N = 100 (Das-Dennis, two
 objectives: 100 directions), archive 100. Runs of ``--evals`` evaluations, moik's and

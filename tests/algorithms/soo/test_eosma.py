@@ -302,7 +302,7 @@ def test_table9_pose_is_reached_in_metres():
     paper's EOSMA reaches (50, -75, 75, 0, 0, 0) exactly. With the arm in metres
     3 runs (N=100, T=1000, q=1, a1=2; seeds 0-2) are enough for one exact
     solution (7 of 10 runs in ``eosma-table9``); in cm none of 10 runs reached it
-    (orientation stuck at 0.03-1.1 rad), see experiments/eosma_table9.py.
+    (orientation stuck at 0.03-1.1 rad), see experiments/eosma_table9.toml.
     The solution lies on the boundary family q2 = q3 = -90 deg as the paper's,
     or on the EO row's family (q1 near +-175 deg)."""
     from pymoo.optimize import minimize

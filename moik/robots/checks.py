@@ -6,7 +6,10 @@ per joint; base and tool are rigid transforms; lower limits do not exceed upper
 ones. Angles are radians: joint limits beyond two turns, or DH twists and
 offsets beyond one turn, look like degrees and raise a
 :class:`~moik.exceptions.DegreesWarning` (a warning, not an error: the values
-are legal, only suspicious).
+are legal, only suspicious); so do joint values (:func:`warn_if_joint_degrees`)
+beyond a joint's limits by more than a turn, or all whole numbers some beyond a
+turn (``fk([45, 0, 45, 0, 45, 0, 0])``). :func:`outside_limits` names the joints
+outside their limits, for every message about limits.
 """
 
 from __future__ import annotations
@@ -157,3 +160,47 @@ def warn_if_degrees(robot: str, cols: dict[str, np.ndarray], prismatic: np.ndarr
         warnings.warn(f"robot {robot!r}: {'; '.join(suspects)}: these look like degrees; moik "
                       "takes angles in radians (convert with numpy.radians)", DegreesWarning,
                       stacklevel=stacklevel + 1)
+
+
+def _joint(names: tuple[str, ...], j: int) -> str:
+    return f"joint {j + 1} ({names[j]})" if names else f"joint {j + 1}"
+
+
+def outside_limits(names: tuple[str, ...], lower: np.ndarray, upper: np.ndarray,
+                   q: np.ndarray) -> str:
+    """The joints of one joint vector ``q`` outside ``[lower, upper]``, in words ("" if none).
+
+    E.g. ``"joint 2 (j2) = 1.9 above its upper limit 1.5708"``.
+    """
+    parts = []
+    for j in np.flatnonzero((q < lower) | (q > upper)):
+        side, bound = ("below its lower", lower[j]) if q[j] < lower[j] else ("above its upper",
+                                                                              upper[j])
+        parts.append(f"{_joint(names, j)} = {q[j]:.6g} {side} limit {bound:.6g}")
+    return "; ".join(parts)
+
+
+def warn_if_joint_degrees(robot: str, names: tuple[str, ...], lower: np.ndarray,
+                          upper: np.ndarray, prismatic: np.ndarray, Q: np.ndarray, what: str,
+                          stacklevel: int, hint: str = "convert with numpy.radians") -> None:
+    """A :class:`DegreesWarning` when revolute joint values ``Q`` (``(dof,)`` or ``(n, dof)``)
+    look like degrees: one beyond its joint's limits by more than a turn, or every one a
+    whole number with some beyond a turn."""
+    Q2 = np.atleast_2d(Q)
+    rev = ~prismatic
+    if not rev.any() or Q2.size == 0 or not np.all(np.isfinite(Q2)):
+        return  # NaN and inf are refused by the caller
+    V = Q2[:, rev]
+    far = (upper[rev] + FULL_TURN < V) | (lower[rev] - FULL_TURN > V)
+    if far.any():
+        row, col = np.argwhere(far)[0]
+        j = int(np.flatnonzero(rev)[col])
+        why = (f"{_joint(names, j)} = {V[row, col]:.6g} is more than a turn beyond its limits "
+               f"[{lower[j]:.6g}, {upper[j]:.6g}]")
+    elif np.all(np.round(V) == V) and np.max(np.abs(V)) > FULL_TURN:
+        why = "every revolute value is a whole number and some exceed a turn (2 pi)"
+    else:
+        return
+    warnings.warn(f"{what} for robot {robot!r}: {why}: these look like degrees; moik takes "
+                  f"joint angles in radians ({hint})", DegreesWarning,
+                  stacklevel=stacklevel + 1)

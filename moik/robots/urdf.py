@@ -209,7 +209,7 @@ def _chain_joints(links, joints, base: str, tip: str | None) -> list[ET.Element]
         elif not movable:
             break
         else:
-            leaves = sorted(leaf for el in movable
+            leaves = sorted(leaf for el in children[link]  # a fixed leaf (a TCP) is a tip too
                             for leaf in _leaves(_child(el), children))
             raise URDFError(f"the chain branches at link {link!r}; pass tip_link= one of {leaves}")
         chain.append(nxt)
@@ -225,7 +225,9 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
         source: URDF file path, or the URDF's XML text.
         base_link: First link (default: the root link of the file).
         tip_link: Last link (default: follow the chain as the module doc says).
-        name: Robot name (default: the URDF's robot name).
+        name: Robot name (default ``"ROBOT:TIP"``: the URDF's robot name and the chain's
+            last link, e.g. ``"ur5:wrist_3_link"``, so that two chains of one file, or a
+            file's chain and the catalog arm made from it, do not share a name).
 
     Returns:
         The chain with ``joint_names`` the URDF names of its movable joints.
@@ -289,7 +291,7 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
         raise URDFError(f"no movable joint between {base_link!r} and {end!r}")
     tip = _child(chain[-1])
     stem = Path(label).stem if label != "<URDF string>" else "urdf"
-    default_name = root.get("name", stem)
+    default_name = f"{root.get('name', stem)}:{tip}"  # the file's name and the chain's tip
     try:
         return Robot(name=name or default_name,
                      origins=np.array(origins), lower=lower, upper=upper,

@@ -113,7 +113,24 @@ def test_urdf_from_a_string_equals_the_file():
     b = load_urdf(URDF_DIR / "ur5_robot.urdf", tip_link="tool0")
     Q = a.random_q(20, rng=np.random.default_rng(2))
     np.testing.assert_array_equal(a.fk(Q), b.fk(Q))
-    assert a.name == "ur5"
+    assert a.name == "ur5:tool0"  # the file's robot name and the chain's tip
+
+
+def test_a_files_default_chain_is_named_after_its_tip_not_the_catalog_arm():
+    """ur5_robot.urdf's default chain ends at wrist_3_link, 0.0823 m before the catalog
+    ``ur5``'s tool0: the two must not both be called "ur5"."""
+    file_arm, catalog = load_urdf(URDF_DIR / "ur5_robot.urdf"), get_robot("ur5")
+    assert file_arm.name == "ur5:wrist_3_link" and catalog.name == "ur5"
+    assert "-> wrist_3_link" in file_arm.source and "-> tool0" in catalog.source
+    q = np.zeros((1, 6))
+    gap = np.linalg.norm(file_arm.fk(q)[0, :3, 3] - catalog.fk(q)[0, :3, 3])
+    assert gap == pytest.approx(0.0823, abs=1e-4)
+
+
+def test_a_branching_chain_suggests_every_leaf_even_a_fixed_tcp():
+    with pytest.raises(URDFError, match="panda_hand_tcp") as exc:
+        load_urdf(URDF_DIR / "panda.urdf")
+    assert "panda_leftfinger" in str(exc.value)
 
 
 def test_cyclic_urdf_is_refused_not_hung():

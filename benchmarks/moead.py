@@ -7,8 +7,8 @@ error, Eq. 26 Euler orientation error), poses P1 = (-0.25, 1.00, 0.50) m and
 P2 = (0.50, -0.25, 0.75) m with Euler angles (0, 0, 0); N = 100 (Das-Dennis, two
 objectives: 100 directions), archive 100. Runs of ``--evals`` evaluations, moik's and
 pymoo's interleaved (seeds 0..repeats-1, after one warm-up run of each), process CPU
-seconds per run divided by the evaluations (CPU time: the machine may be shared), medians. Goal: moik's <= 10 us per evaluation
-(issue 26; pymoo's was measured at ~300 us).
+seconds per run divided by the evaluations (CPU time: the machine may be shared), medians.
+Goal: moik's <= 10 us per evaluation (issue 26; pymoo's was measured at ~300 us).
 """
 
 from __future__ import annotations

@@ -73,6 +73,25 @@ def find_limit(termination, attr: str) -> float:
     return limit
 
 
+def check_termination(termination) -> None:
+    """Refuse an ``n_gen`` or ``n_eval`` criterion below 1, anywhere in ``termination``
+    (pymoo itself fails on them with ``ZeroDivisionError`` or ``AssertionError``).
+
+    Raises:
+        ParameterError: Naming the criterion and the value given.
+    """
+    for attr, name in (("n_max_gen", "n_gen"), ("n_max_evals", "n_eval")):
+        value = getattr(termination, attr, None)
+        if value is not None and not value >= 1:
+            raise ParameterError(f"an {name!r} termination needs a limit >= 1 (the initial "
+                                 f"population is generation 1); got {value!r}")
+    for sub in getattr(termination, "criteria", ()):
+        check_termination(sub)
+    inner = getattr(termination, "termination", None)
+    if inner is not None:
+        check_termination(inner)
+
+
 def check_sizes(pop_size: object, min_pop_size: int, max_iter: object) -> tuple[int, int | None]:
     """``(pop_size, max_iter)`` validated: an integer >= ``min_pop_size``; a positive
     integer or None.

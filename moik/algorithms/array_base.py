@@ -65,12 +65,13 @@ from moik.algorithms.array_state import (
     check_termination,
     find_limit,
     finite_bounds,
-    initial_population,
+    initial_infill,
     planned_iterations,
     refuse_unknown_keywords,
 )
 from moik.algorithms.mechanics import constraint_violation
 from moik.algorithms.nonfinite import sanitise
+from moik.exceptions import ParameterError
 
 __all__ = ["ArrayStateAlgorithm"]
 
@@ -83,6 +84,8 @@ class ArrayStateAlgorithm(Algorithm):
         pop_size: Population size N.
         X0: Optional initial points (k rows within the bounds, k at most the initial
             population); the other rows are drawn uniformly.
+        sampling: pymoo's form of the same (a ``Sampling``, an array or a ``Population``,
+            :func:`~moik.algorithms.array_state.initial_infill`); not with ``X0``.
         max_iter: Schedule length T (update iterations after initialization, the papers'
             Max_t; ``t = 1 .. T``), fixed. None: planned before every iteration from the
             current termination (module doc).
@@ -109,13 +112,15 @@ class ArrayStateAlgorithm(Algorithm):
     _pending: np.ndarray | None
 
     def __init__(self, *, pop_size: int = 100, X0: np.ndarray | None = None,
-                 max_iter: int | None = None, **kwargs):
+                 max_iter: int | None = None, sampling: object = None, **kwargs):
         refuse_unknown_keywords(type(self), kwargs)
         kwargs.setdefault("output", self._default_output())
         super().__init__(**kwargs)
         self.pop_size, self._fixed_T = check_sizes(pop_size, self.min_pop_size, max_iter)
         self.max_iter = cast(int, self._fixed_T)  # None: planned in setup() (_plan_schedule)
-        self.X0 = X0
+        self.X0, self.sampling = X0, sampling
+        if X0 is not None and sampling is not None:
+            raise ParameterError("give the initial points as X0 or as sampling, not both")
         self.X = self.F = cast(np.ndarray, None)  # set by setup() (the initial population)
         self.CV = None
         self.incumbent: Any = None  # made with the initial population (_make_incumbent)
@@ -171,8 +176,8 @@ class ArrayStateAlgorithm(Algorithm):
                             elapsed=time.time() - self.start_time)
 
     def _initialize_infill(self) -> Population:
-        return initial_population(self._n_initial(), self.xl, self.xu, self.X0,
-                                  rng=self.random_state)
+        return initial_infill(self.problem, self._n_initial(), self.xl, self.xu, X0=self.X0,
+                              sampling=self.sampling, rng=self.random_state)
 
     def _initialize_advance(self, infills=None, **kwargs) -> None:
         self._step = self._pending = None

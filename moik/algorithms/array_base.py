@@ -54,6 +54,7 @@ import numpy as np
 from pymoo.core.algorithm import Algorithm
 from pymoo.core.evaluator import Evaluator
 from pymoo.core.population import Population
+from pymoo.core.problem import Problem
 from pymoo.termination.max_gen import MaximumGenerationTermination
 
 from moik._validate import seed
@@ -65,6 +66,7 @@ from moik.algorithms.array_state import (
     check_termination,
     find_limit,
     finite_bounds,
+    has_time_criterion,
     initial_infill,
     planned_iterations,
     refuse_unknown_keywords,
@@ -74,6 +76,9 @@ from moik.algorithms.nonfinite import sanitise
 from moik.exceptions import ParameterError
 
 __all__ = ["ArrayStateAlgorithm"]
+
+DEFAULT_VALUES = ["F", "G", "H"]
+"""pymoo's ``Evaluator`` default ``evaluate_values_of``."""
 
 
 class ArrayStateAlgorithm(Algorithm):
@@ -108,6 +113,7 @@ class ArrayStateAlgorithm(Algorithm):
     t: int
     """The iteration of the paper's schedule (0 while the initial population is built)."""
     _max_evals: float
+    _plan_varies: bool
     _step: Step | None
     _pending: np.ndarray | None
 
@@ -162,7 +168,17 @@ class ArrayStateAlgorithm(Algorithm):
         self._plan_schedule(t=1, n_eval=self._n_initial(), elapsed=0.0)
 
     def _plan_schedule(self, *, t: int, n_eval: int, elapsed: float) -> None:
-        """Refresh the evaluation budget and T from the current termination (module doc)."""
+        """Refresh the evaluation budget and T from the current termination (module doc).
+
+        A termination object already planned whose plan cannot change (no ``time``
+        criterion: ``n_gen`` is fixed and an ``n_eval`` plan is made once) is not walked
+        again."""
+        key = id(self.termination)
+        if key == self.__dict__.get("_planned_for") and not self._plan_varies:
+            if self._fixed_T is None and self.max_iter < t:  # every T is at least t
+                self.max_iter = t
+            return
+        self._planned_for, self._plan_varies = key, has_time_criterion(self.termination)
         self._max_evals = find_limit(self.termination, "n_max_evals")
         if self._fixed_T is None:
             T = planned_iterations(self.termination, t=t, n_eval=n_eval, elapsed=elapsed,
@@ -306,8 +322,17 @@ class ArrayStateAlgorithm(Algorithm):
             F = direct(X)
             if F is not None:
                 return {"F": F}
-        return self.problem.evaluate(X, return_values_of=self.evaluator.evaluate_values_of,
+        return self.problem.evaluate(X, return_values_of=self._values_asked(),
                                      return_as_dictionary=True)
+
+    def _values_asked(self) -> list[str] | None:
+        """What the fast path asks ``problem.evaluate`` for: pymoo's default (F, and G/H when
+        the problem has them) for a plain problem and the default Evaluator; else the
+        Evaluator's ``evaluate_values_of`` (meta-problems such as ``ConstraintsAsPenalty``
+        override ``do`` and need G and H)."""
+        asked = self.evaluator.evaluate_values_of
+        plain = type(self.problem).do is Problem.do and asked == DEFAULT_VALUES
+        return None if plain else list(asked)
 
     def _evaluate(self, X: np.ndarray):
         """Evaluate a batch (vectorized), count n_eval exactly, give it to the incumbent.

@@ -93,6 +93,15 @@ def check_termination(termination) -> None:
         check_termination(inner)
 
 
+def has_time_criterion(termination) -> bool:
+    """Whether a ``time`` criterion is anywhere in ``termination`` (its plan then changes)."""
+    if getattr(termination, "max_time", None) is not None:
+        return True
+    inner = getattr(termination, "termination", None)
+    return any(has_time_criterion(c) for c in getattr(termination, "criteria", ())) or (
+        inner is not None and has_time_criterion(inner))
+
+
 def check_sizes(pop_size: object, min_pop_size: int, max_iter: object) -> tuple[int, int | None]:
     """``(pop_size, max_iter)`` validated: an integer >= ``min_pop_size``; a positive
     integer or None.

@@ -25,12 +25,8 @@ pymoo's default and robust terminations and their combinations), so t/T spans th
 budget, also after a checkpoint is resumed with a new termination;
 :data:`~moik.algorithms.array_state.DEFAULT_SCHEDULE_LENGTH` when nothing bounds the run.
 
-Evaluation (pymoo's contract): the initial population and ``ask()/tell()`` go through
-pymoo's ``Evaluator``; after them, a batch goes through ``self.evaluator`` too whenever
-anything is attached to it (an Evaluator subclass or callback, the ``archive=`` option, a
-problem with ``requires_kwargs=True``), else through the array fast path
-(``problem.evaluate`` on the array, asking the Evaluator's ``evaluate_values_of``, counting
-``evaluator.n_eval`` exactly; the same values without building a ``Population``).
+Evaluation: pymoo's ``Evaluator`` whenever anything is attached to it, else the array
+fast path (:mod:`moik.algorithms.evaluation`).
 
 Default termination: without one, the run is the algorithm's own schedule,
 ``("n_gen", T + 1)`` with T = ``max_iter`` or
@@ -52,9 +48,7 @@ from typing import Any, cast
 
 import numpy as np
 from pymoo.core.algorithm import Algorithm
-from pymoo.core.evaluator import Evaluator
 from pymoo.core.population import Population
-from pymoo.core.problem import Problem
 from pymoo.termination.max_gen import MaximumGenerationTermination
 
 from moik._validate import seed
@@ -71,14 +65,19 @@ from moik.algorithms.array_state import (
     planned_iterations,
     refuse_unknown_keywords,
 )
-from moik.algorithms.mechanics import constraint_violation
+from moik.algorithms.evaluation import (
+    constraint_values,
+    evaluator_attached,
+    pad,
+    problem_values,
+    values_asked,
+)
 from moik.algorithms.nonfinite import sanitise
 from moik.exceptions import ParameterError
 
 __all__ = ["ArrayStateAlgorithm"]
 
-DEFAULT_VALUES = ["F", "G", "H"]
-"""pymoo's ``Evaluator`` default ``evaluate_values_of``."""
+
 
 
 class ArrayStateAlgorithm(Algorithm):
@@ -240,7 +239,7 @@ class ArrayStateAlgorithm(Algorithm):
         if self.incumbent.receive(self._pending[: len(F)], F, CV, GH):
             self._opt_stale = True
         try:
-            self._pending = self._step.send(self._pad(len(self._pending), F, CV))
+            self._pending = self._step.send(pad(len(self._pending), F, CV))
             return False
         except StopIteration:
             self._step = self._pending = None
@@ -265,12 +264,6 @@ class ArrayStateAlgorithm(Algorithm):
         """The objective array the algorithm works with: (k,) for one objective, else F."""
         return F[:, 0] if self.problem.n_obj == 1 else F
 
-    def _constraint_values(self, G, H, n: int) -> tuple[np.ndarray, np.ndarray]:
-        """``(CV, GH)``: total violations and the constraint values side by side."""
-        G = np.zeros((n, 0)) if G is None else np.asarray(G, float).reshape(n, -1)
-        H = np.zeros((n, 0)) if H is None else np.asarray(H, float).reshape(n, -1)
-        return constraint_violation(G, H), np.concatenate([G, H], axis=1)
-
     def _sanitise(self, X: np.ndarray, F: np.ndarray,
                   CV: np.ndarray | None) -> tuple[np.ndarray, np.ndarray | None]:
         """A batch's ``(F, CV)`` with rows holding a problem's NaN/inf set to ``F = CV = inf``
@@ -291,48 +284,9 @@ class ArrayStateAlgorithm(Algorithm):
         F = self._objectives(pop.get("F")).astype(float)
         CV = GH = None
         if self._constrained:
-            CV, GH = self._constraint_values(pop.get("G"), pop.get("H"), n)
+            CV, GH = constraint_values(pop.get("G"), pop.get("H"), n)
         F, CV = self._sanitise(pop.get("X"), F, CV)
         return F, CV, GH
-
-    def _pad(self, n: int, F: np.ndarray, CV: np.ndarray | None):
-        """Rows left unevaluated by the budget get ``F = CV = inf``."""
-        k = len(F)
-        if k == n:
-            return F, CV
-        F = np.concatenate([F, np.full((n - k,) + F.shape[1:], np.inf)])
-        return F, None if CV is None else np.concatenate([CV, np.full(n - k, np.inf)])
-
-    def _evaluator_attached(self) -> bool:
-        """Whether anything is attached to pymoo's evaluation (then every batch goes through
-        ``self.evaluator``): an Evaluator subclass or callback, the ``archive=`` option, or a
-        problem with ``requires_kwargs=True`` (it receives ``algorithm=``)."""
-        ev = self.evaluator
-        return (type(ev) is not Evaluator or ev.callback is not None or self.archive is not None
-                or bool(getattr(self.problem, "requires_kwargs", False)))
-
-    def _problem_values(self, X: np.ndarray) -> dict:
-        """``problem.evaluate(X, return_values_of=evaluator.evaluate_values_of,
-        return_as_dictionary=True)`` (so meta-problems such as pymoo's
-        ``ConstraintsAsPenalty`` get the values they remove); an unconstrained problem that
-        offers ``batch_objectives(X)`` (moik's IK problems: the same F bit for bit, without
-        pymoo's per-call bookkeeping) is asked that instead, unless it answers None."""
-        direct = None if self._constrained else getattr(self.problem, "batch_objectives", None)
-        if direct is not None:
-            F = direct(X)
-            if F is not None:
-                return {"F": F}
-        return self.problem.evaluate(X, return_values_of=self._values_asked(),
-                                     return_as_dictionary=True)
-
-    def _values_asked(self) -> list[str] | None:
-        """What the fast path asks ``problem.evaluate`` for: pymoo's default (F, and G/H when
-        the problem has them) for a plain problem and the default Evaluator; else the
-        Evaluator's ``evaluate_values_of`` (meta-problems such as ``ConstraintsAsPenalty``
-        override ``do`` and need G and H)."""
-        asked = self.evaluator.evaluate_values_of
-        plain = type(self.problem).do is Problem.do and asked == DEFAULT_VALUES
-        return None if plain else list(asked)
 
     def _evaluate(self, X: np.ndarray):
         """Evaluate a batch (vectorized), count n_eval exactly, give it to the incumbent.
@@ -343,26 +297,27 @@ class ArrayStateAlgorithm(Algorithm):
         n = len(X)
         k = budget_left(self._max_evals, self.evaluator.n_eval, n)
         if k == 0:
-            return self._pad(n, self._objectives(np.empty((0, self.problem.n_obj))),
-                             np.empty(0) if self._constrained else None)
+            return pad(n, self._objectives(np.empty((0, self.problem.n_obj))),
+                       np.empty(0) if self._constrained else None)
         Xk = X if k == n else X[:k]
-        if self._evaluator_attached():  # pymoo's contract: the Evaluator sees every batch
+        archive: Any = self.__dict__.get("archive")  # the archive= option
+        if evaluator_attached(self.evaluator, archive, self.problem):  # pymoo's contract
             pop = Population.new("X", Xk)
             self.evaluator.eval(self.problem, pop, algorithm=self)
-            archive: Any = self.__dict__.get("archive")  # the archive= option
             if archive is not None:
                 self.archive = archive.add(pop)
             F, CV, GH = self._values_of(pop)
         else:  # the array fast path (same values, no Population)
-            out = self._problem_values(Xk)
+            out = problem_values(self.problem, Xk, constrained=self._constrained,
+                                 asked=values_asked(self.problem, self.evaluator))
             self.evaluator.n_eval += k
             F, CV, GH = self._objectives(out["F"]), None, None
             if self._constrained:
-                CV, GH = self._constraint_values(out.get("G"), out.get("H"), k)
+                CV, GH = constraint_values(out.get("G"), out.get("H"), k)
             F, CV = self._sanitise(Xk, F, CV)
         if self.incumbent.receive(Xk, F, CV, GH):
             self._opt_stale = True
-        return self._pad(n, F, CV)
+        return pad(n, F, CV)
 
     # ---- lazily built pymoo objects -------------------------------------------------------
     def _build_pop(self) -> Population:

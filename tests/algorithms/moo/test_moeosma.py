@@ -1,5 +1,5 @@
 """MOEOSMA (moik.algorithms.moo.moeosma): kernels, evaluation count, parameters, and HV
-sanity against ZDT1's analytic front.
+sanity against ZDT1's analytic front."""
 
 import copy
 
@@ -81,7 +81,8 @@ def test_zdt1_hv_within_5_percent_of_the_optimum():
     Measured: MOEOSMA 0.8463 (96.5 % of 0.8767) vs NSGA2 0.8695; about 3 s on 2 busy cores.
     """
     problem, ref = get_problem("zdt1"), [1.1, 1.1]
-    assert hypervolume(problem.pareto_front(), ref) == pytest.approx(ZDT1_OPTIMAL_HV, abs=2e-3)
+    # pymoo's sampled front (100 points) falls short of the analytic value by its gaps
+    assert ZDT1_OPTIMAL_HV - 0.01 < hypervolume(problem.pareto_front(), ref) < ZDT1_OPTIMAL_HV
     hv = []
     for seed in range(5):
         res = minimize(problem, MOEOSMA(), ("n_eval", 25_000), seed=seed)

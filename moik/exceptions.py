@@ -66,6 +66,10 @@ class MoikWarning(UserWarning):
     """Base class of the warnings moik issues about suspicious but accepted input."""
 
 
+class CacheWarning(MoikWarning):
+    """moik's compiled-kernel cache was damaged (discarded and recompiled) or cannot be written."""
+
+
 class DegreesWarning(MoikWarning):
     """Angles given to moik (joint limits, DH twists or offsets) look like degrees.
 

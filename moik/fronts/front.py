@@ -16,10 +16,12 @@ Objectives (:class:`moik.problems.BiObjectiveIK`, MO-m-PSO Eq. 15): the position
    ``[f2*, f2(A)]`` and ``min f2 s.t. f1 <= eps`` over ``[f1*, f1(B)]``. Each family is
    swept from both anchors, each subproblem warm-started from its neighbour's solution,
    and the better of the two per level kept.
-3. Checks: at ``checks`` interior levels of each family the subproblem is solved from
-   every one of the ``starts`` random starts; a start that beats the continuation by
-   more than ``tol`` seeds a new sweep in both directions (repeated until none does).
-4. The union is filtered to its non-dominated points, sorted by ``f1``.
+3. Checks: at both end levels and ``checks`` interior levels of each family the
+   subproblem is solved from every one of the ``starts`` random starts; a start that
+   beats the continuation by more than ``tol`` seeds a new sweep in both directions
+   (repeated until none does).
+4. The union is filtered to its non-dominated points (errors that differ by less than
+   ``tol`` count as equal), sorted by ``f1``.
 
 What it guarantees (stated on the returned object): every point is a local solution of
 its subproblem found by SLSQP, with its projected KKT residual recorded
@@ -39,6 +41,7 @@ from pymoo.util.nds.non_dominated_sorting import NonDominatedSorting
 from moik._validate import integer, positive
 from moik.exceptions import ParameterError
 from moik.fronts.scalarised import (
+    ZERO_EPS,
     ErrorModel,
     SubproblemSolution,
     solve_constrained,
@@ -84,10 +87,15 @@ class ReferenceFront:
         return float(np.max(self.kkt)) if self.kkt.size else 0.0
 
 
-def _better(a: SubproblemSolution, b: SubproblemSolution | None, k: int) -> bool:
-    """Whether ``a`` improves on ``b`` in objective ``k`` (then the other objective)."""
+def _better(a: SubproblemSolution, b: SubproblemSolution | None, k: int,
+            level: float = np.inf) -> bool:
+    """Whether ``a`` improves on ``b`` in subproblem ``(k, level)``: feasibility first
+    (``f_m <= level``, to ``ZERO_EPS``), then objective ``k``, then the other one."""
     if b is None:
         return True
+    fa, fb = a.errors[1 - k] <= level + ZERO_EPS, b.errors[1 - k] <= level + ZERO_EPS
+    if fa != fb:
+        return bool(fa)
     return bool(a.errors[k] < b.errors[k] or (a.errors[k] == b.errors[k]
                                              and a.errors[1 - k] < b.errors[1 - k]))
 
@@ -97,13 +105,14 @@ def _anchor(model: ErrorModel, starts: np.ndarray, k: int, tol: float) -> Subpro
     sols = [solve_constrained(model, q, k, np.inf) for q in starts]
     best = min(s.errors[k] for s in sols)
     near = [s for s in sols if s.errors[k] <= best + tol]
+    level = best + tol if best > tol else 0.0
     out: SubproblemSolution | None = None
     for s in near:
-        r = solve_constrained(model, s.q, 1 - k, best + tol if best > tol else 0.0)
-        if r.errors[k] > best + 2 * tol:
-            r = s
-        if _better(r, out, 1 - k):
+        r = solve_constrained(model, s.q, 1 - k, level)
+        if _better(r, out, 1 - k, level):
             out = r
+        if _better(s, out, 1 - k, level):
+            out = s
     assert out is not None
     return out
 
@@ -124,23 +133,25 @@ def _family(model, k, eps, end_lo, end_hi, starts, checks, tol, stats) -> list:
     n = len(eps)
     best = _sweep(model, k, eps, end_hi.q, range(n - 1, -1, -1))
     for i, s in enumerate(_sweep(model, k, eps, end_lo.q, range(n))):
-        if _better(s, best[i], k):
+        if _better(s, best[i], k, eps[i]):
             best[i] = s
-    check_levels = np.unique(np.linspace(0, n - 1, checks + 2).round().astype(int)[1:-1])
+    check_levels = np.unique(np.linspace(0, n - 1, checks + 2).round().astype(int))
     for _ in range(5):
         improved = False
         for i in check_levels:
             for q in starts:
                 s = solve_constrained(model, q, k, eps[i])
                 stats["check_solves"] += 1
-                if s.errors[1 - k] <= eps[i] + tol and s.errors[k] < best[i].errors[k] - tol:
+                if (s.errors[1 - k] <= eps[i] + ZERO_EPS
+                        and (best[i].errors[1 - k] > eps[i] + ZERO_EPS
+                             or s.errors[k] < best[i].errors[k] - tol)):
                     improved = True
                     stats["improvements"] += 1
                     best[i] = s
                     for sweep in (_sweep(model, k, eps, s.q, range(i, -1, -1)),
                                   _sweep(model, k, eps, s.q, range(i, n))):
                         for j, t in enumerate(sweep):
-                            if t is not None and _better(t, best[j], k):
+                            if t is not None and _better(t, best[j], k, eps[j]):
                                 best[j] = t
         if not improved:
             break
@@ -148,7 +159,7 @@ def _family(model, k, eps, end_lo, end_hi, starts, checks, tol, stats) -> list:
 
 
 def bi_objective_front(robot: Robot, position, rotation, *, metric: str = "geodesic",
-                       levels: int = 60, starts: int = 24, checks: int = 3,
+                       levels: int = 40, starts: int = 16, checks: int = 1,
                        tol: float = 1e-9, rng: np.random.Generator) -> ReferenceFront:
     """The Pareto front of ``(position error, orientation error)`` at one target pose.
 
@@ -201,14 +212,16 @@ def bi_objective_front(robot: Robot, position, rotation, *, metric: str = "geode
     eps1 = np.linspace(a.errors[0], b.errors[0], levels)
     sols += _family(model, 1, eps1, a, b, Q0, checks, tol, stats)
     F = np.array([s.errors for s in sols])
-    keep = NonDominatedSorting().do(F, only_non_dominated_front=True)
-    keep = keep[np.argsort(F[keep, 0], kind="stable")]
-    _, first = np.unique(F[keep].round(15), axis=0, return_index=True)
+    Fq = np.round(F / tol) * tol  # errors that differ by less than tol are ties
+    keep = NonDominatedSorting().do(Fq, only_non_dominated_front=True)
+    keep = keep[np.lexsort((F[keep, 1], F[keep, 0]))]
+    _, first = np.unique(Fq[keep], axis=0, return_index=True)
     keep = keep[np.sort(first)]
     kkt = np.array([sols[i].kkt for i in keep])
     text = (f"{len(keep)} non-dominated local solutions of 2 x {levels} epsilon-constraint "
             f"subproblems (SLSQP, continuation from both anchors), max projected KKT residual "
-            f"{kkt.max():.2e}; anchors and {checks} check levels per family from {starts} "
+            f"{kkt.max():.2e}; anchors, end levels and {checks} interior levels per family "
+            f"from {starts} "
             f"random starts each ({stats['improvements']} improvements found); local, not "
             "global, optimality")
     return ReferenceFront(F=F[keep], Q=np.array([sols[i].q for i in keep]), kkt=kkt,

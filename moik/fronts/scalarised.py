@@ -21,12 +21,20 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import minimize
 
-from moik.fronts.kernels import batch_pose_errors, squared_errors_and_gradients
-from moik.kinematics.jacobian import pose_and_jacobian
-from moik.kinematics.rotation_metrics import metric_code, metric_target
+from moik.fronts.kernels import (
+    batch_pose_errors,
+    pose_equations_and_jacobian,
+    squared_errors_and_gradients,
+)
+from moik.kinematics.rotation_metrics import (
+    ZYX_EULER_FREE_GAMMA,
+    metric_code,
+    metric_target,
+)
 from moik.robots.chain import Robot
 
 FD_STEP = 1e-6  # central-difference step of the gradients (rad, or robot unit)
+FTOL = 1e-16  # SLSQP stopping tolerance on the scaled squared objective
 ZERO_EPS = 1e-8  # a level this small is the constraint f_m = 0 (pose equations)
 BOUND_TOL = 1e-10  # a joint this close to a limit counts as on it (KKT residual)
 
@@ -67,22 +75,18 @@ class ErrorModel:
     def residual(self, q: np.ndarray, m: int) -> tuple[np.ndarray, np.ndarray]:
         """The pose equations of ``f_m = 0`` at ``q`` and their Jacobian ``(3, dof)``.
 
-        ``m = 0``: ``(p(q) - p_t) / reach``; ``m = 1``: the skew part of ``R_t^T R(q)``
-        (``sin(angle) * axis``, zero at ``R = R_t`` and a local chart of SO(3) there).
-        Central differences, one batched FK call.
+        ``m = 0``: ``(p(q) - p_t) / reach``; ``m = 1``: for the Euler metrics the angle
+        differences (EOSMA Eq. 26 or ZYX; zero on every rotation with the target's angles,
+        several rotations for Eq. 26), else the skew part of ``R_t^T R(q)``
+        (``sin(angle) * axis``, zero at ``R = R_t``; its other zeros, rotations by pi, have
+        ``f_m = pi`` and are told apart by ``f_m``). Central differences, one batched FK call.
         """
-        dof = q.size
-        Q = np.repeat(q[None], 2 * dof + 1, axis=0)
-        Q[1:dof + 1] += FD_STEP * np.eye(dof)
-        Q[dof + 1:] -= FD_STEP * np.eye(dof)
-        R, p = self.robot.fk_parts(Q)
-        if m == 0:
-            r = (p - self.p_t) / np.sqrt(self.scale[0])
-        else:
-            M = np.einsum("ji,njk->nik", self.R_t, R)
-            r = 0.5 * np.stack([M[:, 2, 1] - M[:, 1, 2], M[:, 0, 2] - M[:, 2, 0],
-                                M[:, 1, 0] - M[:, 0, 1]], axis=1)
-        return r[0], ((r[1:dof + 1] - r[dof + 1:]) / (2 * FD_STEP)).T
+        value, jac = np.empty(3), np.empty((3, q.size))
+        pose_equations_and_jacobian(self.F, self.types, kernel_array(q), self.p_t, self.code,
+                                    self.R_t, self.angles_t, m, np.sqrt(self.scale[0]),
+                                    FD_STEP, value, jac)
+        n = 2 if m == 1 and self.code == ZYX_EULER_FREE_GAMMA else 3
+        return value[:n], jac[:n]
 
     def errors(self, Q: np.ndarray) -> np.ndarray:
         """``(n, 2)``: position and orientation errors of every row of ``Q``."""
@@ -131,9 +135,9 @@ def kkt_residual(model: ErrorModel, q: np.ndarray, k: int, eps: float) -> float:
     joint limit whose sign a bound multiplier can absorb. Zero at a KKT point; in units
     of the scaled squared objectives per radian. At a level ``eps <= ZERO_EPS`` the
     constraint ``f_m = 0`` is degenerate (``grad s_m = 0``): the residual is then that of
-    the pose manifold, ``grad s_k`` less its projection on the rows of the geometric
-    Jacobian (position rows for ``m = 0``, angular rows for ``m = 1``; joint limits
-    ignored), exact for the geodesic and Frobenius metrics, whose zero set is ``R = R_t``.
+    the pose manifold ``f_m = 0``: ``grad s_k`` less its projection on the rows of the
+    Jacobian of the pose equations (:meth:`ErrorModel.residual`; joints at a limit left
+    out).
     """
     value, grad = model.squared(q)
     m = 1 - k
@@ -145,7 +149,7 @@ def kkt_residual(model: ErrorModel, q: np.ndarray, k: int, eps: float) -> float:
     if level == 0.0:
         # f_m = 0: the constraint is the pose manifold (p = p_t or R = R_t), whose normal
         # space is spanned by the Jacobian rows of that error; remove g's part in it
-        rows = pose_and_jacobian(model.robot, q)[1][3 * m:3 * m + 3][:, free]
+        rows = model.residual(q, m)[1][:, free]
         g[free] = g[free] - rows.T @ np.linalg.lstsq(rows.T, g[free], rcond=None)[0]
     elif np.isfinite(level) and value[m] >= level * (1 - 1e-6):
         gm = grad[m]
@@ -187,7 +191,7 @@ def solve_constrained(model: ErrorModel, q0: np.ndarray, k: int, eps: float, *,
                         "jac": lambda x: -model.squared(x)[1][m]}]
     res = minimize(lambda x: model.squared(x)[0][k], x0, jac=lambda x: model.squared(x)[1][k],
                    method="SLSQP", bounds=list(zip(model.lower, model.upper, strict=True)),
-                   constraints=constraints, options={"ftol": 1e-16, "maxiter": maxiter})
+                   constraints=constraints, options={"ftol": FTOL, "maxiter": maxiter})
     q = np.clip(res.x, model.lower, model.upper)
     return SubproblemSolution(q=q, errors=model.errors(q)[0], kkt=kkt_residual(model, q, k, eps),
                               success=bool(res.success))

@@ -2,6 +2,11 @@
 :mod:`moik.fronts.front`, :mod:`moik.fronts.scalarised`, :mod:`moik.fronts.kernels`;
 the on-disk cache in :mod:`moik.fronts.cache`)."""
 
-from moik.fronts.front import METHOD_VERSION, ReferenceFront, bi_objective_front
+from moik.fronts.front import (
+    METHOD_VERSION,
+    ReferenceFront,
+    bi_objective_front,
+    dominating_points,
+)
 
-__all__ = ["METHOD_VERSION", "ReferenceFront", "bi_objective_front"]
+__all__ = ["METHOD_VERSION", "ReferenceFront", "bi_objective_front", "dominating_points"]

@@ -4,9 +4,12 @@ A front (:func:`moik.fronts.front.bi_objective_front`) costs seconds; :func:`cac
 computes it once per (robot kinematics and limits, target, metric, method settings and
 seed, :data:`~moik.fronts.front.METHOD_VERSION`) and keeps it in
 ``$XDG_CACHE_HOME/moik/fronts`` (``~/.cache/moik/fronts`` when unset) as one ``.npz``
-file named by the fingerprint. A change of any of those gives another fingerprint (the
-old file is simply not read). An unwritable or unreadable cache is not an error: the
-front is then computed and returned without being stored; a damaged file is recomputed.
+file named by the fingerprint. The fronts of the registered problems
+(:mod:`moik.problems.registry`) ship in ``moik/fronts/data`` under the same names and
+are read from there first (``python -m studies.ik_fronts --write`` regenerates them).
+A change of any of those inputs gives another fingerprint (the old file is simply not
+read). An unwritable or unreadable cache is not an error: the front is then computed
+and returned without being stored; a damaged file is recomputed.
 """
 
 from __future__ import annotations
@@ -23,6 +26,8 @@ from moik.fronts.front import METHOD_VERSION, ReferenceFront, bi_objective_front
 from moik.robots.chain import Robot
 
 FRONT_SEED = 20240  # the random starts' seed of every cached front
+SHIPPED = Path(__file__).with_name("data")  # fronts shipped with moik, by fingerprint
+DEFAULT_SETTINGS = {"levels": 40, "starts": 16, "checks": 1, "tol": 1e-9, "seed": FRONT_SEED}
 
 
 def cache_dir() -> Path:
@@ -61,7 +66,9 @@ def _load(path: Path, key: str) -> ReferenceFront | None:
         return None
 
 
-def _store(path: Path, key: str, front: ReferenceFront) -> bool:
+def store(path: Path, key: str, front: ReferenceFront) -> bool:
+    """Write ``front`` to ``path`` (atomically) under fingerprint ``key``; False when the
+    folder is not writable."""
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
         fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
@@ -89,13 +96,25 @@ def cached_front(robot: Robot, position, rotation, *, metric: str, levels: int =
     settings = {"levels": levels, "starts": starts, "checks": checks, "tol": tol, "seed": seed}
     key = fingerprint(robot, position, rotation, metric, settings)
     path = cache_dir() / f"{key}.npz"
-    if use_cache and path.is_file():
-        front = _load(path, key)
+    for where in (SHIPPED / f"{key}.npz", path) if use_cache else ():
+        front = _load(where, key) if where.is_file() else None
         if front is not None:
             return front
     front = bi_objective_front(robot, position, rotation, metric=metric, levels=levels,
                                starts=starts, checks=checks, tol=tol,
                                rng=np.random.default_rng(seed))
     if use_cache:
-        _store(path, key, front)
+        store(path, key, front)
     return front
+
+
+def ship(robot: Robot, position, rotation, *, metric: str,
+         directory: Path = SHIPPED) -> tuple[ReferenceFront, Path]:
+    """Compute the front with :func:`cached_front`'s default settings (cache not read)
+    and store it in ``directory`` (the shipped data by default) under its fingerprint."""
+    key = fingerprint(robot, position, rotation, metric, DEFAULT_SETTINGS)
+    front = cached_front(robot, position, rotation, metric=metric, use_cache=False)
+    path = Path(directory) / f"{key}.npz"
+    if not store(path, key, front):
+        raise OSError(f"cannot write {path}")
+    return front, path

@@ -34,6 +34,7 @@ missed (the paper-arm tests compare the front with long NSGA-II runs for that re
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from pymoo.util.nds.non_dominated_sorting import NonDominatedSorting
@@ -188,7 +189,8 @@ def bi_objective_front(robot: Robot, position, rotation, *, metric: str = "geode
         raise ParameterError(f"rng must be a numpy Generator, got {type(rng).__name__}")
     model = ErrorModel(robot, position, rotation, metric)
     Q0 = robot.random_q(starts, rng=rng)
-    settings = dict(metric=metric, starts=starts, levels=levels, checks=checks, tol=tol)
+    settings: dict[str, Any] = dict(metric=metric, starts=starts, levels=levels, checks=checks,
+                                    tol=tol)
     ideal = min((solve_sum(model, q) for q in Q0), key=lambda s: float(s.errors.max()))
     a = b = ideal
     if ideal.errors.max() > tol:
@@ -212,6 +214,13 @@ def bi_objective_front(robot: Robot, position, rotation, *, metric: str = "geode
     eps1 = np.linspace(a.errors[0], b.errors[0], levels)
     sols += _family(model, 1, eps1, a, b, Q0, checks, tol, stats)
     F = np.array([s.errors for s in sols])
+    hit = int(np.argmin(F.max(axis=1)))
+    if F[hit].max() <= tol:  # a sweep reached the pose: the front is the ideal point
+        text = (f"the pose is reachable: a subproblem solution has both errors <= {tol:g} "
+                f"({F[hit, 0]:.2e}, {F[hit, 1]:.2e}); the front is the point (0, 0)")
+        return ReferenceFront(F=np.zeros((1, 2)), Q=sols[hit].q[None].copy(),
+                              kkt=np.array([sols[hit].kkt]), reachable=True, guarantee=text,
+                              extra={"anchor_errors": F[hit].tolist(), **stats}, **settings)
     Fq = np.round(F / tol) * tol  # errors that differ by less than tol are ties
     keep = NonDominatedSorting().do(Fq, only_non_dominated_front=True)
     keep = keep[np.lexsort((F[keep, 1], F[keep, 0]))]
@@ -226,3 +235,16 @@ def bi_objective_front(robot: Robot, position, rotation, *, metric: str = "geode
             "global, optimality")
     return ReferenceFront(F=F[keep], Q=np.array([sols[i].q for i in keep]), kkt=kkt,
                           reachable=False, guarantee=text, extra=stats, **settings)
+
+
+def dominating_points(reference: np.ndarray, F: np.ndarray, tol: float) -> np.ndarray:
+    """The rows of ``F`` that dominate a point of ``reference`` beyond ``tol``.
+
+    ``a`` dominates ``r`` beyond ``tol`` when it is nowhere worse than ``r`` by more than
+    ``tol`` and somewhere better by more than ``tol`` (``a <= r + tol`` and
+    ``min(a - r) < -tol``). Empty when nothing found beats the reference front.
+    """
+    R, A = np.asarray(reference, dtype=float), np.atleast_2d(np.asarray(F, dtype=float))
+    diff = A[:, None, :] - R[None, :, :]
+    hit = np.all(diff <= tol, axis=2) & np.any(diff < -tol, axis=2)
+    return A[hit.any(axis=1)]

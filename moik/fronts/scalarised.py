@@ -17,9 +17,10 @@ error).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
-from scipy.optimize import minimize
+from scipy import optimize
 
 from moik.fronts.kernels import (
     batch_pose_errors,
@@ -33,6 +34,7 @@ from moik.kinematics.rotation_metrics import (
 )
 from moik.robots.chain import Robot
 
+_minimize: Any = optimize.minimize  # scipy-stubs' overloads do not cover SLSQP's dict constraints
 FD_STEP = 1e-6  # central-difference step of the gradients (rad, or robot unit)
 FTOL = 1e-16  # SLSQP stopping tolerance on the scaled squared objective
 ZERO_EPS = 1e-8  # a level this small is the constraint f_m = 0 (pose equations)
@@ -189,7 +191,7 @@ def solve_constrained(model: ErrorModel, q0: np.ndarray, k: int, eps: float, *,
         level = eps * eps / model.scale[m]
         constraints = [{"type": "ineq", "fun": lambda x: level - model.squared(x)[0][m],
                         "jac": lambda x: -model.squared(x)[1][m]}]
-    res = minimize(lambda x: model.squared(x)[0][k], x0, jac=lambda x: model.squared(x)[1][k],
+    res = _minimize(lambda x: model.squared(x)[0][k], x0, jac=lambda x: model.squared(x)[1][k],
                    method="SLSQP", bounds=list(zip(model.lower, model.upper, strict=True)),
                    constraints=constraints, options={"ftol": FTOL, "maxiter": maxiter})
     q = np.clip(res.x, model.lower, model.upper)
@@ -202,7 +204,7 @@ def solve_sum(model: ErrorModel, q0: np.ndarray, *, maxiter: int = 200) -> Subpr
     scalarisation: its solution is Pareto optimal when global, and ``(0, 0)`` when the
     pose is reached). Its ``kkt`` is the projected gradient of ``s1 + s2``."""
     x0 = np.clip(np.asarray(q0, dtype=float), model.lower, model.upper)
-    res = minimize(lambda x: model.squared(x)[0].sum(), x0,
+    res = _minimize(lambda x: model.squared(x)[0].sum(), x0,
                    jac=lambda x: model.squared(x)[1].sum(axis=0), method="SLSQP",
                    bounds=list(zip(model.lower, model.upper, strict=True)),
                    options={"ftol": 1e-30, "maxiter": maxiter})

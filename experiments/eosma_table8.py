@@ -46,7 +46,7 @@ EXPERIMENT = {
     "iterations": 1000,
     "runs": 20,
     "seed": 2022,
-    "analyses": ["friedman-hv"],
+    "analyses": ["friedman-hv", "reference-front"],
     "paper": {
         "citation": "EOSMA paper, Table 8 (HV, Friedman rank, MATLAB time)",
         "hv": {

@@ -41,6 +41,7 @@ from pymoo.util.nds.non_dominated_sorting import NonDominatedSorting
 
 from moik._validate import integer, positive
 from moik.exceptions import ParameterError
+from moik.fronts.lifted import is_kinked, solve_lifted
 from moik.fronts.scalarised import (
     ZERO_EPS,
     ErrorModel,
@@ -60,7 +61,8 @@ class ReferenceFront:
     Attributes:
         F: ``(n, 2)`` non-dominated ``(position error, orientation error)``, by ``f1``.
         Q: ``(n, dof)`` the joint vectors of ``F``.
-        kkt: ``(n,)`` each point's projected KKT residual in its subproblem.
+        kkt: ``(n,)`` each point's projected KKT residual in its subproblem (NaN for the
+            ZYX Euler metrics' lifted subproblems, :mod:`moik.fronts.lifted`).
         reachable: Whether the target pose is reached (the front is ``[[0, 0]]``).
         metric: The orientation metric.
         starts, levels, checks: The method's settings.
@@ -85,7 +87,12 @@ class ReferenceFront:
     @property
     def max_kkt(self) -> float:
         """The largest KKT residual of the front's points."""
-        return float(np.max(self.kkt)) if self.kkt.size else 0.0
+        return float(np.nanmax(self.kkt)) if np.any(np.isfinite(self.kkt)) else float("nan")
+
+
+def _solver(model: ErrorModel):
+    """The subproblem solver for ``model``'s metric (lifted for the ZYX Euler ones)."""
+    return solve_lifted if is_kinked(model) else solve_constrained
 
 
 def _better(a: SubproblemSolution, b: SubproblemSolution | None, k: int,
@@ -103,13 +110,13 @@ def _better(a: SubproblemSolution, b: SubproblemSolution | None, k: int,
 
 def _anchor(model: ErrorModel, starts: np.ndarray, k: int, tol: float) -> SubproblemSolution:
     """The least ``f_k`` from every start, then the least ``f_m`` at ``f_k <= best + tol``."""
-    sols = [solve_constrained(model, q, k, np.inf) for q in starts]
+    sols = [_solver(model)(model, q, k, np.inf) for q in starts]
     best = min(s.errors[k] for s in sols)
     near = [s for s in sols if s.errors[k] <= best + tol]
     level = best + tol if best > tol else 0.0
     out: SubproblemSolution | None = None
     for s in near:
-        r = solve_constrained(model, s.q, 1 - k, level)
+        r = _solver(model)(model, s.q, 1 - k, level)
         if _better(r, out, 1 - k, level):
             out = r
         if _better(s, out, 1 - k, level):
@@ -123,7 +130,7 @@ def _sweep(model: ErrorModel, k: int, eps: np.ndarray, q0: np.ndarray, order) ->
     sols: list[SubproblemSolution | None] = [None] * len(eps)
     q = q0
     for i in order:
-        s = solve_constrained(model, q, k, eps[i])
+        s = _solver(model)(model, q, k, eps[i])
         sols[i] = s
         q = s.q
     return sols
@@ -141,7 +148,7 @@ def _family(model, k, eps, end_lo, end_hi, starts, checks, tol, stats) -> list:
         improved = False
         for i in check_levels:
             for q in starts:
-                s = solve_constrained(model, q, k, eps[i])
+                s = _solver(model)(model, q, k, eps[i])
                 stats["check_solves"] += 1
                 if (s.errors[1 - k] <= eps[i] + ZERO_EPS
                         and (best[i].errors[1 - k] > eps[i] + ZERO_EPS
@@ -229,9 +236,9 @@ def bi_objective_front(robot: Robot, position, rotation, *, metric: str = "geode
     kkt = np.array([sols[i].kkt for i in keep])
     text = (f"{len(keep)} non-dominated local solutions of 2 x {levels} epsilon-constraint "
             f"subproblems (SLSQP, continuation from both anchors), max projected KKT residual "
-            f"{kkt.max():.2e}; anchors, end levels and {checks} interior levels per family "
-            f"from {starts} "
-            f"random starts each ({stats['improvements']} improvements found); local, not "
+            f"{np.nanmax(kkt) if np.isfinite(kkt).any() else np.nan:.2e}; anchors, end "
+            f"levels and {checks} interior levels per family from {starts} random starts "
+            f"each ({stats['improvements']} improvements found); local, not "
             "global, optimality")
     return ReferenceFront(F=F[keep], Q=np.array([sols[i].q for i in keep]), kkt=kkt,
                           reachable=False, guarantee=text, extra=stats, **settings)
@@ -240,11 +247,13 @@ def bi_objective_front(robot: Robot, position, rotation, *, metric: str = "geode
 def dominating_points(reference: np.ndarray, F: np.ndarray, tol: float) -> np.ndarray:
     """The rows of ``F`` that dominate a point of ``reference`` beyond ``tol``.
 
-    ``a`` dominates ``r`` beyond ``tol`` when it is nowhere worse than ``r`` by more than
-    ``tol`` and somewhere better by more than ``tol`` (``a <= r + tol`` and
-    ``min(a - r) < -tol``). Empty when nothing found beats the reference front.
+    Objectives are scaled by the reference front's range (1 where it has none, e.g. the
+    single point of a reachable pose); ``a`` dominates ``r`` beyond ``tol`` when it is
+    better in every scaled objective by more than ``tol``: ``(r - a) / span > tol``.
+    Empty when nothing found beats the reference front.
     """
     R, A = np.asarray(reference, dtype=float), np.atleast_2d(np.asarray(F, dtype=float))
-    diff = A[:, None, :] - R[None, :, :]
-    hit = np.all(diff <= tol, axis=2) & np.any(diff < -tol, axis=2)
-    return A[hit.any(axis=1)]
+    span = np.ptp(R, axis=0)
+    span = np.where(span > 0, span, 1.0)
+    better = (R[None, :, :] - A[:, None, :]) / span > tol
+    return A[np.all(better, axis=2).any(axis=1)]

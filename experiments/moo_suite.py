@@ -13,7 +13,9 @@ iteration count is then unused), 10 runs; ``random-search`` samples the same
 analytic front (ZDT 1,000 points, DTLZ 496 Das-Dennis points) and HV with the
 reference point 1.1 x the front's nadir per objective; Wilcoxon rank-sum test of
 each algorithm against NSGA-II (``proposed``) per problem, mean ranks over the
-problems.
+problems. Beside them three bi-objective IK problems of ``moik.problems.available()``
+(EOSMA P1, MO-m-PSO's Eq. 16 pose, an unreachable Sawyer pose), measured against their
+reference fronts (:mod:`moik.fronts`, local solutions to 1e-9 shipped with moik).
 """
 
 _MO = ["moeosma", "mo-m-pso", "mssa", "moalo", "moda", "momvo", "mogwo", "mosma", "mopso",
@@ -32,6 +34,7 @@ EXPERIMENT = {
         {"name": "zdt6", "params": {"n_var": 10}},
         {"name": "dtlz1", "params": {"n_var": 7, "n_obj": 3}},
         {"name": "dtlz2", "params": {"n_var": 12, "n_obj": 3}},
+        "eosma-p1", "mpso-eq16", "sawyer7-unreachable",  # IK, reference fronts (moik.fronts)
     ]},
     "algorithms": [{"name": n} for n in _MO] + [
         {"name": "moeosma", "label": "moeosma-nsga2-gaussian",

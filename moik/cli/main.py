@@ -20,7 +20,15 @@ from moik.cli.parser import build_parser
 from moik.exceptions import MoikError, MoikWarning
 
 if TYPE_CHECKING:
-    from moik.cli import algorithms, catalog, experiment, fk, report, solve  # noqa: F401
+    from moik.cli import (  # noqa: F401
+        algorithms,
+        catalog,
+        experiment,
+        fk,
+        problems,
+        report,
+        solve,
+    )
 
 
 def _handler(spec: str):

@@ -38,9 +38,10 @@ def reference_front_table(res: Results) -> list[Table]:
         front = _front(res, target)
         if front is None:
             continue
-        runs = {lab: [res.store.load_arrays(r["trial"]).get("front_F")
-                      for r in res.by_label[lab] if r["target"] == ti] for lab in res.labels}
-        runs = {lab: [np.atleast_2d(F) for F in Fs if F is not None] for lab, Fs in runs.items()}
+        stored = {lab: [res.store.load_arrays(r["trial"]).get("front_F")
+                        for r in res.by_label[lab] if r["target"] == ti] for lab in res.labels}
+        runs: dict[str, list[np.ndarray]] = {
+            lab: [np.atleast_2d(F) for F in Fs if F is not None] for lab, Fs in stored.items()}
         if target.get("hv_ref_point") is not None:
             ref = np.asarray(target["hv_ref_point"], dtype=float)
         else:

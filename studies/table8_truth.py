@@ -89,23 +89,35 @@ def tables(data: dict, runs: int) -> list[str]:
 
 
 def figures(data: dict) -> None:
-    from moik.plotting import plot_pareto_fronts  # matplotlib only when drawing
+    """Per target: every run-0 front and the reference front (thick black line), the whole
+    range on the left, zoomed on the reference front on the right."""
+    import matplotlib.pyplot as plt  # matplotlib only when drawing
+
+    from moik.plotting import plot_pareto_fronts
 
     FIGURES.mkdir(parents=True, exist_ok=True)
     for tname, d in data.items():
         fronts = {a: r["front"] for a, r in d["per"].items() if "front" in r}
-        ax = plot_pareto_fronts(fronts, proposed="moeosma",
-                                title=f"Run-0 fronts at {tname} and the reference front",
-                                log=tname == "P2")
+        fig, axes = plt.subplots(1, 2, figsize=(13, 5))
         F = d["front"]
-        if len(F) > 1:
-            ax.plot(F[:, 0], F[:, 1], "k-", lw=1.2, label="reference front", zorder=10)
-        else:
-            ax.plot(*np.maximum(F[0], 1e-16), "k*", ms=14, label="reference front (0, 0)",
-                    zorder=10)
-        ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7)
-        stem = str(FIGURES / f"front-{tname}")
-        ax.figure.savefig(f"{stem}.png", dpi=120, bbox_inches="tight")
+        for ax, zoom in zip(axes, (False, True), strict=True):
+            plot_pareto_fronts(fronts, proposed="moeosma", ax=ax, log=tname == "P2",
+                               title=f"Run-0 fronts at {tname}" + (", zoomed" if zoom else ""))
+            if len(F) > 1:
+                ax.plot(F[:, 0], F[:, 1], "-", color="black", lw=3, zorder=20,
+                        label="reference front")
+                if zoom:
+                    ax.set_xlim(-0.02 * F[:, 0].max(), 1.6 * F[:, 0].max())
+                    ax.set_ylim(-0.02 * F[:, 1].max(), 1.15 * F[:, 1].max())
+            else:
+                ax.plot(*np.maximum(F[0], 1e-16), "k*", ms=16, zorder=20,
+                        label="reference front (0, 0)")
+            if zoom:
+                ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7)
+            elif ax.get_legend() is not None:
+                ax.get_legend().remove()
+        fig.savefig(FIGURES / f"front-{tname}.png", dpi=110, bbox_inches="tight")
+        plt.close(fig)
 
 
 def main(argv: list[str] | None = None) -> None:

@@ -22,7 +22,7 @@ IK = ["eosma-p1", "mpso-eq16", "sawyer7-unreachable"]  # moik.problems, referenc
 
 
 @pytest.mark.parametrize(("path", "evaluations", "runs", "ik"), [(SUITE, 25_000, 10, IK),
-                                                                (SUITE_10K, 10_000, 5, [])])
+                                                                (SUITE_10K, 10_000, 5, IK)])
 def test_the_suite_lists_every_multi_objective_algorithm_and_the_random_baseline(
         path, evaluations, runs, ik):
     cfg = load_config(path)

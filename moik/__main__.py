@@ -2,7 +2,7 @@
 
 import sys
 
-from moik.cli import main
+from moik.cli.main import main
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -1,16 +1,25 @@
-"""Public names of a package loaded at their first use (PEP 562), for start-up time.
+"""Public names of a package, or a module, loaded at their first use, for start-up time.
 
 A package lists ``name -> (module, attribute)`` (``attribute`` ``None``: the module
 itself) and binds the two functions :func:`lazy_names` returns as its module-level
 ``__getattr__`` and ``__dir__``. Nothing here hides an import cycle: the modules named
 are imported the ordinary way when a name is first read, and the import-graph test
 reads the same imports statically.
+
+:func:`lazy_module` is the standard library's :class:`importlib.util.LazyLoader`: a
+module object whose code runs at its first attribute access. ``moik.robots.chain``
+holds its compiled FK kernels (:mod:`moik.robots.dh`, which imports numba) this way,
+so listing or describing robots (``moik robots``) does not pay numba's import; the
+module states the same edge under ``TYPE_CHECKING`` for the import-graph test.
 """
 
 from __future__ import annotations
 
 import importlib
+import importlib.util
+import sys
 from collections.abc import Callable, Mapping
+from types import ModuleType
 from typing import Any
 
 
@@ -39,3 +48,25 @@ def lazy_names(package: str, names: Mapping[str, tuple[str, str | None]],
         return sorted({*namespace, *exported})
 
     return __getattr__, __dir__
+
+
+def lazy_module(name: str) -> ModuleType:
+    """The module ``name``, its code run at the first attribute access (or now if loaded).
+
+    Raises:
+        ModuleNotFoundError: ``name`` is not an importable module.
+    """
+    if name in sys.modules:
+        return sys.modules[name]
+    spec = importlib.util.find_spec(name)
+    if spec is None or spec.loader is None:
+        raise ModuleNotFoundError(f"no module named {name!r}", name=name)
+    loader = importlib.util.LazyLoader(spec.loader)
+    spec.loader = loader
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    loader.exec_module(module)
+    parent, _, child = name.rpartition(".")
+    if parent:
+        setattr(sys.modules[parent], child, module)
+    return module

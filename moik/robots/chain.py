@@ -26,10 +26,10 @@ from typing import TYPE_CHECKING, Literal
 import numpy as np
 from numpy.typing import ArrayLike
 
-from moik._jit import kernel_array
+from moik._lazy import lazy_module
 from moik._validate import integer, is_integer, number, real_array
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError
-from moik.robots import checks, dh
+from moik.robots import checks
 from moik.robots.transforms import (
     PRISMATIC,
     REVOLUTE,
@@ -44,6 +44,12 @@ from moik.robots.transforms import (
 Convention = Literal["standard", "modified"]
 UNITS = checks.UNITS
 JOINT_TYPES = checks.JOINT_TYPES
+if TYPE_CHECKING:
+    from moik import _jit
+    from moik.robots import dh
+else:  # loaded at the first FK: describing a robot needs no numba (moik._lazy)
+    _jit = lazy_module("moik._jit")
+    dh = lazy_module("moik.robots.dh")
 _IDENTITY = np.eye(4)
 _IDENTITY.setflags(write=False)
 
@@ -277,7 +283,7 @@ class Robot:
     def _joint_array(self, q, name: str) -> np.ndarray:
         """``q`` as the kernels' float64 array; anything but real numbers is refused."""
         if type(q) is np.ndarray and q.dtype == np.float64:
-            return kernel_array(q)
+            return _jit.kernel_array(q)
         return real_array(f"{name} for robot {self.name!r}", q)
 
     def fk_parts(self, q) -> tuple[np.ndarray, np.ndarray]:

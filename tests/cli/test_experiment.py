@@ -1,4 +1,4 @@
-"""``moik experiment list|run`` (moik.experiments.commands): a user's own config files."""
+"""``moik experiment list|run`` (moik.cli.experiment): a user's own config files."""
 
 import pytest
 

@@ -1,12 +1,11 @@
 """``moik solve ... --pareto CRITERIA``: the Pareto set of exact solutions on the command line.
 
-:func:`add_pareto_arguments` registers the options on the ``solve`` subcommand's
-parser; :func:`run_pareto` is what ``solve`` runs when ``--pareto`` is given. It
-prints the members (joint values in degrees; prismatic ones in the robot's unit)
-with their criteria and marks the compromise, or with ``--json`` one JSON object
-(joint values in radians); ``--plot FILE`` draws the front and postures
-(:func:`moik.plotting.pareto.plot_pareto_ik`). Exit status 0 when an exact
-solution was found, 1 otherwise.
+:func:`run_pareto` is what ``solve`` runs when ``--pareto`` is given (the options are
+in :mod:`moik.cli.parser`). It prints the members (joint values in degrees;
+prismatic ones in the robot's unit) with their criteria and marks the compromise,
+or with ``--json`` one JSON object (joint values in radians); ``--plot FILE``
+draws the front and postures (:func:`moik.plotting.pareto.plot_pareto_ik`). Exit
+status 0 when an exact solution was found, 1 otherwise.
 """
 
 from __future__ import annotations
@@ -17,35 +16,13 @@ from pathlib import Path
 
 import numpy as np
 
+from moik.cli.common import joint_values
+from moik.cli.solutions import target as target_of
 from moik.exceptions import ParameterError
-from moik.kinematics.criteria import CRITERIA
 from moik.plotting.pareto import plot_pareto_ik
 from moik.problems.targets import Target
 from moik.robots import get_robot
 from moik.solver.pareto import ParetoIKResult, solve_ik_pareto
-
-
-def add_pareto_arguments(parser: argparse.ArgumentParser) -> None:
-    """Register ``--pareto``, ``--preferred-euler``, ``--pareto-size`` and ``--pareto-method``
-    on the ``solve`` parser, and ``--json`` / ``--q-current`` unless it has them already."""
-    known = parser._option_string_actions  # argparse's registry of option strings
-    parser.add_argument("--pareto", metavar="CRITERIA",
-                        help="the Pareto set of exact solutions over these comma-separated "
-                             f"criteria ({', '.join(CRITERIA)})")
-    if "--json" not in known:
-        parser.add_argument("--json", action="store_true",
-                            help="with --pareto: print one JSON object (joint values in rad)")
-    if "--q-current" not in known:
-        parser.add_argument("--q-current", nargs="+", type=float, metavar="Q",
-                            help="current configuration (rad, deg with --deg; needed by "
-                                 "joint_motion)")
-    parser.add_argument("--preferred-euler", nargs=3, type=float, metavar=("A", "B", "C"),
-                        help="preferred orientation of a position target (the 'orientation' "
-                             "criterion), Euler angles as --euler")
-    parser.add_argument("--pareto-size", type=int, default=20,
-                        help="most members returned with --pareto (default 20)")
-    parser.add_argument("--pareto-method", default="moeosma",
-                        help="multi-objective algorithm of the --pareto search (default moeosma)")
 
 
 def parse_criteria(text: str) -> tuple[str, ...]:
@@ -56,36 +33,21 @@ def parse_criteria(text: str) -> tuple[str, ...]:
     return names
 
 
-def _target(args: argparse.Namespace) -> Target:
-    if args.euler is None:
-        return Target(args.target)
-    return Target.from_euler(args.target, args.euler, convention=args.convention,
-                             degrees=args.deg)
-
-
-def _q_current(args: argparse.Namespace, robot) -> np.ndarray | None:
-    if args.q_current is None:
-        return None
-    q = np.asarray(args.q_current, dtype=float)
-    if q.shape != (robot.dof,):
-        raise ParameterError(f"--q-current needs {robot.dof} joint values for robot "
-                             f"{robot.name!r}, got {q.size}")
-    return np.where(robot.is_prismatic, q, np.radians(q)) if args.deg else q
-
-
 def run_pareto(args: argparse.Namespace, robot=None) -> int:
     """Solve, print (text or JSON) and optionally plot the Pareto set; the exit status.
 
     ``robot``: the arm the command line named (a catalog name or a URDF file); by
     default the catalog robot ``args.robot``."""
     robot = get_robot(args.robot) if robot is None else robot
-    target = _target(args)
+    target = target_of(args)
     rotation = None
     if args.preferred_euler is not None:
         rotation = Target.from_euler(args.target, args.preferred_euler,
                                      convention=args.convention, degrees=args.deg).rotation
+    q_current = (None if args.q_current is None
+                 else joint_values(robot, args.q_current, args.deg, "--q-current"))
     res = solve_ik_pareto(robot, target, objectives=parse_criteria(args.pareto),
-                          q_current=_q_current(args, robot), n_solutions=args.pareto_size,
+                          q_current=q_current, n_solutions=args.pareto_size,
                           seed=args.seed, method=args.pareto_method, rotation=rotation)
     index = res.compromise_index() if len(res.X) else None
     print(json.dumps(as_json(robot, target, res, index)) if args.json

@@ -1,5 +1,9 @@
 """How the ``moik`` command prints: text for people, one JSON object for scripts.
 
+This module holds what every command shares and the catalog listings (it needs no
+numba: ``moik robots`` stays fast); poses and solutions print in
+:mod:`moik.cli.solutions`.
+
 The JSON documents are described in :mod:`moik.cli`; in them, angles and revolute
 joint values are radians, lengths and prismatic joint values the robot's unit.
 The text shows revolute joints in degrees and prismatic joints in the robot's unit
@@ -10,12 +14,12 @@ pose printed by ``moik fk`` can be pasted into ``moik solve``.
 from __future__ import annotations
 
 import json
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from moik.kinematics.orientation import eosma_euler, zyx_euler
-from moik.problems.targets import Target
-from moik.robots import Robot
+if TYPE_CHECKING:
+    from moik.robots import Robot
 
 
 def kind(robot: Robot) -> str:
@@ -99,71 +103,3 @@ def print_algorithms(entries: list, as_json: bool) -> None:
     print(f"{'name':<10}{'kind':<18}source")
     for e in entries:
         print(f"{e.name:<10}{e.kind:<18}{e.source}")
-
-
-def print_pose(robot: Robot, q: np.ndarray, T: np.ndarray, inside: bool, as_json: bool) -> None:
-    """The pose ``T`` of joint vector ``q``: matrix, position and Euler angles, full precision."""
-    R = T[:3, :3]
-    if as_json:
-        print_json({"robot": robot.name, "unit": robot.unit, "joint_names": robot.joint_names,
-                    "q": q.tolist(), "pose": T.tolist(), "position": T[:3, 3].tolist(),
-                    "rotation": R.tolist(), "zyx_euler": zyx_euler(R).tolist(),
-                    "eosma_euler": eosma_euler(R).tolist(), "within_limits": inside})
-        return
-    print(f"robot {robot.name} ({robot.dof} DOF, {kind(robot)}, {robot.unit})")
-    print("pose T:")
-    for row in T:
-        print("  " + floats(row))
-    print(f"position ({robot.unit}): {floats(T[:3, 3])}")
-    print(f"ZYX Euler (alpha, beta, gamma) deg: {floats(np.degrees(zyx_euler(R)))}")
-    print(f"EOSMA Eq. 26 Euler (alpha, beta, gamma) deg: {floats(np.degrees(eosma_euler(R)))}")
-
-
-def print_solve_json(robot: Robot, target: Target, res, errors: list, plots: list) -> None:
-    """The ``solve`` document: status, q, errors, every solution with its errors, front."""
-    print_json({
-        "robot": robot.name, "unit": robot.unit, "joint_names": robot.joint_names,
-        "target": {"position": target.position.tolist(),
-                   "rotation": None if target.rotation is None else target.rotation.tolist()},
-        "status": res.status, "success": res.success, "n_eval": res.n_eval,
-        "time_s": res.time, "q": res.q.tolist(), "position_error": res.position_error,
-        "orientation_error": res.orientation_error,
-        "solutions": [{"q": q.tolist(), "position_error": p, "orientation_error": o}
-                      for q, (p, o) in zip(res.solutions, errors, strict=False)],
-        "front": None if res.front is None else res.front.tolist(),
-        "plots": [str(p) for p in plots]})
-
-
-def print_solve(robot: Robot, target: Target, res, Q: np.ndarray, errors: list, plots: list
-                ) -> None:
-    """Every solution (or the best candidate / the compromise) with its errors, in words
-    that say what an unsolved ``q`` is."""
-    what = "pose" if target.has_orientation else "position"
-    print(f"robot {robot.name}: {what} target {floats(target.position)} {robot.unit}")
-    print(f"status: {res.status}  ({res.n_eval} FK evaluations, {res.time * 1e3:.1f} ms)")
-    print(f"joints: {' '.join(robot.joint_names)}  ({q_units(robot)})")
-    if res.success:
-        labels = [f"solution {k}" for k in range(1, len(Q) + 1)]
-    elif res.status == "unreachable" and res.front is not None:
-        labels = ["compromise"]
-    else:
-        labels = ["best candidate"]
-    for label, q, (pos, ori) in zip(labels, Q, errors, strict=True):
-        print(f"{label}: " + " ".join(f"{v:.6f}" for v in display_q(robot, q)))
-        line = f"  position error {pos:.3e} {robot.unit}"
-        if target.has_orientation:
-            line += f", orientation error {ori:.3e} rad (geodesic)"
-        print(line)
-    if res.status == "unreachable":
-        if res.front is not None:
-            print(f"Pareto front of (position, orientation) errors: {len(res.front)} points; "
-                  "the compromise above is the one closest to the utopia point")
-        else:
-            print("the target is out of reach; the best candidate above comes closest")
-    elif res.status == "not-converged":
-        front = "" if res.front is None else (f" (Pareto front of (position, orientation) "
-                                              f"errors: {len(res.front)} points)")
-        print(f"not converged: the best candidate above is the closest found{front}; more "
-              "--max-evals, --starts or another --seed may solve it")
-    if plots:
-        print("plot written to " + " and ".join(str(p) for p in plots))

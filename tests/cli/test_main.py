@@ -352,3 +352,25 @@ def test_experiment_errors_are_one_line(capsys, tmp_path):
     assert "pass --resume" in capsys.readouterr().err
     assert main(args + ["--resume"]) == 0
     assert "0 trial(s) (0 failed), 3 already finished" in capsys.readouterr().out
+
+
+def test_the_parser_help_names_match_the_library():
+    from moik.cli.parser import CRITERIA_NAMES, EXPERIMENTS_ENV
+    from moik.experiments.registry import ENV_VAR
+    from moik.kinematics.criteria import CRITERIA
+
+    assert tuple(CRITERIA) == CRITERIA_NAMES and EXPERIMENTS_ENV == ENV_VAR
+
+
+@pytest.mark.parametrize(("argv", "absent"), [
+    (["--help"], ["numpy", "numba", "scipy", "pymoo"]),
+    (["robots"], ["numba", "scipy", "pymoo"]),
+    (["robots", "ur5"], ["numba", "scipy", "pymoo"]),
+])
+def test_help_and_the_catalog_import_nothing_heavy(argv, absent):
+    code = (f"import sys\nfrom moik.cli import main\ntry:\n    main({argv!r})\n"
+            "except SystemExit:\n    pass\n"
+            f"print(sorted(m for m in {absent!r} if m in sys.modules), file=sys.stderr)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True)
+    assert out.stderr.strip().splitlines()[-1] == "[]"

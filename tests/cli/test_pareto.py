@@ -1,4 +1,4 @@
-"""``moik solve ... --pareto``: the command's functions, on a parser like ``solve``'s."""
+"""``moik solve ... --pareto`` (moik.cli.pareto): its functions on ``solve``'s arguments."""
 
 import argparse
 import json
@@ -7,9 +7,10 @@ import matplotlib
 import numpy as np
 import pytest
 
+from moik.cli.pareto import parse_criteria, run_pareto
+from moik.cli.parser import build_parser
 from moik.exceptions import ParameterError
 from moik.kinematics.orientation import zyx_euler
-from moik.pareto_cli import add_pareto_arguments, parse_criteria, run_pareto
 from moik.problems import random_reachable_targets
 from moik.robots import get_robot
 
@@ -19,24 +20,15 @@ IIWA = get_robot("iiwa14")
 POSE = random_reachable_targets(IIWA, 1, seed=11)[0]
 
 
-def _solve_parser() -> argparse.ArgumentParser:
-    """The arguments of ``moik solve`` that the Pareto command reads, plus its own."""
-    p = argparse.ArgumentParser()
-    p.add_argument("robot")
-    p.add_argument("--target", nargs=3, type=float, required=True)
-    p.add_argument("--euler", nargs=3, type=float)
-    p.add_argument("--convention", default="zyx-euler")
-    p.add_argument("--deg", action="store_true")
-    p.add_argument("--seed", type=int, default=0)
-    p.add_argument("--plot")
-    add_pareto_arguments(p)
-    return p
+def _solve_args(argv: list[str]) -> argparse.Namespace:
+    """``moik solve ARGV`` as the command's parser reads it."""
+    return build_parser().parse_args(["solve", *argv])
 
 
 def _pose_args(*extra: str) -> argparse.Namespace:
     euler = np.degrees(zyx_euler(POSE.rotation))
     q = np.degrees(POSE.q_source + 0.1)
-    return _solve_parser().parse_args(["iiwa14", "--target", *map(str, POSE.position),
+    return _solve_args(["iiwa14", "--target", *map(str, POSE.position),
                                        "--euler", *map(str, euler), "--deg",
                                        "--q-current", *map(str, q), *extra])
 
@@ -64,7 +56,7 @@ def test_json_output(capsys):
 
 
 def test_no_solution_exits_1(capsys):
-    args = _solve_parser().parse_args(["iiwa14", "--target", "2", "0", "0", "--pareto",
+    args = _solve_args(["iiwa14", "--target", "2", "0", "0", "--pareto",
                                        "manipulability", "--pareto-size", "3"])
     assert run_pareto(args) == 1
     assert "no exact solution found" in capsys.readouterr().out
@@ -76,5 +68,5 @@ def test_bad_criteria_and_q_current():
         parse_criteria(" , ")
     args = _pose_args("--pareto", "joint_motion")
     args.q_current = [0.0, 1.0]
-    with pytest.raises(ParameterError, match="--q-current needs 7 joint values"):
+    with pytest.raises(ParameterError, match=r"needs 7 joint values, got 2 \(--q-current\)"):
         run_pareto(args)

@@ -1,0 +1,149 @@
+"""The ``moik`` command's argument parser: every subcommand and option, nothing heavy imported.
+
+Each subcommand names its handler (``handler="solve:run"``, see :mod:`moik.cli.main`).
+Options are validated where they are used (by :mod:`moik._validate`, naming the
+option: ``--seed must be an integer >= 0``), so that this module needs no numpy.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+from moik._version import __version__
+
+CRITERIA_NAMES = ("joint_motion", "manipulability", "limit_margin", "orientation")
+"""The built-in ``--pareto`` criteria, for the help text (:data:`moik.kinematics.criteria.CRITERIA`;
+a test keeps the two equal)."""
+
+EXPERIMENTS_ENV = "MOIK_EXPERIMENTS_PATH"
+"""The folders of a user's own configs (:data:`moik.experiments.registry.ENV_VAR`)."""
+
+
+def positive_int(text: str) -> int:
+    """An argparse type: ``text`` as an integer >= 1 (``"2.0"``, ``"0"`` and ``"x"`` refused)."""
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
+    return value
+
+
+def _robot_arguments(p: argparse.ArgumentParser, optional: bool = False) -> None:
+    p.add_argument("robot", nargs="?" if optional else None,
+                   help="catalog name (see `moik robots`) or URDF file")
+    p.add_argument("--base", metavar="LINK", help="URDF: first link of the chain")
+    p.add_argument("--tip", metavar="LINK", help="URDF: last link of the chain")
+    p.add_argument("--json", action="store_true", help="print JSON (see `pydoc moik.cli`)")
+
+
+def _solve_arguments(p: argparse.ArgumentParser) -> None:
+    _robot_arguments(p)
+    p.add_argument("--target", nargs=3, type=float, required=True, metavar=("X", "Y", "Z"),
+                   help="target position in the robot's length unit")
+    p.add_argument("--euler", nargs=3, type=float, metavar=("A", "B", "C"),
+                   help="target orientation as Euler angles (alpha, beta, gamma)")
+    p.add_argument("--convention", default="zyx-euler", choices=["zyx-euler", "eosma-euler"],
+                   help="Euler convention (default zyx-euler: Rz(a) Ry(b) Rx(c))")
+    p.add_argument("--deg", action="store_true",
+                   help="Euler angles and revolute --q-current values in degrees")
+    p.add_argument("--q-current", nargs="+", type=float, metavar="Q",
+                   help="current joint values (rad, deg with --deg): the first start; "
+                        "solutions nearest to it first; needed by --pareto joint_motion")
+    p.add_argument("--tol", nargs="+", type=float, metavar="TOL",
+                   help="tolerance: one number t (position t*reach, orientation t rad; default "
+                        "1e-9) or two (position in the robot's unit, orientation in rad)")
+    p.add_argument("--max-evals", type=int, default=50_000,
+                   help="FK evaluation budget (default 50000)")
+    p.add_argument("--algorithm", default="eosma",
+                   help="global search algorithm, used when the local starts fail (default eosma)")
+    p.add_argument("--starts", type=int, default=500,
+                   help="random starts of the compiled Levenberg-Marquardt first stage, tried "
+                        "in turn until solved (default 500; 0: the global search only)")
+    p.add_argument("--seed", type=int, default=0, help="random seed, an integer >= 0 (default 0)")
+    p.add_argument("--n-solutions", type=int, default=1, help="distinct solutions wanted")
+    p.add_argument("--plot", metavar="FILE",
+                   help="save a 3-D drawing: FILE.png, .pdf or .svg (no extension: .png and .pdf)")
+    p.add_argument("--pareto", metavar="CRITERIA",
+                   help="the Pareto set of exact solutions over these comma-separated "
+                        f"criteria ({', '.join(CRITERIA_NAMES)})")
+    p.add_argument("--preferred-euler", nargs=3, type=float, metavar=("A", "B", "C"),
+                   help="with --pareto: preferred orientation of a position target (the "
+                        "'orientation' criterion), Euler angles as --euler")
+    p.add_argument("--pareto-size", type=int, default=20,
+                   help="most members returned with --pareto (default 20)")
+    p.add_argument("--pareto-method", default="moeosma",
+                   help="multi-objective algorithm of the --pareto search (default moeosma)")
+
+
+def _experiment_arguments(sub) -> None:
+    p = sub.add_parser("experiment", help="list or run the papers' experiments",
+                       description="List or run the experiments that regenerate the papers' "
+                                   "tables and figures.")
+    esub = p.add_subparsers(dest="experiment_command", required=True)
+    q = esub.add_parser("list", help="list the experiments (trials full / quick size)")
+    q.set_defaults(handler="experiment:cmd_list")
+    q = esub.add_parser("run", help="run an experiment; results are stored trial by trial",
+                        description="Run an experiment. Each finished trial is stored at once; "
+                                    "Ctrl-C loses only the trials in flight; --resume continues.")
+    which = q.add_mutually_exclusive_group(required=True)
+    which.add_argument("name", nargs="?",
+                       help="experiment name (see `moik experiment list`) or config file")
+    which.add_argument("--config", metavar="FILE",
+                       help="run the experiment defined by this TOML config file (your own; "
+                            f"the folders in {EXPERIMENTS_ENV} are listed by name too)")
+    q.add_argument("--quick", action="store_true", help="the seconds-long smoke-test size")
+    q.add_argument("--workers", type=positive_int, default=None,
+                   help="worker processes (default: the number of cores; 1 = serial)")
+    q.add_argument("--resume", action="store_true",
+                   help="continue the results in --out, skipping finished trials")
+    q.add_argument("--out", metavar="DIR",
+                   help="results folder (default results/NAME or results/NAME-quick)")
+    q.add_argument("--dask-scheduler", metavar="ADDRESS",
+                   help="run on a Dask distributed scheduler (needs moik[dask])")
+    q.add_argument("--limit", type=positive_int, default=None,
+                   help="run at most this many pending trials, then stop")
+    q.add_argument("--by-run", action="store_true",
+                   help="run trials run by run (run 0 of every algorithm and target first), so "
+                        "a partial run compares every algorithm")
+    q.add_argument("--no-progress", action="store_true", help="no progress bar")
+    q.set_defaults(handler="experiment:cmd_run")
+    p = sub.add_parser("report", help="write a Markdown report of results folders, or the docs",
+                       description="Write DIR/report.md: tables beside the paper's numbers, "
+                                   "and figures. DIR is a results folder or a folder of them. "
+                                   "With --docs DOCS: write DOCS/results/NAME.md per experiment "
+                                   "and regenerate its blocks in DOCS/reproducing.md.")
+    p.add_argument("folder", metavar="DIR", nargs="+",
+                   help="results folder (or a folder of them)")
+    p.add_argument("--no-figures", action="store_true", help="tables only")
+    p.add_argument("--output", metavar="FILE", help="report file (default DIR/report.md)")
+    p.add_argument("--docs", metavar="DOCS",
+                   help="docs folder to regenerate from the results (e.g. docs/)")
+    p.set_defaults(handler="report:cmd_report")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The argument parser of the ``moik`` command."""
+    parser = argparse.ArgumentParser(prog="moik",
+                                     description="The ``moik`` command line (also "
+                                                 "``python -m moik``).",
+                                     epilog="JSON schemas and exit codes: pydoc moik.cli")
+    parser.add_argument("--version", action="version", version=f"moik {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("robots", help="list the robot catalog, or describe one robot")
+    _robot_arguments(p, optional=True)
+    p.set_defaults(handler="catalog:cmd_robots")
+    p = sub.add_parser("fk", help="forward kinematics of one joint vector")
+    _robot_arguments(p)
+    p.add_argument("q", nargs="+", type=float, help="joint values (rad, or deg with --deg)")
+    p.add_argument("--deg", action="store_true", help="revolute joint values in degrees")
+    p.set_defaults(handler="fk:cmd_fk")
+    p = sub.add_parser("algorithms", help="list the registered algorithms (name, kind, source)")
+    p.add_argument("--json", action="store_true", help="print JSON")
+    p.set_defaults(handler="algorithms:cmd_algorithms")
+    p = sub.add_parser("solve", help="solve inverse kinematics for one target")
+    _solve_arguments(p)
+    p.set_defaults(handler="solve:cmd_solve")
+    _experiment_arguments(sub)
+    return parser

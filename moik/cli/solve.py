@@ -1,0 +1,105 @@
+"""``moik solve ROBOT --target x y z [--euler a b c] ...``: inverse kinematics of one target.
+
+With ``--pareto CRITERIA`` the command is :mod:`moik.cli.pareto` instead.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+from pathlib import Path
+
+import numpy as np
+
+from moik._validate import integer
+from moik.cli import pareto, solutions
+from moik.cli.common import joint_values, robot
+from moik.cli.solutions import target
+from moik.exceptions import ParameterError
+from moik.kinematics.orientation import orientation_error
+from moik.problems.targets import Target
+from moik.robots import Robot
+from moik.solver import solve_ik
+
+PLOT_FORMATS = (".png", ".pdf", ".svg")
+
+
+def plot_files(spec: str | None) -> list[Path]:
+    """The files ``--plot`` writes, checked before any solving.
+
+    ``.png``, ``.pdf`` or ``.svg``: that file; no extension: ``.png`` and ``.pdf``.
+    """
+    if spec is None:
+        return []
+    path = Path(spec)
+    suffix = path.suffix.lower()
+    if path.is_dir() or not path.name:
+        raise ParameterError(f"--plot needs a file name, got the folder {spec!r}")
+    if suffix and suffix not in PLOT_FORMATS:
+        raise ParameterError(f"--plot file must end in {', '.join(PLOT_FORMATS)} (or have no "
+                             f"extension for .png and .pdf), got {spec!r}")
+    folder = path.parent
+    if folder.exists() and not folder.is_dir():
+        raise ParameterError(f"--plot folder {str(folder)!r} is a file, not a folder")
+    if not folder.is_dir():
+        raise ParameterError(f"--plot folder {str(folder)!r} does not exist (create it first)")
+    if not os.access(folder, os.W_OK):
+        raise ParameterError(f"--plot folder {str(folder)!r} is not writable")
+    return [path] if suffix else [path.with_name(path.name + ext) for ext in (".png", ".pdf")]
+
+
+def _errors(robot: Robot, target: Target, Q: np.ndarray) -> list[tuple[float, float]]:
+    """Position error (robot unit) and geodesic orientation error (rad) of each row, by FK."""
+    if len(Q) == 0:
+        return []
+    T = robot.fk(Q)
+    pos = np.linalg.norm(T[:, :3, 3] - target.position, axis=1)
+    ori = (np.zeros(len(Q)) if target.rotation is None
+           else np.atleast_1d(orientation_error(T[:, :3, :3], target.rotation, "geodesic")))
+    return [(float(p), float(o)) for p, o in zip(pos, ori, strict=True)]
+
+
+def _tol(values: list[float] | None):
+    if values is None:
+        return 1e-9
+    if len(values) > 2:
+        raise ParameterError(f"--tol takes 1 number (relative) or 2 (position in the robot's "
+                             f"unit, orientation in rad), got {len(values)}")
+    return values[0] if len(values) == 1 else tuple(values)
+
+
+def cmd_solve(args: argparse.Namespace) -> int:
+    """Solve, print (text or JSON), optionally plot; 0 when solved, 1 otherwise."""
+    if args.pareto:
+        return pareto.run_pareto(args, robot=robot(args))
+    seed = integer("--seed", args.seed, minimum=0)
+    plots = plot_files(args.plot)
+    arm = robot(args)
+    goal = target(args)
+    q_current = (None if args.q_current is None
+                 else joint_values(arm, args.q_current, args.deg, "--q-current"))
+    res = solve_ik(arm, goal, method=args.algorithm, seed=seed, tol=_tol(args.tol),
+                   n_solutions=args.n_solutions, starts=args.starts, max_evals=args.max_evals,
+                   q_current=q_current)
+    Q = res.solutions if len(res.solutions) else res.q[None]
+    errors = [(res.position_error, res.orientation_error)] + _errors(arm, goal, Q[1:])
+    if plots:
+        _plot(arm, goal, Q, res.status, plots)
+    if args.json:
+        solutions.print_solve_json(arm, goal, res, errors, plots)
+    else:
+        solutions.print_solve(arm, goal, res, Q, errors, plots)
+    return 0 if res.success else 1
+
+
+def _plot(robot: Robot, target: Target, Q: np.ndarray, status: str, files: list[Path]) -> None:
+    import matplotlib.pyplot as plt  # lazy: keeps the command's start-up fast
+
+    from moik.plotting import plot_robot
+
+    labels = ([f"solution {k}" for k in range(1, len(Q) + 1)] if status == "solved"
+              else [f"best ({status})"])
+    ax = plot_robot(robot, Q, labels=labels, target=target)
+    for path in files:
+        ax.figure.savefig(path, dpi=120, bbox_inches="tight")  # the legend sits outside
+    plt.close(ax.figure)

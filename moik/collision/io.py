@@ -11,7 +11,10 @@ Scene file::
 
     {"obstacles": [{"name": "table", "type": "halfspace", "normal": [0, 0, 1], "offset": 0},
                    {"name": "shelf", "type": "box", "size": [0.4, 0.8, 0.02],
-                    "xyz": [0.6, 0, 0.5]}]}
+                    "xyz": [0.6, 0, 0.5]}],
+     "allowed": [["table", "panda_link0"]]}
+
+(``allowed``: obstacle-link pairs never checked, e.g. the table the arm stands on.)
 
 Capsule-model file (``"robot"`` and ``"dof"`` must match the robot it is used with)::
 
@@ -119,7 +122,11 @@ def load_scene(source: Any) -> Scene:
         if name in obstacles:
             raise GeometryError(f"two obstacles are named {name!r}")
         obstacles[name] = shape_from_dict(item, f"obstacle {name!r}")
-    return Scene(obstacles)
+    allowed = data.get("allowed", [])
+    if not isinstance(allowed, list) or any(not isinstance(p, list) or len(p) != 2
+                                            for p in allowed):
+        raise GeometryError("scene 'allowed' must be a list of [obstacle, link] pairs")
+    return Scene(obstacles, allowed=frozenset(tuple(p) for p in allowed))
 
 
 def load_model(source: Any, robot: Robot) -> CollisionModel:

@@ -122,11 +122,19 @@ class Scene:
 
     Args:
         obstacles: ``{name: shape}`` (or a sequence of shapes, named ``obstacle0`` ...).
+        allowed: ``(obstacle name, link name)`` pairs never checked (the table an arm is
+            mounted on and its base link, as in MoveIt's allowed-collision matrix); the link
+            names are checked against the model when a :class:`CollisionChecker` is built.
     """
 
     obstacles: Mapping[str, Shape] = field(default_factory=dict)
+    allowed: frozenset[tuple[str, str]] = field(default_factory=frozenset)
 
     def __post_init__(self) -> None:
+        pairs = frozenset(tuple(p) for p in self.allowed)
+        if any(len(p) != 2 for p in pairs):
+            raise GeometryError("scene allowed pairs must be (obstacle name, link name) pairs")
+        object.__setattr__(self, "allowed", pairs)
         obs = self.obstacles
         if not isinstance(obs, Mapping):
             obs = {f"obstacle{k}": s for k, s in enumerate(_shapes("scene obstacles", obs))}
@@ -135,6 +143,9 @@ class Scene:
                 raise GeometryError(f"obstacle names must be non-empty strings, got {name!r}")
             _shapes(f"obstacle {name!r}", s)
         object.__setattr__(self, "obstacles", dict(obs))
+        for name, _ in self.allowed:
+            if name not in self.obstacles:
+                raise UnknownNameError("obstacle", name, self.obstacles)
 
 
 class CollisionChecker:
@@ -173,7 +184,13 @@ class CollisionChecker:
             checked = set(model.checked_body_pairs())
             pairs += [(a, b) for a in range(len(items)) for b in range(a + 1, len(items))
                       if (bodies[a], bodies[b]) in checked]
-        pairs += [(a, len(items) + o) for a in range(len(items)) for o in range(len(obstacles))]
+        for _, link in (() if scene is None else scene.allowed):
+            if link not in model.links:
+                raise UnknownNameError(f"link of robot {robot.name!r}", link, model.links)
+        skip = frozenset() if scene is None else scene.allowed
+        pairs += [(a, len(items) + o) for a in range(len(items))
+                  for o, obstacle in enumerate(obstacles)
+                  if (obstacle, model.links[bodies[a]]) not in skip]
         chain = robot.kinematic_chain
         self._args = (chain.origins, chain.link_frames, np.array(robot.base, dtype=float),
                       chain.joint_types)

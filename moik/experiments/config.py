@@ -56,7 +56,8 @@ from moik.experiments.kinds import KINDS, MULTI_OBJECTIVE_PROBLEMS, baselines, k
 
 ANALYSES = ("summary", "ranksum", "friedman-hv", "joint-motion", "compromise", "signed-rank",
             "per-target", "per-target-ranksum", "branches", "dh-fit", "solution-rank",
-            "paper-consistency", "front-quality", "mean-ranks", "versus-random", "hv-shares")
+            "paper-consistency", "front-quality", "mean-ranks", "versus-random", "hv-shares",
+            "collision")
 """Report tables an experiment can ask for (see :mod:`moik.experiments.analysis`)."""
 
 _TOP_KEYS = {"name", "title", "source", "robot", "problem", "targets", "algorithms", "pop_size",

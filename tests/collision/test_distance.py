@@ -24,7 +24,10 @@ def _rotation(v):
 
 
 unit = st.floats(0.0, 1.0)
-shape = st.tuples(st.sampled_from(KINDS), st.tuples(st.floats(0.02, 0.5), st.floats(0.0, 0.6),
+# capsule half lengths are 0 (a sphere) or >= 1e-3: for shorter ones coal's GJK on the core
+# segment is off by up to 1.2e-7 (its tolerance, not the geometry); see the test below
+half = st.one_of(st.just(0.0), st.floats(1e-3, 0.6))
+shape = st.tuples(st.sampled_from(KINDS), st.tuples(st.floats(0.02, 0.5), half,
                                                     st.floats(0.02, 0.5)),
                   st.tuples(unit, unit, unit), st.tuples(*[st.floats(-0.8, 0.8)] * 3))
 
@@ -61,19 +64,17 @@ def test_signed_distance_matches_coal(x, y):
         return
     d = pair_distance(a[0], a[1], a[2], b[0], b[1], b[2])
     expected = coal_distance(a, b)
-    # coal's penetration is inexact in two degenerate cases that hypothesis finds (the
-    # closed forms here are exact): capsule cores that meet (exactly -(rA + rB) deep; coal's
-    # EPA stops 1.5e-8 short for coincident capsules) and a capsule shorter than 1e-6
-    # (coal 1.2e-7 off for a 1.2e-7 long one); there the tolerance is 2e-7
-    degenerate = d[0] < 0 and a[0] <= CAPSULE and b[0] <= CAPSULE and (
-        d[0] == -(a[2][0] + b[2][0]) or 0 < a[2][1] < 1e-6 or 0 < b[2][1] < 1e-6)
-    if d[0] < 0 and BOX in (a[0], b[0]) and HALFSPACE not in (a[0], b[0]):
+    if a[0] <= CAPSULE and b[0] <= CAPSULE and d[0] == -(a[2][0] + b[2][0]):
+        # capsule cores that meet are exactly -(rA + rB) deep (the closed form); coal's EPA
+        # stops short there (measured: 1.5e-8 to 2.5e-5 for coincident capsules): sign only
+        assert expected < 0
+    elif d[0] < 0 and BOX in (a[0], b[0]) and HALFSPACE not in (a[0], b[0]):
         # coal's EPA under-estimates some box penetrations (1.2e-2 for two thin boxes with
         # one centre: 0.0400 where the depth is 0.0523, as a 2e6-direction search confirms);
         # the depth here is the exact SAT minimum, never smaller than coal's
         assert d[0] <= expected + 1e-9, (d[0], expected)
     else:
-        assert abs(d[0] - expected) <= (2e-7 if degenerate else 1e-9), (d[0], expected)
+        assert abs(d[0] - expected) <= 1e-9, (d[0], expected)
     assert (d[0] < 0) == (expected < 0) or abs(expected) < 1e-12
 
 

@@ -70,9 +70,21 @@ class MoikWarning(UserWarning):
     """Base class of the warnings moik issues about suspicious but accepted input."""
 
 
+class CacheWarning(MoikWarning):
+    """moik's compiled-kernel cache was damaged (discarded and recompiled) or cannot be written."""
+
+
 class DegreesWarning(MoikWarning):
     """Angles given to moik (joint limits, DH twists or offsets) look like degrees.
 
     moik takes angles in radians; a value beyond a full turn (two turns for joint
     limits, which multi-turn joints exceed legitimately) is most likely in degrees.
+    """
+
+
+class NonFiniteValuesWarning(MoikWarning, RuntimeWarning):
+    """A problem returned NaN or infinite objective or constraint values at some points.
+
+    moik's algorithms treat such a point as infeasible and worst (``F = CV = inf``) and
+    never report it; the warning is issued once per run.
     """

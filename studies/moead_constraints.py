@@ -3,7 +3,7 @@
 Run: ``.venv/bin/python -m studies.moead_constraints [--problems osy tnk] [--seeds 3] [--write]``
 (``--write`` regenerates docs/results/moead-constraints.md from the printed table).
 
-moik's :class:`~moik.algorithms.moo.moead.MOEAD` decomposes feasible points from the
+moik's :class:`~moik.algorithms.moo.moead_pymoo.PymooMOEAD` decomposes feasible points from the
 best feasible value per objective seen so far (``feasible_ideal``). ``all-points``
 below is the earlier rule, pymoo's ideal point of every evaluated point, infeasible
 ones included (a subclass that restores it); ``normalized`` additionally scales each
@@ -25,12 +25,12 @@ from pymoo.optimize import minimize
 from pymoo.problems import get_problem
 
 from moik.algorithms import get_algorithm
-from moik.algorithms.moo.moead import MOEAD
+from moik.algorithms.moo.moead_pymoo import PymooMOEAD
 from moik.experiments.kinds.moo_fronts import analytic_front, hv_reference
 from moik.metrics import hypervolume
 
 
-class AllPointsIdeal(MOEAD):
+class AllPointsIdeal(PymooMOEAD):
     """The earlier rule: feasible points decomposed from pymoo's ideal of every point."""
 
     def _replace(self, k, off) -> None:
@@ -45,7 +45,7 @@ class AllPointsIdeal(MOEAD):
         pop[N[np.flatnonzero(better)]] = off
 
 
-class Normalized(MOEAD):
+class Normalized(PymooMOEAD):
     """Feasible ideal, objectives scaled by the feasible population's range."""
 
     def _replace(self, k, off) -> None:
@@ -69,7 +69,7 @@ class Normalized(MOEAD):
 
 
 VARIANTS = {"nsga2": lambda: get_algorithm("nsga2", pop_size=100),
-            "moead": lambda: MOEAD(pop_size=100),
+            "moead": lambda: PymooMOEAD(pop_size=100),
             "all-points": lambda: AllPointsIdeal(pop_size=100),
             "normalized": lambda: Normalized(pop_size=100)}
 

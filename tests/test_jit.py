@@ -146,3 +146,146 @@ def test_read_only_installation_compiles_without_cache(tmp_path):
 def test_kernels_are_numba_dispatchers(name):
     kernel = getattr(trig if name == "sin_cos" else dh, name)
     assert hasattr(kernel, "py_func") and hasattr(kernel, "signatures")
+
+
+# --- the self-healing cache (issue 27, items 1 and 2) ---
+
+def _checked_file(tmp_path: Path):
+    from moik._jit import _CheckedCacheFile
+    return _CheckedCacheFile(cache_path=str(tmp_path), filename_base="kernel-1.py311",
+                             source_stamp=(1.0, 2))
+
+
+@pytest.mark.parametrize("damage", ["truncate", "empty", "flip", "foreign"])
+@pytest.mark.parametrize("which", ["index", "data"])
+def test_a_damaged_cache_file_is_discarded_unread(tmp_path, damage, which):
+    """Index and data files carry a digest: a damaged one is warned about, removed and
+    reads as absent (numba then compiles); it never reaches pickle or LLVM."""
+    from moik import _jit
+    cache = _checked_file(tmp_path)
+    cache.save(("sig", "arch"), {"payload": list(range(100))})
+    assert cache.load(("sig", "arch")) == {"payload": list(range(100))}
+    path = Path(cache._index_path if which == "index" else cache._data_path("kernel-1.py311.1.nbc"))
+    raw = bytearray(path.read_bytes())
+    if damage == "truncate":
+        raw = raw[: len(raw) // 2]
+    elif damage == "empty":
+        raw = bytearray()
+    elif damage == "flip":
+        raw[len(raw) - 7] ^= 0x10
+    else:  # intact digest over bytes that are no pickle
+        body = b"not a pickle at all"
+        raw = bytearray(_jit._MAGIC + __import__("hashlib").sha256(body).digest() + body)
+    path.write_bytes(bytes(raw))
+    _jit._warned.discard("damaged")
+    with pytest.warns(moik.exceptions.CacheWarning, match="discarded a damaged kernel cache"):
+        assert cache.load(("sig", "arch")) is None
+    assert not path.exists()
+    cache.save(("sig", "arch"), {"payload": [1]})  # the save after the recompilation heals it
+    assert cache.load(("sig", "arch")) == {"payload": [1]}
+
+
+def test_a_plain_numba_cache_file_is_overwritten_quietly(tmp_path, recwarn):
+    """A cache file in numba's own format (written before the digests) is no damage."""
+    from numba.core.caching import IndexDataCacheFile
+    plain = IndexDataCacheFile(cache_path=str(tmp_path), filename_base="kernel-1.py311",
+                               source_stamp=(1.0, 2))
+    plain.save(("sig", "arch"), {"payload": 1})
+    cache = _checked_file(tmp_path)
+    assert cache.load(("sig", "arch")) is None
+    cache.save(("sig", "arch"), {"payload": 2})
+    assert cache.load(("sig", "arch")) == {"payload": 2}
+    assert not [w for w in recwarn if issubclass(w.category, moik.exceptions.CacheWarning)]
+
+
+# Runs in a fresh interpreter after damaging one cache file of a complete cache.
+_HEAL = """
+import sys
+from pathlib import Path
+name, suffix, damage = sys.argv[1:4]
+path = next(Path(sys.argv[4]).rglob(f"dh.{name}-*{suffix}"))
+raw = bytearray(path.read_bytes())
+if damage == "truncate":
+    raw = raw[: len(raw) // 2]
+elif damage == "empty":
+    raw = bytearray()
+else:
+    i = int(damage)
+    raw[i] ^= 1 << (i % 8)
+path.write_bytes(bytes(raw))
+""" + SCRIPT
+
+
+@pytest.fixture(scope="module")
+def built_cache(tmp_path_factory):
+    """A complete kernel cache of the FK script, built once."""
+    tmp = tmp_path_factory.mktemp("built")
+    root = Path(moik.__file__).parent
+    out = _run(_env(NUMBA_CACHE_DIR=str(tmp / "cache"), PYTHONPATH=str(root.parent)), tmp)
+    assert out.returncode == 0, out.stderr
+    return tmp / "cache"
+
+
+@pytest.mark.parametrize("name, suffix, damage", [
+    ("all_finite", ".nbi", "truncate"), ("all_finite", ".nbi", "empty"),
+    ("all_finite", ".nbi", "300"), ("all_finite", ".nbc", "truncate"),
+    ("all_finite", ".nbc", "empty"), ("all_finite", ".nbc", "2000"),
+    ("fk_poses", ".nbc", "100"),  # numba aborted the process (SIGABRT) on this flip
+])
+def test_a_damaged_cache_heals_in_the_next_process(tmp_path, built_cache, name, suffix, damage):
+    """Before: EOFError, UnpicklingError or SIGABRT in every later process. Now the
+    process that finds the damage warns, recompiles that kernel and rewrites its file."""
+    from moik import _jit
+    cache = tmp_path / "cache"
+    shutil.copytree(built_cache, cache)
+    root = Path(moik.__file__).parent
+    env = _env(NUMBA_CACHE_DIR=str(cache), PYTHONPATH=str(root.parent))
+    out = subprocess.run([sys.executable, "-c", _HEAL, name, suffix, damage, str(cache)],
+                         env=env, cwd=tmp_path, capture_output=True, text=True, timeout=600)
+    assert out.returncode == 0, out.stderr
+    assert "CacheWarning: moik: discarded a damaged kernel cache file" in out.stderr
+    assert "Traceback" not in out.stderr
+    head = len(_jit._MAGIC) + 32
+    for path in cache.rglob(f"dh.{name}-*.nb[ic]"):  # rewritten, intact
+        raw = path.read_bytes()
+        assert raw.startswith(_jit._MAGIC)
+        assert __import__("hashlib").sha256(raw[head:]).digest() == raw[len(_jit._MAGIC):head]
+
+
+_FULL_DISK = """
+import errno
+from moik import _jit
+def full(self, filepath):
+    raise OSError(errno.ENOSPC, "No space left on device", filepath)
+_jit._CheckedCacheFile._open_for_write = full
+""" + SCRIPT
+
+
+def test_a_cache_that_cannot_be_written_does_not_fail_the_computation(tmp_path):
+    """Every cache write fails with ENOSPC: one warning, correct results, no traceback."""
+    root = Path(moik.__file__).parent
+    env = _env(NUMBA_CACHE_DIR=str(tmp_path / "cache"), PYTHONPATH=str(root.parent))
+    out = subprocess.run([sys.executable, "-c", _FULL_DISK], env=env, cwd=tmp_path,
+                         capture_output=True, text=True, timeout=600)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == str(root / "__init__.py")
+    assert out.stderr.count("CacheWarning: moik: cannot write the kernel cache") == 1
+    assert "No space left on device" in out.stderr and "Traceback" not in out.stderr
+
+
+def test_a_full_tmpfs_cache_does_not_fail_the_computation(tmp_path):
+    """The real thing: NUMBA_CACHE_DIR on a 64 KiB tmpfs that fills up mid-save."""
+    mount = tmp_path / "small"
+    mount.mkdir()
+    made = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", str(mount)],
+                          capture_output=True, text=True)
+    if made.returncode != 0:
+        pytest.skip(f"cannot mount a tmpfs here: {made.stderr.strip()}")
+    try:
+        root = Path(moik.__file__).parent
+        out = _run(_env(NUMBA_CACHE_DIR=str(mount), PYTHONPATH=str(root.parent)), tmp_path)
+    finally:
+        subprocess.run(["umount", str(mount)], capture_output=True)
+    assert out.returncode == 0, out.stderr
+    assert out.stderr.count("CacheWarning: moik: cannot write the kernel cache") == 1
+    assert "Traceback" not in out.stderr

@@ -1,13 +1,9 @@
-"""The generation driver shared by the single- and multi-objective array-state bases.
+"""The helpers of the one array-state base (:mod:`moik.algorithms.array_base`).
 
-Both :class:`moik.algorithms.base.ArrayAlgorithm` and
-:class:`moik.algorithms.moo.base.MOArrayAlgorithm` refuse unknown constructor
-keywords (a misspelled option must not pass silently), validate the same
-constructor arguments, need finite bounds, infer the schedule length T from the
-termination, build the initial population the same way (uniform, optionally
-seeded with ``X0``), count the evaluation budget the same way and build pymoo
-``Population`` objects only when read (:class:`ArrayStateMixin`, whose
-``next()`` drives one generation).
+Keyword and size validation (a misspelled option must not pass silently), finite
+bounds, the schedule rule (:func:`planned_iterations`, the length T of the papers' t/T
+schedules from the current termination), the initial population (uniform, optionally
+seeded with ``X0``) and the evaluation budget.
 """
 
 from __future__ import annotations
@@ -23,9 +19,12 @@ from pymoo.core.population import Population
 from pymoo.core.termination import TerminateIfAll, TerminateIfAny
 from pymoo.termination.default import DefaultTermination
 
-from moik._validate import integer, is_integer, keywords, seed
+from moik._validate import integer, is_integer, keywords
 from moik.algorithms.mechanics import clip_to_bounds, uniform_population
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError
+
+DEFAULT_SCHEDULE_LENGTH = 1000
+"""T when neither ``max_iter`` nor any termination criterion bounds the run."""
 
 Step = Generator[np.ndarray, tuple, None]
 """One generation: yields candidate arrays ``X``, receives ``(F, CV)`` for each."""
@@ -96,22 +95,6 @@ def finite_bounds(problem, name: str) -> tuple[np.ndarray, np.ndarray]:
     if xl is None or xu is None or not (np.all(np.isfinite(xl)) and np.all(np.isfinite(xu))):
         raise ParameterError(f"{name} needs finite bounds xl, xu")
     return np.asarray(xl, float), np.asarray(xu, float)
-
-
-def schedule_length(termination, max_iter, n_initial: int, per_iteration: float) -> int:
-    """T, the number of update iterations after initialization (the papers' Max_t).
-
-    ``max_iter`` if given; else the smaller of what an ``n_gen`` termination allows
-    (``n_max_gen - 1``: pymoo counts the initial population as generation 1) and what
-    an ``n_eval`` termination allows (``ceil((n_max_evals - n_initial) / per_iteration)``);
-    else 1000. At least 1.
-    """
-    if max_iter is None:
-        n_gen = find_limit(termination, "n_max_gen") - 1.0
-        by_eval = np.ceil((find_limit(termination, "n_max_evals") - n_initial) / per_iteration)
-        limit = min(n_gen, by_eval)
-        max_iter = int(limit) if np.isfinite(limit) else 1000
-    return max(int(max_iter), 1)
 
 
 def planned_iterations(termination, *, t: int, n_eval: int, elapsed: float,
@@ -194,105 +177,3 @@ def budget_left(max_evals: float, n_eval: int, n: int) -> int:
     """How many of ``n`` candidates the evaluation budget still allows."""
     left = max_evals - n_eval
     return n if left >= n else int(max(left, 0))
-
-
-class ArrayStateMixin(Algorithm):
-    """What both array-state bases share on pymoo's side.
-
-    A subclass of pymoo's ``Algorithm``, listed before it by both bases (the method
-    resolution order is base, this class, ``Algorithm``). ``pop`` and ``opt`` are properties
-    built from arrays only when read: a base marks them stale
-    (``_pop_stale``/``_opt_stale``) and implements ``_build_pop()``/
-    ``_build_opt()``; pymoo's own assignments go to the setters. ``_infill``
-    hands out the pending candidates of the ``_generation()`` generator for
-    ``ask()`` (cut to the evaluation budget), ``next()`` drives the same
-    generator directly; ``_set_optimum`` does nothing
-    because ``opt`` is built lazily.
-    """
-
-    t: int
-    """The iteration of the paper's schedule (0 while the initial population is built)."""
-    _max_evals: float
-    _step: Step | None
-    _pending: np.ndarray | None
-
-    def setup(self, problem, **kwargs):
-        """pymoo's ``setup`` (``minimize`` calls it), after checking the seed it will use.
-
-        Raises:
-            ParameterError: If the seed (``seed=`` of ``minimize`` or of the constructor)
-                is not None, a non-negative integer or a numpy ``SeedSequence``.
-        """
-        seed("seed", kwargs.get("seed", self.seed))
-        return super().setup(problem, **kwargs)
-
-    def next(self) -> None:
-        """One iteration through the array fast path: run ``_generation()``,
-        sending each yielded batch its ``_evaluate`` result (pymoo's own path
-        for initialization and while an ``ask()/tell()`` iteration is open)."""
-        if not self.is_initialized or self._step is not None:
-            return super().next()
-        self.t = self.n_iter - 1
-        step = self._generation()
-        X = next(step)
-        while True:
-            try:
-                X = step.send(self._evaluate(X))
-            except StopIteration:
-                break
-        self._end_iteration()
-        self._post_advance()
-        if self.termination.has_terminated():
-            self.finalize()
-
-    def _problem_values(self, X: np.ndarray) -> dict:
-        """``problem.evaluate(X, return_as_dictionary=True)``; an unconstrained problem that
-        offers ``batch_objectives(X)`` (moik's IK problems: the same F bit for bit, without
-        pymoo's per-call bookkeeping) is asked that instead, unless it answers None."""
-        direct = None if self._constrained else getattr(self.problem, "batch_objectives", None)
-        if direct is not None:
-            F = direct(X)
-            if F is not None:
-                return {"F": F}
-        return self.problem.evaluate(X, return_as_dictionary=True)
-
-    def _end_iteration(self) -> None:
-        """Hook run after an iteration's last batch (the MO base merges its archive)."""
-
-    def _infill(self) -> Population:
-        if self._step is None:
-            self.t = self.n_iter - 1
-            self._step = self._generation()
-            self._pending = next(self._step)
-        assert self._pending is not None  # a batch is pending while an iteration is open
-        n = budget_left(self._max_evals, self.evaluator.n_eval, len(self._pending))
-        return Population.new("X", self._pending[:n])
-
-    def _set_optimum(self) -> None:
-        """Nothing to do: ``opt`` is built when read."""
-
-    def _build_pop(self) -> Population:
-        raise NotImplementedError("abstract hook: subclasses implement it")
-
-    def _build_opt(self) -> Population:
-        raise NotImplementedError("abstract hook: subclasses implement it")
-
-    @property
-    def pop(self) -> Population | None:
-        if self.__dict__.get("_pop_stale"):
-            self._pop, self._pop_stale = self._build_pop(), False
-        return self.__dict__.get("_pop")
-
-    @pop.setter
-    def pop(self, value) -> None:
-        self._pop, self._pop_stale = value, False
-
-    @property
-    def opt(self) -> Population | None:
-        if self.__dict__.get("_opt_stale"):
-            self._opt, self._opt_stale = self._build_opt(), False
-        return self.__dict__.get("_opt")
-
-    @opt.setter
-    def opt(self, value) -> None:
-        self._opt, self._opt_stale = value, False

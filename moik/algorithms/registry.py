@@ -10,10 +10,10 @@ moik's own algorithms validate their hyperparameters and refuse unknown
 keywords in ``__init__`` (a bad value raises
 :class:`~moik.exceptions.ParameterError` with the valid range). pymoo's DE (as
 ``pymoo-de``; ``de`` is moik's array-state DE/rand/1/bin), GA, NSGA2 and SMS-EMOA
-are registered as they are, for comparisons (MOEA/D and MOPSO-CD as moik
-subclasses that add default directions and constraint handling); for them
-:func:`get_algorithm` refuses an unknown keyword (pymoo's classes would swallow
-it through ``**kwargs``).
+are registered as they are, for comparisons (pymoo's MOEA/D as ``moead-pymoo`` and
+MOPSO-CD as moik subclasses that add default directions and constraint handling;
+``moead`` is moik's own MOEA/D); for them :func:`get_algorithm` refuses an unknown
+keyword (pymoo's classes would swallow it through ``**kwargs``) and checks their sizes.
 
 More entries are added with :func:`register`, either as ``register("name", cls)``
 or as a class decorator ``@register("name")``.
@@ -21,7 +21,6 @@ or as a class decorator ``@register("name")``.
 
 from __future__ import annotations
 
-import inspect
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import cast
@@ -32,8 +31,8 @@ from pymoo.algorithms.soo.nonconvex.de import DE as PymooDE  # noqa: N811
 from pymoo.algorithms.soo.nonconvex.ga import GA
 from pymoo.core.algorithm import Algorithm
 
-from moik._validate import choice, is_integer, keywords
-from moik.algorithms.array_state import PYMOO_OPTIONS, ArrayStateMixin, constructor_keywords
+from moik._validate import choice, integer, keywords, optional_integer
+from moik.algorithms.array_state import constructor_keywords
 from moik.algorithms.moo.base import MOArrayAlgorithm
 from moik.algorithms.moo.mo_classic_pso import MOClassicPSO
 from moik.algorithms.moo.mo_csa import MOCSA
@@ -42,6 +41,7 @@ from moik.algorithms.moo.mo_modified_pso import MOMPSO
 from moik.algorithms.moo.moalo import MOALO
 from moik.algorithms.moo.moda import MODA
 from moik.algorithms.moo.moead import MOEAD
+from moik.algorithms.moo.moead_pymoo import PymooMOEAD
 from moik.algorithms.moo.moeosma import MOEOSMA
 from moik.algorithms.moo.mogwo import MOGWO
 from moik.algorithms.moo.mompa import MOMPA
@@ -184,8 +184,10 @@ _MULTI = [
     ("mo-jaya", MOJAYA, f"{_ROKBANI_2022} (baseline, Section 5.2)"),
     ("mo-csa", MOCSA, f"{_ROKBANI_2022} (baseline, Section 5.2)"),
     ("nsga2", NSGA2, "pymoo: NSGA-II (Deb et al. 2002, DOI 10.1109/4235.996017)"),
-    ("moead", MOEAD, "pymoo: MOEA/D (Zhang & Li 2007, DOI 10.1109/TEVC.2007.892759), "
-                     "Das-Dennis directions by default"),
+    ("moead", MOEAD, "Zhang & Li 2007, IEEE Trans. Evol. Comput. 11(6), 712-731, "
+                     "DOI 10.1109/TEVC.2007.892759"),
+    ("moead-pymoo", PymooMOEAD, "pymoo: MOEA/D (Zhang & Li 2007, DOI 10.1109/TEVC.2007.892759), "
+                                "Das-Dennis directions by default"),
     ("sms-emoa", SMSEMOA, "pymoo: SMS-EMOA (Beume, Naujoks & Emmerich 2007, "
                           "DOI 10.1016/j.ejor.2006.08.008)"),
     ("mopso-cd", MOPSOCD, "pymoo: MOPSO-CD (Raquel & Naval 2005, DOI 10.1145/1068009.1068047), "
@@ -202,7 +204,8 @@ _REGISTRY: dict[str, AlgorithmEntry] = {
 _FORWARDED: dict[type, tuple[str, ...]] = {
     PymooDE: ("CR", "F", "jitter", "prob_mut", "control", "crossover", "selection", "n_diffs"),
 }
-_PYMOO_MULTI_OBJECTIVE = (NSGA2, MOEAD, SMSEMOA, MOPSOCD)
+_PYMOO_MULTI_OBJECTIVE = (NSGA2, PymooMOEAD, SMSEMOA, MOPSOCD)
+_PYMOO_GENETIC = (GA, PymooDE, NSGA2, SMSEMOA)
 
 
 def register(name: str, cls: type[Algorithm] | None = None, *, kind: str | None = None,
@@ -275,12 +278,20 @@ def is_multi_objective(name: str) -> bool:
 def accepted_parameters(name: str) -> list[str]:
     """Keyword names ``get_algorithm(name, ...)`` accepts (class and pymoo options), sorted."""
     cls = entry(name).cls
-    if issubclass(cls, ArrayStateMixin) or cls.__module__.startswith("moik."):
-        # type[Algorithm] is type[Any] to mypy (pymoo has no types), which is not Hashable
-        return sorted(constructor_keywords(cast(type, cls)))  # what the class itself accepts
-    own = {p.name for p in inspect.signature(cls.__init__).parameters.values()
-           if p.kind in (p.KEYWORD_ONLY, p.POSITIONAL_OR_KEYWORD) and p.name != "self"}
-    return sorted(own | PYMOO_OPTIONS | set(_FORWARDED.get(cls, ())))
+    # the named parameters along the MRO (pymoo's GeneticAlgorithm takes repair, mating ...
+    # that NSGA2 forwards through **kwargs); type[Algorithm] is type[Any] to mypy (pymoo has
+    # no types), which is not Hashable
+    return sorted(constructor_keywords(cast(type, cls)) | set(_FORWARDED.get(cls, ())))
+
+
+def _check_pymoo_options(cls: type, params: dict) -> None:
+    """What pymoo's own GA, DE, NSGA2 and SMS-EMOA take unchecked (moik's classes, MOPSO-CD
+    and pymoo's MOEA/D subclass check their own): sizes are positive integers."""
+    if not issubclass(cls, _PYMOO_GENETIC):
+        return
+    if "pop_size" in params:
+        integer("pop_size", params["pop_size"], minimum=1)
+    optional_integer("n_offsprings", params.get("n_offsprings"), minimum=1)
 
 
 def get_algorithm(name: str, **params) -> Algorithm:
@@ -292,9 +303,7 @@ def get_algorithm(name: str, **params) -> Algorithm:
     """
     cls = entry(name).cls
     keywords(f"algorithm {name!r}", params, accepted_parameters(name))
-    pop_size = params.get("pop_size", 1)
-    if cls in (PymooDE, GA) and not (is_integer(pop_size) and pop_size >= 1):
-        raise ParameterError(f"pop_size must be a positive integer, got {pop_size!r}")
+    _check_pymoo_options(cls, params)
     return cls(**params)
 
 

@@ -6,15 +6,18 @@ import argparse
 import sys
 
 from moik.cli import solutions
-from moik.cli.common import joint_values, robot
+from moik.cli.common import joint_values, library_call, robot
 
 
 def cmd_fk(args: argparse.Namespace) -> int:
-    """Print the pose (full precision); warn when ``q`` is outside the joint limits."""
+    """Print the pose (full precision); warn when ``q`` is outside the joint limits
+    (naming the joints)."""
     arm = robot(args)
     q = joint_values(arm, args.q, args.deg, "q")
-    inside = bool(arm.within_limits(q)[0])
-    solutions.print_pose(arm, q, arm.fk(q), inside, args.json)
-    if not inside:
-        print("warning: q is outside the joint limits", file=sys.stderr)
+    outside = arm.outside_limits(q)
+    with library_call():
+        T = arm.fk(q)
+    solutions.print_pose(arm, q, T, not outside, args.json)
+    if outside:
+        print(f"moik: warning: q is outside the joint limits: {outside}", file=sys.stderr)
     return 0

@@ -13,10 +13,11 @@ from __future__ import annotations
 import importlib
 import os
 import sys
+import warnings
 from typing import TYPE_CHECKING
 
 from moik.cli.parser import build_parser
-from moik.exceptions import MoikError
+from moik.exceptions import MoikError, MoikWarning
 
 if TYPE_CHECKING:
     from moik.cli import algorithms, catalog, experiment, fk, report, solve  # noqa: F401
@@ -28,11 +29,19 @@ def _handler(spec: str):
     return getattr(importlib.import_module(f"moik.cli.{module}"), function)
 
 
+def _show_warning(message, category, filename, lineno, file=None, line=None) -> None:
+    """A warning as the command prints it: one line on stderr, no source location."""
+    print(f"moik: warning: {message}", file=sys.stderr if file is None else file)
+
+
 def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``moik`` console script and of ``python -m moik``."""
     args = build_parser().parse_args(argv)
     try:
-        return _handler(args.handler)(args)
+        with warnings.catch_warnings():
+            warnings.showwarning = _show_warning
+            warnings.simplefilter("default", MoikWarning)  # printed, whatever -W says
+            return _handler(args.handler)(args)
     except MoikError as exc:
         print(f"moik: error: {exc}", file=sys.stderr)
         return 2

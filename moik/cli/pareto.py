@@ -4,7 +4,8 @@
 in :mod:`moik.cli.parser`). It prints the members (joint values in degrees;
 prismatic ones in the robot's unit) with their criteria and marks the compromise,
 or with ``--json`` one JSON object (joint values in radians); ``--plot FILE``
-draws the front and postures (:func:`moik.plotting.pareto.plot_pareto_ik`). Exit
+draws the front and postures (:func:`moik.plotting.pareto.plot_pareto_ik`), ``--html
+FILE`` writes the interactive explorer (:func:`moik.plotting.pareto_explorer`). Exit
 status 0 when an exact solution was found, 1 otherwise.
 """
 
@@ -16,9 +17,11 @@ from pathlib import Path
 
 import numpy as np
 
-from moik.cli.common import joint_values
+from moik.cli.common import PARETO_OPTIONS, joint_values, library_call
+from moik.cli.solutions import euler_angles
 from moik.cli.solutions import target as target_of
 from moik.exceptions import ParameterError
+from moik.plotting.explorer import pareto_explorer
 from moik.plotting.pareto import plot_pareto_ik
 from moik.problems.targets import Target
 from moik.robots import get_robot
@@ -40,38 +43,75 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
     default the catalog robot ``args.robot``."""
     robot = get_robot(args.robot) if robot is None else robot
     target = target_of(args)
+    html = html_file(args.html)
     rotation = None
     if args.preferred_euler is not None:
-        rotation = Target.from_euler(args.target, args.preferred_euler,
-                                     convention=args.convention, degrees=args.deg).rotation
+        angles = euler_angles(args.preferred_euler, args.deg, "--preferred-euler")
+        rotation = Target.from_euler(args.target, angles, convention=args.convention,
+                                     degrees=args.deg).rotation
     q_current = (None if args.q_current is None
                  else joint_values(robot, args.q_current, args.deg, "--q-current"))
-    res = solve_ik_pareto(robot, target, objectives=parse_criteria(args.pareto),
-                          q_current=q_current, n_solutions=args.pareto_size,
-                          seed=args.seed, method=args.pareto_method, rotation=rotation)
+    with library_call(PARETO_OPTIONS):
+        res = solve_ik_pareto(robot, target, objectives=parse_criteria(args.pareto),
+                              q_current=q_current, n_solutions=args.pareto_size,
+                              seed=args.seed, method=args.pareto_method, rotation=rotation)
     index = res.compromise_index() if len(res.X) else None
-    print(json.dumps(as_json(robot, target, res, index)) if args.json
-          else format_result(robot, target, res, index))
+    plots = []
     if args.plot and len(res.X):
         path = Path(args.plot)  # a path's dots are not an extension (out.d/fig, ../x/p)
         stem = str(path.with_suffix("") if path.suffix in (".png", ".pdf", ".svg") else path)
         plot_pareto_ik(robot, res.X, res.F, objectives=res.objectives, senses=res.senses,
                        target=target.position, compromise=index, save=stem)
+        plots = [f"{stem}.png", f"{stem}.pdf"]
+    print(json.dumps(as_json(robot, target, res, index, plots)) if args.json
+          else format_result(robot, target, res, index))
+    if plots and not args.json:
+        print(f"plot written to {plots[0]} and {plots[1]}")
+    if html is not None and len(res.X):
+        pareto_explorer(res, robot, html, target=target)
         if not args.json:
-            print(f"plot written to {stem}.png and {stem}.pdf")
+            print(f"explorer written to {html}")
     return 0 if len(res.X) else 1
 
 
-def as_json(robot, target: Target, res: ParetoIKResult, compromise: int | None) -> dict:
-    """The result as plain JSON types (joint values in rad, prismatic in the robot's unit)."""
-    return {"robot": robot.name, "unit": robot.unit, "target_position": target.position.tolist(),
-            "target_rotation": None if target.rotation is None else target.rotation.tolist(),
-            "objectives": list(res.objectives), "senses": list(res.senses),
-            "X": res.X.tolist(), "F": res.F.tolist(),
-            "position_errors": res.position_errors.tolist(),
-            "orientation_errors": res.orientation_errors.tolist(), "compromise": compromise,
-            "redundant": res.redundant, "n_exact": res.n_exact, "n_eval": res.n_eval,
-            "time": res.time}
+def html_file(spec: str | None) -> Path | None:
+    """The file ``--html`` writes, checked before any solving (its folder must exist)."""
+    if spec is None:
+        return None
+    path = Path(spec)
+    if not spec or path.is_dir():
+        raise ParameterError(f"--html needs a file name, got {spec!r}")
+    if not path.parent.is_dir():
+        raise ParameterError(f"--html folder {str(path.parent)!r} does not exist (create it "
+                             "first)")
+    return path
+
+
+def as_json(robot, target: Target, res: ParetoIKResult, compromise: int | None,
+            plots: list[str] | None = None) -> dict:
+    """The result as plain JSON types, in the schema family of ``solve`` (see :mod:`moik.cli`).
+
+    ``q`` and its errors are the compromise member's (null without a member);
+    ``solutions`` every member; ``status`` ``"solved"`` with members, else
+    ``"not-converged"`` (no exact solution found).
+    """
+    solved = compromise is not None
+    members = [{"q": q.tolist(), "position_error": float(p), "orientation_error": float(o)}
+               for q, p, o in zip(res.X, res.position_errors, res.orientation_errors,
+                                  strict=True)]
+    best = members[compromise] if compromise is not None else None
+    return {"command": "pareto", "robot": robot.name, "unit": robot.unit,
+            "joint_names": list(robot.joint_names),
+            "target": {"position": target.position.tolist(),
+                       "rotation": None if target.rotation is None else target.rotation.tolist()},
+            "status": "solved" if solved else "not-converged", "success": solved,
+            "n_eval": res.n_eval, "time_s": res.time,
+            "q": None if best is None else best["q"],
+            "position_error": None if best is None else best["position_error"],
+            "orientation_error": None if best is None else best["orientation_error"],
+            "solutions": members, "objectives": list(res.objectives),
+            "senses": list(res.senses), "F": res.F.tolist(), "compromise": compromise,
+            "redundant": res.redundant, "n_exact": res.n_exact, "plots": plots or []}
 
 
 def format_result(robot, target: Target, res: ParetoIKResult, compromise: int | None) -> str:

@@ -65,6 +65,10 @@ def _solve_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--n-solutions", type=int, default=1, help="distinct solutions wanted")
     p.add_argument("--plot", metavar="FILE",
                    help="save a 3-D drawing: FILE.png, .pdf or .svg (no extension: .png and .pdf)")
+    p.add_argument("--html", metavar="FILE",
+                   help="write the interactive explorer, one self-contained HTML file (needs "
+                        "moik[explorer]): the Pareto set with --pareto, else the error front "
+                        "of an unreachable pose; a click on a point shows its posture")
     p.add_argument("--pareto", metavar="CRITERIA",
                    help="the Pareto set of exact solutions over these comma-separated "
                         f"criteria ({', '.join(CRITERIA_NAMES)})")
@@ -120,6 +124,10 @@ def _experiment_arguments(sub) -> None:
     p.add_argument("--output", metavar="FILE", help="report file (default DIR/report.md)")
     p.add_argument("--docs", metavar="DOCS",
                    help="docs folder to regenerate from the results (e.g. docs/)")
+    p.add_argument("--html", metavar="FILE", nargs="?", const="",
+                   help="write the interactive report instead (fronts linked to postures, "
+                        "convergence, the tables; needs moik[explorer]): FILE, default "
+                        "DIR/report.html")
     p.set_defaults(handler="report:cmd_report")
 
 

@@ -10,6 +10,7 @@ import argparse
 import numpy as np
 
 from moik.cli.output import display_q, floats, kind, print_json, q_units
+from moik.exceptions import TargetError
 from moik.kinematics.orientation import eosma_euler, zyx_euler
 from moik.problems.targets import Target
 from moik.robots import Robot
@@ -19,16 +20,26 @@ def target(args: argparse.Namespace) -> Target:
     """The target of ``--target`` and ``--euler`` (``--convention``, ``--deg``)."""
     if args.euler is None:
         return Target(args.target)
-    return Target.from_euler(args.target, args.euler, convention=args.convention,
-                             degrees=args.deg)
+    return Target.from_euler(args.target, euler_angles(args.euler, args.deg, "--euler"),
+                             convention=args.convention, degrees=args.deg)
+
+
+def euler_angles(angles: list[float], degrees: bool, option: str) -> list[float]:
+    """``angles`` as given; refused in the command's words when, without ``--deg``, one
+    exceeds 2 pi (the library says ``degrees=True``)."""
+    if not degrees and any(abs(a) > 2 * np.pi + 1e-9 for a in angles):
+        raise TargetError(f"{option} angles {angles} exceed 2 pi in magnitude; they are "
+                          "radians: add --deg to give degrees")
+    return angles
 
 
 def print_pose(robot: Robot, q: np.ndarray, T: np.ndarray, inside: bool, as_json: bool) -> None:
     """The pose ``T`` of joint vector ``q``: matrix, position and Euler angles, full precision."""
     R = T[:3, :3]
     if as_json:
-        print_json({"robot": robot.name, "unit": robot.unit, "joint_names": robot.joint_names,
-                    "q": q.tolist(), "pose": T.tolist(), "position": T[:3, 3].tolist(),
+        print_json({"command": "fk", "robot": robot.name, "unit": robot.unit,
+                    "joint_names": list(robot.joint_names), "q": q.tolist(),
+                    "pose": T.tolist(), "position": T[:3, 3].tolist(),
                     "rotation": R.tolist(), "zyx_euler": zyx_euler(R).tolist(),
                     "eosma_euler": eosma_euler(R).tolist(), "within_limits": inside})
         return
@@ -41,13 +52,16 @@ def print_pose(robot: Robot, q: np.ndarray, T: np.ndarray, inside: bool, as_json
     print(f"EOSMA Eq. 26 Euler (alpha, beta, gamma) deg: {floats(np.degrees(eosma_euler(R)))}")
 
 
-def print_solve_json(robot: Robot, target: Target, res, errors: list, plots: list) -> None:
+def print_solve_json(robot: Robot, target: Target, res, errors: list, plots: list,
+                     n_solutions: int) -> None:
     """The ``solve`` document: status, q, errors, every solution with its errors, front."""
     print_json({
-        "robot": robot.name, "unit": robot.unit, "joint_names": robot.joint_names,
+        "command": "solve", "robot": robot.name, "unit": robot.unit,
+        "joint_names": list(robot.joint_names),
         "target": {"position": target.position.tolist(),
                    "rotation": None if target.rotation is None else target.rotation.tolist()},
         "status": res.status, "success": res.success, "n_eval": res.n_eval,
+        "n_solutions": n_solutions,
         "time_s": res.time, "q": res.q.tolist(), "position_error": res.position_error,
         "orientation_error": res.orientation_error,
         "solutions": [{"q": q.tolist(), "position_error": p, "orientation_error": o}

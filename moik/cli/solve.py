@@ -7,16 +7,18 @@ from __future__ import annotations
 
 import argparse
 import os
+import sys
 from pathlib import Path
 
 import numpy as np
 
 from moik._validate import integer
 from moik.cli import pareto, solutions
-from moik.cli.common import joint_values, robot
+from moik.cli.common import SOLVE_OPTIONS, joint_values, library_call, robot
 from moik.cli.solutions import target
 from moik.exceptions import ParameterError
 from moik.kinematics.orientation import orientation_error
+from moik.plotting.explorer import pareto_explorer
 from moik.problems.targets import Target
 from moik.robots import Robot
 from moik.solver import solve_ik
@@ -74,22 +76,39 @@ def cmd_solve(args: argparse.Namespace) -> int:
         return pareto.run_pareto(args, robot=robot(args))
     seed = integer("--seed", args.seed, minimum=0)
     plots = plot_files(args.plot)
+    html = pareto.html_file(args.html)
     arm = robot(args)
     goal = target(args)
     q_current = (None if args.q_current is None
                  else joint_values(arm, args.q_current, args.deg, "--q-current"))
-    res = solve_ik(arm, goal, method=args.algorithm, seed=seed, tol=_tol(args.tol),
-                   n_solutions=args.n_solutions, starts=args.starts, max_evals=args.max_evals,
-                   q_current=q_current)
+    with library_call(SOLVE_OPTIONS):
+        res = solve_ik(arm, goal, method=args.algorithm, seed=seed, tol=_tol(args.tol),
+                       n_solutions=args.n_solutions, starts=args.starts,
+                       max_evals=args.max_evals, q_current=q_current)
     Q = res.solutions if len(res.solutions) else res.q[None]
     errors = [(res.position_error, res.orientation_error)] + _errors(arm, goal, Q[1:])
     if plots:
         _plot(arm, goal, Q, res.status, plots)
     if args.json:
-        solutions.print_solve_json(arm, goal, res, errors, plots)
+        solutions.print_solve_json(arm, goal, res, errors, plots, args.n_solutions)
     else:
         solutions.print_solve(arm, goal, res, Q, errors, plots)
+    if html is not None:
+        _explore(arm, goal, res, html, quiet=args.json)
     return 0 if res.success else 1
+
+
+def _explore(arm: Robot, goal: Target, res, html: Path, *, quiet: bool) -> None:
+    """``--html`` without ``--pareto``: the error front of an unreachable pose, if any."""
+    if res.front is None:
+        print(f"moik: --html: no front to explore (status {res.status}: fronts come with "
+              "unreachable poses; --pareto gives the Pareto set of a reachable one)",
+              file=sys.stderr)
+        return
+    pareto_explorer(res, arm, html, target=goal,
+                           title=f"{arm.name}: error front of an unreachable pose")
+    if not quiet:
+        print(f"explorer written to {html}")
 
 
 def _plot(robot: Robot, target: Target, Q: np.ndarray, status: str, files: list[Path]) -> None:

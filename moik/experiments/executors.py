@@ -8,6 +8,10 @@ the results folder (remote Dask workers need no shared file system).
 - ``pool``: ``multiprocessing.Pool(workers)`` with ``imap_unordered`` (chunks
   of one trial); workers ignore SIGINT, so Ctrl-C reaches only the parent, which
   terminates the pool: the trials in flight are lost, the stored ones are not.
+  A worker whose parent is killed (even with SIGKILL) exits at once, quietly.
+
+SIGTERM is handled as Ctrl-C (:func:`sigterm_as_interrupt`, used by the runner):
+the message, the stored trials kept, the lock released, the session end recorded.
 - ``dask``: ``distributed.Client(address)`` (connected before the results folder
   is made); ``client.map(run_trial, specs)`` and ``distributed.as_completed``;
   on interrupt the futures are cancelled.
@@ -19,15 +23,21 @@ stderr at most every two seconds: trials done/total, failures, ETA.
 
 from __future__ import annotations
 
+import contextlib
+import ctypes
 import multiprocessing
+import os
 import signal
 import sys
+import threading
 import time
 from collections.abc import Iterator, Sequence
 
 from moik.exceptions import ParameterError
 from moik.experiments.spec import TrialSpec
 from moik.experiments.trials import run_trial
+
+_PR_SET_PDEATHSIG = 1  # linux/prctl.h
 
 
 def run_serial(specs: Sequence[TrialSpec]) -> Iterator[tuple[dict, dict]]:
@@ -36,15 +46,58 @@ def run_serial(specs: Sequence[TrialSpec]) -> Iterator[tuple[dict, dict]]:
         yield run_trial(spec)
 
 
-def _ignore_sigint() -> None:
+class Terminated(KeyboardInterrupt):
+    """SIGTERM arrived: handled as Ctrl-C (the stored trials are kept, the lock released)."""
+
+
+def _raise_terminated(signum, frame) -> None:
+    raise Terminated(f"signal {signum}")
+
+
+@contextlib.contextmanager
+def sigterm_as_interrupt() -> Iterator[None]:
+    """While inside, SIGTERM raises :class:`Terminated` (a ``KeyboardInterrupt``), so a run
+    ended by ``kill`` or a batch system stops as Ctrl-C does. Only in the main thread
+    (where Python delivers signals); elsewhere a no-op."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    before = signal.signal(signal.SIGTERM, _raise_terminated)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, before)
+
+
+def _parent_watch(parent: int) -> None:
+    """Exit quietly (``os._exit``) once ``parent`` is gone (this process is re-parented)."""
+    while os.getppid() == parent:
+        time.sleep(0.25)
+    os._exit(0)
+
+
+def _init_worker(parent: int) -> None:
+    """A pool worker: Ctrl-C reaches only the parent; SIGTERM ends the worker at once (the
+    parent's handler is not inherited); the worker dies with its parent (Linux: the kernel's
+    parent-death signal; elsewhere a thread that watches the parent id) instead of
+    computing on and failing with ``BrokenPipeError`` when it sends its result."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    if sys.platform.startswith("linux"):
+        with contextlib.suppress(OSError, AttributeError):
+            libc = ctypes.CDLL(None, use_errno=True)
+            libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL)
+    if os.getppid() != parent:  # the parent died before this worker got here
+        os._exit(0)
+    threading.Thread(target=_parent_watch, args=(parent,), daemon=True,
+                     name="moik-parent-watch").start()
 
 
 def run_pool(specs: Sequence[TrialSpec], workers: int) -> Iterator[tuple[dict, dict]]:
     """Run the trials in ``workers`` processes (``fork`` where available)."""
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else None
     ctx = multiprocessing.get_context(method)
-    pool = ctx.Pool(processes=workers, initializer=_ignore_sigint)
+    pool = ctx.Pool(processes=workers, initializer=_init_worker, initargs=(os.getpid(),))
     try:
         yield from pool.imap_unordered(run_trial, specs, chunksize=1)
         pool.close()

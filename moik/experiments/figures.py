@@ -83,8 +83,10 @@ def objective_label(problem: dict, unit: str) -> tuple[str, str]:
     return text, formula
 
 
-def _benchmark_plans(res: Results) -> list[tuple[str, str, Callable]]:
-    """The mean convergence of every benchmark problem, one panel each."""
+def benchmark_curves(res: Results) -> tuple[dict[str, dict[str, np.ndarray]], set[str]]:
+    """Convergence curves ``{problem: {algorithm: (runs, n)}}`` of a benchmark experiment,
+    as ``f - f*`` where the optimum is known (those problems' names in the set); a problem
+    with a non-finite or negative curve is left out (it cannot go on a log axis)."""
     panels, shifted = {}, set()
     for ti, target in enumerate(res.meta["targets"]):
         curves = {}
@@ -103,6 +105,12 @@ def _benchmark_plans(res: Results) -> list[tuple[str, str, Callable]]:
             curves[lab] = C
         if curves and all(np.all(np.isfinite(c)) and np.all(c >= 0) for c in curves.values()):
             panels[target["name"]] = curves
+    return panels, shifted
+
+
+def _benchmark_plans(res: Results) -> list[tuple[str, str, Callable]]:
+    """The mean convergence of every benchmark problem, one panel each."""
+    panels, shifted = benchmark_curves(res)
     if not panels:
         return []
     proposed = res.config.get("proposed") or res.labels[0]

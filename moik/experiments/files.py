@@ -9,6 +9,7 @@ file; a crash leaves at most such a temporary, which the next run removes
 
 from __future__ import annotations
 
+import contextlib
 import os
 import platform
 import socket
@@ -52,13 +53,23 @@ def make_folders(folder: Path) -> Path | None:
 
 
 def atomic_write_bytes(path: Path, data: bytes) -> None:
-    """Write ``data`` to ``path`` atomically (temporary file + ``os.replace``)."""
+    """Write ``data`` to ``path`` atomically (temporary file + ``os.replace``).
+
+    Raises:
+        ResultsError: If the write fails (a full disk: names ``path``); the
+            temporary file is removed and ``path`` keeps its former content.
+    """
     tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    with open(tmp, "wb") as fh:
-        fh.write(data)
-        fh.flush()
-        os.fsync(fh.fileno())
-    os.replace(tmp, path)
+    try:
+        with open(tmp, "wb") as fh:
+            fh.write(data)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    except OSError as exc:
+        with contextlib.suppress(OSError):
+            tmp.unlink()
+        raise ResultsError(f"cannot write {str(path)!r}: {exc.strerror or exc}") from exc
 
 
 def remove_stale_temporaries(folder: Path) -> int:

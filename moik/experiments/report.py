@@ -11,7 +11,8 @@ each results folder) when :mod:`moik.plotting` can draw them.
 
 Damaged results do not stop a report: trials whose arrays are damaged or
 missing are left out (the counts say what is really there) with a warning in
-the section and on stderr, and a folder that cannot be read at all gets a
+the section and on stderr, so are malformed lines of ``results.jsonl`` (named by
+line number), and a folder that cannot be read at all gets a
 section saying why while the others are reported.
 """
 
@@ -26,6 +27,8 @@ from moik.exceptions import MoikError, ResultsError
 from moik.experiments.analysis import analyze
 from moik.experiments.figures import make_figures
 from moik.experiments.files import atomic_write_bytes
+from moik.experiments.records import read_lines
+from moik.experiments.registry import experiment_files
 from moik.experiments.store import ResultStore
 from moik.experiments.tables import Results, Table
 
@@ -106,6 +109,8 @@ def experiment_section(store: ResultStore, *, figures: bool, link: Callable[[Pat
     lines += [f"- {n}" for n in res.notes()]
     if store.damaged:
         lines.append(f"- **warning**: {damaged_warning(store)}")
+    if store.malformed:
+        lines.append(f"- **warning**: {malformed_warning(store)}")
     lines.append("")
     lines += [table_markdown(t) for t in tables]
     if figures:
@@ -128,14 +133,29 @@ def _figures(res: Results, folder: Path):
     return make_figures(res, folder)
 
 
+def rerun_command(store: ResultStore) -> str:
+    """The command that resumes ``store``'s run: by name for a shipped experiment, else
+    ``--config FILE`` (a user's config file has no name ``moik experiment run`` knows)."""
+    meta = store.meta
+    name, path = meta.get("experiment", "NAME"), meta.get("config_path")
+    shipped = experiment_files().get(name)
+    same = path is None or (shipped is not None and Path(path).resolve() == shipped.resolve())
+    which = name if same and shipped is not None else (f"--config {path}" if path else name)
+    return (f"moik experiment run {which}{' --quick' if meta.get('quick') else ''} "
+            f"--out {store.folder} --resume")
+
+
 def damaged_warning(store: ResultStore) -> str:
     """One sentence naming the trials of ``store`` left out for damaged or missing arrays."""
     n = len(store.damaged)
     shown = "; ".join(list(store.damaged.values())[:5]) + ("; ..." if n > 5 else "")
     return (f"{n} trial(s) left out: their arrays are damaged or missing ({shown}); "
-            f"`moik experiment run {store.meta.get('experiment', 'NAME')}"
-            f"{' --quick' if store.meta.get('quick') else ''} --out {store.folder} --resume` "
-            "runs them again")
+            f"`{rerun_command(store)}` runs them again")
+
+
+def malformed_warning(store: ResultStore) -> str:
+    """One sentence naming the malformed lines of ``store``'s results.jsonl (skipped)."""
+    return read_lines(store.results_path).describe(store.results_path)
 
 
 @dataclass
@@ -153,7 +173,7 @@ class Report:
     failed: list[str] = field(default_factory=list)
 
 
-FOLDER_ERRORS = (MoikError, OSError, ValueError, KeyError, TypeError, IndexError)
+FOLDER_ERRORS = (MoikError, OSError, ValueError, KeyError, TypeError, IndexError, AttributeError)
 """What reading or analysing one damaged folder may raise (a report goes on past it)."""
 
 
@@ -188,6 +208,8 @@ def make_report(folder: str | Path, *, figures: bool = True,
                 print(f"moik: warning: {sub}: {damaged_warning(store)}", file=sys.stderr)
             parts.append(experiment_section(store, figures=figures,
                                             link=lambda png: _relative(png, out.parent)))
+            if store.malformed:
+                report.warnings.append(malformed_warning(store))
         except FOLDER_ERRORS as exc:
             why = f"{exc.__class__.__name__}: {exc}"
             report.failed.append(f"{sub}: {why}")

@@ -9,7 +9,7 @@ from pathlib import Path
 
 from moik._validate import flag, integer, optional_integer
 from moik.experiments.config import ExperimentConfig
-from moik.experiments.executors import Progress, connect_dask, execute
+from moik.experiments.executors import Progress, connect_dask, execute, sigterm_as_interrupt
 from moik.experiments.kinds.functions import check_requirements
 from moik.experiments.spec import spec_summary
 from moik.experiments.store import ResultStore
@@ -136,12 +136,14 @@ def _run(cfg: ExperimentConfig, specs, targets, folder: Path, executor: str, *, 
             pending = pending[:limit]
         bar = Progress(total=len(pending), done=skipped, label=cfg.name, enabled=progress)
         try:
-            for record, arrays in execute(pending, workers=workers,
-                                          dask_scheduler=dask_scheduler, dask_client=client):
-                store.append(record, arrays)
-                ran += 1
-                failed += record.get("status") != "ok"
-                bar.update(record.get("status") == "ok")
+            with sigterm_as_interrupt():
+                for record, arrays in execute(pending, workers=workers,
+                                              dask_scheduler=dask_scheduler,
+                                              dask_client=client):
+                    store.append(record, arrays)
+                    ran += 1
+                    failed += record.get("status") != "ok"
+                    bar.update(record.get("status") == "ok")
         finally:
             bar.close()
             store.end_session(wall_time=time.perf_counter() - t0, ran=ran)

@@ -36,7 +36,9 @@ them again, and a store opened with ``verify=True`` (the report,
 
 from __future__ import annotations
 
+import contextlib
 import datetime as _dt
+import errno
 import io
 import json
 import math
@@ -57,9 +59,10 @@ from moik.experiments.files import (
     remove_stale_temporaries,
 )
 from moik.experiments.lock import RunLock
+from moik.experiments.records import read_lines
+from moik.experiments.recovery import adopt, meta_problem, repair_meta
 
 FORMAT = "moik-results/1"
-
 def _now() -> str:
     return _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds")
 
@@ -90,6 +93,8 @@ class ResultStore:
         self.meta = meta
         self.damaged: dict[str, str] = {}
         self.notes: list[str] = []
+        self.malformed: list[tuple[int, str]] = []  # of results.jsonl, set by records()
+        self._warned_lines = False
         self._fd: int | None = None
         self._lock: RunLock | None = None
 
@@ -155,7 +160,7 @@ class ResultStore:
             if lock is not None:
                 lock.release()
             raise
-        store._lock, store.notes = lock, notes
+        store._lock, store.notes = lock, notes + store.notes
         return store
 
     @classmethod
@@ -164,8 +169,8 @@ class ResultStore:
         """The body of :meth:`create`, run under the lock."""
         env = environment()
         entry = {"started": _now(), **session, **env}
-        if (folder / "meta.json").exists():
-            old = cls.open(folder)
+        old, problem = cls._existing(folder)
+        if old is not None:
             has_results = old.results_path.exists() and old.results_path.stat().st_size > 0
             if not resume and has_results:
                 raise ResultsError(f"{str(folder)!r} already holds results of "
@@ -173,24 +178,53 @@ class ResultStore:
                                    "or choose another --out folder")
             if resume and old.meta["config_fingerprint"] != config.fingerprint():
                 raise ResultsError(f"{str(folder)!r} holds results of another configuration "
-                                   f"({old.meta['experiment']!r}, quick={old.meta['quick']}); "
-                                   "cannot resume with this one")
+                                   f"({old.meta['experiment']!r}, quick={old.meta.get('quick')}"
+                                   "); cannot resume with this one")
             if resume:
+                (folder / "arrays").mkdir(parents=True, exist_ok=True)  # deleted by hand?
                 old.meta["sessions"].append(entry)
                 old._write_meta()
                 old._repair_tail()
                 return old
+        notes = [] if problem is None else adopt(folder, config, problem, resume)
         (folder / "arrays").mkdir(parents=True, exist_ok=True)
-        if not resume:
-            (folder / "results.jsonl").unlink(missing_ok=True)
+        results = folder / "results.jsonl"
+        if results.exists() and results.stat().st_size == 0:
+            results.unlink()
         meta = {"format": FORMAT, "experiment": config.name, "quick": config.is_quick,
                 "config_path": config.path, "config": config.raw,
                 "config_fingerprint": config.fingerprint(), "algorithms": config.labels,
                 "skipped_algorithms": list(config.skipped), "created": _now(), **env,
-                "sessions": [entry], "targets": targets, "trials": trials}
+                "sessions": [entry], "targets": targets, "trials": trials,
+                **({"adopted": {"at": _now(), "why": problem, "notes": notes}} if notes else {})}
         store = cls(folder, _clean(meta))
         store._write_meta()
+        store._repair_tail()
+        store.notes = notes
         return store
+
+    @classmethod
+    def _existing(cls, folder: Path) -> tuple[ResultStore | None, str | None]:
+        """The store already in ``folder`` if its ``meta.json`` is usable, else why not.
+
+        ``(None, None)``: no ``meta.json`` and no results (a new folder);
+        ``(None, why)``: trials or a ``meta.json`` are there, but no usable ``meta.json``.
+        """
+        meta_path = folder / "meta.json"
+        if not meta_path.exists():
+            results = folder / "results.jsonl"
+            has_results = results.exists() and results.stat().st_size > 0
+            return None, ("it has no meta.json" if has_results else None)
+        try:
+            old = cls.open(folder)
+        except ResultsError as exc:
+            return None, str(exc)
+        repaired = repair_meta(old.meta)
+        why = meta_problem(old.meta)
+        if why is not None:
+            return None, f"its meta.json {why}"
+        old.notes += repaired
+        return old, None
 
     def _write_meta(self) -> None:
         data = json.dumps(_clean(self.meta), indent=1, allow_nan=False).encode()
@@ -211,30 +245,66 @@ class ResultStore:
         return trial_id.replace("/", "__") + ".npz"
 
     def append(self, record: dict, arrays: dict) -> None:
-        """Store one finished trial: its arrays (atomic), then its line (commit mark)."""
-        record = dict(record, finished_at=_now(), has_arrays=bool(arrays),
+        """Store one finished trial: its arrays (atomic), then its line (commit mark).
+
+        Raises:
+            ResultsError: If either cannot be written (a full disk): names the file, and
+                says that the trials stored so far are kept and ``--resume`` continues.
+                A line that could be written only in part is cut off again.
+        """
+        record = dict(record, experiment=self.meta["experiment"],
+                      config_fingerprint=self.meta["config_fingerprint"],
+                      finished_at=_now(), has_arrays=bool(arrays),
                       **({"arrays": sorted(arrays)} if arrays else {}))
-        if arrays:
-            buf = io.BytesIO()
-            # numpy's stub matches **arrays against savez's allow_pickle: bool too
-            np.savez(buf, **{k: np.asarray(v) for k, v in arrays.items()})  # type: ignore[arg-type]
-            atomic_write_bytes(self.folder / "arrays" / self.array_name(record["trial"]),
-                               buf.getvalue())
-        line = (json.dumps(_clean(record), allow_nan=False) + "\n").encode()
+        try:
+            if arrays:
+                buf = io.BytesIO()
+                # numpy's stub matches **arrays against savez's allow_pickle: bool too
+                np.savez(buf, **{k: np.asarray(v) for k, v in arrays.items()})  # type: ignore[arg-type]
+                atomic_write_bytes(self.folder / "arrays" / self.array_name(record["trial"]),
+                                   buf.getvalue())
+            self._append_line((json.dumps(_clean(record), allow_nan=False) + "\n").encode())
+        except OSError as exc:
+            raise ResultsError(f"{exc}; trial {record['trial']!r} was not stored (the trials "
+                               f"stored before it are kept): free space, then run the same "
+                               f"command with --resume to continue") from exc
+
+    def _append_line(self, line: bytes) -> None:
+        """One line at the end of ``results.jsonl``, whole or not at all (then raises)."""
+        path = self.results_path
         if self._fd is None:
-            self._fd = os.open(self.results_path, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o644)
-        os.write(self._fd, line)
-        os.fsync(self._fd)
+            self._fd = os.open(path, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o644)
+        start = os.lseek(self._fd, 0, os.SEEK_END)
+        try:
+            view = memoryview(line)
+            while view:  # a short write (a full disk) writes the rest, or raises
+                written = os.write(self._fd, view)
+                if written <= 0:
+                    raise OSError(errno.ENOSPC, f"short write ({len(line) - len(view)} of "
+                                                f"{len(line)} bytes)")
+                view = view[written:]
+            os.fsync(self._fd)
+        except OSError as exc:
+            with contextlib.suppress(OSError):
+                os.ftruncate(self._fd, start)  # no torn line left behind
+            raise ResultsError(f"cannot append to {str(path)!r}: {exc.strerror or exc}"
+                               ) from exc
 
     def end_session(self, *, wall_time: float, ran: int) -> None:
         """Record in ``meta.json`` that the current session ended: its wall time and trial count.
 
         ``sessions[-1]`` gets ``finished`` (UTC), ``wall_time_s`` (seconds of the whole
-        call, start-up included) and ``trials_run``; the docs stamp sums them.
+        call, start-up included) and ``trials_run``; the docs stamp sums them. A
+        ``meta.json`` that cannot be written (a full disk) is warned about on stderr, not
+        raised: the trials are stored, and the error that ended the run stays the one shown.
         """
         self.meta["sessions"][-1].update(finished=_now(), wall_time_s=round(float(wall_time), 3),
                                          trials_run=int(ran))
-        self._write_meta()
+        try:
+            self._write_meta()
+        except ResultsError as exc:
+            print(f"moik: warning: the end of this session is not recorded: {exc}",
+                  file=sys.stderr)
 
     def close(self) -> None:
         """Close the append descriptor and release the run lock."""
@@ -248,18 +318,17 @@ class ResultStore:
     def records(self) -> list[dict]:
         """The stored trial records, the last one per trial id, in file order.
 
-        A store opened with ``verify=True`` leaves out the trials in :attr:`damaged`.
+        Malformed lines (:mod:`moik.experiments.records`) are skipped, counted in
+        :attr:`malformed` and named on stderr once. A store opened with
+        ``verify=True`` leaves out the trials in :attr:`damaged`.
         """
-        if not self.results_path.exists():
-            return []
+        lines = read_lines(self.results_path)
+        self.malformed = lines.malformed
+        if lines.malformed and not self._warned_lines:
+            self._warned_lines = True
+            print(f"moik: warning: {lines.describe(self.results_path)}", file=sys.stderr)
         by_id: dict[str, dict] = {}
-        for line in self.results_path.read_bytes().split(b"\n")[:-1]:
-            try:
-                rec = json.loads(line)
-            except ValueError:
-                print(f"moik: warning: skipping a damaged line in {self.results_path}",
-                      file=sys.stderr)
-                continue
+        for rec in lines.records:
             by_id.pop(rec["trial"], None)
             by_id[rec["trial"]] = rec
         return [r for r in by_id.values() if r["trial"] not in self.damaged]

@@ -65,8 +65,11 @@ class Results:
 
     def notes(self) -> list[str]:
         """Counts of finished and failed trials, then the config's ``paper["notes"]``."""
-        n_planned = len(self.meta.get("trials", []))
-        out = [f"{len(self.ok)} of {n_planned} planned trials finished"]
+        planned = self.meta.get("trials")
+        out = [f"{len(self.ok)} of {len(planned)} planned trials finished"
+               if isinstance(planned, list) and planned else
+               f"{len(self.ok)} trials finished (the number planned is unknown: meta.json "
+               "lists no planned trials)"]
         out += [f"about the paper's numbers: {n}" for n in self.paper.get("notes", [])]
         if self.failed:
             out.append(f"{len(self.failed)} trials failed (status error), e.g. "

@@ -3,9 +3,13 @@
 Every function takes plain arrays (or dicts name -> array), returns the Axes or
 Figure it drew, and with ``save="path/stem"`` writes ``stem.png`` and
 ``stem.pdf``. matplotlib is imported only when a plot is drawn.
+
+:func:`pareto_explorer` and :func:`write_explorer` write the interactive explorer
+(one self-contained HTML page, plotly: the ``explorer`` extra, imported only then).
 """
 
 from moik.plotting.convergence import plot_convergence, plot_joint_history
+from moik.plotting.explorer import pareto_explorer, write_explorer
 from moik.plotting.fronts import plot_pareto_fronts
 from moik.plotting.motion import plot_end_effector_paths, plot_motion
 from moik.plotting.panels import plot_convergence_panels
@@ -15,6 +19,7 @@ from moik.plotting.statistics import plot_error_boxes, plot_solve_times, plot_wi
 from moik.plotting.workspace import plot_targets
 
 __all__ = [
+    "pareto_explorer",
     "plot_convergence",
     "plot_convergence_panels",
     "plot_end_effector_paths",
@@ -27,4 +32,5 @@ __all__ = [
     "plot_solve_times",
     "plot_targets",
     "plot_wilcoxon",
+    "write_explorer",
 ]

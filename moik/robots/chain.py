@@ -146,6 +146,8 @@ class Robot:
             )
         if self.unit not in UNITS:
             raise ParameterError(f"unit must be one of {UNITS}, got {self.unit!r}")
+        with np.errstate(over="ignore", invalid="ignore"):  # inf is what is checked for
+            checks.finite_reach(self.name, self.reach, self.unit)
         checks.warn_if_degrees(self.name, cols, np.array([t == "prismatic" for t in types]),
                                stacklevel=3)
 
@@ -250,6 +252,10 @@ class Robot:
             ShapeError: if it is not an array of real numbers (strings, complex
                 numbers, ragged lists), the last axis is not ``dof`` or ndim is not 1 or 2.
             NonFiniteError: if it holds NaN or inf.
+
+        Warns:
+            DegreesWarning: revolute values that look like degrees (one more than a turn
+                beyond its limits, or all whole numbers some beyond a turn).
         """
         Q = self._joint_array(q, name)
         if Q.ndim not in (1, 2) or Q.shape[-1] != self.dof:
@@ -259,6 +265,8 @@ class Robot:
             )
         if not dh.all_finite(Q.reshape(-1)):
             raise NonFiniteError(f"{name} must be finite, got NaN or inf in {name}")
+        checks.warn_if_joint_degrees(self.name, self.joint_names, self.lower, self.upper,
+                                     self.is_prismatic, Q, name, stacklevel=3)
         return Q
 
     def kernel_batch(self, q) -> np.ndarray:
@@ -347,6 +355,11 @@ class Robot:
         # lower + (upper - lower) * U[0, 1): Generator.uniform's own formula, bit for bit,
         # without its broadcasting overhead (this is on solve_ik's hot path)
         return self.lower + (self.upper - self.lower) * rng.random((n, self.dof))
+
+    def outside_limits(self, q) -> str:
+        """The joints of one joint vector ``q`` outside the limits, in words ("" if none)."""
+        return checks.outside_limits(self.joint_names, self.lower, self.upper,
+                                     self._joint_array(q, "q"))
 
     def within_limits(self, q, tol: float = 0.0) -> np.ndarray:
         """Boolean per row: all joints within ``[lower - tol, upper + tol]``."""

@@ -6,7 +6,10 @@ per joint; base and tool are rigid transforms; lower limits do not exceed upper
 ones. Angles are radians: joint limits beyond two turns, or DH twists and
 offsets beyond one turn, look like degrees and raise a
 :class:`~moik.exceptions.DegreesWarning` (a warning, not an error: the values
-are legal, only suspicious).
+are legal, only suspicious); so do joint values (:func:`warn_if_joint_degrees`)
+beyond a joint's limits by more than a turn, or all whole numbers some beyond a
+turn (``fk([45, 0, 45, 0, 45, 0, 0])``). :func:`outside_limits` names the joints
+outside their limits, for every message about limits.
 """
 
 from __future__ import annotations
@@ -31,6 +34,7 @@ FULL_TURN = 2 * np.pi + 1e-6  # beyond this a DH twist or offset looks like degr
 LIMIT_TURNS = 2  # joint limits beyond two turns look like degrees (multi-turn joints
 # legitimately exceed one turn: the IRB-2600's axes 4 and 6 reach +-400 deg = 6.98 rad)
 RIGID_ATOL = 1e-6  # orthonormality tolerance of a rigid transform (as for target rotations)
+MAX_REACH = 1e100  # in the robot's unit: squares and sums of squares of lengths stay finite
 
 
 def _vector(name: str, values, dof: int) -> np.ndarray:
@@ -123,6 +127,23 @@ def rigid_transform(name: str, T) -> np.ndarray:
     return M
 
 
+def finite_reach(robot: str, reach: float, unit: str) -> None:
+    """Refuses a chain whose reach (the bound on the tool's distance) is not a usable number.
+
+    Finite lengths can still add up to ``inf`` (``1e200`` m origins), and lengths
+    whose squares overflow break every error and tolerance computed from them
+    (a tolerance of ``1e-9 x inf`` accepts any answer).
+
+    Raises:
+        ParameterError: ``reach`` is NaN, infinite or above :data:`MAX_REACH`.
+    """
+    if not reach <= MAX_REACH:  # NaN fails the comparison too
+        raise ParameterError(
+            f"robot {robot!r}: its reach (the sum of its link offsets and prismatic strokes) is "
+            f"{reach:.3g} {unit}; expected a finite length below {MAX_REACH:.0e} {unit} "
+            "(larger lengths overflow double precision in FK errors and tolerances)")
+
+
 def warn_if_degrees(robot: str, cols: dict[str, np.ndarray], prismatic: np.ndarray,
                     stacklevel: int) -> None:
     """A :class:`DegreesWarning` for angles that look like degrees (moik takes radians)."""
@@ -139,3 +160,47 @@ def warn_if_degrees(robot: str, cols: dict[str, np.ndarray], prismatic: np.ndarr
         warnings.warn(f"robot {robot!r}: {'; '.join(suspects)}: these look like degrees; moik "
                       "takes angles in radians (convert with numpy.radians)", DegreesWarning,
                       stacklevel=stacklevel + 1)
+
+
+def _joint(names: tuple[str, ...], j: int) -> str:
+    return f"joint {j + 1} ({names[j]})" if names else f"joint {j + 1}"
+
+
+def outside_limits(names: tuple[str, ...], lower: np.ndarray, upper: np.ndarray,
+                   q: np.ndarray) -> str:
+    """The joints of one joint vector ``q`` outside ``[lower, upper]``, in words ("" if none).
+
+    E.g. ``"joint 2 (j2) = 1.9 above its upper limit 1.5708"``.
+    """
+    parts = []
+    for j in np.flatnonzero((q < lower) | (q > upper)):
+        side, bound = ("below its lower", lower[j]) if q[j] < lower[j] else ("above its upper",
+                                                                              upper[j])
+        parts.append(f"{_joint(names, j)} = {q[j]:.6g} {side} limit {bound:.6g}")
+    return "; ".join(parts)
+
+
+def warn_if_joint_degrees(robot: str, names: tuple[str, ...], lower: np.ndarray,
+                          upper: np.ndarray, prismatic: np.ndarray, Q: np.ndarray, what: str,
+                          stacklevel: int, hint: str = "convert with numpy.radians") -> None:
+    """A :class:`DegreesWarning` when revolute joint values ``Q`` (``(dof,)`` or ``(n, dof)``)
+    look like degrees: one beyond its joint's limits by more than a turn, or every one a
+    whole number with some beyond a turn."""
+    Q2 = np.atleast_2d(Q)
+    rev = ~prismatic
+    if not rev.any() or Q2.size == 0 or not np.all(np.isfinite(Q2)):
+        return  # NaN and inf are refused by the caller
+    V = Q2[:, rev]
+    far = (upper[rev] + FULL_TURN < V) | (lower[rev] - FULL_TURN > V)
+    if far.any():
+        row, col = np.argwhere(far)[0]
+        j = int(np.flatnonzero(rev)[col])
+        why = (f"{_joint(names, j)} = {V[row, col]:.6g} is more than a turn beyond its limits "
+               f"[{lower[j]:.6g}, {upper[j]:.6g}]")
+    elif np.all(np.round(V) == V) and np.max(np.abs(V)) > FULL_TURN:
+        why = "every revolute value is a whole number and some exceed a turn (2 pi)"
+    else:
+        return
+    warnings.warn(f"{what} for robot {robot!r}: {why}: these look like degrees; moik takes "
+                  f"joint angles in radians ({hint})", DegreesWarning,
+                  stacklevel=stacklevel + 1)

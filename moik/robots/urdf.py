@@ -32,7 +32,7 @@ from pathlib import Path
 
 import numpy as np
 
-from moik.exceptions import UnknownNameError, URDFError
+from moik.exceptions import MoikError, UnknownNameError, URDFError
 from moik.robots.chain import Robot
 from moik.robots.transforms import rot_x, translation
 
@@ -209,7 +209,7 @@ def _chain_joints(links, joints, base: str, tip: str | None) -> list[ET.Element]
         elif not movable:
             break
         else:
-            leaves = sorted(leaf for el in movable
+            leaves = sorted(leaf for el in children[link]  # a fixed leaf (a TCP) is a tip too
                             for leaf in _leaves(_child(el), children))
             raise URDFError(f"the chain branches at link {link!r}; pass tip_link= one of {leaves}")
         chain.append(nxt)
@@ -225,7 +225,9 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
         source: URDF file path, or the URDF's XML text.
         base_link: First link (default: the root link of the file).
         tip_link: Last link (default: follow the chain as the module doc says).
-        name: Robot name (default: the URDF's robot name).
+        name: Robot name (default ``"ROBOT:TIP"``: the URDF's robot name and the chain's
+            last link, e.g. ``"ur5:wrist_3_link"``, so that two chains of one file, or a
+            file's chain and the catalog arm made from it, do not share a name).
 
     Returns:
         The chain with ``joint_names`` the URDF names of its movable joints.
@@ -250,7 +252,11 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
     origins, lower, upper, types, names = [np.eye(4)], [], [], [], []
     for el in chain:
         jname, jtype = el.get("name", ""), el.get("type")  # named: _parse checked
-        T = origins[-1] @ _origin(el, jname)
+        with np.errstate(over="ignore", invalid="ignore"):  # checked just below
+            T = origins[-1] @ _origin(el, jname)
+        if not np.all(np.isfinite(T)):
+            raise URDFError(f"{label!r}: the transform from {base_link!r} to joint {jname!r} "
+                            "overflows (origin xyz too large); expected lengths in metres")
         if jtype == "fixed":
             origins[-1] = T
             continue
@@ -269,9 +275,10 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
         axis_el = el.find("axis")
         axis = _floats(None if axis_el is None else axis_el.get("xyz"), (1, 0, 0),
                        f"joint {jname!r} axis")
-        if np.linalg.norm(axis) == 0:
-            raise URDFError(f"joint {jname!r} axis must be non-zero")
-        C = _axis_frame(axis / np.linalg.norm(axis))
+        scale = np.max(np.abs(axis))  # scaled first: the norm of 1e300-sized axes overflows
+        if scale == 0:
+            raise URDFError(f"joint {jname!r} axis must be non-zero, got {axis.tolist()}")
+        C = _axis_frame(axis / scale / np.linalg.norm(axis / scale))
         origins[-1] = T @ C
         origins.append(C.T.copy())
         lo, hi = _limits(el, jname, jtype)
@@ -284,11 +291,16 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
         raise URDFError(f"no movable joint between {base_link!r} and {end!r}")
     tip = _child(chain[-1])
     stem = Path(label).stem if label != "<URDF string>" else "urdf"
-    default_name = root.get("name", stem)
-    return Robot(name=name or default_name,
-                 origins=np.array(origins), lower=lower, upper=upper, joint_types=tuple(types),
-                 joint_names=tuple(names), unit="m",
-                 source=f"URDF {Path(label).name}: {base_link} -> {tip}")
+    default_name = f"{root.get('name', stem)}:{tip}"  # the file's name and the chain's tip
+    try:
+        return Robot(name=name or default_name,
+                     origins=np.array(origins), lower=lower, upper=upper,
+                     joint_types=tuple(types), joint_names=tuple(names), unit="m",
+                     source=f"URDF {Path(label).name}: {base_link} -> {tip}")
+    except URDFError:
+        raise
+    except MoikError as exc:  # limits, reach: say which file
+        raise URDFError(f"{label!r} ({base_link} -> {tip}): {exc}") from exc
 
 
 def _limits(el: ET.Element, name: str, jtype: str) -> tuple[float, float]:

@@ -25,7 +25,7 @@ from moik.problems.targets import Target
 from moik.robots.catalog import as_robot
 from moik.solver.lm import STALL_RATIO, copy_into
 from moik.solver.multistart import lm_multistart
-from moik.solver.options import search_options, seed_sequence
+from moik.solver.options import search_options, seed_sequence, starts_sequence
 from moik.solver.session import (
     LM_ITERATIONS,
     STOP_FRACTION,
@@ -158,7 +158,8 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, **option
         stops = (1.0 / robot.reach, STOP_FRACTION * tol_pos, STOP_FRACTION * tol_ori,
                  LM_ITERATIONS)
         current = kernel_array(qc if qc is not None else np.zeros((n, robot.dof)))
-        rngs = [np.random.Generator(np.random.PCG64(s)) for s in seeds]  # as solve_ik's
+        rngs = [np.random.Generator(np.random.PCG64(starts_sequence(s)))  # as solve_ik's
+                for s in seeds]
         first = min(opts.starts, FIRST_STARTS)  # then the rest, for the unsolved only
         Q0 = np.stack([robot.random_q(first, rng=g) for g in rngs])
         lm_batch(*args, kernel_array(Q0), Rts, pts, rotations is not None, *stops, current,

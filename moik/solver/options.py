@@ -148,13 +148,29 @@ def seed_sequence(seed) -> np.random.SeedSequence:
     return seed if isinstance(seed, np.random.SeedSequence) else np.random.SeedSequence(seed)
 
 
+STARTS_KEY = 0x6D6F696B
+"""The spawn key of the random starts' stream: ``SeedSequence(seed, spawn_key=(STARTS_KEY,))``.
+
+Not the seed's own stream, which :func:`moik.problems.random_reachable_targets` (and
+``numpy.random.default_rng(seed)``) draws from: with one stream the first start of
+``solve_ik(..., seed=s)`` was the configuration a target of ``seed=s`` came from."""
+
+
+def starts_sequence(seed: int | np.random.SeedSequence) -> np.random.SeedSequence:
+    """The SeedSequence of the random starts of ``seed`` (:data:`STARTS_KEY`)."""
+    if isinstance(seed, np.random.SeedSequence):
+        return np.random.SeedSequence(seed.entropy, spawn_key=(*seed.spawn_key, STARTS_KEY),
+                                      pool_size=seed.pool_size)
+    return np.random.SeedSequence(seed, spawn_key=(STARTS_KEY,))
+
+
 _PCG64_STATES: dict[int, Any] = {}  # PCG64(SeedSequence(seed)).state of integer seeds seen
 _MAX_STATES = 4096
 _LOCAL = threading.local()
 
 
 def start_generator(seed: int) -> np.random.Generator:
-    """``Generator(PCG64(SeedSequence(seed)))`` for an integer ``seed`` >= 0, bit for bit.
+    """``Generator(PCG64(starts_sequence(seed)))`` for an integer ``seed`` >= 0, bit for bit.
 
     Seeding a PCG64 through a SeedSequence costs more than a whole first-stage solve
     takes, so the initial state of each seed is kept (up to ``_MAX_STATES`` seeds) and
@@ -165,7 +181,7 @@ def start_generator(seed: int) -> np.random.Generator:
     if state is None:
         if len(_PCG64_STATES) >= _MAX_STATES:
             _PCG64_STATES.clear()
-        state = _PCG64_STATES[seed] = np.random.PCG64(np.random.SeedSequence(seed)).state
+        state = _PCG64_STATES[seed] = np.random.PCG64(starts_sequence(seed)).state
     generator = getattr(_LOCAL, "generator", None)
     if generator is None:
         generator = _LOCAL.generator = np.random.Generator(np.random.PCG64(0))

@@ -45,6 +45,7 @@ from moik.solver.options import (
     algorithm_registry,
     seed_sequence,
     start_generator,
+    starts_sequence,
     validated_options,
 )
 from moik.solver.result import IKResult, ik_result
@@ -97,7 +98,9 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
             multiple of 2 pi (within the limits) that brings it nearest to
             ``q_current`` (EOSMA Eq. 31 idea).
         seed: Seed (int or ``numpy.random.SeedSequence``) of every random
-            choice: the same seed gives the same result bit for bit.
+            choice: the same seed gives the same result bit for bit. The random
+            starts draw from their own stream of it (``options.STARTS_KEY``), not
+            the stream ``random_reachable_targets(..., seed=seed)`` draws from.
         tol: Tolerance: a number ``t`` means position <= ``t * robot.reach`` and
             orientation <= ``t`` rad; or a pair (position in robot unit, rad).
         max_evals: FK evaluation budget of the first stage, the search and the
@@ -150,7 +153,7 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     session = SolveSession(robot, target, tol_pos, tol_ori, opts.distinct, n_solutions,
                            opts.max_evals)
     starts_rng = (start_generator(seed) if seeds is None  # first stage; later ones spawn
-                  else np.random.Generator(np.random.PCG64(seeds)))
+                  else np.random.Generator(np.random.PCG64(starts_sequence(seeds))))
     if reach_excess(robot, target) > 0:  # proven out of reach: no start or search can help
         return _out_of_reach(session, opts, starts_rng, q_current, t0)
     if polish and (q_current is not None or opts.starts):

@@ -15,8 +15,8 @@ from moik.algorithms.array_state import (
     check_sizes,
     constructor_keywords,
     find_limit,
+    planned_iterations,
     refuse_unknown_keywords,
-    schedule_length,
 )
 from moik.exceptions import ParameterError
 
@@ -77,10 +77,10 @@ def test_schedule_length_and_limits_from_the_termination():
     assert find_limit(get_termination("n_gen", 7), "n_max_gen") == 7
     assert find_limit(get_termination("n_eval", 500), "n_max_gen") == np.inf
     assert find_limit(DefaultSingleObjectiveTermination(n_max_gen=40), "n_max_gen") == 40
-    assert schedule_length(get_termination("n_gen", 7), None, 10, 10.0) == 6
-    assert schedule_length(get_termination("n_eval", 2010), None, 10, 20.0) == 100
-    assert schedule_length(get_termination("n_gen", 7), 50, 10, 10.0) == 50
-    assert schedule_length(get_termination("time", 1.0), None, 10, 10.0) == 1000
+    plan = {"t": 1, "n_eval": 10, "elapsed": 0.0, "per_iteration": 20.0}
+    assert planned_iterations(get_termination("n_gen", 7), plans={}, **plan) == 6
+    assert planned_iterations(get_termination("n_eval", 2010), plans={}, **plan) == 100
+    assert planned_iterations(get_termination("time", 1.0), plans={}, **plan) == np.inf
 
 
 def test_budget_left_cuts_the_last_batch():

@@ -44,7 +44,8 @@ def test_terminations_and_result(cls):
 
 def test_time_termination_string():
     res = minimize(Sphere(), EOSMA(pop_size=20), ("time", "00:00:01"), seed=3)
-    assert 1.0 <= res.exec_time < 2.0 and res.algorithm.max_iter == 1000
+    assert 1.0 <= res.exec_time < 2.0  # T planned from the time spent (one rule, array_base.py)
+    assert res.algorithm.t <= res.algorithm.max_iter < 2 * res.algorithm.t
 
 
 @pytest.mark.parametrize("budget", [1000, 1037, 20])

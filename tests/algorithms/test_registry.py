@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 from pymoo.algorithms.soo.nonconvex.de import DE as PymooDE  # noqa: N811
 from pymoo.core.problem import Problem
+from pymoo.core.repair import Repair
 from pymoo.optimize import minimize
 from pymoo.problems import get_problem
 
@@ -65,7 +66,7 @@ def ik_problem():
 
 # ---- names, kinds and sources ---------------------------------------------------------------
 def test_available_names():
-    assert len(SINGLE) == 34 and len(MULTI) == 17 and len(available()) == 51
+    assert len(SINGLE) == 34 and len(MULTI) == 18 and len(available()) == 52
     assert set(MO_NAMES) <= set(MULTI)
     assert available() == sorted(available()) == sorted(SINGLE + MULTI)
     assert isinstance(get_algorithm("EOSMA"), EOSMA)
@@ -148,12 +149,41 @@ def test_unknown_keyword_names_accepted_ones():
     ("m-pso", {"switch": "median"}, r"switch must be one of mean-position, mean-fitness"),
     ("pso", {"vmax_rate": 0}, r"vmax_rate must be a number in \(0.0, 1.0\]"),
     ("pso", {"pop_size": 1}, r"pop_size must be an integer >= 2"),
-    ("pymoo-de", {"pop_size": 0}, r"pop_size must be a positive integer"),
+    ("pymoo-de", {"pop_size": 0}, r"pop_size must be an integer >= 1, got 0"),
+    ("nsga2", {"pop_size": -5}, r"pop_size must be an integer >= 1, got -5"),
+    ("sms-emoa", {"pop_size": 2.5}, r"pop_size must be an integer >= 1, got 2.5"),
+    ("ga", {"n_offsprings": 0}, r"n_offsprings must be an integer >= 1, got 0"),
+    ("mopso-cd", {"archive_size": 0}, r"archive_size must be an integer >= 1, got 0"),
+    ("mopso-cd", {"max_velocity_rate": -1.0}, r"max_velocity_rate must be a positive"),
+    ("mopso-cd", {"c1": float("nan")}, r"c1 must be a finite number"),
+    ("moead-pymoo", {"n_neighbors": 0}, r"n_neighbors must be an integer >= 1, got 0"),
+    ("moead-pymoo", {"prob_neighbor_mating": 1.5},
+     r"prob_neighbor_mating must be a number in \[0.0, 1.0\]"),
     ("de", {"pop_size": 3}, r"pop_size must be an integer >= 4"),
 ])
 def test_bad_values_raise_parameter_error(name, params, message):
     with pytest.raises(ParameterError, match=message):
         get_algorithm(name, **params)
+
+
+class _CountingRepair(Repair):
+    calls = 0
+
+    def _do(self, problem, X, **kwargs):
+        type(self).calls += 1
+        return X
+
+
+@pytest.mark.parametrize("name", ["ga", "nsga2", "sms-emoa", "pymoo-de"])
+def test_pymoos_genetic_algorithms_take_its_repair(name):
+    """pymoo's GeneticAlgorithm takes ``repair=`` (and ``mating=`` ...); NSGA2, GA, DE and
+    SMS-EMOA forward it through ``**kwargs`` (issue 26: the registry refused it)."""
+    problem = get_problem("zdt1", n_var=5) if is_multi_objective(name) else ShiftedSphere()
+    _CountingRepair.calls = 0
+    minimize(problem, get_algorithm(name, pop_size=10, repair=_CountingRepair()), ("n_gen", 3),
+             seed=1)
+    assert _CountingRepair.calls >= 3
+    assert {"repair", "mating", "eliminate_duplicates"} <= set(accepted_parameters(name))
 
 
 def test_register_decorator_and_conflict(monkeypatch):

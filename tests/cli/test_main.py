@@ -374,3 +374,72 @@ def test_help_and_the_catalog_import_nothing_heavy(argv, absent):
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True)
     assert out.stderr.strip().splitlines()[-1] == "[]"
+
+
+PANDA_URDF = str(DATA / "panda.urdf")
+
+
+@pytest.mark.parametrize(("argv", "said"), [
+    (["solve", "eosma7", "--target", "10", "50", "40", "--euler", "135", "0", "-90"],
+     "--euler angles [135.0, 0.0, -90.0] exceed 2 pi in magnitude; they are radians: add --deg"),
+    (["robots", PANDA_URDF], "give --tip one of ['panda_hand_tcp', 'panda_leftfinger'"),
+    (["solve", "eosma7", "--target", "10", "50", "40", "--n-solutions", "0"],
+     "--n-solutions must be an integer >= 1, got 0"),
+    (["solve", "eosma7", "--target", "10", "50", "40", "--max-evals", "0"],
+     "--max-evals must be an integer >= 1"),
+    (["solve", "eosma7", "--target", "10", "50", "40", "--starts", "-1"],
+     "--starts must be an integer >= 0"),
+    (["solve", "eosma7", "--target", "10", "50", "40", "--pareto", "joint_motion"],
+     "criterion 'joint_motion' needs --q-current"),
+    (["solve", "eosma7", "--target", "10", "50", "40", "--pareto", "manipulability",
+      "--pareto-size", "0"], "--pareto-size must be an integer >= 1"),
+])
+def test_errors_name_the_command_line_options(capsys, argv, said):
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert said in err, err
+    for word in ("degrees=True", "tip_link=", "q_current", "n_solutions", "max_evals"):
+        assert word not in err
+
+
+def test_joint_values_in_degrees_without_deg_are_warned_about(capsys):
+    assert main(["fk", "eosma7", "45", "0", "45", "0", "45", "0", "0"]) == 0
+    err = capsys.readouterr().err
+    assert err.count("DegreesWarning") == 0 and err.count("look like degrees") == 1
+    assert ("moik: warning: the joint values for robot 'eosma7': joint 1 (q1) = 45 is more "
+            "than a turn beyond its limits") in err and "add --deg" in err
+    assert "q is outside the joint limits: joint 1 (q1) = 45 above its upper limit" in err
+    assert main(["fk", "eosma7", "45", "0", "45", "0", "45", "0", "0", "--deg"]) == 0
+    assert "warning" not in capsys.readouterr().err
+    main(["solve", "eosma7", "--target", "-24.748737", "100.961941", "50", "--q-current",
+          "45", "0", "45", "0", "45", "0", "0", "--json"])
+    err = capsys.readouterr().err
+    assert err.count("look like degrees") == 1 and "--q-current for robot 'eosma7'" in err
+
+
+def test_the_limits_warning_names_each_joint_outside(capsys):
+    assert main(["fk", "eosma7", "0", "1", "0", "0", "0", "0", "-1"]) == 0
+    err = capsys.readouterr().err
+    assert ("q is outside the joint limits: joint 2 (q2) = 1 above its upper limit 0.523599; "
+            "joint 7 (q7) = -1 below its lower limit -0.523599") in err
+
+
+def test_fk_solve_and_pareto_json_share_one_schema_family(capsys):
+    """The keys every document has, and those of the solving ones (moik.cli's docstring)."""
+    common = {"command", "robot", "unit", "joint_names", "q"}
+    solving = common | {"target", "status", "success", "n_eval", "time_s", "position_error",
+                        "orientation_error", "solutions", "plots"}
+    main(["fk", "planar2", "0.1", "0.2", "--json"])
+    fk = json.loads(capsys.readouterr().out)
+    target = ["--target", *map(str, fk["position"])]
+    main(["solve", "planar2", *target, "--json"])
+    solve = json.loads(capsys.readouterr().out)
+    main(["solve", "planar2", *target, "--pareto", "manipulability", "--json"])
+    pareto = json.loads(capsys.readouterr().out)
+    assert common <= set(fk) and fk["command"] == "fk"
+    assert solving <= set(solve) and solve["command"] == "solve" and solve["n_solutions"] == 1
+    assert solving <= set(pareto) and pareto["command"] == "pareto"
+    assert solve["status"] == pareto["status"] == "solved"
+    for doc in (solve, pareto):
+        assert set(doc["solutions"][0]) == {"q", "position_error", "orientation_error"}
+        assert set(doc["target"]) == {"position", "rotation"}

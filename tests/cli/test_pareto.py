@@ -50,9 +50,12 @@ def test_json_output(capsys):
                                  "--pareto-size", "5")) == 0
     data = json.loads(capsys.readouterr().out)
     assert data["objectives"] == ["manipulability", "limit_margin"]
-    assert data["senses"] == ["max", "max"] and len(data["X"]) == len(data["F"]) <= 5
-    assert max(data["position_errors"]) <= 1e-9 * IIWA.reach and data["redundant"] is True
-    assert 0 <= data["compromise"] < len(data["X"])
+    members = data["solutions"]
+    assert data["senses"] == ["max", "max"] and len(members) == len(data["F"]) <= 5
+    assert max(m["position_error"] for m in members) <= 1e-9 * IIWA.reach
+    assert data["redundant"] is True and 0 <= data["compromise"] < len(members)
+    assert data["status"] == "solved" and data["success"] is True
+    assert data["q"] == members[data["compromise"]]["q"]
 
 
 def test_no_solution_exits_1(capsys):

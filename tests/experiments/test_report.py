@@ -54,3 +54,33 @@ def test_no_readable_folder_is_an_error(results):
     with pytest.raises(ResultsError, match="no results folder could be reported"):
         write_report(results)
     assert not (results / "report.md").exists()
+
+
+def test_malformed_lines_do_not_stop_a_report_over_a_parent(results, capsys):
+    """The good trials of a folder with malformed lines are reported, the lines named."""
+    with open(results / "b" / "results.jsonl", "ab") as fh:
+        fh.write(b'{}\n[1,2,3]\n{"trial": null}\n')
+    (results / "c").mkdir()
+    (results / "c" / "meta.json").write_text("{}")
+    report = make_report(results, figures=False)
+    assert report.failed == [f"{results / 'c'}: ResultsError: {results / 'c'}/meta.json has "
+                             "format None, expected 'moik-results/1'"]
+    assert report.warnings == [f"{results / 'b' / 'results.jsonl'}: skipped 3 malformed line(s) "
+                               "that are not trial records (line 9: no 'trial' field; line 10: "
+                               "a JSON list, not an object; line 11: 'trial' is None, expected "
+                               "a str)"]
+    text = report.path.read_text()
+    assert text.count("- 8 of 8 planned trials finished") == 2
+    assert "## c: not reported" in text and "skipped 3 malformed line(s)" in text
+
+
+def test_the_repair_command_of_a_config_file_run_names_the_file(tmp_path, tiny, capsys):
+    """Before: `moik experiment run tiny-test ...`, an experiment that does not exist."""
+    from moik.experiments.config import load_config
+    path = tmp_path / "tiny_test.py"
+    path.write_text(f"EXPERIMENT = {tiny!r}\n")
+    run_experiment(load_config(path), out=tmp_path / "r", progress=False)
+    trial = ResultStore.open(tmp_path / "r").records()[0]["trial"]
+    (tmp_path / "r" / "arrays" / ResultStore.array_name(trial)).unlink()
+    text = make_report(tmp_path / "r", figures=False).path.read_text()
+    assert f"`moik experiment run --config {path} --out {tmp_path / 'r'} --resume`" in text

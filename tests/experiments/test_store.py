@@ -1,6 +1,7 @@
 """Results store: atomic writes, torn lines, resume after an interruption."""
 
 import json
+import os
 
 import numpy as np
 import pytest
@@ -184,3 +185,109 @@ def test_an_unreachable_dask_scheduler_leaves_no_folder(tmp_path, tiny_config, m
     with pytest.raises(ParameterError, match="cannot connect to the Dask scheduler"):
         run_experiment(tiny_config, out=tmp_path / "r", dask_scheduler="tcp://127.0.0.1:1")
     assert not (tmp_path / "r").exists()
+
+
+# --- a full disk (issue 27 item 7) ---
+
+def _full_after(monkeypatch, store, budget: int):
+    """os.write on the store's results file writes at most ``budget`` bytes, then ENOSPC."""
+    import errno
+    import os
+    real = os.write
+    left = {"n": budget}
+
+    def write(fd, data):
+        if fd != store._fd:
+            return real(fd, data)
+        if left["n"] <= 0:
+            raise OSError(errno.ENOSPC, "No space left on device")
+        n = real(fd, bytes(data[: left["n"]]))
+        left["n"] -= n
+        return n
+
+    monkeypatch.setattr(os, "write", write)
+
+
+def test_a_short_write_leaves_no_torn_line_and_says_resume(tmp_path, tiny_config, monkeypatch):
+    """Before: os.write's count was ignored, so a disk-full append left a torn line."""
+    out = tmp_path / "r"
+    run_experiment(tiny_config, out=out, limit=2, progress=False)
+    good = (out / "results.jsonl").read_bytes()
+    store = ResultStore.open(out)
+    store._fd = os.open(store.results_path, os.O_WRONLY | os.O_APPEND)
+    _full_after(monkeypatch, store, 40)
+    with pytest.raises(ResultsError, match=r"cannot append to '.*results.jsonl': No space left on "
+                                           r"device; trial 'x/0/0' was not stored .* --resume "
+                                           "to continue"):
+        store.append({"trial": "x/0/0", "status": "ok"}, {})
+    store.close()
+    assert (out / "results.jsonl").read_bytes() == good  # cut back: no torn line
+
+
+def test_a_short_write_that_goes_on_writes_the_whole_line(tmp_path, tiny_config, monkeypatch):
+    import os
+    out = tmp_path / "r"
+    run_experiment(tiny_config, out=out, limit=1, progress=False)
+    store = ResultStore.open(out)
+    store._fd = os.open(store.results_path, os.O_WRONLY | os.O_APPEND)
+    real = os.write
+    monkeypatch.setattr(os, "write", lambda fd, data: real(fd, bytes(data[:7])))  # 7 at a time
+    store.append({"trial": "x/0/0", "status": "ok", "algorithm": "x", "target": 0, "run": 0}, {})
+    monkeypatch.setattr(os, "write", real)
+    store.close()
+    assert [r["trial"] for r in ResultStore.open(out).records()][-1] == "x/0/0"
+
+
+def test_a_failed_atomic_write_leaves_no_temporary_and_names_the_file(tmp_path, monkeypatch):
+    import os
+    path = tmp_path / "meta.json"
+    atomic_write_bytes(path, b"old")
+
+    def full(fd):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(os, "fsync", full)
+    with pytest.raises(ResultsError, match=r"cannot write '.*meta.json': No space left on device"):
+        atomic_write_bytes(path, b"new")
+    monkeypatch.undo()
+    assert path.read_bytes() == b"old" and [p.name for p in tmp_path.iterdir()] == ["meta.json"]
+
+
+def test_a_full_disk_run_stops_with_the_file_and_the_resume_hint(tmp_path, tiny_config):
+    """The real thing: a 24 KiB tmpfs fills up mid-run; the message names the file and says
+    --resume, no .tmp is left, every stored line is whole, and resuming elsewhere works."""
+    import shutil
+    import subprocess
+    mount = tmp_path / "small"
+    mount.mkdir()
+    made = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=24k", "tmpfs", str(mount)],
+                          capture_output=True, text=True)
+    if made.returncode != 0:
+        pytest.skip(f"cannot mount a tmpfs here: {made.stderr.strip()}")
+    try:
+        with pytest.raises(ResultsError) as info:
+            run_experiment(tiny_config, out=mount / "r", progress=False)
+        assert "No space left on device" in str(info.value)
+        assert str(mount / "r") in str(info.value) and "--resume to continue" in str(info.value)
+        assert not [p for p in (mount / "r").rglob("*.tmp")]
+        lines = (mount / "r" / "results.jsonl").read_bytes()
+        assert lines.endswith(b"\n") and all(json.loads(x) for x in lines.splitlines())
+        shutil.copytree(mount / "r", tmp_path / "moved")
+    finally:
+        subprocess.run(["umount", str(mount)], capture_output=True)
+    n = len(lines.splitlines())
+    s = run_experiment(tiny_config, out=tmp_path / "moved", resume=True, progress=False)
+    assert s.skipped == n and s.ran == 8 - n
+
+
+def test_a_meta_without_planned_trials_says_so(tmp_path, tiny_config):
+    """Before: "8 of 0 planned trials finished"."""
+    from moik.experiments.tables import Results
+    out = tmp_path / "r"
+    run_experiment(tiny_config, out=out, progress=False)
+    meta = json.loads((out / "meta.json").read_text())
+    del meta["trials"]
+    (out / "meta.json").write_text(json.dumps(meta))
+    notes = Results(ResultStore.open(out)).notes()
+    assert notes[0] == ("8 trials finished (the number planned is unknown: meta.json lists no "
+                        "planned trials)")

@@ -4,6 +4,13 @@ poses. A refactoring that keeps behaviour keeps these hashes.
 
 Run ``python tests/fingerprint/test_fingerprint.py`` to print the current values
 (the stored ones live in ``fingerprints.json`` beside this file).
+
+Bit-level results hold on one kind of machine, not across them: numpy dispatches its
+sorts (the order of ties) and reductions (the summation order) on the CPU's SIMD
+features, so pymoo's NSGA-II gives other bits on an AVX2 machine than on an AVX-512
+one from the same seed. ``fingerprints.json`` therefore records the SIMD features
+it was recorded with (``machine``); on another kind of machine the tests fail with a
+message that says so, instead of a bare hash mismatch.
 """
 
 from __future__ import annotations
@@ -77,18 +84,31 @@ def solver_fingerprints() -> dict[str, str]:
     return out
 
 
-def current() -> dict[str, dict[str, str]]:
+def machine_signature() -> str:
+    """The SIMD features numpy dispatches on here (they decide its sorts' and sums' bits)."""
+    from numpy._core._multiarray_umath import __cpu_features__
+
+    return " ".join(sorted(k for k, on in __cpu_features__.items() if on))
+
+
+def current() -> dict[str, dict[str, str] | str]:
     return {"algorithms": {n: algorithm_fingerprint(n) for n in available()},
             "problems": problem_fingerprints(),
-            "solver": solver_fingerprints()}
-
-
-
-
-
-
+            "solver": solver_fingerprints(),
+            "machine": machine_signature()}
 
 STORED = json.loads(FILE.read_text()) if FILE.exists() else {"algorithms": {}}
+
+
+@pytest.fixture(autouse=True)
+def _same_kind_of_machine():
+    recorded = STORED.get("machine")
+    if recorded != machine_signature():
+        pytest.fail("fingerprints.json was recorded on a machine whose numpy SIMD features are "
+                    f"{recorded!r}; this one has {machine_signature()!r}. numpy's sorts and sums "
+                    "give other bits there: check on the recording kind of machine that a "
+                    "change keeps the fingerprints, then re-record them here with "
+                    "`python tests/fingerprint/test_fingerprint.py`.")
 
 
 @pytest.mark.parametrize("name", sorted(STORED["algorithms"]))

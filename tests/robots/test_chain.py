@@ -203,3 +203,17 @@ def test_fixed_transform_reproduced_exactly(seed, near):
         for origins in ([F, np.eye(4)], [np.eye(4), F]):
             robot = Robot(name="F", origins=np.array(origins), lower=[-1.0], upper=[1.0])
             np.testing.assert_allclose(robot.fk(np.zeros(1)), F, atol=1e-15)
+
+
+def test_a_chain_whose_reach_overflows_is_refused():
+    """Finite DH lengths that add up to inf (or whose squares overflow) are refused."""
+    zeros = np.zeros(3)
+    with pytest.raises(ParameterError, match=r"reach .* is inf m; expected a finite length"):
+        Robot(name="huge", a=[1e308, 1e308, 1e308], alpha=zeros, d=zeros, theta=zeros,
+              lower=-np.ones(3), upper=np.ones(3))
+    with pytest.raises(ParameterError, match=r"reach .* is 3e\+120 cm"):
+        Robot(name="huge", a=[1e120] * 3, alpha=zeros, d=zeros, theta=zeros,
+              lower=-np.ones(3), upper=np.ones(3), unit="cm")
+    ok = Robot(name="big", a=[1e50] * 3, alpha=zeros, d=zeros, theta=zeros,
+               lower=-np.ones(3), upper=np.ones(3))
+    assert np.isfinite(ok.fk(np.zeros(3))).all()

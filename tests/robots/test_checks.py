@@ -83,3 +83,27 @@ def test_bad_types_and_names(kw, message):
     args = {**DH, "name": "arm", **kw}
     with pytest.raises(ParameterError, match=message):
         Robot(**args)
+
+
+def test_joint_values_that_look_like_degrees_warn_and_name_the_joint():
+    arm = get_robot("eosma7")
+    with pytest.warns(DegreesWarning, match=r"q for robot 'eosma7': joint 1 \(q1\) = 45 is more "
+                                            r"than a turn beyond its limits"):
+        arm.fk([45, 0, 45, 0, 45, 0, 0])
+    with pytest.warns(DegreesWarning, match="every revolute value is a whole number"):
+        arm.fk([7, 0, 0, 0, 0, 0, 0])  # within a turn of the limits, but whole numbers > 2 pi
+    irb = get_robot("irb2600")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", DegreesWarning)
+        arm.fk([0.7, 0.0, 0.7, 0.0, 0.7, 0.0, 0.0])  # radians
+        arm.fk([1, 0, 1, 0, 1, 0, 0])  # whole radians, none beyond a turn
+        irb.fk(np.radians([0, 0, 0, 390, 0, -390]))  # multi-turn joints within their limits
+        get_robot("scara4").fk([0.1, 0.2, 0.3, 0.4])
+
+
+def test_outside_limits_names_the_joints():
+    arm = get_robot("eosma7")
+    assert arm.outside_limits(np.zeros(7)) == ""
+    assert arm.outside_limits([0, 1, 0, 0, 0, 0, -1]) == (
+        "joint 2 (q2) = 1 above its upper limit 0.523599; joint 7 (q7) = -1 below its lower "
+        "limit -0.523599")

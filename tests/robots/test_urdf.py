@@ -113,7 +113,24 @@ def test_urdf_from_a_string_equals_the_file():
     b = load_urdf(URDF_DIR / "ur5_robot.urdf", tip_link="tool0")
     Q = a.random_q(20, rng=np.random.default_rng(2))
     np.testing.assert_array_equal(a.fk(Q), b.fk(Q))
-    assert a.name == "ur5"
+    assert a.name == "ur5:tool0"  # the file's robot name and the chain's tip
+
+
+def test_a_files_default_chain_is_named_after_its_tip_not_the_catalog_arm():
+    """ur5_robot.urdf's default chain ends at wrist_3_link, 0.0823 m before the catalog
+    ``ur5``'s tool0: the two must not both be called "ur5"."""
+    file_arm, catalog = load_urdf(URDF_DIR / "ur5_robot.urdf"), get_robot("ur5")
+    assert file_arm.name == "ur5:wrist_3_link" and catalog.name == "ur5"
+    assert "-> wrist_3_link" in file_arm.source and "-> tool0" in catalog.source
+    q = np.zeros((1, 6))
+    gap = np.linalg.norm(file_arm.fk(q)[0, :3, 3] - catalog.fk(q)[0, :3, 3])
+    assert gap == pytest.approx(0.0823, abs=1e-4)
+
+
+def test_a_branching_chain_suggests_every_leaf_even_a_fixed_tcp():
+    with pytest.raises(URDFError, match="panda_hand_tcp") as exc:
+        load_urdf(URDF_DIR / "panda.urdf")
+    assert "panda_leftfinger" in str(exc.value)
 
 
 def test_cyclic_urdf_is_refused_not_hung():
@@ -123,6 +140,36 @@ def test_cyclic_urdf_is_refused_not_hung():
     ring = _chain(_joint("j1", "a", "b"), _joint("j2", "b", "a"), links=("a", "b"))
     with pytest.raises(URDFError, match="cycle"):
         load_urdf(ring)
+
+
+def test_absurd_lengths_are_refused_not_solved_with_infinite_reach():
+    """Before: 1e200 m origins loaded with reach = inf, and every target came back
+    'solved' with position error inf (tolerance 1e-9 x inf)."""
+    text = (URDF_DIR / "ur5_robot.urdf").read_text()
+    huge = text.replace('xyz="0.0 0.0 0.089159"', 'xyz="1e200 1e200 1e200"')
+    assert huge != text
+    with pytest.raises(URDFError, match=r"reach .* is inf m; expected a finite length below"):
+        load_urdf(huge, tip_link="tool0")
+    far = "<origin xyz='1.5e308 0 0'/>"
+    with pytest.raises(URDFError, match="to joint 'j2' overflows"):  # 3e308 = inf
+        load_urdf(_chain(_joint("j1", "a", "b", far, jtype="fixed"), _joint("j2", "b", "c", far)))
+    stroke = _joint("j1", "a", "b", jtype="prismatic").replace("upper='1'", "upper='1e300'")
+    with pytest.raises(URDFError, match="reach"):
+        load_urdf(_chain(stroke, links=("a", "b")))
+
+
+def test_an_axis_whose_norm_overflows_is_normalised_safely():
+    """Before: |(1e300, 1e300, 0)| = inf passed the zero check and scipy raised ValueError."""
+    for big, unit in (("1e300 1e300 0", "1 1 0"), ("0 -1e308 1e308", "0 -1 1"),
+                      ("1e-320 0 0", "1 0 0")):
+        a = load_urdf(_chain(_joint("j1", "a", "b").replace("'0 0 1'", f"'{big}'"),
+                             links=("a", "b")))
+        b = load_urdf(_chain(_joint("j1", "a", "b").replace("'0 0 1'", f"'{unit}'"),
+                             links=("a", "b")))
+        Q = a.random_q(5, rng=np.random.default_rng(1))
+        np.testing.assert_allclose(a.fk(Q), b.fk(Q), rtol=0, atol=1e-15)
+    with pytest.raises(URDFError, match="axis must be non-zero"):
+        load_urdf(_chain(_joint("j1", "a", "b").replace("'0 0 1'", "'0 0 0'"), links=("a", "b")))
 
 
 def test_malformed_trees_get_precise_messages():

@@ -11,6 +11,7 @@ from moik.exceptions import ParameterError, UnknownNameError
 from moik.solver.options import (
     DEFAULT_POP_SIZES,
     SEARCH_DEFAULTS,
+    STARTS_KEY,
     SearchOptions,
     seed_sequence,
     start_generator,
@@ -56,11 +57,14 @@ def test_seed_sequence():
 
 @pytest.mark.parametrize("seed", [0, 7, 2**40])
 def test_start_generator_is_a_fresh_seeded_generator_each_time(seed):
-    """Bit for bit ``Generator(PCG64(SeedSequence(seed)))``, reset on every call."""
+    """Bit for bit ``Generator(PCG64(SeedSequence(seed, spawn_key=(STARTS_KEY,))))``, reset
+    on every call, and not the stream of ``default_rng(seed)`` (the targets' stream)."""
     for _ in range(2):
         got = start_generator(seed).random(16)
-        want = np.random.Generator(np.random.PCG64(np.random.SeedSequence(seed))).random(16)
+        want = np.random.Generator(np.random.PCG64(
+            np.random.SeedSequence(seed, spawn_key=(STARTS_KEY,)))).random(16)
         assert np.array_equal(got, want)
+        assert not np.any(got == np.random.default_rng(seed).random(16))
 
 
 def test_default_algorithms_pass_the_registry_check():

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from moik.exceptions import ParameterError, UnknownNameError
+from moik.exceptions import DegreesWarning, ParameterError, UnknownNameError
 from moik.problems import Target, random_reachable_targets
 from moik.robots import get_robot
 from moik.solver import solve_ik
@@ -246,3 +246,22 @@ def test_max_evals_is_honoured_by_the_first_stage():
     assert res.status in ("solved", "not-converged")  # cut short by the budget: no verdict
     full = solve_ik(robot, target.position * 0.9 + 0.05, seed=0)
     assert full.n_eval >= res.n_eval
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_equal_seeds_for_targets_and_solver_share_no_stream(seed):
+    """The Quickstart's pattern: a target of ``seed=s`` solved with ``seed=s``. The first
+    random start is not the configuration the target came from (it was, when both drew
+    ``default_rng(s)``: ``solved`` with errors of exactly 0.0)."""
+    robot = get_robot("eosma7")
+    target = random_reachable_targets(robot, 1, seed=seed)[0]
+    res = solve_ik(robot, target.pose, seed=seed)
+    assert res.success and res.position_error > 0.0
+    assert not np.array_equal(res.q, target.q_source)
+
+
+def test_q_current_in_degrees_is_warned_about():
+    robot = get_robot("eosma7")
+    target = random_reachable_targets(robot, 1, seed=3)[0]
+    with pytest.warns(DegreesWarning, match=r"q_current for robot 'eosma7': joint 1"):
+        solve_ik(robot, target.pose, q_current=[45, 0, 45, 0, 45, 0, 0])

@@ -16,6 +16,7 @@ from moik.algorithms.moo.mo_modified_pso import MOMPSO
 from moik.algorithms.moo.moalo import MOALO
 from moik.algorithms.moo.moda import MODA
 from moik.algorithms.moo.moead import MOEAD
+from moik.algorithms.moo.moead_pymoo import PymooMOEAD
 from moik.algorithms.moo.moeosma import MOEOSMA
 from moik.algorithms.moo.mogwo import MOGWO
 from moik.algorithms.moo.mompa import MOMPA
@@ -28,5 +29,5 @@ from moik.algorithms.moo.objective_swarms import ObjectiveSwarms
 
 __all__ = ["MOALO", "MOCSA", "MODA", "MOEAD", "MOEOSMA", "MOGWO", "MOJAYA", "MOMPA", "MOMPSO",
            "MOMVO", "MOPSO", "MOPSOCD", "MOSMA", "MSSA", "MOArrayAlgorithm", "MOClassicPSO",
-           "ObjectiveSwarms", "around_best", "constrained_dominates", "dominance_memory",
-           "dominates", "pareto_memory"]
+           "ObjectiveSwarms", "PymooMOEAD", "around_best", "constrained_dominates",
+           "dominance_memory", "dominates", "pareto_memory"]

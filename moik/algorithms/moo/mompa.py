@@ -58,8 +58,9 @@ from pymoo.util.nds.non_dominated_sorting import NonDominatedSorting
 from moik._validate import interval
 from moik.algorithms.mechanics import clip_to_bounds
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step
-from moik.algorithms.moo.moead import default_ref_dirs
+from moik.algorithms.moo.reference_directions import default_ref_dirs
 from moik.algorithms.soo.mpa import fads_effect, mpa_cf, mpa_phase, predator_move
+from moik.exceptions import ParameterError
 
 
 def front_numbers(F: np.ndarray, CV: np.ndarray | None, n: int) -> np.ndarray:
@@ -179,6 +180,8 @@ class MOMPA(MOArrayAlgorithm):
         self.FADs = interval("FADs", FADs, 0.0, 1.0)
 
     def _setup(self, problem, **kwargs) -> None:
+        if problem.n_obj < 2:  # the base refuses it too, after Z is needed
+            raise ParameterError(f"MOMPA is multi-objective; the problem has n_obj={problem.n_obj}")
         self.Z = np.maximum(default_ref_dirs(problem.n_obj, self.pop_size), 1e-6)
         super()._setup(problem, **kwargs)
 

@@ -20,13 +20,28 @@ its constrained test problems:
   it, kept if it constraint-dominates the new one, and otherwise decided by
   pymoo's crowding rule.
 
-Unconstrained problems run pymoo's code unchanged (bit for bit). Seeding is
-pymoo's: ``Algorithm.setup`` rebuilds ``random_state`` from the run's seed
-before the swarm is sampled, so a seed gives one run (checked by the registry's
-determinism test; pymoo's ``__init__`` builds a random state from ``seed=None``
-too, which ``setup`` replaces). pymoo's ``__init__`` also overwrites a
-``termination`` given to the constructor with its default termination; here
-the given one is kept.
+Seeding. pymoo's MOPSO-CD keeps its swarm archive in ``self.archive``, the name
+pymoo's ``Algorithm`` uses for its optional archive of every evaluated point: after
+each iteration ``Algorithm.advance`` calls ``self.archive = self.archive.add(infills)``
+(pymoo/core/algorithm.py), and ``Archive.add`` truncates a full archive (more than
+``archive_size`` non-dominated members) to 100 with ``RandomTruncation()``, which
+draws from ``default_rng(None)``, OS entropy (pymoo/util/archive.py): runs with one
+seed differed once the archive filled (ZDT1, 20,000 evaluations). Here the swarm
+archive (:class:`SwarmArchive`) truncates with the algorithm's ``random_state``
+instead (:class:`SeededTruncation`, the same draw as pymoo's), so a seed gives one run, in
+one process and across processes; everything else about the archive stays pymoo's.
+(``Algorithm.setup`` rebuilds ``random_state`` from the run's seed before the swarm
+is sampled; pymoo's ``__init__`` builds one from ``seed=None``, which ``setup``
+replaces.)
+
+Non-finite values. A row whose objectives (or, with constraints, total violation)
+are NaN or infinite is a fact about that point, not a member: it enters neither the
+archive nor a personal best (pymoo's code would let an archive hold it, or, with the
+constraint filter, leave the archive a plain empty ``Population``: the
+``'Population' object has no attribute 'add'`` of MW11). Unconstrained problems with
+finite values run pymoo's code unchanged (bit for bit, up to the seeded
+truncation). pymoo's ``__init__`` also overwrites a ``termination`` given to the
+constructor with its default termination; here the given one is kept.
 """
 
 from __future__ import annotations
@@ -34,10 +49,47 @@ from __future__ import annotations
 import numpy as np
 from pymoo.algorithms.moo.mopso_cd import MOPSO_CD
 from pymoo.core.population import Population
+from pymoo.util.archive import MultiObjectiveArchive, Truncation
 
+from moik._validate import integer, number, positive
 from moik.algorithms.archive import constrained_nondominated_mask
 from moik.algorithms.array_state import refuse_unknown_keywords
 from moik.algorithms.moo.dominance import constrained_dominates
+
+
+class SeededTruncation(Truncation):
+    """pymoo's ``RandomTruncation`` drawing from an algorithm's ``random_state`` (module doc).
+
+    Args:
+        algorithm: The algorithm whose ``random_state`` (read at each call, so the one
+            ``setup`` made) draws the members kept.
+    """
+
+    def __init__(self, algorithm) -> None:
+        self.algorithm = algorithm
+
+    def __call__(self, sols, k):
+        return self.algorithm.random_state.choice(sols, size=k, replace=False)
+
+
+def finite_rows(pop: Population, constrained: bool) -> np.ndarray:
+    """Rows of ``pop`` whose F (and CV when ``constrained``) are all finite."""
+    ok = np.isfinite(pop.get("F")).all(axis=1)
+    if constrained:
+        ok &= np.isfinite(pop.get("CV")[:, 0])
+    return ok
+
+
+class SwarmArchive(MultiObjectiveArchive):
+    """pymoo's ``MultiObjectiveArchive`` that never keeps a non-finite row (module doc).
+
+    ``Algorithm.advance`` adds every iteration's infills to it (``add`` keeps the class);
+    build it with ``truncation=SeededTruncation(algorithm)``.
+    """
+
+    def _find_opt(self, sols):
+        ok = np.isfinite(sols.get("F")).all(axis=1) & np.isfinite(sols.get("cv"))
+        return super()._find_opt(sols[ok]) if ok.any() else sols[ok]
 
 
 class MOPSOCD(MOPSO_CD):
@@ -49,32 +101,52 @@ class MOPSOCD(MOPSO_CD):
 
     Raises:
         ParameterError: For a keyword pymoo's ``MOPSO_CD`` does not take (listing the
-            accepted ones).
+            accepted ones), or a size that is not a positive integer, a coefficient that is
+            not a finite number or a velocity rate that is not positive (pymoo checks none).
     """
 
     def __init__(self, **kwargs):
         refuse_unknown_keywords(type(self), kwargs)
+        for size in ("pop_size", "archive_size"):
+            if size in kwargs:
+                integer(size, kwargs[size], minimum=1)
+        for coefficient in ("w", "c1", "c2"):
+            if coefficient in kwargs:
+                number(coefficient, kwargs[coefficient])
+        if "max_velocity_rate" in kwargs:
+            positive("max_velocity_rate", kwargs["max_velocity_rate"])
         super().__init__(**kwargs)
         if kwargs.get("termination") is not None:
             self.termination = kwargs["termination"]  # pymoo's __init__ replaced it
 
     def _update_archive(self, pop):
-        if not self.problem.has_constraints() or len(pop) == 0:
-            return super()._update_archive(pop)
-        archive = self.archive
-        combined = Population.merge(archive, pop) if archive is not None and len(archive) else pop
-        keep = constrained_nondominated_mask(combined.get("F"), combined.get("CV")[:, 0])
-        self.archive = Population.empty()  # pymoo merges self.archive with what it is given
-        return super()._update_archive(combined[keep])
+        constrained = self.problem.has_constraints()
+        pop = pop[finite_rows(pop, constrained)] if len(pop) else pop
+        if len(pop) == 0:
+            archive = self.archive
+        elif not constrained:
+            archive = super()._update_archive(pop)
+        else:
+            combined = Population.merge(self.archive, pop) if len(self.archive) else pop
+            keep = constrained_nondominated_mask(combined.get("F"), combined.get("CV")[:, 0])
+            self.archive = Population.empty()  # pymoo merges self.archive with what it is given
+            archive = super()._update_archive(combined[keep])
+        return SwarmArchive(individuals=archive, max_size=self.archive_size,
+                            truncation=SeededTruncation(self))
 
     def _update_pbest(self, new_pop) -> None:
-        if not self.problem.has_constraints():
+        constrained = self.problem.has_constraints()
+        finite = finite_rows(new_pop, constrained)
+        if not constrained and finite.all():
             super()._update_pbest(new_pop)
             return
-        for i in range(len(new_pop)):
-            new_f, new_cv = new_pop[i].F[None, :], new_pop[i].CV
-            old_f, old_cv = self.pbest_f[i][None, :], self.pbest[i].CV
-            if constrained_dominates(new_f, new_cv, old_f, old_cv)[0]:
+        for i in np.flatnonzero(finite):
+            new_f, old_f = new_pop[i].F[None, :], self.pbest_f[i][None, :]
+            new_cv = new_pop[i].CV if constrained else None
+            old_cv = self.pbest[i].CV if constrained else None
+            old_finite = np.isfinite(old_f).all() and np.isfinite(
+                0.0 if old_cv is None else old_cv).all()
+            if not old_finite or constrained_dominates(new_f, new_cv, old_f, old_cv)[0]:
                 self.pbest[i], self.pbest_f[i] = new_pop[i].copy(), new_pop[i].F.copy()
             elif not constrained_dominates(old_f, old_cv, new_f, new_cv)[0]:
                 crowding = self.cd.do(np.vstack([old_f, new_f]))  # pymoo's tie rule

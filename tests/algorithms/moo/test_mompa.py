@@ -6,8 +6,8 @@ import pytest
 from pymoo.problems import get_problem
 
 from moik.algorithms import MOMPA, get_algorithm
-from moik.algorithms.moo.moead import default_ref_dirs
 from moik.algorithms.moo.mompa import front_numbers, gaussian_search, reference_point_selection
+from moik.algorithms.moo.reference_directions import default_ref_dirs
 from moik.exceptions import ParameterError
 
 

@@ -1,11 +1,16 @@
 """MOPSO-CD (moik.algorithms.moo.mopso_cd): pymoo's, seeded by the run, constraint-domination."""
 
+import hashlib
+import subprocess
+import sys
+
 import numpy as np
 from pymoo.algorithms.moo.mopso_cd import MOPSO_CD
 from pymoo.optimize import minimize
 from pymoo.problems import get_problem
 
 from moik.algorithms import MOPSOCD
+from moik.algorithms.moo import mopso_cd
 
 
 def test_unconstrained_runs_are_pymoos_bit_for_bit_and_seeded_by_the_run():
@@ -35,3 +40,52 @@ def test_constrained_archive_and_personal_bests_are_feasible_first():
     # pymoo's own compares F only: its archive keeps infeasible points (here none of its
     # members is feasible, so its result is empty, or it mixes in infeasible ones)
     assert theirs.F is None or np.any(theirs.CV > 0.0)
+
+
+DIGEST_SCRIPT = """
+import hashlib, numpy as np
+from pymoo.optimize import minimize
+from pymoo.problems import get_problem
+from moik.algorithms import MOPSOCD
+from moik.algorithms.moo import mopso_cd
+res = minimize(get_problem("zdt1"), MOPSOCD(), ("n_eval", 20_000), seed=1)
+print(hashlib.sha256(np.ascontiguousarray(res.X).tobytes()
+                     + np.ascontiguousarray(res.F).tobytes()).hexdigest())
+"""
+
+
+def test_a_seed_gives_one_run_once_the_archive_truncates(monkeypatch):
+    """Issue 26: pymoo's ``Algorithm.advance`` adds the infills to MOPSO-CD's swarm archive,
+    whose truncation drew from OS entropy; here from the run's ``random_state``."""
+    calls = []
+    draw = mopso_cd.SeededTruncation.__call__
+
+    def counted(self, sols, k):
+        calls.append(k)
+        return draw(self, sols, k)
+
+    monkeypatch.setattr(mopso_cd.SeededTruncation, "__call__", counted)
+    runs = [minimize(get_problem("zdt1"), MOPSOCD(), ("n_eval", 20_000), seed=1)
+            for _ in range(2)]
+    assert calls  # the archive filled and was truncated
+    np.testing.assert_array_equal(runs[0].X, runs[1].X)
+    np.testing.assert_array_equal(runs[0].F, runs[1].F)
+    out = subprocess.run([sys.executable, "-c", DIGEST_SCRIPT], capture_output=True,
+                         text=True, timeout=600)
+    assert out.returncode == 0, out.stderr
+    here = hashlib.sha256(np.ascontiguousarray(runs[0].X).tobytes()
+                          + np.ascontiguousarray(runs[0].F).tobytes()).hexdigest()
+    assert out.stdout.split() == [here]
+
+
+def test_non_finite_rows_never_enter_the_archive():
+    """MW11 returns NaN objectives at some points; seed 3 emptied the archive into a plain
+    ``Population`` (``AttributeError: ... no attribute 'add'``) on main at 62ac347."""
+    problem = get_problem("mw11")
+    with np.errstate(invalid="ignore"):
+        res = minimize(problem, MOPSOCD(), ("n_eval", 5000), seed=3)
+    archive = res.algorithm.archive
+    assert isinstance(archive, mopso_cd.SwarmArchive)
+    assert np.isfinite(archive.get("F")).all() and np.isfinite(archive.get("CV")).all()
+    if res.F is not None:
+        assert np.isfinite(res.F).all() and np.all(res.CV <= 0.0)

@@ -1,0 +1,82 @@
+"""Reading ``results.jsonl`` line by line: which lines are trial records, which are not.
+
+A line is a trial record when it is a JSON object with the fields every trial
+record has (:data:`REQUIRED`: ``trial``, ``status``, ``algorithm`` as strings,
+``target`` and ``run`` as integers). Anything else (``{}``, ``[1, 2, 3]``,
+``"trial": null``, text that is not JSON, a line torn by a crash) is *malformed*:
+it is skipped, and :class:`Lines` says which line and why, so that the caller can
+warn with the file and the line number instead of failing on it.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+
+REQUIRED = {"trial": str, "status": str, "algorithm": str, "target": int, "run": int}
+"""The fields (and their JSON types) every stored trial record has."""
+
+
+def record_problem(record: object) -> str | None:
+    """Why ``record`` (a parsed line) is not a trial record, or None when it is one."""
+    if not isinstance(record, dict):
+        return f"a JSON {type(record).__name__}, not an object"
+    for key, kind in REQUIRED.items():
+        if key not in record:
+            return f"no {key!r} field"
+        value = record[key]
+        if not isinstance(value, kind) or isinstance(value, bool):
+            return f"{key!r} is {value!r}, expected a {kind.__name__}"
+    return None
+
+
+@dataclass
+class Lines:
+    """The lines of a ``results.jsonl``.
+
+    Attributes:
+        records: The trial records, in file order (repeated trial ids included).
+        malformed: ``(line number, why)`` of every line that is no trial record
+            (line numbers from 1; a torn last line without newline is not included).
+        torn_tail: Whether the file ends in a line without newline (a crash mid-append).
+    """
+
+    records: list[dict] = field(default_factory=list)
+    malformed: list[tuple[int, str]] = field(default_factory=list)
+    torn_tail: bool = False
+
+    def describe(self, path: Path, shown: int = 5) -> str:
+        """One sentence naming the malformed lines of ``path`` (empty when there are none)."""
+        if not self.malformed:
+            return ""
+        listed = "; ".join(f"line {n}: {why}" for n, why in self.malformed[:shown])
+        more = f"; and {len(self.malformed) - shown} more" if len(self.malformed) > shown else ""
+        return (f"{path}: skipped {len(self.malformed)} malformed line(s) that are not trial "
+                f"records ({listed}{more})")
+
+
+def read_lines(path: Path) -> Lines:
+    """Parse ``path`` (missing: no lines) into trial records and malformed lines."""
+    out = Lines()
+    try:
+        data = path.read_bytes()
+    except FileNotFoundError:
+        return out
+    lines = data.split(b"\n")
+    out.torn_tail = lines[-1] != b""
+    for number, line in enumerate(lines[:-1], start=1):
+        if not line.strip():
+            out.malformed.append((number, "an empty line"))
+            continue
+        try:
+            record = json.loads(line)
+        except ValueError as exc:
+            out.malformed.append((number, f"not JSON ({str(exc).split(':')[0]})"))
+            continue
+        why = record_problem(record)
+        if why is None:
+            out.records.append(record)
+        else:
+            out.malformed.append((number, why))
+    return out

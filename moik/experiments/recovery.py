@@ -1,0 +1,107 @@
+"""Folders without a usable ``meta.json``: whether their trials may be kept.
+
+``meta.json`` says which configuration a folder's trials belong to. When it is
+gone or damaged, the trials are never deleted and never relabelled: a run without
+``--resume`` is refused (saying how to recover), and ``--resume`` adopts them only
+when every stored line carries the fingerprint of the configuration being run
+(each line records ``experiment`` and ``config_fingerprint``). A damaged
+``meta.json`` is kept beside as ``meta.json.damaged``.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+from pathlib import Path
+
+from moik.exceptions import ResultsError
+from moik.experiments.records import read_lines
+
+META_REQUIRED = {"experiment": str, "config_fingerprint": str, "config": dict}
+"""The ``meta.json`` fields a run needs to resume a folder (with their JSON types)."""
+
+
+def stored_fingerprint(meta: dict) -> str | None:
+    """The configuration fingerprint recomputed from ``meta["config"]`` and
+    ``meta["algorithms"]`` (the formula of ``ExperimentConfig.fingerprint``), or None."""
+    if not isinstance(meta.get("config"), dict) or not isinstance(meta.get("algorithms"), list):
+        return None
+    text = json.dumps([meta["config"], meta["algorithms"]], sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+def repair_meta(meta: dict) -> list[str]:
+    """Restores what a damaged ``meta.json`` lost and can be rebuilt from the rest (in place):
+    the fingerprint (from the stored config) and the session list. Returns what it did."""
+    notes = []
+    if "config_fingerprint" not in meta and stored_fingerprint(meta) is not None:
+        meta["config_fingerprint"] = stored_fingerprint(meta)
+        notes.append("meta.json had no config_fingerprint: recomputed it from its stored config")
+    if not isinstance(meta.get("sessions"), list):
+        notes.append(f"meta.json had no session list (sessions = {meta.get('sessions')!r}): "
+                     "started a new one")
+        meta["sessions"] = []
+    return notes
+
+
+def meta_problem(meta: dict) -> str | None:
+    """What makes ``meta`` unusable for resuming (a missing or mistyped field), or None."""
+    for key, kind in META_REQUIRED.items():
+        if key not in meta:
+            return f"lacks {key!r}"
+        if not isinstance(meta[key], kind):
+            return f"has {key!r} = {meta[key]!r}, expected a {kind.__name__}"
+    return None
+
+
+def adopt(folder: Path, config, problem: str, resume: bool) -> list[str]:
+    """Whether the trials of a folder without a usable ``meta.json`` may be kept for a run
+    of ``config`` (only on ``--resume``, and only if every line names this configuration).
+
+    A damaged ``meta.json`` is kept as ``meta.json.damaged`` (never overwritten silently).
+    Returns the notes saying what was done.
+
+    Raises:
+        ResultsError: Without ``resume``, or when a line was written by another
+            configuration (or by a moik that did not record it): nothing is changed.
+    """
+    lines = read_lines(folder / "results.jsonl")
+    where = str(folder)
+    notes = []
+    if lines.records:
+        what = (f"{where!r} holds {len(lines.records)} trial record(s) in results.jsonl but "
+                f"{problem}; nothing was changed")
+        if not resume:
+            raise ResultsError(
+                f"{what}. To keep them, run the same experiment with --resume (it adopts "
+                "the trials when every line was written by this configuration); otherwise "
+                "choose another --out folder, or move results.jsonl away")
+        fingerprint = config.fingerprint()
+        foreign: dict[str, int] = {}
+        for rec in lines.records:
+            if rec.get("config_fingerprint") != fingerprint:
+                key = (f"{rec.get('experiment', '?')!r} (configuration "
+                       f"{str(rec['config_fingerprint'])[:12]})"
+                       if rec.get("config_fingerprint") else "no configuration fingerprint "
+                       "(written by an older moik)")
+                foreign[key] = foreign.get(key, 0) + 1
+        if foreign:
+            found = "; ".join(f"{n} line(s) of {k}" for k, n in foreign.items())
+            raise ResultsError(
+                f"{what}. Cannot adopt them for {config.name!r} (configuration "
+                f"{fingerprint[:12]}): {found}. Restore meta.json, or resume with the "
+                "configuration that wrote them, or choose another --out folder")
+        notes.append(f"adopted {len(lines.records)} stored trial record(s) of "
+                     f"{config.name!r} (every line carries this configuration's fingerprint)"
+                     f" although {problem}; meta.json rebuilt")
+    damaged = folder / "meta.json"
+    if damaged.exists():
+        keep = folder / "meta.json.damaged"
+        n = 1
+        while keep.exists():
+            n += 1
+            keep = folder / f"meta.json.damaged{n}"
+        os.replace(damaged, keep)
+        notes.append(f"kept the unusable meta.json as {keep.name}")
+    return notes

@@ -3,7 +3,8 @@
 The collision-front problem (experiments/collision_front.py: Panda, shelf, side wall and
 table) at both targets with clearance 0.02 m (harder than the experiment's 0; the Franka
 capsules of links 1 and 3 are never farther apart than 0.026 m, so 0.026 m is the largest
-feasible clearance), solved by NSGA-II (pymoo) and MOEOSMA (moik) with ``groups="min"`` (one constraint) and
+feasible clearance), solved by NSGA-II (pymoo) and MOEOSMA (moik) with ``groups="min"``
+(one constraint) and
 ``groups="links"`` (one per body); population 50, 60 generations, 3 seeds. Printed per
 cell: the share of returned members that are collision-free and the mean HV of those
 (reference point (1.5, pi)), and the time.

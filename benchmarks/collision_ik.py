@@ -26,7 +26,7 @@ import time
 import numpy as np
 from _output import OUT_HELP, table_output
 
-from moik import get_robot, solve_ik
+from moik import solve_ik
 from moik.collision import Box, CollisionChecker, HalfSpace, Scene, Sphere
 from moik.collision.catalog import collision_model
 from moik.collision.io import rpy_pose

@@ -71,19 +71,6 @@ def test_gradient_matches_finite_differences():
     assert checked >= 10
 
 
-def test_urdf_link_frames_do_not_depend_on_q():
-    from moik.robots.catalog import DATA
-    from moik.robots.urdf_geometry import link_placements
-    robot = get_robot("panda")
-    rng = np.random.default_rng(0)
-    _, a = link_placements(DATA / "panda.urdf", robot, robot.random_q(1, rng=rng)[0])
-    names, b = link_placements(DATA / "panda.urdf", robot, robot.random_q(1, rng=rng)[0])
-    assert names[0] == "panda_link0" and names[-1] == "panda_link7"
-    for link in a:
-        assert a[link][0] == b[link][0]
-        np.testing.assert_allclose(a[link][1], b[link][1], atol=1e-12)
-
-
 def test_model_validation():
     robot = get_robot("planar2")
     with pytest.raises(UnknownNameError, match="link0, link1, link2"):

@@ -123,25 +123,35 @@ def _from_box(P, x, y, z):
             P[2, 3] + P[2, 0] * x + P[2, 1] * y + P[2, 2] * z)
 
 
+@jit(inline=True)
+def _cut(p, d, bound):
+    """The parameter where ``p + t d`` crosses ``bound`` if it is in (0, 1), else 2."""
+    if d == 0.0:
+        return 2.0
+    t = (bound - p) / d
+    return t if 0.0 < t < 1.0 else 2.0
+
+
 @jit
 def segment_box_sq(p, d, e):
     """``min_t |p + t d - box|^2`` over ``t in [0, 1]`` for the box ``|x_i| <= e_i``.
 
     ``f(t) = sum_i max(|p_i + t d_i| - e_i, 0)^2`` is convex and quadratic between the
     (at most six) parameters where a coordinate crosses a face; each piece is minimised
-    exactly. Returns ``(f_min, t_min)``.
+    exactly. Returns ``(f_min, t_min)``. (No allocation: the pieces start at 0 and at
+    each crossing and end at the next crossing or 1.)
     """
-    cuts = [0.0, 1.0]
-    for i in range(3):
-        if d[i] != 0.0:
-            for bound in (-e[i], e[i]):
-                t = (bound - p[i]) / d[i]
-                if 0.0 < t < 1.0:
-                    cuts.append(t)
-    cuts.sort()
+    cuts = (0.0, _cut(p[0], d[0], -e[0]), _cut(p[0], d[0], e[0]), _cut(p[1], d[1], -e[1]),
+            _cut(p[1], d[1], e[1]), _cut(p[2], d[2], -e[2]), _cut(p[2], d[2], e[2]))
     best, best_t = math.inf, 0.0
-    for j in range(len(cuts) - 1):
-        lo, hi = cuts[j], cuts[j + 1]
+    for j in range(7):
+        lo = cuts[j]
+        if lo > 1.0:
+            continue
+        hi = 1.0
+        for k in range(7):
+            if lo < cuts[k] < hi:
+                hi = cuts[k]
         mid = 0.5 * (lo + hi)
         num, den, active = 0.0, 0.0, 0
         for i in range(3):

@@ -2,7 +2,7 @@
 
 Run: ``.venv/bin/python benchmarks/moo.py [--quick] [--seeds K]``
 
-Setting (EOSMA paper, Yin et al. 2022, Table 8, as ``experiments/eosma_table8.py``
+Setting (EOSMA paper, Yin et al. 2022, Table 8, as ``experiments/eosma_table8.toml``
 configures it): the ``eosma7-m`` arm, objectives (position error, Eq. 26 Euler
 orientation error, ``BiObjectiveIK(orientation="eosma-euler")``), N = 100, T = 1000,
 archive 100. MOEOSMA evaluates ``N + T 2N = 200,100`` points in that budget; MO-m-PSO

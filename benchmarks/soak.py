@@ -69,8 +69,10 @@ def recomputed(robot, poses: np.ndarray, Q: np.ndarray) -> tuple[np.ndarray, np.
     return pos, np.arctan2(sin, cos)
 
 
-def check(robot, poses, Q, status, success, pos_rep, ori_rep, counts: Counter) -> list[str]:
-    """Counts the verdicts and disagreements of one batch; returns the disagreements."""
+def check(robot, poses, Q, status, success, pos_rep, ori_rep, counts: Counter,
+          where: str) -> list[str]:
+    """Counts the verdicts and disagreements of one batch; returns the disagreements
+    (``where`` says how to reproduce the batch)."""
     pos, ori = recomputed(robot, poses, Q)
     tp, to = TOL * robot.reach, TOL
     within = (pos <= tp) & (ori <= to)
@@ -89,7 +91,7 @@ def check(robot, poses, Q, status, success, pos_rep, ori_rep, counts: Counter) -
     found = []
     for kind, mask in bad.items():
         counts[kind] += int(np.sum(mask))
-        found += [f"{robot.name} #{i}: {kind} (status {status[i]}, position {pos[i]:.3e} "
+        found += [f"{where}[{i}]: {kind} (status {status[i]}, position {pos[i]:.3e} "
                   f"(reported {pos_rep[i]:.3e}), orientation {ori[i]:.3e} (reported "
                   f"{ori_rep[i]:.3e}))"
                   for i in np.flatnonzero(mask)]
@@ -143,7 +145,10 @@ def main() -> None:
             seed = args.seed * 1_000_003 + k
             poses = np.array([t.pose for t in random_reachable_targets(robot, n, seed=seed)])
             Q, status, success, pos_rep, ori_rep = solve(robot, poses, seed, single)
-            found += check(robot, poses, Q, status, success, pos_rep, ori_rep, counts)
+            where = (f"{robot.name}: random_reachable_targets(robot, {n}, seed={seed}), "
+                     + (f"solve_ik(seed={seed} + i, tol={TOL:g})" if single else
+                        f"solve_ik_batch(seed={seed}, tol={TOL:g}) target i"))
+            found += check(robot, poses, Q, status, success, pos_rep, ori_rep, counts, where)
             done += n
             k += 1
             if done >= next_mark or done == args.n:

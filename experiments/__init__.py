@@ -2,5 +2,5 @@
 
 This folder is shipped inside the moik wheel as the package ``moik.paper_configs``
 (``pyproject.toml`` maps it); :mod:`moik.experiments.registry` finds the files.
-Each file is data: it defines a dict ``EXPERIMENT`` and is never imported as a module.
+Each config is a TOML data file (``*.toml``, shipped as package data), never run as code.
 """

@@ -34,7 +34,7 @@ from moik.robots import get_robot
 
 TARGET = 73
 LEVEL = 1e-12
-PROTOCOL_THRESHOLD = 1e-6  # experiments/eosma_table5.py
+PROTOCOL_THRESHOLD = 1e-6  # experiments/eosma_table5.toml
 SETTINGS = [("q=0, a1=1 (scenario 1 preset), T=500", {"q": 0.0, "a1": 1.0}, 500),
             ("q=0, a1=1 (scenario 1 preset), T=2000", {"q": 0.0, "a1": 1.0}, 2000),
             ("q=1, a1=2 (scenario 2 preset), T=500", {"q": 1.0, "a1": 2.0}, 500)]

@@ -289,3 +289,27 @@ def test_a_full_tmpfs_cache_does_not_fail_the_computation(tmp_path):
     assert out.returncode == 0, out.stderr
     assert out.stderr.count("CacheWarning: moik: cannot write the kernel cache") == 1
     assert "Traceback" not in out.stderr
+
+
+def test_forty_single_bit_flips_of_real_cache_files_are_all_caught(tmp_path, built_cache):
+    """Every flipped bit of a real index or data file is caught before numba reads it."""
+    from moik import _jit
+    rng = np.random.default_rng(40)
+    index = next(built_cache.rglob("dh.fk_poses-*.nbi"))
+    data = next(built_cache.rglob("dh.fk_poses-*.1.nbc"))
+    base = index.name[: -len(".nbi")]
+    for k in range(40):
+        original = (index if k % 2 else data).read_bytes()
+        folder = tmp_path / str(k)
+        folder.mkdir()
+        cache = _jit._CheckedCacheFile(cache_path=str(folder), filename_base=base,
+                                       source_stamp=None)
+        raw = bytearray(original)
+        bit = int(rng.integers(8 * len(raw)))
+        raw[bit // 8] ^= 1 << (bit % 8)
+        target = folder / (index if k % 2 else data).name
+        target.write_bytes(bytes(raw))
+        _jit._warned.discard("damaged")
+        with pytest.warns(moik.exceptions.CacheWarning, match="discarded a damaged"):
+            got = cache._load_index() if k % 2 else cache._load_data(data.name)
+        assert got in ({}, None) and not target.exists(), (k, bit)

@@ -25,12 +25,14 @@ pymoo's default and robust terminations and their combinations), so t/T spans th
 budget, also after a checkpoint is resumed with a new termination;
 :data:`~moik.algorithms.array_state.DEFAULT_SCHEDULE_LENGTH` when nothing bounds the run.
 
-Evaluation (pymoo's contract): the initial population and ``ask()/tell()`` go through
-pymoo's ``Evaluator``; after them, a batch goes through ``self.evaluator`` too whenever
-anything is attached to it (an Evaluator subclass or callback, the ``archive=`` option, a
-problem with ``requires_kwargs=True``), else through the array fast path
-(``problem.evaluate`` on the array, asking the Evaluator's ``evaluate_values_of``, counting
-``evaluator.n_eval`` exactly; the same values without building a ``Population``).
+Evaluation: pymoo's ``Evaluator`` whenever anything is attached to it, else the array
+fast path (:mod:`moik.algorithms.evaluation`).
+
+Default termination: without one, the run is the algorithm's own schedule,
+``("n_gen", T + 1)`` with T = ``max_iter`` or
+:data:`~moik.algorithms.array_state.DEFAULT_SCHEDULE_LENGTH`
+(:meth:`ArrayStateAlgorithm.default_termination`), not pymoo's stagnation-based default.
+An ``n_gen`` or ``n_eval`` limit below 1 is refused with a ``ParameterError``.
 
 ``n_eval`` budgets are exact: rows of a batch beyond the budget are not evaluated and get
 ``F = CV = inf`` (never accepted by a memory, ranked last, never reported). The initial
@@ -46,8 +48,8 @@ from typing import Any, cast
 
 import numpy as np
 from pymoo.core.algorithm import Algorithm
-from pymoo.core.evaluator import Evaluator
 from pymoo.core.population import Population
+from pymoo.termination.max_gen import MaximumGenerationTermination
 
 from moik._validate import seed
 from moik.algorithms.array_state import (
@@ -55,16 +57,27 @@ from moik.algorithms.array_state import (
     Step,
     budget_left,
     check_sizes,
+    check_termination,
     find_limit,
     finite_bounds,
-    initial_population,
+    has_time_criterion,
+    initial_infill,
     planned_iterations,
     refuse_unknown_keywords,
 )
-from moik.algorithms.mechanics import constraint_violation
+from moik.algorithms.evaluation import (
+    constraint_values,
+    evaluator_attached,
+    pad,
+    problem_values,
+    values_asked,
+)
 from moik.algorithms.nonfinite import sanitise
+from moik.exceptions import ParameterError
 
 __all__ = ["ArrayStateAlgorithm"]
+
+
 
 
 class ArrayStateAlgorithm(Algorithm):
@@ -75,6 +88,8 @@ class ArrayStateAlgorithm(Algorithm):
         pop_size: Population size N.
         X0: Optional initial points (k rows within the bounds, k at most the initial
             population); the other rows are drawn uniformly.
+        sampling: pymoo's form of the same (a ``Sampling``, an array or a ``Population``,
+            :func:`~moik.algorithms.array_state.initial_infill`); not with ``X0``.
         max_iter: Schedule length T (update iterations after initialization, the papers'
             Max_t; ``t = 1 .. T``), fixed. None: planned before every iteration from the
             current termination (module doc).
@@ -97,17 +112,20 @@ class ArrayStateAlgorithm(Algorithm):
     t: int
     """The iteration of the paper's schedule (0 while the initial population is built)."""
     _max_evals: float
+    _plan_varies: bool
     _step: Step | None
     _pending: np.ndarray | None
 
     def __init__(self, *, pop_size: int = 100, X0: np.ndarray | None = None,
-                 max_iter: int | None = None, **kwargs):
+                 max_iter: int | None = None, sampling: object = None, **kwargs):
         refuse_unknown_keywords(type(self), kwargs)
         kwargs.setdefault("output", self._default_output())
         super().__init__(**kwargs)
         self.pop_size, self._fixed_T = check_sizes(pop_size, self.min_pop_size, max_iter)
         self.max_iter = cast(int, self._fixed_T)  # None: planned in setup() (_plan_schedule)
-        self.X0 = X0
+        self.X0, self.sampling = X0, sampling
+        if X0 is not None and sampling is not None:
+            raise ParameterError("give the initial points as X0 or as sampling, not both")
         self.X = self.F = cast(np.ndarray, None)  # set by setup() (the initial population)
         self.CV = None
         self.incumbent: Any = None  # made with the initial population (_make_incumbent)
@@ -123,7 +141,23 @@ class ArrayStateAlgorithm(Algorithm):
         """
         seed("seed", kwargs.get("seed", self.seed))
         self._nonfinite_warned = False
-        return super().setup(problem, **kwargs)
+        if kwargs.get("termination") is None and self.termination is None:
+            kwargs["termination"] = self.default_termination()
+        super().setup(problem, **kwargs)
+        check_termination(self.termination)
+        return self
+
+    def default_termination(self) -> MaximumGenerationTermination:
+        """The termination used when none is given: the algorithm's own schedule, ``max_iter``
+        update iterations after the initial population (:data:`DEFAULT_SCHEDULE_LENGTH`
+        when ``max_iter`` is None), i.e. ``("n_gen", T + 1)``.
+
+        pymoo's default termination (1000 generations or 100,000 evaluations, or a
+        stagnation window of 30-50 generations) would stop a schedule-driven method in its
+        exploration phase, long before t/T reaches 1 (ChOA: 0.499 after ~32 generations
+        where its schedule reaches 0.014)."""
+        T = DEFAULT_SCHEDULE_LENGTH if self._fixed_T is None else self._fixed_T
+        return MaximumGenerationTermination(T + 1)
 
     def _setup(self, problem, **kwargs) -> None:
         self._check_objectives(problem)
@@ -133,7 +167,17 @@ class ArrayStateAlgorithm(Algorithm):
         self._plan_schedule(t=1, n_eval=self._n_initial(), elapsed=0.0)
 
     def _plan_schedule(self, *, t: int, n_eval: int, elapsed: float) -> None:
-        """Refresh the evaluation budget and T from the current termination (module doc)."""
+        """Refresh the evaluation budget and T from the current termination (module doc).
+
+        A termination object already planned whose plan cannot change (no ``time``
+        criterion: ``n_gen`` is fixed and an ``n_eval`` plan is made once) is not walked
+        again."""
+        key = id(self.termination)
+        if key == self.__dict__.get("_planned_for") and not self._plan_varies:
+            if self._fixed_T is None and self.max_iter < t:  # every T is at least t
+                self.max_iter = t
+            return
+        self._planned_for, self._plan_varies = key, has_time_criterion(self.termination)
         self._max_evals = find_limit(self.termination, "n_max_evals")
         if self._fixed_T is None:
             T = planned_iterations(self.termination, t=t, n_eval=n_eval, elapsed=elapsed,
@@ -147,8 +191,8 @@ class ArrayStateAlgorithm(Algorithm):
                             elapsed=time.time() - self.start_time)
 
     def _initialize_infill(self) -> Population:
-        return initial_population(self._n_initial(), self.xl, self.xu, self.X0,
-                                  rng=self.random_state)
+        return initial_infill(self.problem, self._n_initial(), self.xl, self.xu, X0=self.X0,
+                              sampling=self.sampling, rng=self.random_state)
 
     def _initialize_advance(self, infills=None, **kwargs) -> None:
         self._step = self._pending = None
@@ -195,7 +239,7 @@ class ArrayStateAlgorithm(Algorithm):
         if self.incumbent.receive(self._pending[: len(F)], F, CV, GH):
             self._opt_stale = True
         try:
-            self._pending = self._step.send(self._pad(len(self._pending), F, CV))
+            self._pending = self._step.send(pad(len(self._pending), F, CV))
             return False
         except StopIteration:
             self._step = self._pending = None
@@ -220,12 +264,6 @@ class ArrayStateAlgorithm(Algorithm):
         """The objective array the algorithm works with: (k,) for one objective, else F."""
         return F[:, 0] if self.problem.n_obj == 1 else F
 
-    def _constraint_values(self, G, H, n: int) -> tuple[np.ndarray, np.ndarray]:
-        """``(CV, GH)``: total violations and the constraint values side by side."""
-        G = np.zeros((n, 0)) if G is None else np.asarray(G, float).reshape(n, -1)
-        H = np.zeros((n, 0)) if H is None else np.asarray(H, float).reshape(n, -1)
-        return constraint_violation(G, H), np.concatenate([G, H], axis=1)
-
     def _sanitise(self, X: np.ndarray, F: np.ndarray,
                   CV: np.ndarray | None) -> tuple[np.ndarray, np.ndarray | None]:
         """A batch's ``(F, CV)`` with rows holding a problem's NaN/inf set to ``F = CV = inf``
@@ -246,39 +284,9 @@ class ArrayStateAlgorithm(Algorithm):
         F = self._objectives(pop.get("F")).astype(float)
         CV = GH = None
         if self._constrained:
-            CV, GH = self._constraint_values(pop.get("G"), pop.get("H"), n)
+            CV, GH = constraint_values(pop.get("G"), pop.get("H"), n)
         F, CV = self._sanitise(pop.get("X"), F, CV)
         return F, CV, GH
-
-    def _pad(self, n: int, F: np.ndarray, CV: np.ndarray | None):
-        """Rows left unevaluated by the budget get ``F = CV = inf``."""
-        k = len(F)
-        if k == n:
-            return F, CV
-        F = np.concatenate([F, np.full((n - k,) + F.shape[1:], np.inf)])
-        return F, None if CV is None else np.concatenate([CV, np.full(n - k, np.inf)])
-
-    def _evaluator_attached(self) -> bool:
-        """Whether anything is attached to pymoo's evaluation (then every batch goes through
-        ``self.evaluator``): an Evaluator subclass or callback, the ``archive=`` option, or a
-        problem with ``requires_kwargs=True`` (it receives ``algorithm=``)."""
-        ev = self.evaluator
-        return (type(ev) is not Evaluator or ev.callback is not None or self.archive is not None
-                or bool(getattr(self.problem, "requires_kwargs", False)))
-
-    def _problem_values(self, X: np.ndarray) -> dict:
-        """``problem.evaluate(X, return_values_of=evaluator.evaluate_values_of,
-        return_as_dictionary=True)`` (so meta-problems such as pymoo's
-        ``ConstraintsAsPenalty`` get the values they remove); an unconstrained problem that
-        offers ``batch_objectives(X)`` (moik's IK problems: the same F bit for bit, without
-        pymoo's per-call bookkeeping) is asked that instead, unless it answers None."""
-        direct = None if self._constrained else getattr(self.problem, "batch_objectives", None)
-        if direct is not None:
-            F = direct(X)
-            if F is not None:
-                return {"F": F}
-        return self.problem.evaluate(X, return_values_of=self.evaluator.evaluate_values_of,
-                                     return_as_dictionary=True)
 
     def _evaluate(self, X: np.ndarray):
         """Evaluate a batch (vectorized), count n_eval exactly, give it to the incumbent.
@@ -289,26 +297,27 @@ class ArrayStateAlgorithm(Algorithm):
         n = len(X)
         k = budget_left(self._max_evals, self.evaluator.n_eval, n)
         if k == 0:
-            return self._pad(n, self._objectives(np.empty((0, self.problem.n_obj))),
-                             np.empty(0) if self._constrained else None)
+            return pad(n, self._objectives(np.empty((0, self.problem.n_obj))),
+                       np.empty(0) if self._constrained else None)
         Xk = X if k == n else X[:k]
-        if self._evaluator_attached():  # pymoo's contract: the Evaluator sees every batch
+        archive: Any = self.__dict__.get("archive")  # the archive= option
+        if evaluator_attached(self.evaluator, archive, self.problem):  # pymoo's contract
             pop = Population.new("X", Xk)
             self.evaluator.eval(self.problem, pop, algorithm=self)
-            archive: Any = self.__dict__.get("archive")  # pymoo's optional Archive (the archive= option)
             if archive is not None:
                 self.archive = archive.add(pop)
             F, CV, GH = self._values_of(pop)
         else:  # the array fast path (same values, no Population)
-            out = self._problem_values(Xk)
+            out = problem_values(self.problem, Xk, constrained=self._constrained,
+                                 asked=values_asked(self.problem, self.evaluator))
             self.evaluator.n_eval += k
             F, CV, GH = self._objectives(out["F"]), None, None
             if self._constrained:
-                CV, GH = self._constraint_values(out.get("G"), out.get("H"), k)
+                CV, GH = constraint_values(out.get("G"), out.get("H"), k)
             F, CV = self._sanitise(Xk, F, CV)
         if self.incumbent.receive(Xk, F, CV, GH):
             self._opt_stale = True
-        return self._pad(n, F, CV)
+        return pad(n, F, CV)
 
     # ---- lazily built pymoo objects -------------------------------------------------------
     def _build_pop(self) -> Population:

@@ -16,6 +16,7 @@ from collections.abc import Generator
 import numpy as np
 from pymoo.core.algorithm import Algorithm
 from pymoo.core.population import Population
+from pymoo.core.sampling import Sampling
 from pymoo.core.termination import TerminateIfAll, TerminateIfAny
 from pymoo.termination.default import DefaultTermination
 
@@ -73,6 +74,34 @@ def find_limit(termination, attr: str) -> float:
     return limit
 
 
+def check_termination(termination) -> None:
+    """Refuse an ``n_gen`` or ``n_eval`` criterion below 1, anywhere in ``termination``
+    (pymoo itself fails on them with ``ZeroDivisionError`` or ``AssertionError``).
+
+    Raises:
+        ParameterError: Naming the criterion and the value given.
+    """
+    for attr, name in (("n_max_gen", "n_gen"), ("n_max_evals", "n_eval")):
+        value = getattr(termination, attr, None)
+        if value is not None and not value >= 1:
+            raise ParameterError(f"an {name!r} termination needs a limit >= 1 (the initial "
+                                 f"population is generation 1); got {value!r}")
+    for sub in getattr(termination, "criteria", ()):
+        check_termination(sub)
+    inner = getattr(termination, "termination", None)
+    if inner is not None:
+        check_termination(inner)
+
+
+def has_time_criterion(termination) -> bool:
+    """Whether a ``time`` criterion is anywhere in ``termination`` (its plan then changes)."""
+    if getattr(termination, "max_time", None) is not None:
+        return True
+    inner = getattr(termination, "termination", None)
+    return any(has_time_criterion(c) for c in getattr(termination, "criteria", ())) or (
+        inner is not None and has_time_criterion(inner))
+
+
 def check_sizes(pop_size: object, min_pop_size: int, max_iter: object) -> tuple[int, int | None]:
     """``(pop_size, max_iter)`` validated: an integer >= ``min_pop_size``; a positive
     integer or None.
@@ -91,7 +120,16 @@ def check_sizes(pop_size: object, min_pop_size: int, max_iter: object) -> tuple[
 
 def finite_bounds(problem, name: str) -> tuple[np.ndarray, np.ndarray]:
     """The problem's ``(xl, xu)`` as float arrays; both must be finite."""
+    if getattr(problem, "vars", None) is not None:
+        raise ParameterError(f"{name} works on real-valued vectors; the problem has mixed "
+                             f"variables ({', '.join(sorted(map(str, problem.vars)))}); use "
+                             f"pymoo's MixedVariableGA")
     xl, xu = problem.bounds()
+    try:
+        xl, xu = np.asarray(xl, float), np.asarray(xu, float)
+    except (TypeError, ValueError):
+        raise ParameterError(f"{name} needs real-valued bounds xl, xu; got {xl!r}, {xu!r}") \
+            from None
     if xl is None or xu is None or not (np.all(np.isfinite(xl)) and np.all(np.isfinite(xu))):
         raise ParameterError(f"{name} needs finite bounds xl, xu")
     return np.asarray(xl, float), np.asarray(xu, float)
@@ -155,22 +193,65 @@ def planned_iterations(termination, *, t: int, n_eval: int, elapsed: float,
     return max(T, float(t))
 
 
+def check_points(name: str, X0, xl: np.ndarray, xu: np.ndarray, n: int) -> np.ndarray:
+    """``X0`` as a float array of 1 to ``n`` finite rows within ``[xl, xu]``.
+
+    Raises:
+        ShapeError: For a wrong shape or row count. NonFiniteError: For NaN/inf.
+        ParameterError: For points outside the bounds.
+    """
+    X0 = np.asarray(X0, dtype=float)
+    n_var = len(xl)
+    if X0.ndim != 2 or X0.shape[1] != n_var or not 1 <= len(X0) <= n:
+        raise ShapeError(f"{name} must have shape (k, {n_var}) with 1 <= k <= {n}, "
+                         f"got {X0.shape}")
+    if not np.all(np.isfinite(X0)):
+        raise NonFiniteError(f"{name} holds NaN or infinite values")
+    if np.any(clip_to_bounds(X0, xl, xu) != X0):
+        raise ParameterError(f"{name} has points outside the problem bounds [xl, xu]")
+    return X0
+
+
 def initial_population(n: int, xl: np.ndarray, xu: np.ndarray, X0, *,
-                       rng: np.random.Generator) -> Population:
+                       rng: np.random.Generator, name: str = "X0") -> Population:
     """Uniform initial points; the first rows replaced by ``X0`` if given (validated)."""
     X = uniform_population(n, xl, xu, rng=rng)
     if X0 is not None:
-        X0 = np.asarray(X0, dtype=float)
-        n_var = len(xl)
-        if X0.ndim != 2 or X0.shape[1] != n_var or not 1 <= len(X0) <= n:
-            raise ShapeError(f"X0 must have shape (k, {n_var}) with 1 <= k <= {n}, "
-                             f"got {X0.shape}")
-        if not np.all(np.isfinite(X0)):
-            raise NonFiniteError("X0 holds NaN or infinite values")
-        if np.any(clip_to_bounds(X0, xl, xu) != X0):
-            raise ParameterError("X0 has points outside the problem bounds [xl, xu]")
+        X0 = check_points(name, X0, xl, xu, n)
         X[: len(X0)] = X0
     return Population.new("X", X)
+
+
+def initial_infill(problem, n: int, xl: np.ndarray, xu: np.ndarray, *, X0, sampling,
+                   rng: np.random.Generator) -> Population:
+    """The initial population from ``X0`` or pymoo's ``sampling=`` forms (as pymoo's
+    algorithms take them), the rows not given drawn uniformly.
+
+    ``sampling`` is a pymoo ``Sampling`` (asked for ``n`` points with the run's random
+    state), an array (as ``X0``: 1 to ``n`` rows) or a ``Population`` (1 to ``n``
+    individuals, copied; those already evaluated are not evaluated again, as pymoo's
+    ``Evaluator`` skips them).
+
+    Raises:
+        ParameterError: If both ``X0`` and ``sampling`` are given, or for a sampling of
+            another type; the errors of :func:`check_points` for its points.
+    """
+    if sampling is None:
+        return initial_population(n, xl, xu, X0, rng=rng)
+    if X0 is not None:
+        raise ParameterError("give the initial points as X0 or as sampling, not both")
+    if isinstance(sampling, Population):
+        check_points("sampling", sampling.get("X"), xl, xu, n)
+        given = [ind.copy() for ind in sampling]
+        X = uniform_population(n - len(given), xl, xu, rng=rng)
+        return Population.merge(Population.create(*given), Population.new("X", X))
+    if isinstance(sampling, Sampling):
+        X = sampling.do(problem, n, random_state=rng).get("X")
+        return Population.new("X", check_points("sampling", X, xl, xu, n))
+    if isinstance(sampling, (np.ndarray, list, tuple)):
+        return initial_population(n, xl, xu, sampling, rng=rng, name="sampling")
+    raise ParameterError(f"sampling must be a pymoo Sampling, an array of points or a "
+                         f"Population, got {type(sampling).__name__}")
 
 
 def budget_left(max_evals: float, n_eval: int, n: int) -> int:

@@ -62,9 +62,9 @@ def sanitise(X: np.ndarray, F: np.ndarray, CV: np.ndarray | None, *, problem: ob
     Returns:
         The sanitised ``F`` and ``CV`` and the new ``warned`` flag.
     """
-    ok = finite_rows(F, CV)
-    if ok.all():
+    if np.isfinite(F).all() and (CV is None or np.isfinite(CV).all()):
         return F, CV, warned
+    ok = finite_rows(F, CV)
     bad = np.flatnonzero(~ok)
     F = np.array(F, dtype=float)
     F[bad] = np.inf

@@ -30,7 +30,8 @@ def cmd_list(args: argparse.Namespace) -> int:
 
 def cmd_run(args: argparse.Namespace) -> int:
     """Run one experiment (by name or ``--config FILE``); Ctrl-C keeps the stored trials."""
-    config = load_config(args.config) if args.config else get_experiment(args.name)
+    config = (load_config(args.config, experiment_files()) if args.config
+              else get_experiment(args.name))
     what = f"--config {args.config}" if args.config else args.name
     out = args.out or default_out(config.quick() if args.quick else config)
     try:

@@ -1,7 +1,8 @@
 """Experiment configurations: declared data, validated on load.
 
-An experiment is one Python file in an experiments folder that defines a dict
-``EXPERIMENT`` (plain literals only: the file is data). The keys:
+An experiment is one TOML file in an experiments folder (data, never code; read
+by :mod:`moik.experiments.config_files`, where ``extends = "base-name"`` makes a
+variant of another experiment). The keys:
 
 - ``name`` (lower-case, ``-`` separated; the file is ``name`` with ``_`` for
   ``-``), ``title``, ``source`` (paper, table and figures reproduced);
@@ -29,7 +30,8 @@ An experiment is one Python file in an experiments folder that defines a dict
 - ``analyses``: which tables the report prints (:data:`ANALYSES`);
   ``proposed``: label compared with the others; ``success_threshold``;
 - ``paper``: the paper's numbers, with their citation, for the report;
-- ``quick``: overrides (merged into the dict) for the seconds-long smoke size.
+- ``quick``: overrides (merged into the dict) for the seconds-long smoke size;
+- ``requires`` (benchmark kind): optional extras it needs (:func:`check_requirements`).
 
 Validation builds what a run uses (the robot, targets and pymoo problems of
 the kind, and every algorithm through the registry). Unknown keys, wrong types
@@ -38,11 +40,10 @@ and values out of range raise :class:`ConfigError` naming the file and the key.
 
 from __future__ import annotations
 
-import copy
 import hashlib
+import importlib.util
 import json
 import re
-import runpy
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -52,7 +53,9 @@ from moik.algorithms import available, get_algorithm
 from moik.algorithms.registry import accepted_parameters, is_multi_objective
 from moik.exceptions import ConfigError, MoikError
 from moik.experiments.checks import check_keys, flag, integer, number
+from moik.experiments.config_files import merge, name_of, read_config
 from moik.experiments.kinds import KINDS, MULTI_OBJECTIVE_PROBLEMS, baselines, kind_of
+from moik.experiments.kinds.functions import EXTRAS
 
 ANALYSES = ("summary", "ranksum", "friedman-hv", "joint-motion", "compromise", "signed-rank",
             "per-target", "per-target-ranksum", "branches", "dh-fit", "solution-rank",
@@ -66,17 +69,6 @@ _TOP_KEYS = {"name", "title", "source", "robot", "problem", "targets", "algorith
 _REQUIRED = ("name", "title", "source", "problem", "algorithms", "pop_size", "iterations", "runs",
              "seed")
 _NAME = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
-
-
-def merge(base: Mapping, overrides: Mapping) -> dict:
-    """Deep merge: dicts merge key by key, everything else is replaced."""
-    out = copy.deepcopy(dict(base))
-    for key, value in overrides.items():
-        if isinstance(value, Mapping) and isinstance(out.get(key), Mapping):
-            out[key] = merge(out[key], value)
-        else:
-            out[key] = copy.deepcopy(value)
-    return out
 
 
 @dataclass(frozen=True)
@@ -160,7 +152,7 @@ class ExperimentConfig:
     @classmethod
     def from_dict(cls, data: Mapping, *, path: str | None = None,
                   is_quick: bool = False) -> ExperimentConfig:
-        """Validate ``data`` (the ``EXPERIMENT`` dict) and build the config.
+        """Validate ``data`` (a config file's keys) and build the config.
 
         Raises:
             ConfigError: Naming the key and what was expected.
@@ -259,25 +251,29 @@ def _check_rest(where: str, cfg: dict, algorithms: tuple[AlgorithmSpec, ...],
         raise ConfigError(f"{where}: paper must be a dict of the paper's numbers")
 
 
-def load_config(path: str | Path) -> ExperimentConfig:
-    """Load and validate the experiment defined by the file ``path``.
+def load_config(path: str | Path, bases: Mapping[str, Path] | None = None) -> ExperimentConfig:
+    """Load and validate the experiment defined by the TOML file ``path``.
+
+    Args:
+        path: The config file (:mod:`moik.experiments.config_files`).
+        bases: Experiment name -> file, where an ``extends`` name is looked up first.
 
     Raises:
-        ConfigError: If the file is missing, does not define a dict ``EXPERIMENT``,
-            fails to execute, or the dict is invalid.
+        ConfigError: If the file is missing, not TOML (a Python file is refused, never
+            run), extends an unknown experiment, or its data is invalid.
     """
     p = Path(path)
-    if not p.is_file():
-        raise ConfigError(f"experiment file {str(p)!r} does not exist")
-    try:
-        namespace = runpy.run_path(str(p))
-    except Exception as exc:  # any failure of a config file is a config error
-        raise ConfigError(f"{p}: cannot be executed: {type(exc).__name__}: {exc}") from None
-    data = namespace.get("EXPERIMENT")
-    if not isinstance(data, Mapping):
-        raise ConfigError(f"{p}: must define a dict named EXPERIMENT")
-    config = ExperimentConfig.from_dict(data, path=str(p))
-    if p.stem.replace("_", "-") != config.name:
+    config = ExperimentConfig.from_dict(read_config(p, bases), path=str(p))
+    if name_of(p) != config.name:
         raise ConfigError(f"{p}: name {config.name!r} must match the file name "
-                          f"({p.stem.replace('_', '-')!r})")
+                          f"({name_of(p)!r})")
     return config
+
+
+def check_requirements(config: ExperimentConfig) -> None:
+    """Raise :class:`ConfigError` if an extra the experiment requires is not installed."""
+    for extra in config["requires"] or []:
+        module, what = EXTRAS[extra]
+        if importlib.util.find_spec(module) is None:
+            raise ConfigError(f"experiment {config.name!r} needs the optional extra {extra!r} "
+                              f"({module}, for {what}): pip install 'moik[{extra}]'")

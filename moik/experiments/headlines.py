@@ -17,6 +17,7 @@ from moik.experiments.consistency import FUNCTIONS as CONSISTENCY_FUNCTIONS
 from moik.experiments.dh_fit import FUNCTIONS as DH_FIT_FUNCTIONS
 from moik.experiments.front_quality import HEADLINES as FRONT_HEADLINES
 from moik.experiments.front_shares import HEADLINES as SHARES_HEADLINES
+from moik.experiments.kinds.ik import experiment_robot
 from moik.experiments.per_target import cluster_solutions
 from moik.experiments.solution_sets import FUNCTIONS as RANK_FUNCTIONS
 from moik.experiments.tables import Results, fmt
@@ -212,12 +213,13 @@ def branches_lines(res: Results) -> list[str]:
     if not res.labels:
         return []
     lab, thr = res.labels[0], res.config.get("success_threshold", 1e-6)
+    robot = experiment_robot(res.config["robot"], res.config.get("problem", {}))
     parts = []
     for ti, target in enumerate(res.meta["targets"]):
         recs = [r for r in res.by_label[lab] if r["target"] == ti]
         solved = [r for r in recs if r.get("best_f") is not None and r["best_f"] < thr
                   and r.get("best_x") is not None]
-        parts.append(f"{target['name']} {len(cluster_solutions(solved))} branches "
+        parts.append(f"{target['name']} {len(cluster_solutions(robot, solved))} branches "
                      f"({len(solved)}/{len(recs)} runs solved)")
     return [f"- {lab}, distinct solutions (f < {thr:g}): " + "; ".join(parts)]
 

@@ -21,8 +21,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik.experiments.kinds.ik import experiment_robot
 from moik.experiments.tables import Results, Table, fmt
+from moik.kinematics.criteria import joint_distance
 from moik.metrics import ranksum_pvalues, summarize
+from moik.robots.chain import Robot
 
 DISTINCT = 0.1
 """Joint-space distance (rad) beyond which two solutions are different branches."""
@@ -133,18 +136,20 @@ def per_target_ranksum_table(res: Results) -> list[Table]:
                   notes)]
 
 
-def wrapped_distance(q1, q2) -> float:
-    """Euclidean joint distance with every angle difference wrapped to (-pi, pi]."""
-    d = np.asarray(q1, dtype=float) - np.asarray(q2, dtype=float)
-    return float(np.linalg.norm((d + np.pi) % (2 * np.pi) - np.pi))
+def wrapped_distance(robot: Robot, q1, q2) -> float:
+    """The joint distance of two joint vectors of ``robot`` (revolute differences wrapped to
+    ``[-pi, pi)``, prismatic ones not: :func:`~moik.kinematics.criteria.joint_distance`)."""
+    return float(joint_distance(robot, np.asarray(q1, dtype=float),
+                                np.asarray(q2, dtype=float))[0])
 
 
-def cluster_solutions(records: list[dict], distinct: float = DISTINCT) -> list[list[dict]]:
+def cluster_solutions(robot: Robot, records: list[dict], distinct: float = DISTINCT
+                      ) -> list[list[dict]]:
     """Group solved runs into branches: each joins the first branch whose best is near it."""
     branches: list[list[dict]] = []
     for r in sorted(records, key=lambda r: r["best_f"]):
         for b in branches:
-            if wrapped_distance(b[0]["best_x"], r["best_x"]) <= distinct:
+            if wrapped_distance(robot, b[0]["best_x"], r["best_x"]) <= distinct:
                 b.append(r)
                 break
         else:
@@ -167,30 +172,34 @@ def branches_table(res: Results) -> list[Table]:
     if not res.labels:
         return []
     lab, thr = res.labels[0], res.config.get("success_threshold", 1e-6)
+    robot = experiment_robot(res.config["robot"], res.config.get("problem", {}))
     paper = res.paper.get("branches", {})
     rows, notes, gaps, n_ref = [], [], [], 0
     for ti, target in enumerate(res.meta["targets"]):
         recs = _runs(res, lab, ti)
         solved = [r for r in recs if r.get("best_f") is not None and r["best_f"] < thr
                   and r.get("best_x") is not None]
-        found = cluster_solutions(solved)
+        found = cluster_solutions(robot, solved)
         ref = paper.get(target["name"], [])
         n_ref += len(ref)
         used = set()
         for bi, pb in enumerate(ref):
-            dist = [min(wrapped_distance(pb["geometric"], r["best_x"]) for r in b) for b in found]
+            dist = [min(wrapped_distance(robot, pb["geometric"], r["best_x"]) for r in b)
+                    for b in found]
             k = int(np.argmin(dist)) if dist else -1
             b = found[k] if k >= 0 and dist[k] <= DISTINCT else None
             cells = ["not found", "-", "-", "0", "-"]
             if b is not None:
                 used.add(k)
-                near = min(b, key=lambda r: wrapped_distance(pb["geometric"], r["best_x"]))
+                geometric = pb["geometric"]
+                near = min(b, key=lambda r: wrapped_distance(robot, geometric, r["best_x"]))
                 gaps.append(dist[k])
                 cells = [_q(near["best_x"]), fmt(dist[k], 3),
-                         fmt(wrapped_distance(pb["paper"], near["best_x"]), 3), str(len(b)),
+                         fmt(wrapped_distance(robot, pb["paper"], near["best_x"]), 3),
+                         str(len(b)),
                          fmt(near["best_f"], 3)]
             rows.append([target["name"], f"q{bi + 1}", _q(pb["geometric"]), _q(pb["paper"]),
-                         fmt(wrapped_distance(pb["geometric"], pb["paper"]), 3), *cells])
+                         fmt(wrapped_distance(robot, pb["geometric"], pb["paper"]), 3), *cells])
         for k, b in enumerate(found):
             if k not in used:
                 rows.append([target["name"], "other", "-", "-", "-", _q(b[0]["best_x"]), "-", "-",

@@ -12,8 +12,9 @@ The folders searched, in order:
 2. every folder in the environment variable ``MOIK_EXPERIMENTS_PATH``
    (:data:`ENV_VAR`, ``os.pathsep``-separated): a user's own configs.
 
-Each ``*.py`` file not starting with ``_`` is one experiment named after the
-file (``eosma_table5.py`` -> ``eosma-table5``). Adding an experiment = dropping
+Each ``*.toml`` file not starting with ``_`` is one experiment named after the
+file (``eosma_table5.toml`` -> ``eosma-table5``); it is data, never run
+(:mod:`moik.experiments.config_files`). Adding an experiment = dropping
 a file in such a folder; a later folder's file replaces an earlier one of the
 same name. :func:`get_experiment` also takes the path of a config file
 (``moik experiment run --config FILE``).
@@ -66,7 +67,7 @@ def experiment_files() -> dict[str, Path]:
     """Experiment name -> config file."""
     found: dict[str, Path] = {}
     for folder in experiment_dirs():
-        for path in sorted(folder.glob("*.py")):
+        for path in sorted(folder.glob("*.toml")):
             if not path.name.startswith("_"):
                 found[path.stem.replace("_", "-")] = path
     return dict(sorted(found.items()))
@@ -86,7 +87,7 @@ def get_experiment(name: str) -> ExperimentConfig:
     """
     files = experiment_files()
     if name in files:
-        return load_config(files[name])
-    if name.endswith(".py") or os.sep in name:
-        return load_config(name)
+        return load_config(files[name], files)
+    if name.endswith((".toml", ".py")) or os.sep in name:
+        return load_config(name, files)
     raise UnknownNameError("experiment", name, files)

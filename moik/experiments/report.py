@@ -198,7 +198,9 @@ def make_report(folder: str | Path, *, figures: bool = True,
     parts = ["# moik reproduction report", "",
              "Tables put moik's numbers (source `moik`) beside the paper's (source = the "
              "paper's table). Times are wall-clock seconds per trial on the machine named in "
-             "each section; the papers' times are MATLAB times on theirs.", ""]
+             "each section, without the process's one-off kernel load (each process runs "
+             "an untimed one-iteration warm-up of each algorithm and problem first); the "
+             "papers' times are MATLAB times on theirs.", ""]
     subs = result_folders(base)
     for sub in subs:
         try:

@@ -8,9 +8,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from moik._validate import flag, integer, optional_integer
-from moik.experiments.config import ExperimentConfig
+from moik.experiments.config import ExperimentConfig, check_requirements
 from moik.experiments.executors import Progress, connect_dask, execute, sigterm_as_interrupt
-from moik.experiments.kinds.functions import check_requirements
 from moik.experiments.spec import spec_summary
 from moik.experiments.store import ResultStore
 from moik.experiments.trials import build_trials

@@ -39,7 +39,12 @@ import numpy as np
 from moik._jit import kernel_array
 from moik._validate import choice
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError
-from moik.kinematics.criteria_kernels import joint_motions, limit_margins, manipulabilities
+from moik.kinematics.criteria_kernels import (
+    distances_into,
+    joint_motions,
+    limit_margins,
+    manipulabilities,
+)
 from moik.kinematics.orientation import check_rotation
 from moik.kinematics.rotation_metrics import GEODESIC, rotation_errors
 from moik.robots.chain import Robot
@@ -105,6 +110,19 @@ class Criterion:
             raise NonFiniteError(f"criterion {self.name!r} returned a non-finite value "
                                  f"({out[bad]}) for joint vector {bad}")
         return out
+
+
+def joint_distance(robot: Robot, q: np.ndarray, others: np.ndarray) -> np.ndarray:
+    """Joint-space distances from ``q`` to each row of ``others``, revolute differences
+    wrapped to ``[-pi, pi)`` (angles 2 pi apart are the same arm configuration, though not
+    the same motion), prismatic ones as they are (:func:`wrapped_distance`)."""
+    others = kernel_array(np.atleast_2d(others))
+    if np.shape(q) != (robot.dof,) or others.shape[1] != robot.dof:
+        raise ShapeError(f"joint_distance needs joint vectors of {robot.dof} values, got "
+                         f"{np.shape(q)} and rows of {others.shape[1]}")
+    out = np.empty(len(others))
+    distances_into(others, kernel_array(q), robot.kinematic_chain.joint_types, out)
+    return out
 
 
 def joint_motion(robot: Robot, q_current: np.ndarray) -> Criterion:

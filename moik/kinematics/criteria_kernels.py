@@ -4,7 +4,8 @@ Each works on a batch of joint vectors ``Q (n, dof)`` and writes into ``out``:
 the joint motion to the nearest 2 pi copy of each revolute joint, Yoshikawa's
 manipulability from the geometric Jacobian, and the normalised margin to the
 joint limits. :func:`nearest_copies_into` is shared with the solver's session
-(the same configuration moved next to a reference).
+(the same configuration moved next to a reference), :func:`wrapped_distance` (the
+one 2 pi joint distance) with the solver's start loop and the experiments' branches.
 """
 
 from __future__ import annotations
@@ -31,6 +32,26 @@ def nearest_copy(q, q_ref, lo, hi):
         if lo <= c <= hi and abs(c - q_ref) < abs(best - q_ref):
             best = c
     return best
+
+
+@jit
+def wrapped_distance(a, b, types):
+    """Joint-space distance over the joints of ``types``, revolute differences wrapped to
+    ``[-pi, pi)`` (prismatic ones as they are): the one 2 pi distance."""
+    s = 0.0
+    for j in range(types.shape[0]):
+        d = b[j] - a[j]
+        if types[j] != PRISMATIC:
+            d = (d + np.pi) % (2.0 * np.pi) - np.pi
+        s += d * d
+    return np.sqrt(s)
+
+
+@jit
+def distances_into(Q, q, types, out):
+    """``out[i]``: :func:`wrapped_distance` from ``q`` to row ``i`` of ``Q``."""
+    for i in range(Q.shape[0]):
+        out[i] = wrapped_distance(q, Q[i], types)
 
 
 @jit

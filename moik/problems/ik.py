@@ -31,7 +31,14 @@ from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetEr
 from moik.kinematics.rotation_metrics import metric_code, metric_target, rotation_error
 from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.chain import Robot
-from moik.robots.dh import BLOCK, all_finite, block_workspace, chain_block
+from moik.robots.dh import (
+    BLOCK,
+    all_finite,
+    block_position,
+    block_rotation,
+    block_workspace,
+    chain_block,
+)
 
 POSITION, WEIGHTED_POSE, BI_OBJECTIVE = 0, 1, 2  # what ik_objectives computes
 
@@ -59,7 +66,8 @@ def ik_objectives(F, types, Q, mode, p_t, code, R_t, angles_t, weights, q_start,
         chain_block(F, types, Q, start, m, W)
         for b in range(m):
             i = start + b
-            dx, dy, dz = W[9, b] - p_t[0], W[10, b] - p_t[1], W[11, b] - p_t[2]
+            x, y, z = block_position(W, b)
+            dx, dy, dz = x - p_t[0], y - p_t[1], z - p_t[2]
             pos = math.sqrt(dx * dx + dy * dy + dz * dz)
             disp = 0.0
             if weights[2] != 0.0:
@@ -71,9 +79,7 @@ def ik_objectives(F, types, Q, mode, p_t, code, R_t, angles_t, weights, q_start,
             if mode == POSITION:
                 out[i, 0] = pos + disp
                 continue
-            rot = (W[0, b], W[1, b], W[2, b], W[3, b], W[4, b], W[5, b],
-                   W[6, b], W[7, b], W[8, b])
-            ori = rotation_error(code, rot, R_t, angles_t)
+            ori = rotation_error(code, block_rotation(W, b), R_t, angles_t)
             if mode == WEIGHTED_POSE:
                 out[i, 0] = weights[0] * pos + weights[1] * ori + disp
             else:

@@ -173,7 +173,7 @@ def outside_limits(names: tuple[str, ...], lower: np.ndarray, upper: np.ndarray,
     E.g. ``"joint 2 (j2) = 1.9 above its upper limit 1.5708"``.
     """
     parts = []
-    for j in np.flatnonzero((q < lower) | (q > upper)):
+    for j in map(int, np.flatnonzero((q < lower) | (q > upper))):
         side, bound = ("below its lower", lower[j]) if q[j] < lower[j] else ("above its upper",
                                                                               upper[j])
         parts.append(f"{_joint(names, j)} = {q[j]:.6g} {side} limit {bound:.6g}")

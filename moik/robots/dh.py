@@ -127,6 +127,18 @@ def block_state(W, b):
 
 
 @jit(inline=True)
+def block_position(W, b):
+    """Position ``(x, y, z)`` of row ``b`` of a block workspace."""
+    return W[9, b], W[10, b], W[11, b]
+
+
+@jit(inline=True)
+def block_rotation(W, b):
+    """Rotation of row ``b`` of a block workspace, row-major 9-tuple."""
+    return (W[0, b], W[1, b], W[2, b], W[3, b], W[4, b], W[5, b], W[6, b], W[7, b], W[8, b])
+
+
+@jit(inline=True)
 def _set_block_state(W, b, t):
     W[0, b], W[1, b], W[2, b], W[3, b], W[4, b], W[5, b] = t[0], t[1], t[2], t[3], t[4], t[5]
     W[6, b], W[7, b], W[8, b], W[9, b], W[10, b], W[11, b] = t[6], t[7], t[8], t[9], t[10], t[11]

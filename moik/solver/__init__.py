@@ -3,8 +3,9 @@
 
 Modules: :mod:`~moik.solver.solve_ik` (the stages and the verdict),
 :mod:`~moik.solver.session` (per-solve bookkeeping, the honest FK re-check),
-:mod:`~moik.solver.lm` and :mod:`~moik.solver.multistart` (compiled multi-start
-Levenberg-Marquardt),
+:mod:`~moik.solver.context` (the constants of one solve, the LM scratch),
+:mod:`~moik.solver.lm` and :mod:`~moik.solver.starts` (compiled multi-start
+Levenberg-Marquardt, the one start loop),
 :mod:`~moik.solver.front` (reach bound, polished error fronts),
 :mod:`~moik.solver.batch` (many targets in one call),
 :mod:`~moik.solver.polish` (bounded least-squares refinement) and

@@ -5,8 +5,8 @@ Target ``i`` is solved with its own seed, ``SeedSequence(seed).spawn(n)[i]``
 and ``i`` only, never on the other targets of the batch: ``solve_ik_batch(robot,
 T, seed=s).q[i]`` equals ``solve_ik(robot, T[i], seed=child_i).q`` bit for bit
 (tested). The first stage of every target runs in one compiled loop
-(:func:`lm_batch`: the same Levenberg-Marquardt starts ``solve_ik`` makes, in the
-same order); a target it leaves unsolved goes through the whole of
+(:func:`~moik.solver.starts.run_batch`: the same Levenberg-Marquardt starts
+``solve_ik`` makes, in the same order); a target it leaves unsolved goes through the whole of
 :func:`~moik.solver.solve_ik.solve_ik` (search fallback, front, verdict).
 """
 
@@ -17,23 +17,23 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from moik._jit import jit, kernel_array
+from moik._jit import kernel_array
 from moik._validate import finite_array
 from moik.exceptions import ParameterError, ShapeError, TargetError
 from moik.kinematics.orientation import check_rotation
 from moik.problems.targets import Target
 from moik.robots.catalog import as_robot
-from moik.solver.lm import STALL_RATIO, copy_into
-from moik.solver.multistart import lm_multistart
+from moik.solver.context import ik_context
 from moik.solver.options import search_options, seed_sequence, starts_sequence
 from moik.solver.session import (
     LM_ITERATIONS,
     STOP_FRACTION,
-    geodesic_errors,
     nearest_copies,
+    pose_errors,
     tolerances,
 )
 from moik.solver.solve_ik import FIRST_STARTS, solve_ik
+from moik.solver.starts import PATIENT, run_batch
 
 
 @dataclass(frozen=True)
@@ -87,32 +87,6 @@ def _targets(targets) -> tuple[np.ndarray, np.ndarray | None]:
     return positions, rotations
 
 
-@jit
-def lm_batch(F, types, lo, hi, Q0, Rts, pts, has_rot, inv_len, stop_pos, stop_ori, max_iter,
-             q_current, use_current, max_evals, distinct, out_Q, solved, n_evals):
-    """The first stage of every target: ``q_current[i]`` (patient, if used) then the rows
-    of ``Q0[i]`` in turn, as ``solve_ik`` makes them; ``n_evals`` accumulates."""
-    n, _, dof = Q0.shape
-    best = np.empty(dof)
-    one = np.empty((1, dof))
-    for i in range(n):
-        if use_current:
-            k, ne, _, _ = lm_multistart(F, types, lo, hi, q_current[i:i + 1], Rts[i], pts[i],
-                                        has_rot, inv_len, stop_pos, stop_ori, max_iter, 0,
-                                        distinct, 1.0, max(max_evals - n_evals[i], 1), one,
-                                        best)
-            n_evals[i] += ne
-            solved[i] = k > 0
-        if not solved[i] and n_evals[i] < max_evals:  # no start begins past the budget
-            k, ne, _, _ = lm_multistart(F, types, lo, hi, Q0[i], Rts[i], pts[i], has_rot,
-                                        inv_len, stop_pos, stop_ori, max_iter, 0, distinct,
-                                        STALL_RATIO, max(max_evals - n_evals[i], 1), one, best)
-            n_evals[i] += ne
-            solved[i] = k > 0
-        if solved[i]:
-            copy_into(one[0], out_Q[i])
-
-
 def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, **options
                    ) -> IKBatchResult:
     """Solve IK for a batch of targets; each answer independent of the others.
@@ -151,27 +125,8 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, **option
     out_Q, solved = np.empty((n, robot.dof)), np.zeros(n, dtype=np.bool_)
     n_evals = np.zeros(n, dtype=np.int64)
     if opts.polish and (qc is not None or opts.starts):
-        chain = robot.kinematic_chain
-        args = (chain.origins, chain.joint_types, robot.lower, robot.upper)
-        Rts = kernel_array(np.tile(np.eye(3), (n, 1, 1)) if rotations is None else rotations)
-        pts = kernel_array(positions)
-        stops = (1.0 / robot.reach, STOP_FRACTION * tol_pos, STOP_FRACTION * tol_ori,
-                 LM_ITERATIONS)
-        current = kernel_array(qc if qc is not None else np.zeros((n, robot.dof)))
-        rngs = [np.random.Generator(np.random.PCG64(starts_sequence(s)))  # as solve_ik's
-                for s in seeds]
-        first = min(opts.starts, FIRST_STARTS)  # then the rest, for the unsolved only
-        Q0 = np.stack([robot.random_q(first, rng=g) for g in rngs])
-        lm_batch(*args, kernel_array(Q0), Rts, pts, rotations is not None, *stops, current,
-                 qc is not None, opts.max_evals, opts.distinct, out_Q, solved, n_evals)
-        rest = np.flatnonzero(~solved)
-        if opts.starts > first and len(rest):
-            Q1 = np.stack([robot.random_q(opts.starts - first, rng=rngs[i]) for i in rest])
-            Q_r, ok_r, n_r = out_Q[rest], solved[rest], n_evals[rest]
-            lm_batch(*args, kernel_array(Q1), kernel_array(Rts[rest]), kernel_array(pts[rest]),
-                     rotations is not None, *stops, current[rest], False, opts.max_evals,
-                     opts.distinct, Q_r, ok_r, n_r)
-            out_Q[rest], solved[rest], n_evals[rest] = Q_r, ok_r, n_r
+        _first_stage(robot, positions, rotations, qc, opts, (tol_pos, tol_ori), seeds,
+                     out_Q, solved, n_evals)
     if qc is not None:
         out_Q[solved] = nearest_copies(robot, out_Q[solved], qc[solved])
     status = np.full(n, "not-converged", dtype=object)
@@ -180,8 +135,8 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, **option
                  for i in range(n)]
     if solved.any():  # the honest re-check, as solve_ik does it
         k = np.flatnonzero(solved)
-        p_k, o_k = _errors(robot, positions[k], None if rotations is None else rotations[k],
-                           out_Q[k])
+        p_k, o_k = pose_errors(robot, (positions[k], None if rotations is None
+                                       else rotations[k]), out_Q[k])
         ok = (p_k <= tol_pos) & (o_k <= tol_ori)
         pos[k], ori[k], solved[k] = p_k, o_k, ok
         status[k[ok]] = "solved"
@@ -196,13 +151,32 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, **option
                          time=time.perf_counter() - t0)
 
 
-def _errors(robot, positions: np.ndarray, rotations: np.ndarray | None, Q: np.ndarray
-            ) -> tuple[np.ndarray, np.ndarray]:
-    """Per-row :func:`~moik.solver.session.pose_errors` (each target its own)."""
-    R, p = robot.fk_parts(Q)
-    pos = np.linalg.norm(p - positions, axis=1)
-    if rotations is None:
-        return pos, np.zeros(len(Q))
-    ori = np.empty(len(Q))
-    geodesic_errors(R, kernel_array(rotations), ori)
-    return pos, ori
+def _first_stage(robot, positions, rotations, qc, opts, tol, seeds, out_Q, solved, n_evals):
+    """The Levenberg-Marquardt starts ``solve_ik`` makes, for every target in compiled loops
+    (:func:`~moik.solver.starts.run_batch`): ``q_current[i]`` (patient), then the first
+    :data:`~moik.solver.solve_ik.FIRST_STARTS` random starts, then the rest for the unsolved."""
+    n, dof = len(positions), robot.dof
+    first = Target(positions[0], None if rotations is None else rotations[0])
+    ctx = ik_context(robot, first, stop=(STOP_FRACTION * tol[0], STOP_FRACTION * tol[1]),
+                     distinct=opts.distinct, max_iter=LM_ITERATIONS)
+    targets = (kernel_array(np.tile(np.eye(3), (n, 1, 1)) if rotations is None else rotations),
+               kernel_array(positions))
+    found = np.full((n, 1, dof + 2), np.nan)
+    if qc is not None:
+        current = np.array(qc[:, None], dtype=np.float64, copy=True)  # run_batch moves it
+        run_batch(ctx, current, targets, (PATIENT, opts.max_evals), found, n_evals)
+    rngs = [np.random.Generator(np.random.PCG64(starts_sequence(s)))  # as solve_ik's
+            for s in seeds]
+    first_n = min(opts.starts, FIRST_STARTS)  # then the rest, for the unsolved only
+    run_batch(ctx, kernel_array(np.stack([robot.random_q(first_n, rng=g) for g in rngs])),
+              targets, (0, opts.max_evals), found, n_evals)
+    rest = np.flatnonzero(np.isnan(found[:, 0, 0]))
+    if opts.starts > first_n and len(rest):
+        Q1 = np.stack([robot.random_q(opts.starts - first_n, rng=rngs[i]) for i in rest])
+        found_r, n_r = found[rest], n_evals[rest]
+        run_batch(ctx, kernel_array(Q1), (kernel_array(targets[0][rest]),
+                                          kernel_array(targets[1][rest])),
+                  (0, opts.max_evals), found_r, n_r)
+        found[rest], n_evals[rest] = found_r, n_r
+    solved[:] = ~np.isnan(found[:, 0, 0])
+    out_Q[solved] = found[solved, 0, :dof]

@@ -9,7 +9,7 @@ position error is at least the excess.
 
 The (position error, orientation error) front of an unreachable pose is made of
 weighted-sum scalarisations solved by the compiled Levenberg-Marquardt
-(:func:`moik.solver.multistart.front`), from ``weights`` running from 1 (position only:
+(:func:`moik.solver.starts.front`), from ``weights`` running from 1 (position only:
 the front's end with the smallest position error) to 0 (orientation only); when a
 metaheuristic front exists too (the search fallback), its members seed the
 scalarisations and both are merged. Only mutually non-dominated members are kept.
@@ -25,7 +25,7 @@ from moik.algorithms.archive.fronts import nondominated_mask
 from moik.problems.ik import BiObjectiveIK
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
-from moik.solver.multistart import front as lm_front
+from moik.solver.starts import front as lm_front
 
 FRONT_WEIGHTS = 21  # scalarisations from position-only (w = 1) to orientation-only (w = 0)
 FRONT_STARTS = 4  # random starts per scalarisation (besides the previous weight's answer)
@@ -42,7 +42,7 @@ def reach_excess(robot: Robot, target: Target) -> float:
 
 
 def polished_front(robot: Robot, target: Target, orientation: str, starts: np.ndarray,
-                   front_q: np.ndarray | None = None
+                   front_q: np.ndarray | None = None, budget: int = 2**62
                    ) -> tuple[np.ndarray, np.ndarray, int]:
     """The non-dominated (position, orientation) front of a pose, and its joint vectors.
 
@@ -52,6 +52,8 @@ def polished_front(robot: Robot, target: Target, orientation: str, starts: np.nd
         starts: Starts of every scalarisation ``(k, dof)``.
         front_q: Joint vectors of a front found otherwise (merged, and its two
             ends added to the starts).
+        budget: No scalarisation start begins once this many FK evaluations are spent
+            (the weights left keep the previous weight's answer).
 
     Returns:
         ``(F, Q, n_eval)``: ``F (m, 2)`` sorted by position error, ``Q (m, dof)``.
@@ -61,7 +63,8 @@ def polished_front(robot: Robot, target: Target, orientation: str, starts: np.nd
     if front_q is not None and len(front_q):
         F0 = problem.evaluate(front_q, return_values_of=["F"])
         seeds.append(front_q[[int(np.argmin(F0[:, 0])), int(np.argmin(F0[:, 1]))]])
-    Q, n_eval = lm_front(robot, target, np.vstack(seeds), np.linspace(1.0, 0.0, FRONT_WEIGHTS))
+    Q, n_eval = lm_front(robot, target, np.vstack(seeds), np.linspace(1.0, 0.0, FRONT_WEIGHTS),
+                         budget=budget)
     if front_q is not None and len(front_q):
         Q = np.vstack([Q, front_q])
     Q = np.clip(Q, robot.lower, robot.upper)

@@ -30,8 +30,10 @@ numpy draws: the kernels draw nothing).
 
 The same kernel computes the weighted-sum scalarisations
 ``w |p - p_t|^2 / L^2 + (1 - w) |log(R R_t^T)|^2`` of an unreachable pose's
-(position error, orientation error) front. The loops over starts and weights,
-and their Python entries, are in :mod:`moik.solver.multistart`.
+(position error, orientation error) front. Every kernel reads the solve's constants
+from an :class:`~moik.solver.context.IKContext` and writes into an
+:class:`~moik.solver.context.LMWorkspace`; the loops over starts and weights, and
+their Python entries, are in :mod:`moik.solver.starts`.
 """
 
 from __future__ import annotations
@@ -53,20 +55,23 @@ FRONT_STALL_RATIO = 0.999  # a front scalarisation runs until it stops improving
 
 
 @jit
-def residual(F, types, q, Rt, pt, has_rot, s_pos, s_rot, T, J, M, r, Jr):
+def residual(ctx, ws, q, scale, r, Jr):
     """Scaled residual ``r (6,)`` and its Jacobian ``Jr (6, dof)`` at ``q``; returns ``0.5 |r|^2``.
 
-    Position rows are scaled by ``s_pos`` (``1 / L``, times ``sqrt(w)`` on a front),
-    rotation rows by ``s_rot``; without a target rotation they are zero.
+    Position rows are scaled by ``scale[0]`` (``1 / L``, times ``sqrt(w)`` on a front),
+    rotation rows by ``scale[1]``; without a target rotation they are zero. ``ws.T``,
+    ``ws.J`` and ``ws.M`` are scratch.
     """
-    pose_jacobian_into(F, types, q, T, J)
+    s_pos, s_rot = scale
+    T, J, M, pt, Rt = ws.T, ws.J, ws.M, ctx.position, ctx.rotation
+    pose_jacobian_into(ctx.origins, ctx.joint_types, q, T, J)
     dof = q.shape[0]
     for a in range(3):
         r[a] = (T[a, 3] - pt[a]) * s_pos
         for j in range(dof):
             Jr[a, j] = J[a, j] * s_pos
     cost = r[0] * r[0] + r[1] * r[1] + r[2] * r[2]
-    if not has_rot:
+    if not ctx.has_rotation:
         for a in range(3, 6):
             r[a] = 0.0
             for j in range(dof):
@@ -145,9 +150,12 @@ def into_limits(v, kind, lo, hi):
 
 
 @jit
-def damped_step(JtJ, g, lam, q, lo, hi, types, A, gb, blocked, step):
-    """The damped Gauss-Newton step, joints at a limit that would leave it held fixed
-    (a revolute joint whose range spans a full turn is never held: it wraps round)."""
+def damped_step(ctx, ws, lam, q):
+    """The damped Gauss-Newton step ``ws.step`` from ``ws.JtJ`` and ``ws.g``, joints at a
+    limit that would leave it held fixed (a revolute joint whose range spans a full turn
+    is never held: it wraps round). Returns False when the system is not solvable."""
+    JtJ, g, A, gb, blocked, step = ws.JtJ, ws.g, ws.A, ws.gb, ws.blocked, ws.step
+    lo, hi, types = ctx.lower, ctx.upper, ctx.joint_types
     dof = q.shape[0]
     mean_diag = 0.0
     for i in range(dof):
@@ -175,24 +183,25 @@ def damped_step(JtJ, g, lam, q, lo, hi, types, A, gb, blocked, step):
 
 
 @jit
-def lm_start(F, types, lo, hi, q, Rt, pt, has_rot, s_pos, s_rot, stop_pos, stop_ori,
-             max_iter, stall_ratio):
+def lm_start(ctx, ws, q, scale, stall_ratio):
     """Levenberg-Marquardt from ``q`` (clipped into the limits; updated in place).
 
-    Converged means position error <= ``stop_pos`` (robot unit) and orientation
-    error <= ``stop_ori`` (rad); a negative ``stop_pos`` never converges (front
-    scalarisations). Returns ``(converged, cost, n_eval)``.
+    Converged means position error <= ``ctx.stop_position`` (robot unit) and
+    orientation error <= ``ctx.stop_orientation`` (rad); a negative
+    ``stop_position`` never converges (front scalarisations). ``scale``: the
+    residual's ``(position, rotation)`` row scales (:func:`residual`); ``stall_ratio``:
+    the cost must fall below this fraction every :data:`STALL_WINDOW` iterations
+    (1: never abandoned for slow progress). Returns ``(converged, cost, n_eval)``.
     """
     dof = q.shape[0]
-    T, M = np.empty((4, 4)), np.empty((3, 3))
-    J, Jr, Jrt = np.empty((6, dof)), np.empty((6, dof)), np.empty((6, dof))
-    r, rt = np.empty(6), np.empty(6)
-    JtJ, A = np.empty((dof, dof)), np.empty((dof, dof))
-    g, gb, step, trial = np.empty(dof), np.empty(dof), np.empty(dof), np.empty(dof)
-    blocked = np.zeros(dof, dtype=np.bool_)
+    lo, hi, types = ctx.lower, ctx.upper, ctx.joint_types
+    r, Jr, rt, Jrt, trial = ws.r, ws.Jr, ws.rt, ws.Jrt, ws.trial
+    JtJ, g, step = ws.JtJ, ws.g, ws.step
+    stop_pos, stop_ori, max_iter = ctx.stop_position, ctx.stop_orientation, ctx.max_iter
+    s_pos, s_rot = scale
     for j in range(dof):
         q[j] = min(max(q[j], lo[j]), hi[j])
-    cost = residual(F, types, q, Rt, pt, has_rot, s_pos, s_rot, T, J, M, r, Jr)
+    cost = residual(ctx, ws, q, scale, r, Jr)
     n_eval = 1
     if not np.isfinite(cost):
         return False, cost, n_eval
@@ -225,11 +234,10 @@ def lm_start(F, types, lo, hi, q, Rt, pt, has_rot, s_pos, s_rot, stop_pos, stop_
                 JtJ[j, i] = s
         accepted = False
         while lam < LAMBDA_MAX:
-            if damped_step(JtJ, g, lam, q, lo, hi, types, A, gb, blocked, step):
+            if damped_step(ctx, ws, lam, q):
                 for j in range(dof):
                     trial[j] = into_limits(q[j] + step[j], types[j], lo[j], hi[j])
-                cost_t = residual(F, types, trial, Rt, pt, has_rot, s_pos, s_rot, T, J, M, rt,
-                                  Jrt)
+                cost_t = residual(ctx, ws, trial, scale, rt, Jrt)
                 n_eval += 1
                 if cost_t < cost:
                     copy_into(trial, q)

@@ -8,10 +8,8 @@ before the search, whose options would otherwise never be looked at).
 
 from __future__ import annotations
 
-import functools
 import importlib
-import threading
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from typing import Any
 
 import numpy as np
@@ -20,13 +18,6 @@ from moik._validate import choice, flag, integer, keywords, optional_integer, po
 from moik._validate import seed as check_seed
 from moik.exceptions import ParameterError
 from moik.kinematics.orientation import available_metrics
-
-# solve_ik's search options and their defaults (solve_ik's signature repeats them; a test
-# keeps the two equal)
-SEARCH_DEFAULTS = {"method": "eosma", "orientation": "geodesic", "polish": True,
-                   "n_solutions": 1, "max_evals": 50_000, "starts": 500, "pop_size": None,
-                   "generations": 15, "candidates_per_round": 3, "distinct": 0.1,
-                   "patience": 30, "front_method": "moeosma", "front_evals": 10_000}
 
 DEFAULT_POP_SIZES = (20, 40)  # search population: one solution wanted, several
 
@@ -39,10 +30,12 @@ _COUNTS = (("n_solutions", 1), ("max_evals", 1), ("starts", 0), ("generations", 
 class SearchOptions:
     """Validated options of one :func:`~moik.solver.solve_ik` call (see its arguments).
 
-    Integers refuse bools and floats (``2.0``); ``orientation`` is an
-    orientation-metric name (case-insensitive, stored lower-case); ``pop_size``
-    ``None`` becomes 20, or 40 when several solutions are wanted, and must suit
-    ``method`` (EOSMA needs at least 3).
+    The field defaults are solve_ik's defaults, and the only place they are written:
+    ``solve_ik``'s signature, ``solve_ik_batch`` and the CLI read them from
+    :data:`SEARCH_DEFAULTS` (``{field: default}``). Integers refuse bools and floats
+    (``2.0``); ``orientation`` is an orientation-metric name (case-insensitive, stored
+    lower-case); ``pop_size`` ``None`` becomes 20, or 40 when several solutions are
+    wanted, and must suit ``method`` (EOSMA needs at least 3).
 
     Raises:
         ParameterError: A value out of its range or of the wrong kind, or an
@@ -51,19 +44,19 @@ class SearchOptions:
             listing the valid ones.
     """
 
-    method: str
-    orientation: str
-    polish: bool
-    n_solutions: int
-    max_evals: int
-    starts: int
-    pop_size: int | None
-    generations: int
-    candidates_per_round: int
-    distinct: float
-    patience: int
-    front_method: str
-    front_evals: int
+    method: str = "eosma"
+    orientation: str = "geodesic"
+    polish: bool = True
+    n_solutions: int = 1
+    max_evals: int = 50_000
+    starts: int = 500
+    pop_size: int | None = None
+    generations: int = 15
+    candidates_per_round: int = 3
+    distinct: float = 0.1
+    patience: int = 30
+    front_method: str = "moeosma"
+    front_evals: int = 10_000
 
     def __post_init__(self) -> None:
         for name, low in _COUNTS:
@@ -76,10 +69,22 @@ class SearchOptions:
         object.__setattr__(self, "polish", flag("polish", self.polish))
         object.__setattr__(self, "orientation",
                            choice("orientation metric", self.orientation, available_metrics()))
-        if isinstance(self.method, str) and isinstance(self.front_method, str):
-            _check_algorithms(self.method, self.front_method, pop_size)  # cached: a hot path
-        else:
-            _check_algorithms.__wrapped__(self.method, self.front_method, pop_size)
+        _check_algorithms(self.method, self.front_method, pop_size)
+
+    @classmethod
+    def of(cls, **values) -> SearchOptions:
+        """``SearchOptions(**values)``; when every value is its field's default object
+        (``solve_ik``'s signature passes them through: an identity test, so ``True`` for
+        ``1`` is still validated), the one validated :data:`DEFAULT_OPTIONS` instead
+        (solve_ik's hot path: validating costs about 30 us, a first-stage solve about
+        100 us)."""
+        if all(v is SEARCH_DEFAULTS[k] for k, v in values.items()):
+            return DEFAULT_OPTIONS
+        return cls(**values)
+
+
+SEARCH_DEFAULTS: dict[str, Any] = {f.name: f.default for f in fields(SearchOptions)}
+"""solve_ik's search options and their defaults, read from :class:`SearchOptions`."""
 
 
 def algorithm_registry() -> Any:
@@ -92,15 +97,14 @@ def algorithm_registry() -> Any:
     return importlib.import_module("moik.algorithms.registry")
 
 
-@functools.lru_cache(maxsize=64)
 def _check_algorithms(method: str, front_method: str, pop_size: int) -> None:
     """The kinds of ``method`` / ``front_method`` and ``method``'s own limits on ``pop_size``.
 
     The defaults (``"eosma"``, ``"moeosma"`` with the default population sizes) are
-    known to pass (a test checks them against the registry) and are not looked up.
+    known to pass (a test checks them against the registry) and are not looked up:
+    the registry loads in about 0.2 s, and the first stage solves most poses without it.
     """
-    if (method, front_method) == (SEARCH_DEFAULTS["method"], SEARCH_DEFAULTS["front_method"]) \
-            and pop_size in DEFAULT_POP_SIZES:
+    if (method, front_method) == ("eosma", "moeosma") and pop_size in DEFAULT_POP_SIZES:
         return
     registry = algorithm_registry()
     is_multi_objective = registry.is_multi_objective
@@ -112,26 +116,6 @@ def _check_algorithms(method: str, front_method: str, pop_size: int) -> None:
     registry.get_algorithm(method, pop_size=pop_size)
 
 
-def validated_options(**values) -> SearchOptions:
-    """:class:`SearchOptions` of ``values``, cached (solve_ik's hot path validates the same
-    options over and over). The key holds each value's type: ``True`` and ``1`` (or ``2.0``
-    and ``2``) are equal and hash alike, but must not share a validation."""
-    given = tuple(values.values())
-    try:
-        return _OPTIONS[(tuple(values), given, tuple(map(type, given)))]
-    except KeyError:
-        options = SearchOptions(**values)
-        if len(_OPTIONS) >= 256:
-            _OPTIONS.clear()
-        _OPTIONS[(tuple(values), given, tuple(map(type, given)))] = options
-        return options
-    except TypeError:  # an unhashable value: validate uncached (it raises)
-        return SearchOptions(**values)
-
-
-_OPTIONS: dict[tuple, SearchOptions] = {}  # validated options by (names, values, types)
-
-
 def search_options(owner: str, options: dict) -> SearchOptions:
     """:class:`SearchOptions` from keyword ``options`` over :data:`SEARCH_DEFAULTS`.
 
@@ -139,7 +123,7 @@ def search_options(owner: str, options: dict) -> SearchOptions:
         ParameterError: An unknown keyword (listing the accepted ones) or a bad value.
     """
     keywords(owner, options, SEARCH_DEFAULTS)
-    return validated_options(**{**SEARCH_DEFAULTS, **options})
+    return SearchOptions.of(**{**SEARCH_DEFAULTS, **options})
 
 
 def seed_sequence(seed) -> np.random.SeedSequence:
@@ -164,26 +148,41 @@ def starts_sequence(seed: int | np.random.SeedSequence) -> np.random.SeedSequenc
     return np.random.SeedSequence(seed, spawn_key=(STARTS_KEY,))
 
 
-_PCG64_STATES: dict[int, Any] = {}  # PCG64(SeedSequence(seed)).state of integer seeds seen
+_PCG64_STATES: dict[int, Any] = {}  # PCG64(starts_sequence(seed)).state of seeds seen
 _MAX_STATES = 4096
-_LOCAL = threading.local()
+_FREE: list[np.random.Generator] = []  # generators no solve holds
 
 
-def start_generator(seed: int) -> np.random.Generator:
-    """``Generator(PCG64(starts_sequence(seed)))`` for an integer ``seed`` >= 0, bit for bit.
+class start_generator:  # noqa: N801 (used as a function: ``with start_generator(seed)``)
+    """``Generator(PCG64(starts_sequence(seed)))`` for an integer ``seed`` >= 0, bit for
+    bit, held for the ``with`` block.
 
-    Seeding a PCG64 through a SeedSequence costs more than a whole first-stage solve
-    takes, so the initial state of each seed is kept (up to ``_MAX_STATES`` seeds) and
-    loaded into one generator per thread. The generator is reset by the next call on
-    the same thread: use it within one solve only.
+    Seeding a PCG64 through a SeedSequence costs about 35 us, a third of a first-stage
+    solve; loading a kept state into an existing generator about 1.5 us. So the initial
+    state of each seed is kept (up to ``_MAX_STATES`` seeds), and generators are lent from
+    a free list: a solve that re-enters ``solve_ik`` (or another thread) gets a generator
+    of its own, never one another block still holds.
     """
-    state = _PCG64_STATES.get(seed)
-    if state is None:
-        if len(_PCG64_STATES) >= _MAX_STATES:
-            _PCG64_STATES.clear()
-        state = _PCG64_STATES[seed] = np.random.PCG64(starts_sequence(seed)).state
-    generator = getattr(_LOCAL, "generator", None)
-    if generator is None:
-        generator = _LOCAL.generator = np.random.Generator(np.random.PCG64(0))
-    generator.bit_generator.state = state
-    return generator
+
+    def __init__(self, seed: int):
+        state = _PCG64_STATES.get(seed)
+        if state is None:
+            if len(_PCG64_STATES) >= _MAX_STATES:
+                _PCG64_STATES.clear()
+            state = _PCG64_STATES[seed] = np.random.PCG64(starts_sequence(seed)).state
+        self._state = state
+
+    def __enter__(self) -> np.random.Generator:
+        try:
+            self._generator = _FREE.pop()
+        except IndexError:
+            self._generator = np.random.Generator(np.random.PCG64(0))
+        self._generator.bit_generator.state = self._state
+        return self._generator
+
+    def __exit__(self, *exc) -> None:
+        _FREE.append(self._generator)
+
+
+DEFAULT_OPTIONS = SearchOptions()
+"""The options of a call that changes none (validated once)."""

@@ -17,9 +17,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik.kinematics.criteria import joint_distance
 from moik.kinematics.jacobian import parts_and_jacobian
 from moik.solver.pareto_search import Projector
-from moik.solver.session import joint_distance
 
 STEP_FACTORS = np.array([2.0, 1.0, 0.5, 0.25])  # trial step lengths, times the current one
 FD_STEP = 1e-6  # central-difference step (rad) of the directional derivatives

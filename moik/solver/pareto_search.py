@@ -1,7 +1,7 @@
 """The search machinery of :func:`moik.solver.pareto.solve_ik_pareto`.
 
 - :class:`Projector`: Levenberg-Marquardt from any joint vector onto the
-  target's exact solutions (compiled, :func:`project_rows`), and the archive of
+  target's exact solutions (compiled, :func:`~moik.solver.starts.run_starts`), and the archive of
   the exact points found (non-dominated, distinct rows) in minimisation form.
 - :func:`mo_search`: a registered multi-objective algorithm on the projected
   criteria (:class:`ProjectedCriteria`, unconstrained: a candidate whose
@@ -19,33 +19,19 @@ from pymoo.core.problem import Problem
 from pymoo.core.repair import Repair
 from pymoo.core.sampling import Sampling
 
-from moik._jit import jit, kernel_array
 from moik.algorithms import get_algorithm
 from moik.algorithms.archive.fronts import first_unique_mask, nondominated_mask
 from moik.algorithms.registry import accepted_parameters
 from moik.problems.pareto_ik import ParetoIK
-from moik.solver.lm import STALL_RATIO, lm_start
-from moik.solver.multistart import multistart
+from moik.problems.targets import Target
+from moik.solver.context import ik_context
 from moik.solver.session import STOP_FRACTION, nearest_copies
+from moik.solver.starts import PATIENT, PROJECT, UNLIMITED, multistart, run_starts
 
 LM_ITERATIONS = 30  # per projection (the first stage of solve_ik uses as many)
 BRANCH_STARTS = 256  # random starts that enumerate a non-redundant arm's branches
 MAX_BRANCHES = 16  # a general 6R arm has at most 16 solutions per pose
 BRANCH_DISTINCT = 0.1  # joint-space distance (modulo 2 pi) between distinct branches
-
-
-@jit
-def project_rows(F, types, lo, hi, X, Rt, pt, has_rot, inv_len, stop_pos, stop_ori, max_iter,
-                 stall_ratio, ok, cost):
-    """LM from every row of ``X`` (in place): ``ok[i]`` whether it converged, ``cost[i]``
-    its final ``0.5 |r|^2``. Returns the FK evaluations."""
-    n_eval = 0
-    for i in range(X.shape[0]):
-        conv, c, ne = lm_start(F, types, lo, hi, X[i], Rt, pt, has_rot, inv_len, 1.0, stop_pos,
-                               stop_ori, max_iter, stall_ratio)
-        ok[i], cost[i] = conv, c
-        n_eval += ne
-    return n_eval
 
 
 class Projector:
@@ -64,10 +50,7 @@ class Projector:
 
     def __init__(self, problem: ParetoIK):
         self.problem, self.robot = problem, problem.robot
-        target = problem.target
-        self._has_rot = target.rotation is not None
-        self._Rt = kernel_array(target.rotation if self._has_rot else np.eye(3))
-        self._pt = kernel_array(target.position)
+        self._has_rot = problem.target.rotation is not None
         self._stops = (STOP_FRACTION * problem.tol_position,
                        STOP_FRACTION * problem.tol_orientation)
         self.n_eval = self.n_exact = 0
@@ -93,27 +76,27 @@ class Projector:
         """``(P, ok, cost)``: the LM ends from the rows of ``X`` (within the limits, shifted
         to the 2 pi copies nearest ``q_current``), which converged, their residual costs.
         ``patient``: no start is abandoned for slow progress."""
-        robot, chain = self.robot, self.robot.kinematic_chain
-        P = np.array(X, dtype=np.float64, order="C", copy=True).reshape(-1, robot.dof)
-        ok, cost = np.zeros(len(P), dtype=np.bool_), np.empty(len(P))
-        self.n_eval += int(project_rows(
-            chain.origins, chain.joint_types, robot.lower, robot.upper, P, self._Rt, self._pt,
-            self._has_rot, 1.0 / robot.reach, self._stops[0], self._stops[1], LM_ITERATIONS,
-            1.0 if patient else STALL_RATIO, ok, cost))
+        ctx = ik_context(self.robot, self.problem.target, stop=self._stops,
+                         max_iter=LM_ITERATIONS)  # built per call: a Projector is deep-copied
+        P, ok, cost = self._ends(ctx, X, PROJECT | (PATIENT if patient else 0))
         return self.copies(P), ok, cost
 
     def project_via_pose(self, X, rotation: np.ndarray
                          ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """:meth:`project` after LM towards the pose (target position, ``rotation``): the
         starts of the ``orientation`` criterion (0 where that pose is reachable)."""
-        robot, chain = self.robot, self.robot.kinematic_chain
-        P = np.array(X, dtype=np.float64, order="C", copy=True).reshape(-1, robot.dof)
-        ok, cost = np.zeros(len(P), dtype=np.bool_), np.empty(len(P))
-        self.n_eval += int(project_rows(
-            chain.origins, chain.joint_types, robot.lower, robot.upper, P,
-            kernel_array(rotation), self._pt, True, 1.0 / robot.reach, self._stops[0],
-            self._stops[1], LM_ITERATIONS, STALL_RATIO, ok, cost))
-        return self.project(P)
+        ctx = ik_context(self.robot, Target(self.problem.target.position, rotation),
+                         stop=self._stops, max_iter=LM_ITERATIONS)
+        return self.project(self._ends(ctx, X, PROJECT)[0])
+
+    def _ends(self, ctx, X, flags: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """LM from every row of ``X`` on ``ctx``: the ends, which converged, their costs."""
+        P = np.array(X, dtype=np.float64, order="C", copy=True).reshape(-1, self.robot.dof)
+        ends = np.empty((len(P), 2))
+        self.n_eval += int(run_starts(ctx, P, (flags, UNLIMITED),
+                                      np.empty((0, self.robot.dof + 2)),
+                                      np.empty(self.robot.dof + 1), ends)[1])
+        return P, ends[:, 0] != 0.0, ends[:, 1]
 
     def copies(self, P: np.ndarray) -> np.ndarray:
         """``P`` with revolute joints shifted by 2 pi to the copies nearest ``q_current``

@@ -14,9 +14,8 @@ limit half way would force a jump later).
 
 from __future__ import annotations
 
-import inspect
 import time
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -24,15 +23,12 @@ from moik._validate import integer, keywords, positive
 from moik.exceptions import ParameterError, TargetError
 from moik.problems.targets import as_target, check_unit_range
 from moik.robots.chain import Robot
-from moik.solver.options import SearchOptions, seed_sequence
+from moik.solver.options import SEARCH_DEFAULTS, SearchOptions, seed_sequence
 from moik.solver.polish import polish
 from moik.solver.session import pose_errors, tolerances
 from moik.solver.solve_ik import solve_ik
 
-# solve_ik's defaults of the options solve_path passes on (one source: its signature)
-SOLVE_IK_DEFAULTS = {f.name: inspect.signature(solve_ik).parameters[f.name].default
-                     for f in fields(SearchOptions)}
-PASSED_OPTIONS = tuple(name for name in SOLVE_IK_DEFAULTS if name != "n_solutions")
+PASSED_OPTIONS = tuple(name for name in SEARCH_DEFAULTS if name != "n_solutions")
 
 
 @dataclass(frozen=True)
@@ -102,7 +98,7 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
         if key in solve_options:
             raise ParameterError(f"solve_path sets {key!r} itself; do not pass it")
     keywords("solve_path", solve_options, PASSED_OPTIONS)
-    SearchOptions(**{**SOLVE_IK_DEFAULTS, **solve_options})  # validated before any solve
+    SearchOptions(**{**SEARCH_DEFAULTS, **solve_options})  # validated before any solve
     max_step = None if max_step is None else positive("max_step", max_step)
     first_branches = integer("first_branches", first_branches, minimum=1)
     tol_pos, tol_ori = tolerances(tol, robot)

@@ -39,6 +39,10 @@ class IKResult:
         front: Pareto front ``(m, 2)`` of (position, orientation) errors (the
             ``orientation`` metric) when a pose was not solved (``None``
             otherwise), with ``front_q`` its joint vectors.
+        n_requested: The ``n_solutions`` asked for.
+        detail: Empty when the solve delivered what was asked; else why not, e.g.
+            ``"found 33 of the 50 distinct solutions requested (...)"``: a solved
+            target with fewer solutions than requested (:attr:`fewer_solutions`).
     """
 
     q: np.ndarray
@@ -51,6 +55,13 @@ class IKResult:
     solutions: np.ndarray
     front: np.ndarray | None = None
     front_q: np.ndarray | None = field(default=None, repr=False)
+    n_requested: int = 1
+    detail: str = ""
+
+    @property
+    def fewer_solutions(self) -> bool:
+        """Solved, but with fewer distinct solutions than requested."""
+        return self.success and len(self.solutions) < self.n_requested
 
 
 def ik_result(session: SolveSession, q_current, t0: float, searched_out: bool, front, front_q,
@@ -79,6 +90,14 @@ def ik_result(session: SolveSession, q_current, t0: float, searched_out: bool, f
         pos_v, ori_v = pose_errors(robot, target, q, reference=status != "solved")
         errors = (float(pos_v[0]), float(ori_v[0]))
     pos, ori = errors
+    if status != "solved" and pos <= session.tol_pos and ori <= session.tol_ori:
+        status, sols = "solved", q[None]  # an answer within tolerance is a solution
+    detail = ""
+    if status == "solved" and len(sols) < session.wanted:
+        why = ("the evaluation budget was spent" if session.n_eval >= session.max_evals
+               else "the search stopped finding new ones")
+        detail = f"found {len(sols)} of the {session.wanted} distinct solutions requested ({why})"
     return IKResult(q=q, position_error=pos, orientation_error=ori, success=status == "solved",
                     status=status, n_eval=session.n_eval, time=time.perf_counter() - t0,
-                    solutions=sols, front=front, front_q=front_q)
+                    solutions=sols, front=front, front_q=front_q, n_requested=session.wanted,
+                    detail=detail)

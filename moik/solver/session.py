@@ -18,24 +18,28 @@ from moik.kinematics.criteria_kernels import nearest_copies_into
 from moik.kinematics.rotation_metrics import geodesic_angle
 from moik.problems.targets import Target
 from moik.robots.chain import Robot, fk_reference
-from moik.solver.lm import STALL_RATIO
-from moik.solver.multistart import starts_checked
+from moik.solver.context import ik_context
 from moik.solver.polish import polish as polish_q
+from moik.solver.starts import CHECK, PATIENT, found_table, is_distinct, run_starts
 
 LM_ITERATIONS = 30  # Levenberg-Marquardt iterations per start of the first attempt
 STOP_FRACTION = 0.1  # a start stops at this fraction of the tolerances (margin for the re-check)
+MIN_TOL = 1e-14  # smallest tolerance (relative to reach; rad): ~45 eps, above FK's rounding
 
 
 def tolerances(tol, robot: Robot) -> tuple[float, float]:
     """``(position, orientation)`` tolerances from ``solve_ik``'s ``tol``.
 
     A number ``t`` means ``t * robot.reach`` and ``t`` rad; a pair is taken as is.
-    Each must be a finite number > 0 (bools refused).
+    Each must be a finite number, at least :data:`MIN_TOL` (times ``robot.reach`` for a
+    position): float64 FK computes a pose to a few ``eps * reach`` (``eps`` = 2.2e-16,
+    times the number of joints), so a smaller tolerance could not be certified by the
+    re-check, and a reachable pose would be called unreachable.
 
     Raises:
-        ParameterError: Anything else, naming what was given.
+        ParameterError: Anything else, naming what was given and the smallest accepted value.
     """
-    if type(tol) is float and 0.0 < tol < np.inf:  # the usual case, checked as below
+    if type(tol) is float and MIN_TOL <= tol < np.inf:  # the usual case, checked as below
         return tol * robot.reach, tol
     if isinstance(tol, np.ndarray) and tol.ndim == 0:
         tol = tol.item()
@@ -44,15 +48,24 @@ def tolerances(tol, robot: Robot) -> tuple[float, float]:
     except ValueError:  # ragged sequences
         shape = None
     if shape == ():
-        t = positive("tol", tol)
+        t = _at_least("tol", tol, MIN_TOL, "")
         return t * robot.reach, t
     if shape == (2,):
-        return (positive("tol[0] (position tolerance)", tol[0]),
-                positive("tol[1] (orientation tolerance)", tol[1]))
+        return (_at_least("tol[0] (position tolerance)", tol[0], MIN_TOL * robot.reach,
+                          f" ({MIN_TOL:g} x reach {robot.reach:g})"),
+                _at_least("tol[1] (orientation tolerance)", tol[1], MIN_TOL, " rad"))
     raise ParameterError(f"tol must be a number or (position, orientation), got {tol!r}")
 
 
-def pose_errors(robot: Robot, target: Target, Q: np.ndarray, *, reference: bool = False
+def _at_least(name: str, value, smallest: float, unit: str) -> float:
+    value = positive(name, value)
+    if value < smallest:
+        raise ParameterError(f"{name} must be at least {smallest:g}{unit}, the smallest "
+                             f"tolerance float64 forward kinematics can certify, got {value!r}")
+    return value
+
+
+def pose_errors(robot: Robot, target, Q: np.ndarray, *, reference: bool = False
                 ) -> tuple[np.ndarray, np.ndarray]:
     """Position error (robot unit) and geodesic orientation error (rad), recomputed by FK.
 
@@ -62,19 +75,32 @@ def pose_errors(robot: Robot, target: Target, Q: np.ndarray, *, reference: bool 
     reference to 1e-12); with ``reference=True`` the plain-numpy ``fk_reference``,
     independent of every kernel (used for the verdict on unsolved targets).
     Orientation error is 0 for position-only targets.
+
+    Args:
+        robot: The arm.
+        target: One :class:`~moik.problems.targets.Target` for every row, or
+            ``(positions (n, 3), rotations (n, 3, 3) or None)``, one target per row.
+        Q: Joint vectors ``(n, dof)`` or one ``(dof,)``.
     """
     Q = np.atleast_2d(Q)
+    if isinstance(target, Target):
+        position, rotation = target.position, None if target.rotation is None else \
+            target.rotation[None]
+    else:
+        position, rotation = target
+    if len(Q) == 0:
+        return np.zeros(0), np.zeros(0)
     if reference:
         T = fk_reference(robot, Q)
         R, p = np.ascontiguousarray(T[:, :3, :3]), T[:, :3, 3]
     else:
         R, p = robot.fk_parts(Q)
-    d = p - target.position
+    d = p - position
     pos = np.sqrt(np.einsum("ij,ij->i", d, d))
-    if target.rotation is None:
+    if rotation is None:
         return pos, np.zeros_like(pos)
     ori = np.empty(len(Q))
-    geodesic_errors(R, kernel_array(target.rotation[None]), ori)
+    geodesic_errors(R, kernel_array(rotation), ori)
     return pos, ori
 
 
@@ -85,17 +111,6 @@ def geodesic_errors(R, Rts, out):
         rot = (R[i, 0, 0], R[i, 0, 1], R[i, 0, 2], R[i, 1, 0], R[i, 1, 1], R[i, 1, 2],
                R[i, 2, 0], R[i, 2, 1], R[i, 2, 2])
         out[i] = geodesic_angle(rot, Rts[0] if Rts.shape[0] == 1 else Rts[i])
-
-
-def joint_distance(robot: Robot, q: np.ndarray, others: np.ndarray) -> np.ndarray:
-    """Joint-space distances from ``q`` to each row of ``others``.
-
-    Revolute differences are wrapped to ``[-pi, pi]``: angles 2*pi apart are
-    the same arm configuration (though not the same motion).
-    """
-    diff = np.atleast_2d(others) - q
-    wrapped = (diff + np.pi) % (2 * np.pi) - np.pi
-    return np.linalg.norm(np.where(robot.is_prismatic, diff, wrapped), axis=1)
 
 
 def nearest_copies(robot: Robot, Q: np.ndarray, q_ref: np.ndarray) -> np.ndarray:
@@ -112,11 +127,6 @@ def nearest_copies(robot: Robot, Q: np.ndarray, q_ref: np.ndarray) -> np.ndarray
     nearest_copies_into(Q, kernel_array(np.broadcast_to(q_ref, Q.shape)), robot.lower,
                         robot.upper, chain.joint_types, out)
     return out
-
-
-def is_distinct(robot: Robot, q: np.ndarray, others: list[np.ndarray], threshold: float) -> bool:
-    """Whether ``q`` is farther than ``threshold`` from every row of ``others``."""
-    return not others or bool(np.all(joint_distance(robot, q, np.array(others)) > threshold))
 
 
 class SolveSession:
@@ -140,10 +150,10 @@ class SolveSession:
         self.found: list[np.ndarray] = []
         self.found_errors: list[tuple[float, float]] = []  # (position, orientation) of each
         self.best: tuple[float, np.ndarray] | None = None  # (scaled error, q)
-        has_rot = target.rotation is not None
-        self._has_rot = has_rot
-        self._Rt = kernel_array(target.rotation if has_rot else np.eye(3))
-        self._pt = kernel_array(target.position)
+        self.ctx = ik_context(robot, target, stop=(STOP_FRACTION * tol_pos,
+                                                   STOP_FRACTION * tol_ori),
+                              tol=(tol_pos, tol_ori), distinct=distinct,
+                              max_iter=LM_ITERATIONS)
 
     def refine(self, q0: np.ndarray, do_polish: bool, max_nfev: int = 60) -> None:
         """Least-squares polish of ``q0`` (or only clipping), then :meth:`consider`."""
@@ -162,26 +172,21 @@ class SolveSession:
         """Compiled Levenberg-Marquardt from the rows of ``Q0`` in turn, until
         :attr:`wanted` distinct solutions are known; whether it found any new one.
         ``patient``: no start is abandoned for slow progress (a start near a solution).
+        The rows of ``Q0`` are overwritten by the ends (pass a copy to keep them).
         Each converged end is re-checked by an FK pass of its own in the same compiled
-        call (:func:`~moik.solver.multistart.starts_checked`), as :meth:`consider` does."""
-        robot, dof = self.robot, self.robot.dof
-        chain = robot.kinematic_chain
-        n_known = len(self.found)
-        found = np.empty((self.wanted, dof))
-        for k, q in enumerate(self.found):
-            found[k] = q
-        found_err = np.empty((self.wanted, 2))
+        call (:func:`~moik.solver.starts.run_starts`), as :meth:`consider` does."""
+        dof, n_known = self.robot.dof, len(self.found)
+        found = found_table(self.wanted, dof, self.found, self.found_errors)
         best = np.empty(dof + 1)
         best[0] = np.inf if self.best is None else self.best[0]
-        n_found, n_eval = starts_checked(
-            chain.origins, chain.joint_types, robot.lower, robot.upper, kernel_array(Q0),
-            self._Rt, self._pt, self._has_rot, 1.0 / robot.reach, self.tol_pos, self.tol_ori,
-            STOP_FRACTION, LM_ITERATIONS, self.distinct, 1.0 if patient else STALL_RATIO,
-            max(self.max_evals - self.n_eval, 1), found, found_err, n_known, best)
+        starts = kernel_array(Q0)  # overwritten by the ends: the callers' rows are fresh
+        policy = (CHECK | (PATIENT if patient else 0), max(self.max_evals - self.n_eval, 1))
+        n_found, n_eval, _ = run_starts(self.ctx, starts, policy, found, best,
+                                        np.empty((len(starts), 2)))
         self.n_eval += int(n_eval)
         for k in range(n_known, n_found):
-            self.found.append(found[k])
-            self.found_errors.append((float(found_err[k, 0]), float(found_err[k, 1])))
+            self.found.append(found[k, :dof])
+            self.found_errors.append((float(found[k, dof]), float(found[k, dof + 1])))
         if self.best is None or best[0] < self.best[0]:
             self.best = (float(best[0]), best[1:])
         return n_found > n_known

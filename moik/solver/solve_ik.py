@@ -39,21 +39,18 @@ from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.catalog import as_robot
 from moik.robots.chain import Robot
 from moik.solver.front import FRONT_STARTS, polished_front, reach_excess
-from moik.solver.multistart import front as lm_front
 from moik.solver.options import (
+    SEARCH_DEFAULTS,
     SearchOptions,
     algorithm_registry,
     seed_sequence,
     start_generator,
     starts_sequence,
-    validated_options,
 )
 from moik.solver.result import IKResult, ik_result
-from moik.solver.session import (
-    SolveSession,
-    is_distinct,
-    tolerances,
-)
+from moik.solver.session import SolveSession, tolerances
+from moik.solver.starts import front as lm_front
+from moik.solver.starts import is_distinct
 
 STATUSES = ("solved", "unreachable", "not-converged")
 FINAL_NFEV = 300  # extended refinement of the best candidate before giving up
@@ -76,13 +73,18 @@ def _population(algorithm) -> tuple[np.ndarray, np.ndarray]:
     return algorithm.pop.get("X"), algorithm.pop.get("F")[:, 0]
 
 
-def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = "geodesic",
-             polish: bool = True, n_solutions: int = 1, q_current=None, seed=0,
-             tol=1e-9, max_evals: int = 50_000, starts: int = 500, pop_size: int | None = None,
-             generations: int = 15,
-             candidates_per_round: int = 3, distinct: float = 0.1,
-             patience: int = 30, front_method: str = "moeosma",
-             front_evals: int = 10_000) -> IKResult:
+_D = SEARCH_DEFAULTS  # solve_ik's defaults are SearchOptions' field defaults
+
+
+def solve_ik(robot: Robot, target, *, method: str = _D["method"],
+             orientation: str = _D["orientation"], polish: bool = _D["polish"],
+             n_solutions: int = _D["n_solutions"], q_current=None, seed=0, tol=1e-9,
+             max_evals: int = _D["max_evals"], starts: int = _D["starts"],
+             pop_size: int | None = _D["pop_size"], generations: int = _D["generations"],
+             candidates_per_round: int = _D["candidates_per_round"],
+             distinct: float = _D["distinct"], patience: int = _D["patience"],
+             front_method: str = _D["front_method"], front_evals: int = _D["front_evals"]
+             ) -> IKResult:
     """Solve IK for one target.
 
     Args:
@@ -120,7 +122,10 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
             of the ``n_solutions``: hundreds of Levenberg-Marquardt starts rarely miss
             a branch that exists, and the search then rarely adds one).
         front_method: Multi-objective algorithm for the front of unreachable poses.
-        front_evals: Evaluation budget of that front.
+        front_evals: Evaluation budget of that front: of its multi-objective run, and
+            again of its polish by weighted-sum scalarisations (no start begins past
+            it), so an unsolved pose spends at most about ``max_evals + 2 *
+            front_evals``.
 
     Every argument is validated before any stage runs (:class:`SearchOptions`),
     whichever stage would end the solve.
@@ -137,11 +142,12 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     target = as_target(target)
     check_unit_range(target, robot)
     tol_pos, tol_ori = tolerances(tol, robot)
-    opts = validated_options(method=method, orientation=orientation, polish=polish,
-                         n_solutions=n_solutions, max_evals=max_evals, starts=starts,
-                         pop_size=pop_size, generations=generations,
-                         candidates_per_round=candidates_per_round, distinct=distinct,
-                         patience=patience, front_method=front_method, front_evals=front_evals)
+    opts = SearchOptions.of(method=method, orientation=orientation, polish=polish,
+                            n_solutions=n_solutions, max_evals=max_evals, starts=starts,
+                            pop_size=pop_size, generations=generations,
+                            candidates_per_round=candidates_per_round, distinct=distinct,
+                            patience=patience, front_method=front_method,
+                            front_evals=front_evals)
     seed = check_seed("seed", seed)
     # an integer seed's SeedSequence is made only if a stage spawns from it
     seeds = None if isinstance(seed, int) else seed_sequence(seed)
@@ -149,16 +155,25 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     if q_current is not None and q_current.ndim != 1:
         raise ShapeError(f"q_current must be one joint vector ({robot.dof},), got "
                          f"{q_current.shape}")
-    n_solutions, polish = opts.n_solutions, opts.polish
-    session = SolveSession(robot, target, tol_pos, tol_ori, opts.distinct, n_solutions,
+    session = SolveSession(robot, target, tol_pos, tol_ori, opts.distinct, opts.n_solutions,
                            opts.max_evals)
-    starts_rng = (start_generator(seed) if seeds is None  # first stage; later ones spawn
-                  else np.random.Generator(np.random.PCG64(starts_sequence(seeds))))
+    if seeds is None:  # the first stage's generator; later stages spawn from the seed
+        with start_generator(seed) as starts_rng:
+            return _solve(session, opts, starts_rng, q_current, seed, t0)
+    return _solve(session, opts, np.random.Generator(np.random.PCG64(starts_sequence(seeds))),
+                  q_current, seeds, t0)
+
+
+def _solve(session: SolveSession, opts: SearchOptions, starts_rng: np.random.Generator,
+           q_current, seed, t0: float) -> IKResult:
+    """The stages of :func:`solve_ik` (``seed``: an integer or a SeedSequence)."""
+    robot, target = session.robot, session.target
+    n_solutions, polish = opts.n_solutions, opts.polish
     if reach_excess(robot, target) > 0:  # proven out of reach: no start or search can help
         return _out_of_reach(session, opts, starts_rng, q_current, t0)
     if polish and (q_current is not None or opts.starts):
         if q_current is not None:  # the user's hint: never abandoned for slow progress
-            session.local_starts(q_current[None], patient=True)
+            session.local_starts(q_current[None].copy(), patient=True)
         first = min(opts.starts, FIRST_STARTS)  # most poses need one or two starts: draw
         Q0 = robot.random_q(first, rng=starts_rng)  # the rest only when they are needed
         if len(session.found) < n_solutions and first and session.n_eval < opts.max_evals:
@@ -171,7 +186,7 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
     if len(session.found) >= n_solutions:  # the usual end: the first stage solved it
         return ik_result(session, q_current, t0, False, None, None)
     problem = _search_problem(robot, target, opts.orientation)
-    seeds = np.random.SeedSequence(seed) if seeds is None else seeds
+    seeds = np.random.SeedSequence(seed) if isinstance(seed, int) else seed
     idle_rounds, patience = 0, opts.patience
     if session.found and opts.starts > FIRST_STARTS:  # every start ran and found some of the
         patience = min(patience, FOUND_PATIENCE)  # branches: the rest most likely do not exist
@@ -190,7 +205,7 @@ def solve_ik(robot: Robot, target, *, method: str = "eosma", orientation: str = 
         if polish and not session.found:
             front, front_q, n = polished_front(robot, target, opts.orientation,
                                                robot.random_q(FRONT_STARTS, rng=starts_rng),
-                                               front_q)
+                                               front_q, budget=opts.front_evals)
             session.n_eval += n
     return ik_result(session, q_current, t0, searched_out, front, front_q)
 
@@ -205,7 +220,8 @@ def _out_of_reach(session: SolveSession, opts: SearchOptions, rng: np.random.Gen
         starts = np.vstack([q_current, starts])
     front = front_q = None
     if target.rotation is not None and opts.polish:
-        front, front_q, n = polished_front(robot, target, opts.orientation, starts)
+        front, front_q, n = polished_front(robot, target, opts.orientation, starts,
+                                           budget=opts.front_evals)
         session.n_eval += n
         session.consider(front_q)
     elif opts.polish:  # the position-only scalarisation (w = 1; the rotation is ignored)

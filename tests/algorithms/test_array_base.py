@@ -20,6 +20,7 @@ from pymoo.util.archive import SingleObjectiveArchive
 from moik.algorithms import EO, MOEOSMA, PSO, ChOA
 from moik.algorithms.array_base import ArrayStateAlgorithm
 from moik.algorithms.incumbent import BestSoFar, ParetoIncumbent
+from moik.exceptions import ParameterError
 
 HALVES = [(ChOA, "sphere"), (EO, "sphere"), (MOEOSMA, "zdt1")]
 
@@ -132,3 +133,21 @@ def test_pymoo_constraint_wrappers_run(wrap):
         (lambda: MOEOSMA(pop_size=20))
     res = minimize(wrap(get_problem("g1")), make(), ("n_gen", 5), seed=1)
     assert res.F is not None and np.isfinite(res.F).all()
+
+
+@pytest.mark.parametrize(("cls", "problem"), HALVES)
+def test_the_default_termination_is_the_algorithms_own_schedule(cls, problem):
+    res = minimize(_problem(problem), cls(pop_size=10, max_iter=40), seed=1)
+    explicit = minimize(_problem(problem), cls(pop_size=10, max_iter=40), ("n_gen", 41), seed=1)
+    assert res.algorithm.t == res.algorithm.max_iter == 40  # t / T reached 1
+    np.testing.assert_array_equal(res.F, explicit.F)
+    alg = cls(pop_size=10)
+    alg.setup(_problem(problem), seed=1)
+    assert alg.termination.n_max_gen == 1001 and alg.max_iter == 1000
+
+
+@pytest.mark.parametrize("termination", [("n_gen", 0), ("n_gen", -3), ("n_eval", 0)])
+@pytest.mark.parametrize(("cls", "problem"), HALVES)
+def test_a_limit_below_one_is_a_clear_error(cls, problem, termination):
+    with pytest.raises(ParameterError, match=f"an '{termination[0]}' termination needs a limit"):
+        minimize(_problem(problem), cls(pop_size=10), termination, seed=1)

@@ -3,12 +3,17 @@ strict keywords, sizes, the schedule from the termination, the evaluation budget
 
 import numpy as np
 import pytest
+from pymoo.core.evaluator import Evaluator
+from pymoo.core.population import Population
+from pymoo.core.problem import Problem
+from pymoo.core.variable import Integer, Real
+from pymoo.operators.sampling.rnd import FloatRandomSampling
 from pymoo.optimize import minimize
 from pymoo.problems import get_problem
 from pymoo.termination import get_termination
 from pymoo.termination.default import DefaultSingleObjectiveTermination
 
-from moik.algorithms import EOSMA, MOEOSMA, available, entry
+from moik.algorithms import EOSMA, MOEOSMA, PSO, available, entry, get_algorithm
 from moik.algorithms.array_state import (
     PYMOO_OPTIONS,
     budget_left,
@@ -18,7 +23,7 @@ from moik.algorithms.array_state import (
     planned_iterations,
     refuse_unknown_keywords,
 )
-from moik.exceptions import ParameterError
+from moik.exceptions import ParameterError, ShapeError
 
 MOIK = [name for name in available() if entry(name).cls.__module__.startswith("moik.")]
 
@@ -87,3 +92,49 @@ def test_budget_left_cuts_the_last_batch():
     assert budget_left(np.inf, 100, 30) == 30
     assert budget_left(120, 100, 30) == 20
     assert budget_left(100, 100, 30) == 0
+
+
+def _sphere4():
+    return get_problem("sphere", n_var=4)
+
+
+@pytest.mark.parametrize("name", ["pso", "eo", "mosma"])
+def test_pymoo_sampling_forms_are_accepted(name):
+    problem = get_problem("zdt1", n_var=4) if name == "mosma" else _sphere4()
+    res = minimize(problem, get_algorithm(name, pop_size=10, sampling=FloatRandomSampling()),
+                   ("n_gen", 1), seed=1)
+    assert res.algorithm.X.shape == (10, 4)
+    X = np.full((3, 4), 0.25)
+    res = minimize(problem, get_algorithm(name, pop_size=10, sampling=X), ("n_gen", 1), seed=1)
+    np.testing.assert_array_equal(res.algorithm.X[:3], X)  # as X0: the first rows
+    same = minimize(problem, get_algorithm(name, pop_size=10, X0=X), ("n_gen", 1), seed=1)
+    np.testing.assert_array_equal(res.F, same.F)
+    pop = Population.new("X", X)
+    Evaluator().eval(problem, pop)
+    res = minimize(problem, get_algorithm(name, pop_size=10, sampling=pop), ("n_gen", 1),
+                   seed=1)
+    assert res.algorithm.evaluator.n_eval == 7  # the evaluated individuals are not re-evaluated
+    np.testing.assert_array_equal(res.algorithm.X[:3], X)
+
+
+def test_bad_sampling_is_a_clear_error():
+    with pytest.raises(ParameterError, match="X0 or as sampling, not both"):
+        PSO(X0=np.zeros((1, 4)), sampling=np.zeros((1, 4)))
+    with pytest.raises(ParameterError, match="sampling must be a pymoo Sampling"):
+        minimize(_sphere4(), PSO(sampling="lhs"), ("n_gen", 2))
+    with pytest.raises(ShapeError, match=r"sampling must have shape \(k, 4\)"):
+        minimize(_sphere4(), PSO(pop_size=5, sampling=np.zeros((6, 4))), ("n_gen", 2))
+
+
+def test_a_mixed_variable_problem_is_a_clear_error():
+    class Mixed(Problem):
+        def __init__(self):
+            super().__init__(vars={"a": Real(bounds=(0, 1)), "b": Integer(bounds=(0, 5))},
+                             n_obj=1)
+
+        def _evaluate(self, X, out, *args, **kwargs):
+            out["F"] = np.zeros(len(X))
+
+    with pytest.raises(ParameterError, match="PSO works on real-valued vectors; the problem "
+                                             "has mixed variables"):
+        minimize(Mixed(), PSO(), ("n_gen", 2))

@@ -1,6 +1,7 @@
 """``moik experiment list|run`` (moik.cli.experiment): a user's own config files."""
 
 import pytest
+import tomli_w
 
 from moik.cli import main
 from moik.experiments.registry import ENV_VAR
@@ -10,8 +11,8 @@ RUN = ["--quick", "--workers", "1", "--no-progress"]
 
 
 def _write(folder, tiny, stem="tiny_test"):
-    path = folder / f"{stem}.py"
-    path.write_text(f'"""A user\'s experiment."""\n\nEXPERIMENT = {tiny!r}\n')
+    path = folder / f"{stem}.toml"
+    path.write_text("# A user's experiment.\n" + tomli_w.dumps(tiny))
     return path
 
 
@@ -59,3 +60,26 @@ def test_counts_must_be_positive_integers(capsys):
         with pytest.raises(SystemExit):
             main(["experiment", "run", "mpso-single", "--workers", bad])
         assert f"expected a positive integer, got '{bad}'" in capsys.readouterr().err
+
+
+def test_a_config_holding_code_is_refused_not_run(tmp_path, capsys, tiny):
+    marker = tmp_path / "ran"
+    code = tmp_path / "tiny_test.py"
+    code.write_text(f"open({str(marker)!r}, 'w').close()\nEXPERIMENT = {tiny!r}\n")
+    assert main(["experiment", "run", "--config", str(code), *RUN]) == 2
+    err = capsys.readouterr().err
+    assert "experiment configs are TOML data files (.toml); this is Python code" in err
+    disguised = tmp_path / "tiny_test.toml"
+    disguised.write_text(code.read_text())
+    assert main(["experiment", "run", "--config", str(disguised), *RUN]) == 2
+    err = capsys.readouterr().err
+    assert "not valid TOML" in err and "looks like Python code" in err
+    assert not marker.exists()
+
+
+def test_a_users_variant_extends_a_paper_config(tmp_path, capsys):
+    path = tmp_path / "mpso_single_short.toml"
+    path.write_text('extends = "mpso-single"\nname = "mpso-single-short"\nruns = 2\n')
+    assert main(["experiment", "run", "--config", str(path), *RUN, "--limit", "1",
+                 "--out", str(tmp_path / "r")]) == 0
+    assert "mpso-single-short: ran 1 trial(s) (0 failed)" in capsys.readouterr().out

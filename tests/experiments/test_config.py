@@ -1,6 +1,10 @@
 """Experiment configs (moik.experiments.config): validation messages, quick overrides, loading."""
 
+from pathlib import Path
+
 import pytest
+import tomli_w
+import tomllib
 
 from moik.exceptions import ConfigError
 from moik.experiments.config import ExperimentConfig, load_config, merge
@@ -64,11 +68,51 @@ def test_quick_overrides_merge_deeply(tiny_config):
 
 def test_load_config_file_errors(tmp_path):
     with pytest.raises(ConfigError, match="does not exist"):
-        load_config(tmp_path / "none.py")
+        load_config(tmp_path / "none.toml")
     bad = tmp_path / "bad_one.py"
-    bad.write_text("X = 1\n")
-    with pytest.raises(ConfigError, match="must define a dict named EXPERIMENT"):
+    bad.write_text("EXPERIMENT = {}\n")
+    with pytest.raises(ConfigError, match=r"TOML data files \(.toml\); this is Python code"):
         load_config(bad)
-    bad.write_text("EXPERIMENT = {'name': \n")
-    with pytest.raises(ConfigError, match="cannot be executed: SyntaxError"):
+    bad = tmp_path / "bad_one.toml"
+    bad.write_text("name = \n")
+    with pytest.raises(ConfigError, match="not valid TOML"):
         load_config(bad)
+
+
+def test_extends_merges_the_base_under_the_variant(tmp_path, tiny):
+    (tmp_path / "tiny_test.toml").write_text(tomli_w.dumps(tiny))
+    variant = tmp_path / "tiny_test_long.toml"
+    variant.write_text('extends = "tiny-test"\nname = "tiny-test-long"\nruns = 5\n'
+                       '[targets]\nn = 3\n')
+    cfg = load_config(variant)
+    assert cfg["runs"] == 5 and cfg["targets"] == dict(tiny["targets"], n=3)
+    assert cfg["pop_size"] == tiny["pop_size"] and cfg.labels == ["eosma", "pso"]
+    direct = ExperimentConfig.from_dict(dict(tiny, name="tiny-test-long", runs=5,
+                                             targets=dict(tiny["targets"], n=3)))
+    assert cfg.fingerprint() == direct.fingerprint()  # the merged data is the config
+    (tmp_path / "loop_a.toml").write_text('extends = "loop-b"\n')
+    (tmp_path / "loop_b.toml").write_text('extends = "loop-a"\n')
+    with pytest.raises(ConfigError, match="makes a cycle"):
+        load_config(tmp_path / "loop_a.toml")
+    (tmp_path / "orphan.toml").write_text('extends = "no-such-base"\n')
+    with pytest.raises(ConfigError, match="'no-such-base', which is not a known experiment"):
+        load_config(tmp_path / "orphan.toml")
+
+
+def test_the_registry_configs_are_toml_and_three_variants_extend_their_base():
+    folder = Path(__file__).resolve().parents[2] / "experiments"
+    assert not list(folder.glob("[!_]*.py")) and len(list(folder.glob("*.toml"))) >= 21
+    for variant, base in (("moo_suite_10k", "moo-suite"), ("mpso_circle_full_range",
+                                                         "mpso-circle"),
+                          ("mpso_table3_independent", "mpso-table3")):
+        with (folder / f"{variant}.toml").open("rb") as f:
+            assert tomllib.load(f)["extends"] == base
+
+
+def test_a_free_joint_is_free_in_toml(tmp_path):
+    """TOML has no null: ``"free"`` in locked_joints_deg is the free joint (None)."""
+    folder = Path(__file__).resolve().parents[2] / "experiments"
+    cfg = load_config(folder / "ibes_table9.toml")
+    assert cfg["problem"]["locked_joints_deg"] == [None, None, None, 0.0, 0.0, 0.0]
+
+

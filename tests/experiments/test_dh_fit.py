@@ -10,7 +10,7 @@ from moik.experiments import load_config
 from moik.experiments.dh_fit import fit_dh_lengths, full_q, with_lengths
 from moik.robots import get_robot
 
-CONFIG = Path(__file__).resolve().parents[2] / "experiments" / "ibes_table9.py"
+CONFIG = Path(__file__).resolve().parents[2] / "experiments" / "ibes_table9.toml"
 """This checkout's config (an editable install may map the shipped configs elsewhere)."""
 
 

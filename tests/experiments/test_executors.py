@@ -1,11 +1,14 @@
 """Executors: a process pool and a local Dask cluster give the serial results."""
 
 import pytest
+import tomli_w
 
 from moik.exceptions import ParameterError
+from moik.experiments import executors
 from moik.experiments.executors import Progress, run_dask
 from moik.experiments.runner import check_workers, run_experiment
 from moik.experiments.store import ResultStore
+from moik.experiments.trials import build_trials
 
 from .conftest import stable
 
@@ -59,6 +62,22 @@ def test_progress_fallback_line(capsys):
     assert "x (+2 resumed): 4/4 trials, 1 failed" in err
 
 
+def test_each_process_warms_each_algorithm_up_before_timing_it(monkeypatch, tiny_config):
+    """The first trial of an algorithm and problem in a process is preceded by an untimed
+    one-iteration run of it (so its time excludes the kernel load); later trials are not."""
+    calls = []
+    monkeypatch.setattr(executors, "run_trial", lambda spec: calls.append(spec) or ({}, {}))
+    monkeypatch.setattr(executors, "_WARMED", set())
+    specs = [s for s in build_trials(tiny_config) if s.target_index == 0]
+    eosma = [s for s in specs if s.label == "eosma"]
+    for spec in (*eosma, *specs):
+        executors.warm_trial(spec)
+    iterations = [(c.label, c.iterations) for c in calls]
+    assert iterations[:2] == [("eosma", 1), ("eosma", tiny_config["iterations"])]
+    assert iterations.count(("eosma", 1)) == 1 and iterations.count(("pso", 1)) == 1
+    assert len(calls) == len(eosma) + len(specs) + 2
+
+
 # --- signals and orphaned workers (issue 27 item 6) ---
 
 def test_sigterm_raises_terminated_inside_and_is_restored_after():
@@ -89,8 +108,8 @@ def _slow_run(tmp_path, tiny, workers: int):
         pytest.skip("needs /proc to find the pool's workers")
     config = copy.deepcopy(tiny)
     config.update(name="tiny-slow", iterations=4000, runs=4)
-    path = tmp_path / "tiny_slow.py"
-    path.write_text(f"EXPERIMENT = {config!r}\n")
+    path = tmp_path / "tiny_slow.toml"
+    path.write_text(tomli_w.dumps(config))
     out = tmp_path / "r"
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
     proc = subprocess.Popen([sys.executable, "-m", "moik", "experiment", "run", "--config",

@@ -10,10 +10,10 @@ from moik.experiments.config import load_config
 from moik.experiments.store import ResultStore
 
 ROOT = Path(__file__).resolve().parents[2]
-SUITE = ROOT / "experiments" / "moo_suite.py"
-REFERENCE = ROOT / "experiments" / "moo_reference.py"
-SUITE_10K = ROOT / "experiments" / "moo_suite_10k.py"
-CONSTRAINED = ROOT / "experiments" / "moo_constrained.py"
+SUITE = ROOT / "experiments" / "moo_suite.toml"
+REFERENCE = ROOT / "experiments" / "moo_reference.toml"
+SUITE_10K = ROOT / "experiments" / "moo_suite_10k.toml"
+CONSTRAINED = ROOT / "experiments" / "moo_constrained.toml"
 OPTIONS = {"moeosma-nsga2-gaussian": ("moeosma", {"diversity": "nsga2-gaussian"}),
            "moalo-first": ("moalo", {"antlion": "first"})}
 

@@ -1,4 +1,4 @@
-"""The MO-m-PSO paper's experiment configs (experiments/mpso_*.py): both readings of each."""
+"""The MO-m-PSO paper's experiment configs (experiments/mpso_*.toml): both readings of each."""
 
 from pathlib import Path
 
@@ -12,7 +12,7 @@ FOLDER = Path(__file__).resolve().parents[2] / "experiments"
 
 
 def _load(name: str):
-    return load_config(FOLDER / f"{name.replace('-', '_')}.py")
+    return load_config(FOLDER / f"{name.replace('-', '_')}.toml")
 
 
 @pytest.mark.parametrize("name", ["mpso-table2", "mpso-table3", "mpso-table3-independent",

@@ -17,7 +17,7 @@ def _setuptools() -> dict:
 
 
 def _configs(folder: Path) -> set[str]:
-    return {p.name for p in folder.glob("*.py") if not p.name.startswith("_")}
+    return {p.name for p in folder.glob("*.toml") if not p.name.startswith("_")}
 
 
 def test_the_experiments_folder_is_mapped_into_the_package():
@@ -51,3 +51,8 @@ def test_the_packaged_configs_list_every_config():
         from importlib import resources
 
         assert _configs(Path(str(resources.files(registry.PACKAGE)))) == expected
+
+
+def test_the_toml_configs_are_package_data():
+    """A wheel ships only .py files of a package unless package-data names the others."""
+    assert "*.toml" in _setuptools()["package-data"]["moik.paper_configs"]

@@ -3,6 +3,7 @@
 import sys
 
 import pytest
+import tomli_w
 
 from moik.exceptions import ConfigError, UnknownNameError
 from moik.experiments import registry
@@ -20,11 +21,11 @@ def test_all_paper_experiments_are_listed_and_valid():
 
 
 def test_dropping_a_file_adds_an_experiment(tmp_path, monkeypatch, tiny):
-    (tmp_path / "tiny_test.py").write_text(f"EXPERIMENT = {tiny!r}\n")
+    (tmp_path / "tiny_test.toml").write_text(tomli_w.dumps(tiny))
     monkeypatch.setenv(ENV_VAR, str(tmp_path))
     assert "tiny-test" in available_experiments()
     assert get_experiment("tiny-test").labels == ["eosma", "pso"]
-    (tmp_path / "other_name.py").write_text(f"EXPERIMENT = {tiny!r}\n")
+    (tmp_path / "other_name.toml").write_text(tomli_w.dumps(tiny))
     with pytest.raises(ConfigError, match="must match the file name"):
         get_experiment("other-name")
     with pytest.raises(UnknownNameError, match="unknown experiment 'zzz'; expected one of"):
@@ -36,7 +37,7 @@ def test_a_later_folder_replaces_an_earlier_experiment_of_the_same_name(tmp_path
     first, second = tmp_path / "a", tmp_path / "b"
     for folder, title in ((first, "first"), (second, "second")):
         folder.mkdir()
-        (folder / "tiny_test.py").write_text(f"EXPERIMENT = {dict(tiny, title=title)!r}\n")
+        (folder / "tiny_test.toml").write_text(tomli_w.dumps(dict(tiny, title=title)))
     (first / "_helper.py").write_text("X = 1\n")  # files starting with _ are not experiments
     monkeypatch.setenv(ENV_VAR, f"{first}{registry.os.pathsep}{second}")
     assert get_experiment("tiny-test")["title"] == "second"
@@ -44,8 +45,8 @@ def test_a_later_folder_replaces_an_earlier_experiment_of_the_same_name(tmp_path
 
 
 def test_a_config_path_is_an_experiment_name(tmp_path, tiny):
-    path = tmp_path / "tiny_test.py"
-    path.write_text(f"EXPERIMENT = {tiny!r}\n")
+    path = tmp_path / "tiny_test.toml"
+    path.write_text(tomli_w.dumps(tiny))
     assert get_experiment(str(path)).path == str(path)
 
 
@@ -54,7 +55,7 @@ def test_the_packaged_configs_are_found_with_importlib_resources(tmp_path, monke
     package = tmp_path / "fake_paper_configs"
     package.mkdir()
     (package / "__init__.py").write_text("")
-    (package / "tiny_test.py").write_text(f"EXPERIMENT = {tiny!r}\n")
+    (package / "tiny_test.toml").write_text(tomli_w.dumps(tiny))
     monkeypatch.syspath_prepend(str(tmp_path))
     monkeypatch.setattr(registry, "PACKAGE", "fake_paper_configs")
     monkeypatch.setattr(registry, "_CHECKOUT", tmp_path / "no-checkout" / "experiments")
@@ -62,7 +63,7 @@ def test_the_packaged_configs_are_found_with_importlib_resources(tmp_path, monke
     try:
         assert registry.packaged_dir() == package
         assert available_experiments() == ["tiny-test"]
-        assert get_experiment("tiny-test").path == str(package / "tiny_test.py")
+        assert get_experiment("tiny-test").path == str(package / "tiny_test.toml")
     finally:
         sys.modules.pop("fake_paper_configs", None)
 

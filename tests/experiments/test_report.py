@@ -1,6 +1,7 @@
 """The report of damaged results: warn, count what is there, go on past a bad folder."""
 
 import pytest
+import tomli_w
 
 from moik.cli import main
 from moik.exceptions import ResultsError
@@ -77,8 +78,8 @@ def test_malformed_lines_do_not_stop_a_report_over_a_parent(results, capsys):
 def test_the_repair_command_of_a_config_file_run_names_the_file(tmp_path, tiny, capsys):
     """Before: `moik experiment run tiny-test ...`, an experiment that does not exist."""
     from moik.experiments.config import load_config
-    path = tmp_path / "tiny_test.py"
-    path.write_text(f"EXPERIMENT = {tiny!r}\n")
+    path = tmp_path / "tiny_test.toml"
+    path.write_text(tomli_w.dumps(tiny))
     run_experiment(load_config(path), out=tmp_path / "r", progress=False)
     trial = ResultStore.open(tmp_path / "r").records()[0]["trial"]
     (tmp_path / "r" / "arrays" / ResultStore.array_name(trial)).unlink()

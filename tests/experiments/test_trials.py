@@ -52,7 +52,7 @@ def test_a_run_evaluates_the_initial_population_plus_iterations_times_per_iterat
 
 def test_eosma_table5_budget_is_the_papers():
     """EOSMA Table 5: N = 50, T = 500, the q = 0 preset evaluates N per iteration."""
-    config = load_config(Path(__file__).resolve().parents[2] / "experiments" / "eosma_table5.py")
+    config = load_config(Path(__file__).resolve().parents[2] / "experiments" / "eosma_table5.toml")
     assert config["iterations"] == 500
     spec = next(s for s in build_trials(config) if s.label == "eosma")
     rec, _ = run_trial(dataclasses.replace(spec, protocol=None))

@@ -38,16 +38,23 @@ N_MEMBERS = 9
 
 @pytest.fixture(scope="module")
 def driver():
-    os.environ.setdefault("SE_OFFLINE", "true")  # selenium-manager: never a download
+    with pytest.MonkeyPatch.context() as env:
+        env.setenv("SE_OFFLINE", "true")  # selenium-manager, should it run: never a download
+        d = _start()
+    yield d
+    d.quit()
+
+
+def _start():
+    """Chromium through the system's chromedriver: with the driver's path given, selenium
+    does not look for (or download) one."""
     options = webdriver.ChromeOptions()
     options.binary_location = str(CHROMIUM)
     for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
                 "--enable-unsafe-swiftshader", "--window-size=1400,1000"):
         options.add_argument(arg)
     options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    d = webdriver.Chrome(service=Service(executable_path=str(CHROMEDRIVER)), options=options)
-    yield d
-    d.quit()
+    return webdriver.Chrome(service=Service(executable_path=str(CHROMEDRIVER)), options=options)
 
 
 @pytest.fixture(scope="module")

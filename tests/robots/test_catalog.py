@@ -58,7 +58,7 @@ def test_eosma7_m_is_eosma7_in_metres():
 
 
 # I-BES Table 9: targets and the geometric solutions (rad) of targets 1 and 4; T1 with
-# y = d3 = 0.14909 (the paper prints 0.15, see experiments/ibes_table9.py).
+# y = d3 = 0.14909 (the paper prints 0.15, see experiments/ibes_table9.toml).
 TABLE9 = {(0.60, 0.14909, 0.20): [(0, -1.0748, 3.1201), (0, 0.4313, 0.1153),
                                    (-2.6545, -2.0668, 0.1153), (-2.6545, 2.7103, 3.1201)],
           (0.18, -0.40, 0.40): [(-1.4947, -1.6169, -2.9763), (-1.4947, 0.0769, -0.0716),

@@ -9,10 +9,11 @@ from moik.problems import random_reachable_targets
 from moik.problems.targets import Target
 from moik.robots import get_robot
 from moik.robots.transforms import PRISMATIC, REVOLUTE
+from moik.solver.context import ik_context, lm_workspace
 from moik.solver.lm import into_limits, residual
-from moik.solver.multistart import front, multistart
 from moik.solver.polish import ResidualModel
 from moik.solver.session import pose_errors
+from moik.solver.starts import front, multistart
 
 ARMS = ("eosma7", "scara4", "puma560", "irb2600", "iiwa14", "ur5")
 
@@ -24,14 +25,12 @@ def test_compiled_residual_equals_the_numpy_model(name, with_rotation):
     robot = get_robot(name)
     target = random_reachable_targets(robot, 1, seed=2, with_orientation=with_rotation)[0]
     model = ResidualModel(robot, target, robot.reach)
-    chain = robot.kinematic_chain
-    Rt = np.ascontiguousarray(target.rotation if with_rotation else np.eye(3))
+    ctx = ik_context(robot, target, stop=(0.0, 0.0))
+    ws = lm_workspace(robot.dof)
     m = 6 if with_rotation else 3
     for q in robot.random_q(5, rng=np.random.default_rng(4)):
-        T, M, J = np.empty((4, 4)), np.empty((3, 3)), np.empty((6, robot.dof))
         r, Jr = np.empty(6), np.empty((6, robot.dof))
-        cost = residual(chain.origins, chain.joint_types, q, Rt, np.array(target.position),
-                        with_rotation, 1.0 / robot.reach, 1.0, T, J, M, r, Jr)
+        cost = residual(ctx, ws, q, (1.0 / robot.reach, 1.0), r, Jr)
         np.testing.assert_allclose(r[:m], model.residual(q), atol=1e-12)
         np.testing.assert_allclose(Jr[:m], model.jacobian(q), atol=1e-12)
         assert cost == pytest.approx(0.5 * np.sum(model.residual(q) ** 2), rel=1e-12)

@@ -2,6 +2,7 @@
 
 import subprocess
 import sys
+from dataclasses import fields
 
 import numpy as np
 import pytest
@@ -9,6 +10,7 @@ import pytest
 from moik.algorithms.registry import get_algorithm, is_multi_objective
 from moik.exceptions import ParameterError, UnknownNameError
 from moik.solver.options import (
+    DEFAULT_OPTIONS,
     DEFAULT_POP_SIZES,
     SEARCH_DEFAULTS,
     STARTS_KEY,
@@ -60,11 +62,35 @@ def test_start_generator_is_a_fresh_seeded_generator_each_time(seed):
     """Bit for bit ``Generator(PCG64(SeedSequence(seed, spawn_key=(STARTS_KEY,))))``, reset
     on every call, and not the stream of ``default_rng(seed)`` (the targets' stream)."""
     for _ in range(2):
-        got = start_generator(seed).random(16)
+        with start_generator(seed) as g:
+            got = g.random(16)
         want = np.random.Generator(np.random.PCG64(
             np.random.SeedSequence(seed, spawn_key=(STARTS_KEY,)))).random(16)
         assert np.array_equal(got, want)
         assert not np.any(got == np.random.default_rng(seed).random(16))
+
+
+def test_a_nested_start_generator_leaves_the_outer_stream_alone():
+    """A stage that re-enters solve_ik gets a generator of its own."""
+    want = np.random.Generator(np.random.PCG64(
+        np.random.SeedSequence(3, spawn_key=(STARTS_KEY,)))).random(8)
+    with start_generator(3) as outer:
+        first = outer.random(4)
+        with start_generator(5) as inner:
+            assert inner is not outer
+            inner.random(4)
+        rest = outer.random(4)
+    assert np.array_equal(np.concatenate([first, rest]), want)
+
+
+def test_defaults_come_from_search_options():
+    """One source: SEARCH_DEFAULTS are the dataclass defaults; a call that changes none
+    gets the one validated instance, any other value is validated."""
+    assert {f.name: f.default for f in fields(SearchOptions)} == SEARCH_DEFAULTS
+    assert SearchOptions.of(**SEARCH_DEFAULTS) is DEFAULT_OPTIONS == SearchOptions()
+    assert SearchOptions.of(**{**SEARCH_DEFAULTS, "n_solutions": 2}).pop_size == 40
+    with pytest.raises(ParameterError, match="n_solutions must be an integer >= 1, got True"):
+        SearchOptions.of(**{**SEARCH_DEFAULTS, "n_solutions": True})  # True == 1, refused
 
 
 def test_default_algorithms_pass_the_registry_check():

@@ -4,10 +4,12 @@ import numpy as np
 import pytest
 
 from moik.exceptions import DegreesWarning, ParameterError, UnknownNameError
+from moik.kinematics.criteria import joint_distance
 from moik.problems import Target, random_reachable_targets
 from moik.robots import get_robot
 from moik.solver import solve_ik
-from moik.solver.session import joint_distance
+from moik.solver.result import ik_result
+from moik.solver.session import SolveSession, pose_errors
 
 
 @pytest.mark.parametrize("name", ["eosma7", "sawyer7", "irb2600"])
@@ -248,6 +250,85 @@ def test_max_evals_is_honoured_by_the_first_stage():
     assert full.n_eval >= res.n_eval
 
 
+def _issue27_case():
+    """Issue 27 item 4 (1 in 200,000 soak solves at 62ac347): puma560, the 10705th of
+    ``random_reachable_targets(r, 25000, seed=2024)``, solved with ``seed=10705``, whose
+    500 random starts (drawn then from ``SeedSequence(10705)``) all stopped short of the
+    stop (0.1 tol) and ended ``not-converged`` after 129,372 evaluations, one of them
+    1.2e-10 x reach from the target (tol 1e-9)."""
+    robot = get_robot("puma560")
+    Q = robot.random_q(25000, rng=np.random.default_rng(2024))  # as random_reachable_targets
+    T = robot.fk(Q)[10705]
+    rng = np.random.Generator(np.random.PCG64(np.random.SeedSequence(10705)))
+    return robot, Target(T[:3, 3], T[:3, :3]), [robot.random_q(8, rng=rng),
+                                                 robot.random_q(492, rng=rng)]
+
+
+def test_a_start_that_stalls_within_tolerance_is_a_solution():
+    """The first stage re-checks an end whose cost could be within the tolerances."""
+    robot, target, starts = _issue27_case()
+    session = SolveSession(robot, target, 1e-9 * robot.reach, 1e-9, 0.1, 1, 50_000)
+    for Q0 in starts:
+        if not session.found:
+            session.local_starts(Q0)
+    assert len(session.found) == 1 and session.n_eval < 50_000
+    pos, ori = pose_errors(robot, target, session.found[0], reference=True)
+    assert pos[0] <= 1e-9 * robot.reach and ori[0] <= 1e-9
+
+
+def test_an_answer_within_tolerance_is_never_not_converged():
+    """The verdict: a best candidate within tolerance is ``solved``, whatever found it."""
+    robot, target, _ = _issue27_case()
+    res = solve_ik(robot, target, seed=0)
+    session = SolveSession(robot, target, 1e-9 * robot.reach, 1e-9, 0.1, 1, 50_000)
+    session.best = (0.0, res.q)  # a candidate no stage counted as found
+    out = ik_result(session, None, 0.0, True, None, None)
+    assert out.status == "solved" and out.success and len(out.solutions) == 1
+    assert out.position_error <= 1e-9 * robot.reach
+
+
+@pytest.mark.parametrize("tol, match", [
+    (1e-300, r"tol must be at least 1e-14, the smallest tolerance float64 forward kinematics"),
+    (1e-15, r"tol must be at least 1e-14"),
+    ((1e-300, 1e-9), r"tol\[0\] \(position tolerance\) must be at least 1\.76\d*e-12 \(1e-14 x"),
+    ((1e-3, 1e-20), r"tol\[1\] \(orientation tolerance\) must be at least 1e-14 rad"),
+])
+def test_tolerances_below_what_fk_can_certify_are_refused(tol, match):
+    """Issue 27 item 7: tol=1e-300 was accepted and turned a reachable pose unreachable."""
+    robot = get_robot("eosma7")
+    reachable = random_reachable_targets(robot, 1, seed=0)[0]
+    with pytest.raises(ParameterError, match=match):
+        solve_ik(robot, reachable, tol=tol)
+
+
+def test_the_smallest_accepted_tolerance_solves_a_reachable_pose():
+    robot = get_robot("eosma7")
+    res = solve_ik(robot, random_reachable_targets(robot, 1, seed=0)[0], tol=1e-14)
+    assert res.status == "solved" and res.position_error <= 1e-14 * robot.reach
+
+
+def test_fewer_solutions_than_requested_are_said():
+    """Issue 25: n_solutions=50 returned 33 with status solved and no word. A Puma 560
+    pose has at most 8 branches: 12 asked, fewer found, and the result says so."""
+    robot = get_robot("puma560")
+    target = random_reachable_targets(robot, 1, seed=4)[0]
+    res = solve_ik(robot, target, n_solutions=12, seed=0, starts=64, patience=1)
+    assert res.status == "solved" and res.success and res.n_requested == 12
+    assert 1 <= len(res.solutions) < 12 and res.fewer_solutions
+    assert res.detail.startswith(f"found {len(res.solutions)} of the 12 distinct solutions")
+    one = solve_ik(robot, target, seed=0)
+    assert not one.fewer_solutions and one.detail == "" and one.n_requested == 1
+
+
+def test_the_front_polish_keeps_to_front_evals():
+    """Issue 27 item 7: an unsolved pose spent ~8x front_evals in the front's polish. No
+    scalarisation start begins past ``front_evals`` now."""
+    robot = get_robot("eosma7")
+    target = Target([1.2 * robot.reach, 0.0, 0.0], np.eye(3))  # proven out of reach: the
+    full = solve_ik(robot, target, seed=0)  # polished front is all the solve does
+    cut = solve_ik(robot, target, seed=0, front_evals=300)
+    assert full.status == cut.status == "unreachable" and len(cut.front) >= 1
+    assert cut.n_eval < full.n_eval and cut.n_eval <= 300 + 2_000  # + the start under way
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_equal_seeds_for_targets_and_solver_share_no_stream(seed):
     """The Quickstart's pattern: a target of ``seed=s`` solved with ``seed=s``. The first

@@ -80,13 +80,19 @@ import numpy as np
 from moik._jit import kernel_array
 from moik._validate import choice, interval
 from moik.algorithms.archive import CrowdingArchive
+from moik.algorithms.generator_handle import GeneratorHandles
 from moik.algorithms.mechanics import ranking_fitness
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step
 from moik.algorithms.moo.dominance import dominance_memory
-from moik.algorithms.moo.moeosma_kernels import candidates, generation_draws, mutants
+from moik.algorithms.moo.moeosma_kernels import generation_draws
 from moik.algorithms.moo.mompa import gaussian_search
 from moik.algorithms.moo.mosma import elitist_order
 from moik.algorithms.soo.eo import eo_schedule
+from moik.algorithms.soo.eosma_kernels import (
+    GenerationDraws,
+    generation_candidates,
+    mutation_candidates,
+)
 from moik.algorithms.soo.sma import sma_schedule
 
 DIVERSITY = ("paper", "nsga2-gaussian")
@@ -150,7 +156,10 @@ class MOEOSMA(MOArrayAlgorithm):
 
     def _initialize_state(self) -> None:
         self.pbest_X, self.pbest_F, self.pbest_CV = self.X, self.F, self.CV
-        self._xl, self._xu = kernel_array(self.xl), kernel_array(self.xu)
+        self._bounds = np.stack([self.xl, self.xu]).astype(float)
+        self._draws = GenerationDraws(self.pop_size, self.problem.n_var)
+        self._leaders = np.empty(self.pop_size, dtype=np.int64)
+        self._handles = GeneratorHandles()
         self.pool_X = equilibrium_pool(self.pareto_archive.X, self.pareto_archive.counts)
 
     def _remember(self, X: np.ndarray, F: np.ndarray, CV: np.ndarray | None) -> None:
@@ -172,23 +181,27 @@ class MOEOSMA(MOArrayAlgorithm):
         return self.pbest_X, self.pbest_F, self.pbest_CV
 
     def _generation(self) -> Step:
-        rng, n, d = self.random_state, self.pop_size, self.problem.n_var
+        """Algorithm 2, one iteration: its own draw order (:mod:`.moeosma_kernels`), EOSMA's
+        maths (:mod:`moik.algorithms.soo.eosma_kernels`) with one leader per agent."""
         A = self.pareto_archive
         self.pool_X = pool = kernel_array(equilibrium_pool(A.X, A.counts))  # line 12
         obj = rotation_objective(self.t, self.problem.n_obj)  # Eq. 21
         S = kernel_array(ranking_fitness(self.pbest_F[:, obj], self.pbest_CV))
         t1 = eo_schedule(self.t, self.max_iter, self.a2)
         a, _ = sma_schedule(self.t, self.max_iter)
-        picks, cells, rows, log_arg, mutate, R, SF = generation_draws(rng, n, d, len(pool), a,
-                                                                      self.q, S)
+        draws, leaders = self._draws, self._leaders
+        mutate = generation_draws(self._handles.of(self.random_state), S, len(pool), t1, a,
+                                  self.q, leaders, draws.cells, draws.rows, draws.picks)
+        draws.apply_numpy_maths()  # Eqs. 4 and 8
         P = kernel_array(self.pbest_X)
-        X = candidates(P, pool, picks, cells, rows, np.log10(log_arg), np.exp(-cells[1] * t1),
-                       self.a1, self.z, self.GP, self.V, self._xl, self._xu)  # Eqs. 4, 15, 17
+        X = generation_candidates(P, pool[leaders], pool, draws.cells, draws.rows, draws.picks,
+                                  self.z, self.a1, self.GP, self.V, self._bounds)  # Eqs. 4, 15, 17
         F, CV = yield X
         self._remember(X, F, CV)
         if mutate:  # Algorithm 2, line 26
-            X = mutants(kernel_array(self.pbest_X), R, SF, self._xl, self._xu)  # Eqs. 16-17
+            X = mutation_candidates(kernel_array(self.pbest_X), draws.rows, draws.picks,
+                                    self._bounds)  # Eqs. 16-17
             if self.diversity == "nsga2-gaussian":
-                X = gaussian_search(X, self.xl, self.xu, rng=rng)
+                X = gaussian_search(X, self.xl, self.xu, rng=self.random_state)
             F, CV = yield X
             self._remember(X, F, CV)

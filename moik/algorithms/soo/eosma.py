@@ -70,6 +70,7 @@ from moik.algorithms.generator_handle import GeneratorHandles
 from moik.algorithms.soo.eo import eo_schedule, select_pool
 from moik.algorithms.soo.eosma_kernels import (
     POOL_SIZE,
+    GenerationDraws,
     difference_rows,
     eosma_rows,
     first_pool,
@@ -183,9 +184,7 @@ class EOSMA(ArrayAlgorithm):
 
     def _initialize_state(self) -> None:
         n, d = self.pop_size, self.problem.n_var
-        # scratch of the generation kernels (see eosma_kernels)
-        self._cells, self._rows = np.empty((5, n, d)), np.empty((5, n))
-        self._picks = np.empty((7, n), dtype=np.int64)
+        self._draws = GenerationDraws(n, d)  # one generation's random numbers (named slots)
         self._zeros = np.zeros(n)  # the violation of unconstrained rows
         self._handles = GeneratorHandles()
         self._bounds = np.stack([self.xl, self.xu]).astype(float)
@@ -195,22 +194,23 @@ class EOSMA(ArrayAlgorithm):
     def _violation(self, CV):
         return self._zeros if CV is None else kernel_array(CV)
 
-    def _set_memory(self, PX, PM, pool, QM) -> None:
-        """The memory: kernels use the packed arrays (pbest F and CV in ``_PM`` (2, n), the
-        pool with its mean as a last row in ``_pool``, its F and CV in ``_QM``); the
-        public attributes are views of them."""
-        self.pbest_X, self._PM, self._pool, self._QM = PX, PM, pool, QM
-        self.pbest_F, self.pool_X, self.pool_F = PM[0], pool[:-1], QM[0]
+    def _set_memory(self, PX, pbest_fcv, pool, pool_fcv) -> None:
+        """The memory: kernels use the packed arrays (pbest F and CV in ``_pbest_fcv``
+        (2, n), the pool with its mean as a last row in ``_pool``, its F and CV in
+        ``_pool_fcv``); the public attributes are views of them."""
+        self.pbest_X, self._pbest_fcv, self._pool, self._pool_fcv = PX, pbest_fcv, pool, pool_fcv
+        self.pbest_F, self.pool_X, self.pool_F = pbest_fcv[0], pool[:-1], pool_fcv[0]
         self.pbest_CV: np.ndarray | None
         self.pool_CV: np.ndarray | None
-        self.pbest_CV, self.pool_CV = (PM[1], QM[1]) if self._constrained else (None, None)
+        self.pbest_CV, self.pool_CV = ((pbest_fcv[1], pool_fcv[1]) if self._constrained
+                                       else (None, None))
 
     def _remember(self, X, F, CV, mutate: bool) -> np.ndarray:
         """Eqs. 18 and 7 after an evaluation; returns the Eq. 16 candidates if ``mutate``."""
         self.X, self.F, self.CV = X, F, CV
         *memory, X_mut = remember(X, kernel_array(F), self._violation(CV), self.pbest_X,
-                                  self._PM, self._pool, self._QM, mutate, self._rows,
-                                  self._picks, self._bounds)
+                                  self._pbest_fcv, self._pool, self._pool_fcv, mutate,
+                                  self._draws.rows, self._draws.picks, self._bounds)
         self._set_memory(*memory)
         return X_mut
 
@@ -224,14 +224,14 @@ class EOSMA(ArrayAlgorithm):
         of drawing each number where it is used."""
         t1 = eo_schedule(self.t, self.max_iter, self.a2)
         a, _ = sma_schedule(self.t, self.max_iter)
-        cells, rows, picks = self._cells, self._rows, self._picks
-        mutate = generation_draws(self._handles.of(self.random_state), self._PM,
-                                  len(self._pool), t1, a, self.q, cells, rows, picks)
-        np.log10(rows[0], out=rows[0])  # Eq. 4
-        np.exp(cells[2], out=cells[2])  # Eq. 8
+        draws = self._draws
+        mutate = generation_draws(self._handles.of(self.random_state), self._pbest_fcv,
+                                  len(self._pool), t1, a, self.q, draws.cells, draws.rows,
+                                  draws.picks)
+        draws.apply_numpy_maths()  # Eqs. 4 and 8
         X = generation_candidates(self.pbest_X, kernel_array(self.best_x)[None], self._pool,
-                                  cells, rows, picks, self.z, self.a1, self.GP, self.V,
-                                  self._bounds)
+                                  draws.cells, draws.rows, draws.picks, self.z, self.a1,
+                                  self.GP, self.V, self._bounds)
         F, CV = yield X
         X = self._remember(X, F, CV, mutate)
         if mutate:  # Algorithm 1, line 22 (Eq. 16)

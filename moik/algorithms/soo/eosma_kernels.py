@@ -70,9 +70,70 @@ def difference_rows(P, R, SF, out):
     return out
 
 
-# One generation of the EOSMA class. Its scratch: cells (5, n, d) holds r of Eq. 4 (per
-# rank), lam, exp(-lam t1), r of Eq. 8 and vb; rows (5, n) the Eq. 4 log10 (per rank), r1,
-# r2, the operator test and SF; picks (7, n) the ranking, the pool index, A, B, R1..R3.
+# One generation's random numbers (GenerationDraws): three scratch arrays whose slots are
+# named here; the kernels index them by these constants (numba folds module-level ints).
+# cells (5, n, d): per agent and coordinate
+WEIGHT_R = 0  # r of Eq. 4, per rank
+LAMBDA = 1  # lambda of Eq. 8
+DECAY = 2  # -lambda t1, then numpy's exp(-lambda t1) (Eq. 8)
+EO_R = 3  # r of Eq. 8's sign
+VB = 4  # SMA's vb of Eq. 1 in U(-a, a)
+N_CELLS = 5
+# rows (5, n): per agent
+LOG_WEIGHT = 0  # the Eq. 4 log10 argument per rank, then numpy's log10
+GCP_R1 = 1  # r1 of Eq. 9
+GCP_R2 = 2  # r2 of Eq. 9
+OPERATOR_U = 3  # Eq. 15's operator test (EO where < z)
+SF = 4  # Eq. 16's scale factor in U(0.3, 0.6)
+N_ROWS = 5
+# picks (7, n): per agent, integers
+ORDER = 0  # the ranking of Eq. 5 (best first)
+POOL_INDEX = 1  # the pool member of Eq. 6
+A_INDEX = 2  # X_A of Eq. 1
+B_INDEX = 3  # X_B of Eq. 1
+MUTANT_R = 4  # R1, R2, R3 of Eq. 16 (three slots: 4, 5, 6)
+N_PICKS = 7
+
+
+class GenerationDraws:
+    """Every random number of one EOSMA/MOEOSMA generation, in named slots.
+
+    The kernels take the three arrays (``cells`` (5, n, d), ``rows`` (5, n), ``picks``
+    (7, n) int) and index them by the module's slot constants; this class owns them and
+    names each slot (a view) for readers and tests.
+
+    Args:
+        n: Number of agents. d: Number of variables.
+    """
+
+    def __init__(self, n: int, d: int) -> None:
+        self.cells = np.empty((N_CELLS, n, d))
+        self.rows = np.empty((N_ROWS, n))
+        self.picks = np.empty((N_PICKS, n), dtype=np.int64)
+
+    weight_r = property(lambda self: self.cells[WEIGHT_R], doc="r of Eq. 4 (n, d), per rank")
+    lam = property(lambda self: self.cells[LAMBDA], doc="lambda of Eq. 8 (n, d)")
+    decay = property(lambda self: self.cells[DECAY], doc="exp(-lambda t1) of Eq. 8 (n, d)")
+    eo_r = property(lambda self: self.cells[EO_R], doc="r of Eq. 8's sign (n, d)")
+    vb = property(lambda self: self.cells[VB], doc="vb of Eq. 1 (n, d)")
+    log_weight = property(lambda self: self.rows[LOG_WEIGHT], doc="Eq. 4's log10 term (n,)")
+    gcp_r1 = property(lambda self: self.rows[GCP_R1], doc="r1 of Eq. 9 (n,)")
+    gcp_r2 = property(lambda self: self.rows[GCP_R2], doc="r2 of Eq. 9 (n,)")
+    operator_u = property(lambda self: self.rows[OPERATOR_U], doc="Eq. 15's test (n,)")
+    sf = property(lambda self: self.rows[SF], doc="SF of Eq. 16 (n,)")
+    order = property(lambda self: self.picks[ORDER], doc="Eq. 5's ranking (n,)")
+    pool_index = property(lambda self: self.picks[POOL_INDEX], doc="Eq. 6's pool member (n,)")
+    a_index = property(lambda self: self.picks[A_INDEX], doc="X_A of Eq. 1 (n,)")
+    b_index = property(lambda self: self.picks[B_INDEX], doc="X_B of Eq. 1 (n,)")
+    mutant_r = property(lambda self: self.picks[MUTANT_R:MUTANT_R + 3],
+                        doc="R1..R3 of Eq. 16 (3, n)")
+
+    def apply_numpy_maths(self) -> None:
+        """numpy's log10 (Eq. 4) and exp (Eq. 8) in place, between the draws and the
+        candidates (numpy's and the C library's differ in the last bit: module doc)."""
+        np.log10(self.rows[LOG_WEIGHT], out=self.rows[LOG_WEIGHT])
+        np.exp(self.cells[DECAY], out=self.cells[DECAY])
+
 
 @jit(inline=True)
 def fill_random(rng, A):
@@ -92,39 +153,60 @@ def fill_integers(rng, high, A):
 
 
 @jit
-def generation_draws(handle, PM, n_pool, t1, a, q, cells, rows, picks):
+def generation_draws(handle, pbest_fcv, n_pool, t1, a, q, cells, rows, picks):
     """Every random number of one generation, in Algorithm 1's order; the mutation test.
 
-    Ranks the personal bests by ``PM = (F, CV)`` (Eq. 5) and fills the Eq. 4 log10
-    argument into ``rows[0]`` and ``-lam t1`` into ``cells[2]`` (the caller applies numpy's
-    log10 and exp). Draws: r (n, d) of Eq. 4; lam, r (n, d), the pool index, r1, r2 (n,)
-    of Eqs. 8-9; vb (n, d); A, B; the operator test (n,); the mutation test of line 22
-    and, when it passes, R1..R3 and SF of Eq. 16, all on ``handle.rng`` (a
-    :class:`~moik.algorithms.generator_handle.GeneratorHandle`). Returns whether the
-    mutation runs.
+    Ranks the personal bests by ``pbest_fcv = (F, CV)`` (Eq. 5) and fills the Eq. 4 log10
+    argument into ``rows[LOG_WEIGHT]`` and ``-lam t1`` into ``cells[DECAY]`` (the caller
+    applies numpy's log10 and exp). Draws: r (n, d) of Eq. 4; lam, r (n, d), the pool
+    index, r1, r2 (n,) of Eqs. 8-9; vb (n, d); A, B; the operator test (n,); the mutation
+    test of line 22 and, when it passes, R1..R3 and SF of Eq. 16, all on ``handle.rng`` (a
+    :class:`~moik.algorithms.generator_handle.GeneratorHandle`), into the named slots of
+    :class:`GenerationDraws`. Returns whether the mutation runs.
     """
     rng = handle.rng
-    n, d = cells.shape[1], cells.shape[2]
-    weight_arguments(ranking_into(PM[0], PM[1], np.empty(n)), picks[0], rows[0])
-    fill_random(rng, cells[0])
-    fill_random(rng, cells[1])
+    n = cells.shape[1]
+    weight_arguments(ranking_into(pbest_fcv[0], pbest_fcv[1], np.empty(n)), picks[ORDER],
+                     rows[LOG_WEIGHT])
+    fill_random(rng, cells[WEIGHT_R])
+    fill_random(rng, cells[LAMBDA])
+    decay_into(cells, t1)
+    fill_random(rng, cells[EO_R])
+    fill_integers(rng, n_pool, picks[POOL_INDEX:POOL_INDEX + 1])
+    fill_random(rng, rows[GCP_R1:GCP_R2 + 1])
+    uniform_into(rng, -a, a, cells[VB])
+    fill_integers(rng, n, picks[A_INDEX:B_INDEX + 1])
     for i in range(n):
-        for j in range(d):
-            cells[2, i, j] = -cells[1, i, j] * t1  # numpy's exp follows in the caller
-    fill_random(rng, cells[3])
-    fill_integers(rng, n_pool, picks[1:2])
-    fill_random(rng, rows[1:3])
-    for i in range(n):
-        for j in range(d):
-            cells[4, i, j] = rng.uniform(-a, a)
-    fill_integers(rng, n, picks[2:4])
-    for i in range(n):
-        rows[3, i] = rng.random()
+        rows[OPERATOR_U, i] = rng.random()
+    return mutation_draws(rng, q, rows, picks)
+
+
+@jit(inline=True)
+def decay_into(cells, t1):
+    """``cells[DECAY] = -lam t1`` (numpy's exp follows in the caller, Eq. 8)."""
+    for i in range(cells.shape[1]):
+        for j in range(cells.shape[2]):
+            cells[DECAY, i, j] = -cells[LAMBDA, i, j] * t1
+
+
+@jit(inline=True)
+def uniform_into(rng, lo, hi, A):
+    """``A`` (2-D) filled as ``rng.uniform(lo, hi, A.shape)``."""
+    for i in range(A.shape[0]):
+        for j in range(A.shape[1]):
+            A[i, j] = rng.uniform(lo, hi)
+
+
+@jit(inline=True)
+def mutation_draws(rng, q, rows, picks):
+    """The mutation test (EOSMA line 22, MOEOSMA line 26) and, when it passes, R1..R3
+    (one ``integers`` call of 3n) and SF of Eq. 16. Returns whether the mutation runs."""
+    n = rows.shape[1]
     mutate = rng.random() < q
     if mutate:
-        fill_integers(rng, n, picks[4:7])
+        fill_integers(rng, n, picks[MUTANT_R:MUTANT_R + 3])
         for i in range(n):
-            rows[4, i] = rng.uniform(0.3, 0.6)
+            rows[SF, i] = rng.uniform(0.3, 0.6)
     return mutate
 
 
@@ -140,13 +222,22 @@ def repaired(X, P, bounds):
 
 @jit
 def generation_candidates(P, g_best, pool, cells, rows, picks, z, a1, GP, V, bounds):
-    """Eqs. 4, 15 and 17: the repaired candidates of a generation from its drawn numbers."""
+    """Eqs. 4, 15 and 17: the repaired candidates of a generation from its drawn numbers.
+    ``g_best`` is (1, d), or (n, d) with one leader per agent (MOEOSMA)."""
     n, d = P.shape
-    W = weights_into(picks[0], rows[0], cells[0], np.empty((n, d)))
-    X = eosma_rows(P, g_best, pool, W, cells[1], cells[2], cells[3], picks[1], rows[1],
-                   rows[2], cells[4], picks[2], picks[3], rows[3], z, a1, GP, V,
-                   np.empty((n, d)))
+    W = weights_into(picks[ORDER], rows[LOG_WEIGHT], cells[WEIGHT_R], np.empty((n, d)))
+    X = eosma_rows(P, g_best, pool, W, cells[LAMBDA], cells[DECAY], cells[EO_R],
+                   picks[POOL_INDEX], rows[GCP_R1], rows[GCP_R2], cells[VB], picks[A_INDEX],
+                   picks[B_INDEX], rows[OPERATOR_U], z, a1, GP, V, np.empty((n, d)))
     return repaired(X, P, bounds)
+
+
+@jit
+def mutation_candidates(P, rows, picks, bounds):
+    """Eqs. 16 and 17: the repaired mutants of the personal bests ``P`` from the drawn
+    R1..R3 and SF."""
+    X = np.empty(P.shape)
+    return repaired(difference_rows(P, picks[MUTANT_R:MUTANT_R + 3], rows[SF], X), P, bounds)
 
 
 @jit
@@ -160,19 +251,18 @@ def first_pool(X, F, CV):
 
 
 @jit
-def remember(X, F, CV, PX, PM, pool, QM, mutate, rows, picks, bounds):
+def remember(X, F, CV, PX, pbest_fcv, pool, pool_fcv, mutate, rows, picks, bounds):
     """Eqs. 18 and 7 after an evaluation, and the Eq. 16 candidates when ``mutate``.
 
-    The memory: personal bests ``PX`` (n, d) and their ``PM = (F, CV)`` (2, n); the pool
-    with its mean as a last row, ``pool`` (k + 1, d), and its ``QM = (F, CV)`` (2, k).
-    Returns the new ``(PX, PM, pool, QM)`` and the repaired mutation candidates (no rows
-    unless ``mutate``).
+    The memory: personal bests ``PX`` (n, d) and their ``pbest_fcv = (F, CV)`` (2, n);
+    the pool with its mean as a last row, ``pool`` (k + 1, d), and its
+    ``pool_fcv = (F, CV)`` (2, k). Returns the new ``(PX, pbest_fcv, pool, pool_fcv)``
+    and the repaired mutation candidates (no rows unless ``mutate``).
     """
-    PX, PF, PCV = greedy_step(X, F, CV, PX, PM[0], PM[1])
-    QX, QF, QCV = pool_update(pool, QM[0], QM[1], X, F, CV, POOL_SIZE, True)  # not its mean
-    X_mut = np.empty((PX.shape[0] if mutate else 0, PX.shape[1]))
-    if mutate:
-        repaired(difference_rows(PX, picks[4:7], rows[4], X_mut), PX, bounds)
+    PX, PF, PCV = greedy_step(X, F, CV, PX, pbest_fcv[0], pbest_fcv[1])
+    QX, QF, QCV = pool_update(pool, pool_fcv[0], pool_fcv[1], X, F, CV, POOL_SIZE, True)
+    X_mut = mutation_candidates(PX, rows, picks, bounds) if mutate else \
+        np.empty((0, PX.shape[1]))
     return PX, pack(PF, PCV), pool_with_mean(QX), pack(QF, QCV), X_mut
 
 

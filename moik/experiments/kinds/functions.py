@@ -28,7 +28,6 @@ constraint violation, ``sum(max(G, 0))``, 0 for unconstrained problems),
 
 from __future__ import annotations
 
-import importlib.util
 import inspect
 import time
 from collections.abc import Mapping
@@ -127,15 +126,6 @@ def check_config(where: str, cfg: Mapping) -> tuple[dict, tuple[BenchmarkTarget,
     problem = {"kind": "benchmark", "names": entries, **({"params": common} if common else {})}
     targets = tuple(BenchmarkTarget(e["label"], e["name"], dict(e["params"])) for e in entries)
     return problem, targets
-
-
-def check_requirements(config) -> None:
-    """Raise :class:`ConfigError` if an extra the experiment requires is not installed."""
-    for extra in config["requires"] or []:
-        module, what = EXTRAS[extra]
-        if importlib.util.find_spec(module) is None:
-            raise ConfigError(f"experiment {config.name!r} needs the optional extra {extra!r} "
-                              f"({module}, for {what}): pip install 'moik[{extra}]'")
 
 
 def build_benchmark(entry: Mapping) -> Problem:

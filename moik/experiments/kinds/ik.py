@@ -16,7 +16,7 @@ Config keys (see :mod:`moik.experiments.config` for the others):
 Joint values in configs are degrees (``q_start_deg``, ``fk_q_deg``); lengths are
 in the robot's unit. MO-m-PSO Section 4.4 ("alpha = 0, beta = 0, gamma is free")
 uses the named metric ``"zyx-euler-free-gamma"`` of :mod:`moik.kinematics.orientation`.
-``locked_joints_deg`` (one entry per joint, ``None`` for a free joint) fixes
+``locked_joints_deg`` (one entry per joint, ``"free"`` (or ``None``) for a free joint) fixes
 joints with :meth:`~moik.robots.Robot.with_locked_joints` (I-BES Table 9 solves
 the Puma 560 position with joints 4-6 at 0); a fixed target point may name its
 own ``robot`` (I-BES Table 8: one target per arm), else the experiment's is used.
@@ -116,6 +116,9 @@ def check_config(where: str, cfg: Mapping) -> tuple[dict, tuple[NamedTarget, ...
         raise ConfigError(f"{where}: an IK experiment needs 'robot' and 'targets' (and takes "
                           "no 'requires')")
     problem = _check_problem(f"{where}: problem", cfg["problem"])
+    if isinstance(problem.get("locked_joints_deg"), list):  # TOML has no null: "free"
+        problem["locked_joints_deg"] = [None if v == "free" else v
+                                        for v in problem["locked_joints_deg"]]
     robots: dict[str, Robot] = {}  # name -> the arm with the locked joints, built once
 
     def robot_of(name: Any, key: str) -> Robot:
@@ -166,7 +169,7 @@ def _check_locked_joints(where: str, p: Mapping, dof: int) -> None:
         lj = p["locked_joints_deg"]
         if not isinstance(lj, list) or len(lj) != dof:
             raise ConfigError(f"{where}.locked_joints_deg must be a list of {dof} entries "
-                              f"(a number or None per joint), got {lj!r}")
+                              f"(a number, or \"free\" for a free joint), got {lj!r}")
         for i, v in enumerate(lj):
             if v is not None:
                 number(f"{where}.locked_joints_deg[{i}]", v)

@@ -1,11 +1,10 @@
 """MOEOSMA (moik.algorithms.moo.moeosma): kernels, evaluation count, parameters, and HV
-sanity against pymoo's NSGA2."""
+sanity against ZDT1's analytic front."""
 
 import copy
 
 import numpy as np
 import pytest
-from pymoo.algorithms.moo.nsga2 import NSGA2
 from pymoo.optimize import minimize
 from pymoo.problems import get_problem
 
@@ -69,20 +68,27 @@ def test_reachable_ik_pose_p2_reaches_both_errors():
     assert np.array_equal(np.clip(res.X, xl, xu), res.X)
 
 
-def test_zdt1_hv_at_least_95_percent_of_nsga2():
-    """ZDT1 (30 variables), 25,000 evaluations, reference (1.1, 1.1), mean of 5 seeds.
+ZDT1_OPTIMAL_HV = 0.1 + 2.0 / 3.0 + 0.11
+"""HV of ZDT1's Pareto front f2 = 1 - sqrt(f1), f1 in [0, 1], for the reference (1.1, 1.1):
+the integral of 0.1 + sqrt(f1) over [0, 1] plus the 0.1 x 1.1 strip beyond f1 = 1."""
 
-    Measured: MOEOSMA 0.8463 vs NSGA2 0.8695 (ratio 0.973); about 5 s on 2 busy cores.
+
+def test_zdt1_hv_within_5_percent_of_the_optimum():
+    """ZDT1 (30 variables), 25,000 evaluations, reference (1.1, 1.1), mean of 5 seeds: at
+    least 95 % of the front's analytic HV (a stated tolerance: the front is reached, not
+    merely approached; pymoo's NSGA-II gets 99.2 % here).
+
+    Measured: MOEOSMA 0.8463 (96.5 % of 0.8767) vs NSGA2 0.8695; about 3 s on 2 busy cores.
     """
     problem, ref = get_problem("zdt1"), [1.1, 1.1]
-    hv_moeosma, hv_nsga2 = [], []
+    # pymoo's sampled front (100 points) falls short of the analytic value by its gaps
+    assert ZDT1_OPTIMAL_HV - 0.01 < hypervolume(problem.pareto_front(), ref) < ZDT1_OPTIMAL_HV
+    hv = []
     for seed in range(5):
         res = minimize(problem, MOEOSMA(), ("n_eval", 25_000), seed=seed)
         assert res.algorithm.evaluator.n_eval == 25_000
-        hv_moeosma.append(hypervolume(res.F, ref))
-        res = minimize(problem, NSGA2(pop_size=100), ("n_eval", 25_000), seed=seed)
-        hv_nsga2.append(hypervolume(res.F, ref))
-    assert np.mean(hv_moeosma) >= 0.95 * np.mean(hv_nsga2)
+        hv.append(hypervolume(res.F, ref))
+    assert np.mean(hv) >= 0.95 * ZDT1_OPTIMAL_HV
 
 
 def _numpy_generation(alg, rng, problem):

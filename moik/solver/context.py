@@ -1,0 +1,160 @@
+"""The constants of one solve (:class:`IKContext`), the scratch of LM (:class:`LMWorkspace`).
+
+Pinocchio's Model/Data split: the context is what a solve knows and never changes
+(the chain, its joint types and limits, the target, ``1 / reach``, the stopping and
+acceptance tolerances, the distinct-solution threshold), built in exactly one place,
+:func:`ik_context`, from a :class:`~moik.robots.chain.Robot` and a
+:class:`~moik.problems.targets.Target`; the workspace is the scratch the
+Levenberg-Marquardt kernels (:mod:`moik.solver.lm`) write into. Every solver kernel
+takes ``(ctx, ws, ...)`` instead of a dozen positional arrays, so a swapped
+``stop_position`` / ``stop_orientation`` cannot compile silently.
+
+Why these numba types (measured on this machine, one call from Python, median):
+a ``NamedTuple`` passed from Python costs 7-16 us of numba's ``typeof`` per call (its
+fields are typed one by one in Python), against 4-5 us for the 20 positional arrays it
+replaces, and a jitclass cannot be cached on disk. A numba ``StructRef`` is typed by
+one attribute (dispatch as cheap as the positional call), is cacheable, and is built by
+a cached compiled constructor (about 2 us); so the context is a StructRef. The
+workspace never crosses into Python: :func:`lm_workspace` builds it (a NamedTuple of
+arrays, about 1 us) inside the compiled start loop, once per call instead of once
+per start.
+
+Extension points for collision terms (the collision issue): (1) add the collision
+model's arrays (capsules on link frames, obstacles, a margin) as fields of
+:class:`IKContext` (``FIELDS``, :func:`_new_context`, and one keyword of
+:func:`ik_context`: empty arrays when a solve has none), (2) add the scratch of their
+distances and gradients to :class:`LMWorkspace` / :func:`lm_workspace`, (3) add their
+residual rows in :func:`moik.solver.lm.residual` (after the 6 pose rows, with ``r`` and
+``Jr`` sized for them in the workspace) or a distance test in
+:func:`moik.solver.starts.recheck` (the acceptance of an end). The start loop
+(:func:`moik.solver.starts.run_starts`, :func:`~moik.solver.starts.run_batch`) and its
+callers stay as they are. A context is not picklable or copyable (numba StructRef):
+objects that pymoo deep-copies build theirs per call, as
+:class:`~moik.solver.pareto_search.Projector` does.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+from numba import types as nb_types
+from numba.experimental import structref
+
+from moik._jit import jit, kernel_array
+from moik.problems.targets import Target
+from moik.robots.chain import Robot
+
+NO_STOP = -1.0  # a stopping tolerance that never converges (the front's scalarisations)
+
+
+@structref.register
+class IKContextType(nb_types.StructRef):
+    """numba type of :class:`IKContext` (literal field types widened)."""
+
+    def preprocess_fields(self, fields):
+        return tuple((name, nb_types.unliteral(typ)) for name, typ in fields)
+
+
+class IKContext(structref.StructRefProxy):
+    """The constants of one solve (numba StructRef; build it with :func:`ik_context`).
+
+    Fields (read in compiled code; reading one from Python compiles a getter, so
+    Python code keeps its own copies):
+        origins, joint_types: The chain (``KinematicChain.origins``, ``.joint_types``).
+        lower, upper: Joint limits.
+        rotation, position: The target (identity rotation for a position target).
+        has_rotation: Whether the target has a rotation.
+        inv_reach: ``1 / robot.reach`` (the residual's position scale ``1 / L``).
+        stop_position, stop_orientation: A start has converged when its errors (robot
+            unit, rad) are at most these (:data:`NO_STOP`: never).
+        tol_position, tol_orientation: A re-checked end is a solution when its errors
+            are at most these.
+        distinct: Joint-space distance (revolute joints modulo 2 pi) above which two
+            solutions are distinct.
+        max_iter: Levenberg-Marquardt iterations per start.
+    """
+
+
+FIELDS = ("origins", "joint_types", "lower", "upper", "rotation", "position", "has_rotation",
+          "inv_reach", "stop_position", "stop_orientation", "tol_position", "tol_orientation",
+          "distinct", "max_iter")
+structref.define_proxy(IKContext, IKContextType, list(FIELDS))
+
+
+@jit
+def _new_context(chain, target, stops, tols, distinct, max_iter):
+    """The compiled constructor (cached; the proxy's own would compile in every process)."""
+    return IKContext(chain[0], chain[1], chain[2], chain[3], target[0], target[1], target[2],
+                     stops[0], stops[1], stops[2], tols[0], tols[1], distinct, max_iter)
+
+
+def target_arrays(target: Target) -> tuple[np.ndarray, np.ndarray, bool]:
+    """``(rotation, position, has_rotation)`` of a target as kernel arrays (the one
+    conversion; the identity rotation for a position target)."""
+    has_rot = target.rotation is not None
+    return (kernel_array(target.rotation if has_rot else np.eye(3)),
+            kernel_array(target.position), has_rot)
+
+
+def ik_context(robot: Robot, target: Target, *, stop: tuple[float, float],
+               tol: tuple[float, float] = (0.0, 0.0), distinct: float = 0.1,
+               max_iter: int = 30) -> IKContext:
+    """The :class:`IKContext` of ``robot`` and ``target`` (the one place it is built).
+
+    Args:
+        robot, target: The problem.
+        stop: ``(position, orientation)`` at which a start has converged (robot unit,
+            rad; :data:`NO_STOP` for never).
+        tol: ``(position, orientation)`` within which a re-checked end is a solution.
+        distinct: Joint-space distance above which two solutions are distinct.
+        max_iter: Levenberg-Marquardt iterations per start.
+    """
+    chain = robot.kinematic_chain
+    return _new_context((chain.origins, chain.joint_types, robot.lower, robot.upper),
+                        target_arrays(target),
+                        (1.0 / robot.reach, float(stop[0]), float(stop[1])),
+                        (float(tol[0]), float(tol[1])), float(distinct), int(max_iter))
+
+
+@jit
+def retarget(ctx, rotation, position):
+    """Point ``ctx`` at another target of the same kind (a batch: one context, many targets)."""
+    ctx.rotation = rotation
+    ctx.position = position
+
+
+class LMWorkspace(NamedTuple):
+    """Scratch of the Levenberg-Marquardt kernels for one chain (built by :func:`lm_workspace`).
+
+    ``T``: the pose; ``M``: ``R R_t^T``; ``J``: the geometric Jacobian; ``r``, ``Jr``: the
+    residual and its Jacobian at the iterate, ``rt``, ``Jrt`` at the trial point;
+    ``JtJ``, ``A``, ``g``, ``gb``, ``step``, ``blocked``: the damped normal equations;
+    ``trial``: the trial point; ``err``: a re-check's (position, orientation) errors.
+    """
+
+    T: np.ndarray
+    M: np.ndarray
+    J: np.ndarray
+    r: np.ndarray
+    Jr: np.ndarray
+    rt: np.ndarray
+    Jrt: np.ndarray
+    JtJ: np.ndarray
+    A: np.ndarray
+    g: np.ndarray
+    gb: np.ndarray
+    step: np.ndarray
+    blocked: np.ndarray
+    trial: np.ndarray
+    err: np.ndarray
+
+
+@jit
+def lm_workspace(dof):
+    """A fresh :class:`LMWorkspace` for a chain of ``dof`` joints."""
+    return LMWorkspace(np.empty((4, 4)), np.empty((3, 3)), np.empty((6, dof)), np.empty(6),
+                       np.empty((6, dof)), np.empty(6), np.empty((6, dof)),
+                       np.empty((dof, dof)), np.empty((dof, dof)), np.empty(dof),
+                       np.empty(dof), np.empty(dof), np.zeros(dof, dtype=np.bool_),
+                       np.empty(dof), np.empty(2))

@@ -1,6 +1,6 @@
 """One aggregate collision constraint or one per link? (run: python -m studies.collision_groups)
 
-The collision-front problem (experiments/collision_front.py: Panda, shelf, side wall and
+The collision-front problem (experiments/collision_front.toml: Panda, shelf, side wall and
 table) at both targets with clearance 0.02 m (harder than the experiment's 0; the Franka
 capsules of links 1 and 3 are never farther apart than 0.026 m, so 0.026 m is the largest
 feasible clearance), solved by NSGA-II (pymoo) and MOEOSMA (moik) with ``groups="min"``
@@ -17,8 +17,8 @@ default.
 
 from __future__ import annotations
 
-import importlib.util
 import time
+import tomllib
 from pathlib import Path
 
 import numpy as np
@@ -33,16 +33,12 @@ from moik.metrics import hypervolume
 from moik.problems import BiObjectiveIK
 from moik.problems.collision_ik import CollisionIK
 
-CONFIG = Path(__file__).resolve().parents[1] / "experiments" / "collision_front.py"
+CONFIG = Path(__file__).resolve().parents[1] / "experiments" / "collision_front.toml"
 REF = np.array([1.5, np.pi])
 
 
 def _config() -> dict:
-    spec = importlib.util.spec_from_file_location("collision_front", CONFIG)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module.EXPERIMENT
+    return tomllib.loads(CONFIG.read_text())
 
 
 def main() -> None:

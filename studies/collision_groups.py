@@ -18,10 +18,10 @@ default.
 from __future__ import annotations
 
 import time
-import tomllib
 from pathlib import Path
 
 import numpy as np
+import tomllib
 from pymoo.optimize import minimize
 
 from moik import get_robot

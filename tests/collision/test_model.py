@@ -59,7 +59,7 @@ def test_gradient_matches_finite_differences():
     checker = CollisionChecker(model=collision_model("panda"), scene=_scene())
     rng = np.random.default_rng(5)
     checked = 0
-    for q in checker.robot.random_q(40, rng=rng):
+    for q in checker.robot.random_q(20, rng=rng):
         d, g = checker.min_distance_and_gradient(q)
         if d < 0.005:  # penetrating box pairs use the contact-normal approximation
             continue
@@ -68,7 +68,7 @@ def test_gradient_matches_finite_differences():
                        / (2 * eps) for e in np.eye(q.size)])
         np.testing.assert_allclose(g, fd, atol=1e-5)
         checked += 1
-    assert checked >= 10
+    assert checked >= 5
 
 
 def test_model_validation():

@@ -1,4 +1,5 @@
-"""Start-up time: a fresh process importing moik and solving one pose, beside numba's floor.
+"""Start-up time: a fresh process importing moik and solving one pose, beside numba's floor;
+the ``moik`` command's ``--help`` and ``robots``; cold first solves (empty kernel cache).
 
 Each sample is a new Python process (kernels already cached on disk: run any solve once
 before). ``floor`` imports numpy and numba and calls one cached kernel, the least any
@@ -6,6 +7,11 @@ numba-based solver pays (numba's first call loads its registries, which import
 scipy.linalg); ``moik`` imports moik and solves a Puma 560 pose. Samples interleave the
 two; medians are printed. Cold start (no kernel cache): ``--cold`` also times one first
 solve with an empty NUMBA_CACHE_DIR (wall and CPU seconds).
+
+``moik --help`` and ``moik robots`` (goal <= 0.3 s warm) are timed as fresh processes,
+interleaved with the others. ``--cold`` times, each in a fresh process with its own empty
+NUMBA_CACHE_DIR, a first ``solve`` (goal <= 10 s), a first ``solve --pareto`` (goal
+<= 10 s) and a first unreachable solve (wall and CPU seconds).
 
 Run: python benchmarks/startup.py [--n 15] [--cold] [--out FILE] (``--out`` also writes the
 printed table to FILE, e.g. docs/results/startup.txt, which docs/performance.md links to).
@@ -34,10 +40,19 @@ MOIK = ("import numpy as np, moik\n"
         "assert moik.solve_ik(moik.get_robot('puma560'), T).success\n")
 
 
+CLI = "import sys\nfrom moik.cli import main\nsys.exit(main(sys.argv[1:]))\n"
+COLD = {  # the command lines of the cold first uses, and their goals (s)
+    "first solve": (["solve", "puma560", "--target", "0.4", "0.2", "0.3"], 10.0),
+    "first solve --pareto": (["solve", "iiwa14", "--target", "0.4", "0.2", "0.5", "--pareto",
+                              "manipulability,limit_margin", "--pareto-size", "5"], 10.0),
+    "first unreachable solve": (["solve", "puma560", "--target", "2", "0", "0"], 10.0),
+}
+
 SCRIPTS = tempfile.mkdtemp(prefix="moik-startup-")
 
 
-def wall(code: str, env: dict | None = None) -> tuple[float, float]:
+def wall(code: str, env: dict | None = None, args: list[str] | None = None,
+         check: bool = True) -> tuple[float, float]:
     """Wall and child CPU seconds of one fresh process running ``code`` (from a file)."""
     path = os.path.join(SCRIPTS, f"s{abs(hash(code))}.py")
     if not os.path.exists(path):
@@ -45,7 +60,8 @@ def wall(code: str, env: dict | None = None) -> tuple[float, float]:
             f.write(code)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
-    subprocess.run([sys.executable, path], check=True, env=env, stderr=subprocess.DEVNULL)
+    subprocess.run([sys.executable, path, *(args or [])], check=check, env=env,
+                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     return time.perf_counter() - t0, cpu
@@ -65,20 +81,26 @@ def measure(n: int, *, cold: bool) -> None:
     """Print the medians of ``n`` interleaved samples, and the cold first solve if asked."""
     wall(MOIK)  # make sure the kernels are cached
     wall(FLOOR)
-    floor, moik = [], []
+    floor, moik, helps, robots = [], [], [], []
     for _ in range(n):
         floor.append(wall(FLOOR)[0])
         moik.append(wall(MOIK)[0])
+        helps.append(wall(CLI, args=["--help"])[0])
+        robots.append(wall(CLI, args=["robots"])[0])
     load = os.getloadavg()[0]
     print(f"{n} samples of each, interleaved; load average {load:.1f} after them")
+    print(f"moik --help:  median {np.median(helps):.3f} s (goal <= 0.3 s)")
+    print(f"moik robots:  median {np.median(robots):.3f} s (goal <= 0.3 s)")
     print(f"numba floor (numpy + numba + one cached kernel): median {np.median(floor):.3f} s")
     print(f"moik import + first solve (cached kernels):      median {np.median(moik):.3f} s "
           f"(goal <= 0.5 s); moik above the floor: {np.median(moik) - np.median(floor):.3f} s")
     if cold:
-        with tempfile.TemporaryDirectory() as cache:
-            seconds, cpu = wall(MOIK, env={**os.environ, "NUMBA_CACHE_DIR": cache})
-        print(f"cold first solve (empty kernel cache): {seconds:.1f} s wall, {cpu:.1f} s CPU "
-              "(goal <= 10 s)")
+        for what, (argv, goal) in COLD.items():
+            with tempfile.TemporaryDirectory() as cache:
+                seconds, cpu = wall(CLI, env={**os.environ, "NUMBA_CACHE_DIR": cache},
+                                    args=argv, check=False)  # unreachable exits 1
+            print(f"cold {what} (empty kernel cache): {seconds:.1f} s wall, {cpu:.1f} s CPU "
+                  f"(goal <= {goal:g} s)")
 
 
 if __name__ == "__main__":

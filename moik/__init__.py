@@ -28,11 +28,11 @@ if TYPE_CHECKING:
         IKResult,
         ParetoIKResult,
         PathResult,
-        solve_ik,
         solve_ik_batch,
         solve_ik_pareto,
         solve_path,
     )
+    from moik.solver.solve_ik import solve_ik
 
 _LAZY: dict[str, tuple[str, str | None]] = {
     "IKBatchResult": ("moik.solver.batch", "IKBatchResult"),

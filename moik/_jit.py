@@ -55,7 +55,8 @@ from numba.core.caching import FunctionCache, IndexDataCacheFile
 
 from moik.exceptions import CacheWarning
 
-COMPILE_NOTICE = "compiling kinematics kernels, first run only"
+COMPILE_NOTICE = ("compiling kinematics kernels, first run only (`moik compile` compiles "
+                  "them all at once)")
 
 _kernels: set[Callable] = set()  # the Python functions compiled by jit
 _notice: dict[str, Any] = {"printed": False}  # and the sources digest, once computed
@@ -69,12 +70,22 @@ class _CompileNotice(event.Listener):
     def on_start(self, ev: event.Event) -> None:
         data = ev.data if isinstance(ev.data, dict) else {}
         dispatcher = data.get("dispatcher")
-        if not _notice["printed"] and getattr(dispatcher, "py_func", None) in _kernels:
-            _notice["printed"] = True
-            print(COMPILE_NOTICE, file=sys.stderr, flush=True)
+        if getattr(dispatcher, "py_func", None) in _kernels:
+            if not _notice["printed"]:
+                _notice["printed"] = True
+                print(COMPILE_NOTICE, file=sys.stderr, flush=True)
+            _compiled["kernels"] += 1
 
     def on_end(self, ev: event.Event) -> None:
         pass
+
+
+_compiled = {"kernels": 0}  # moik kernel compilations in this process (compile_count)
+
+
+def compile_count() -> int:
+    """How many moik kernels this process has compiled (not loaded from the cache)."""
+    return _compiled["kernels"]
 
 
 event.register("numba:compile", _CompileNotice())

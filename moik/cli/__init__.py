@@ -6,7 +6,7 @@ Subcommands:
     moik fk ROBOT q1 ... qn [--deg]  print the end-effector pose (full precision)
     moik solve ROBOT --target x y z [--euler a b c [--deg]] ...   solve IK
     moik solve ROBOT --target ... --pareto CRITERIA ...   the Pareto set of exact solutions
-    moik compile                     compile every kernel family once (first use is fast after)
+    moik compile [--processes N]     compile every kernel family once, in parallel processes
     moik experiment list             list the papers' experiments
     moik experiment run NAME [--quick] [--workers N] [--resume] [--out DIR] [--dask-scheduler A]
     moik experiment run --config FILE [...]   run your own config file (TOML)

@@ -13,6 +13,7 @@ from __future__ import annotations
 import importlib
 import os
 import sys
+import time
 import warnings
 from typing import TYPE_CHECKING
 
@@ -20,7 +21,7 @@ from moik.cli.parser import build_parser
 from moik.exceptions import MoikError, MoikWarning
 
 if TYPE_CHECKING:
-    from moik.cli import algorithms, catalog, experiment, fk, report, solve  # noqa: F401
+    from moik.cli import algorithms, catalog, experiment, fk, kernels, report, solve  # noqa: F401
 
 
 def _handler(spec: str):
@@ -34,6 +35,21 @@ def _show_warning(message, category, filename, lineno, file=None, line=None) -> 
     print(f"moik: warning: {message}", file=sys.stderr if file is None else file)
 
 
+def _compiled() -> int:
+    """Kernels compiled so far in this process; never imports ``moik._jit`` (nor numba):
+    ``sys.modules`` may hold it as a lazy module (:func:`moik._lazy.lazy_module`), loaded
+    at its first attribute access, so numba's presence tells whether it is loaded."""
+    jit = sys.modules.get("moik._jit")
+    return jit.compile_count() if jit is not None and "numba" in sys.modules else 0
+
+
+def _compile_summary(count: int, seconds: float) -> None:
+    """After a command that compiled kernels (the notice said so): how many, how long."""
+    if count:
+        print(f"moik: compiled {count} kernels (the command took {seconds:.1f} s); the next "
+              "runs load them from the cache", file=sys.stderr)
+
+
 def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``moik`` console script and of ``python -m moik``."""
     args = build_parser().parse_args(argv)
@@ -41,7 +57,10 @@ def main(argv: list[str] | None = None) -> int:
         with warnings.catch_warnings():
             warnings.showwarning = _show_warning
             warnings.simplefilter("default", MoikWarning)  # printed, whatever -W says
-            return _handler(args.handler)(args)
+            t0, before = time.perf_counter(), _compiled()
+            status = _handler(args.handler)(args)
+            _compile_summary(_compiled() - before, time.perf_counter() - t0)
+            return status
     except MoikError as exc:
         print(f"moik: error: {exc}", file=sys.stderr)
         return 2

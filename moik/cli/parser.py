@@ -158,5 +158,10 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("solve", help="solve inverse kinematics for one target")
     _solve_arguments(p)
     p.set_defaults(handler="solve:cmd_solve")
+    p = sub.add_parser("compile", help="compile every kernel family once, in parallel "
+                                       "processes (the first solves then only load them)")
+    p.add_argument("--processes", type=int, default=None,
+                   help="processes at once (default: the number of cores)")
+    p.set_defaults(handler="kernels:cmd_compile")
     _experiment_arguments(sub)
     return parser

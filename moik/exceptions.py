@@ -54,6 +54,10 @@ class URDFError(MoikError, ValueError):
     """A URDF file is malformed or does not describe the requested chain."""
 
 
+class GeometryError(MoikError, ValueError):
+    """Collision geometry or a scene is malformed (a negative radius, a model for another robot)."""
+
+
 class ConfigError(MoikError, ValueError):
     """An experiment configuration is malformed (names the file, the key and the problem)."""
 

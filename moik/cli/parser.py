@@ -51,6 +51,11 @@ def _solve_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--q-current", nargs="+", type=float, metavar="Q",
                    help="current joint values (rad, deg with --deg): the first start; "
                         "solutions nearest to it first; needed by --pareto joint_motion")
+    p.add_argument("--scene", metavar="FILE",
+                   help="JSON scene of obstacles: report each solution's distance to it and "
+                        "to the arm itself (shipped capsule models of the catalog arms)")
+    p.add_argument("--clearance", type=float, default=0.0, metavar="D",
+                   help="with --scene: a solution nearer than D (robot unit) is in collision")
     p.add_argument("--tol", nargs="+", type=float, metavar="TOL",
                    help="tolerance: one number t (position t*reach, orientation t rad; default "
                         "1e-9) or two (position in the robot's unit, orientation in rad)")

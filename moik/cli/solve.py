@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 
 from moik._validate import integer
-from moik.cli import pareto, solutions
+from moik.cli import collision, pareto, solutions
 from moik.cli.common import SOLVE_OPTIONS, joint_values, library_call, robot
 from moik.cli.solutions import target
 from moik.exceptions import ParameterError
@@ -81,6 +81,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
     goal = target(args)
     q_current = (None if args.q_current is None
                  else joint_values(arm, args.q_current, args.deg, "--q-current"))
+    check = collision.checker(args, arm)
     with library_call(SOLVE_OPTIONS):
         res = solve_ik(arm, goal, method=args.algorithm, seed=seed, tol=_tol(args.tol),
                        n_solutions=args.n_solutions, starts=args.starts,
@@ -89,10 +90,14 @@ def cmd_solve(args: argparse.Namespace) -> int:
     errors = [(res.position_error, res.orientation_error)] + _errors(arm, goal, Q[1:])
     if plots:
         _plot(arm, goal, Q, res.status, plots)
+    near = None if check is None else collision.distances(check, Q)
     if args.json:
-        solutions.print_solve_json(arm, goal, res, errors, plots, args.n_solutions)
+        solutions.print_solve_json(arm, goal, res, errors, plots, args.n_solutions,
+                                   collision=near)
     else:
         solutions.print_solve(arm, goal, res, Q, errors, plots)
+        if near is not None:
+            collision.print_distances(near, arm.unit)
     if html is not None:
         _explore(arm, goal, res, html, quiet=args.json)
     return 0 if res.success else 1

@@ -17,6 +17,7 @@ import math
 
 import numpy as np
 
+from moik.experiments.collision_report import FUNCTIONS as COLLISION_FUNCTIONS
 from moik.experiments.consistency import FUNCTIONS as CONSISTENCY_FUNCTIONS
 from moik.experiments.consistency import smallest_p_values
 from moik.experiments.dh_fit import FUNCTIONS as DH_FIT_FUNCTIONS
@@ -260,7 +261,8 @@ def analyze(store: ResultStore) -> tuple[Results, list[Table]]:
         for name in res.config.get("analyses", ["summary"]):
             tables += {**ANALYSIS_FUNCTIONS, **FUNCTIONS, **DH_FIT_FUNCTIONS,
                        **RANK_FUNCTIONS, **CONSISTENCY_FUNCTIONS,
-                       **FRONT_FUNCTIONS, **SHARES_FUNCTIONS, **REFERENCE_FUNCTIONS}[name](res)
+                       **FRONT_FUNCTIONS, **SHARES_FUNCTIONS, **REFERENCE_FUNCTIONS,
+                       **COLLISION_FUNCTIONS}[name](res)
     for table in tables:
         if res.paper_note and any("paper" in row for row in table.rows):
             table.notes.append(res.paper_note)

@@ -26,6 +26,7 @@ from moik.plotting._scene import (
     frame_axes,
     ground_grid,
 )
+from moik.plotting.geometry import draw_collision
 from moik.robots.chain import Robot
 
 _SOLUTION_STYLES = ("-", "--", ":", "-.")
@@ -91,7 +92,7 @@ def _joint_numbers(ax, points: np.ndarray, colors: list, scale: float, *, dims: 
 
 
 def plot_robot(robot: Robot, Q, *, ax=None, target=None, target_rotation=None, labels=None,
-               side_view: bool = True, save: str | None = None):
+               side_view: bool = True, save: str | None = None, collision=None):
     """Stick drawing of ``robot`` through its joint frames, in 3-D and from the side.
 
     Args:
@@ -105,6 +106,8 @@ def plot_robot(robot: Robot, Q, *, ax=None, target=None, target_rotation=None, l
         labels: Legend label per configuration (default ``configuration 1 ..``).
         side_view: Add the side view (only in a new figure).
         save: Path stem; writes ``save.png`` and ``save.pdf``.
+        collision: Optional :class:`moik.collision.CollisionChecker`: its robot shapes at
+            the first configuration and its obstacles are drawn in the 3-D view.
 
     Returns:
         The 3-D Axes: one line per configuration (base, every joint frame, end
@@ -153,6 +156,8 @@ def plot_robot(robot: Robot, Q, *, ax=None, target=None, target_rotation=None, l
             T = np.eye(4)
             T[:3, :3], T[:3, 3] = R_t, p_t
             frame_axes(ax, T[None], 0.18 * scale, linestyle="--", linewidth=1.4)
+    if collision is not None:
+        draw_collision(ax, collision, Q[0], span=scale)
     base_marker(ax)
     finish_3d(ax, robot.unit)
     ax.set_title(f"{robot.name}: 3-D view")

@@ -55,6 +55,7 @@ from moik.algorithms import get_algorithm
 from moik.exceptions import ConfigError, MoikError
 from moik.experiments.checks import check_keys, number, numbers
 from moik.experiments.convergence import algorithm_factory, convergence_curve
+from moik.experiments.kinds.ik_collision import COLLISION_KEYS, feasibility, with_collision
 from moik.experiments.kinds.ik_targets import NamedTarget, build_targets
 from moik.experiments.protocol import solve_until_success
 from moik.experiments.spec import TrialSpec
@@ -67,7 +68,7 @@ PROBLEM_KINDS = ("position", "pose", "bi-objective")
 MULTI_OBJECTIVE = ("bi-objective",)
 """The problem kinds of this module whose algorithms are multi-objective."""
 _PROBLEM_KEYS = {"kind", "orientation", "weights", "displacement_weight", "q_start_deg",
-                 "locked_joints_deg", "joint_limits_deg"}
+                 "locked_joints_deg", "joint_limits_deg", *COLLISION_KEYS}
 def experiment_robot(name: str, problem: Mapping) -> Robot:
     """The catalog robot ``name`` with the problem's ``locked_joints_deg`` applied."""
     return _locked(get_robot(name), problem)
@@ -93,11 +94,13 @@ def build_problem(robot: Robot, problem: Mapping, target: NamedTarget):
         common["q_start"] = np.radians(problem["q_start_deg"])
     kind = problem["kind"]
     if kind == "position":
-        return PositionIK(robot, target.target, **common)
-    if kind == "pose":
-        return PoseIK(robot, target.target, weights=tuple(problem.get("weights", (0.5, 0.5))),
-                      orientation=problem["orientation"], **common)
-    return BiObjectiveIK(robot, target.target, orientation=problem["orientation"], **common)
+        ik = PositionIK(robot, target.target, **common)
+    elif kind == "pose":
+        ik = PoseIK(robot, target.target, weights=tuple(problem.get("weights", (0.5, 0.5))),
+                    orientation=problem["orientation"], **common)
+    else:
+        ik = BiObjectiveIK(robot, target.target, orientation=problem["orientation"], **common)
+    return with_collision(ik, problem)
 
 
 def check_config(where: str, cfg: Mapping) -> tuple[dict, tuple[NamedTarget, ...]]:
@@ -239,6 +242,7 @@ def _multi_objective(spec: TrialSpec, problem, record: dict, arrays: dict) -> No
                   min_orientation_error=float(F[:, 1].min()), best_x=X[i].tolist())
     target = spec.target
     assert isinstance(target, NamedTarget)  # an IK trial's target (run_trial)
+    feasible = feasibility(problem, X, record)
     if target.hv_ref_point is not None:
-        record["hv"] = hypervolume(F, target.hv_ref_point)
+        record["hv"] = hypervolume(F[feasible], target.hv_ref_point) if feasible.any() else 0.0
     arrays.update(front_F=F, front_X=X, best_x=X[i])

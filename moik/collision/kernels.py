@@ -1,0 +1,143 @@
+"""Batched distances of a robot's shapes and a scene's, compiled (the maths of a model).
+
+A compiled collision set is the shapes of a robot and of a scene in one list: kind,
+``body`` (0 the base frame, ``j`` the frame of joint ``j`` as :meth:`Robot.frames`
+numbers them, ``-1`` the world), local pose ``(4, 4)`` in that frame, sizes ``(3,)``;
+and the pairs ``(p, 2)`` of shape indices to evaluate. For each joint vector the chain
+is walked once (as :func:`moik.robots.dh.fk_frames_into` does, recording the joint
+axes on the way, as :mod:`moik.kinematics.jacobian` does), every shape is placed in the
+world, and every pair goes through :func:`moik.collision.distance.pair_distance`.
+
+Gradient of a pair's signed distance ``d`` with respect to ``q`` (witness points
+``a`` on A, ``b`` on B, unit normal ``n`` from A to B): ``dd/dq_j = n . (v_j(b) - v_j(a))``
+where ``v_j(x) = z_j x (x - o_j)`` for a revolute joint ``j`` (``z_j`` for a prismatic
+one) if joint ``j`` moves the shape's body, else 0 (Siciliano et al., *Robotics*,
+Eq. 3.30, applied at the witness points). Exact for separated pairs (envelope
+theorem); for penetrating box pairs the contact-normal approximation
+(:mod:`moik.collision.distance`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from moik._jit import jit
+from moik.collision.distance import pair_distance
+from moik.robots.dh import compose, move_joint, pose_state, store_pose
+from moik.robots.transforms import PRISMATIC
+
+
+@jit
+def world_frames(F, P, base, types, q, frames, axes):
+    """Frames ``(dof + 1, 4, 4)`` (frame 0 = ``base``) and joint axes ``(dof, 6)``.
+
+    ``axes[j] = (o_j, z_j)``: the point and direction of joint ``j + 1``'s axis.
+    """
+    frames[0] = base
+    t = pose_state(F, 0)
+    for j in range(types.size):
+        axes[j, 0], axes[j, 1], axes[j, 2] = t[9], t[10], t[11]
+        axes[j, 3], axes[j, 4], axes[j, 5] = t[2], t[5], t[8]
+        t = move_joint(t, types[j], q[j])
+        store_pose(compose(t, pose_state(P, j)), frames[j + 1])
+        t = compose(t, pose_state(F, j + 1))
+
+
+@jit
+def place_shapes(frames, body, local, W):
+    """World poses ``W (m, 4, 4)`` of shapes on bodies (``body < 0``: already in the world)."""
+    for k in range(body.size):
+        if body[k] < 0:
+            W[k] = local[k]
+            continue
+        A, L = frames[body[k]], local[k]
+        for r in range(3):
+            for c in range(4):
+                W[k, r, c] = A[r, 0] * L[0, c] + A[r, 1] * L[1, c] + A[r, 2] * L[2, c]
+            W[k, r, 3] += A[r, 3]
+        W[k, 3, 0], W[k, 3, 1], W[k, 3, 2], W[k, 3, 3] = 0.0, 0.0, 0.0, 1.0
+
+
+@jit
+def pair_distances(F, P, base, types, Q, body, local, kinds, sizes, pairs, out):
+    """Signed distance of every pair for every row of ``Q (n, dof)``, into ``out (n, p)``."""
+    dof = types.size
+    frames = np.empty((dof + 1, 4, 4))
+    axes = np.empty((dof, 6))
+    W = np.empty((body.size, 4, 4))
+    for i in range(Q.shape[0]):
+        world_frames(F, P, base, types, Q[i], frames, axes)
+        place_shapes(frames, body, local, W)
+        for k in range(pairs.shape[0]):
+            a, b = pairs[k, 0], pairs[k, 1]
+            out[i, k] = pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])[0]
+
+
+@jit
+def min_distances(F, P, base, types, Q, body, local, kinds, sizes, pairs, dmin, which):
+    """Smallest pair distance ``dmin (n,)`` and the pair ``which (n,)`` that attains it.
+
+    With no pairs, ``dmin`` is ``inf`` and ``which`` is -1.
+    """
+    dof = types.size
+    frames = np.empty((dof + 1, 4, 4))
+    axes = np.empty((dof, 6))
+    W = np.empty((body.size, 4, 4))
+    for i in range(Q.shape[0]):
+        world_frames(F, P, base, types, Q[i], frames, axes)
+        place_shapes(frames, body, local, W)
+        best, arg = np.inf, -1
+        for k in range(pairs.shape[0]):
+            a, b = pairs[k, 0], pairs[k, 1]
+            d = pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])[0]
+            if d < best:
+                best, arg = d, k
+        dmin[i], which[i] = best, arg
+
+
+@jit(inline=True)
+def _point_velocity(axes, types, j, x, y, z):
+    """Velocity of a point at ``(x, y, z)`` moved by joint ``j`` at unit speed."""
+    ox, oy, oz, zx, zy, zz = axes[j, 0], axes[j, 1], axes[j, 2], axes[j, 3], axes[j, 4], axes[j, 5]
+    if types[j] == PRISMATIC:
+        return zx, zy, zz
+    rx, ry, rz = x - ox, y - oy, z - oz
+    return zy * rz - zz * ry, zz * rx - zx * rz, zx * ry - zy * rx
+
+
+@jit
+def min_distance_gradients(F, P, base, types, Q, body, local, kinds, sizes, pairs, dmin, grad):
+    """Smallest pair distance ``dmin (n,)`` and its gradient ``grad (n, dof)`` w.r.t. ``q``.
+
+    The gradient is that of the pair attaining the minimum (the module doc); with no
+    pairs ``dmin`` is ``inf`` and the gradient 0.
+    """
+    dof = types.size
+    frames = np.empty((dof + 1, 4, 4))
+    axes = np.empty((dof, 6))
+    W = np.empty((body.size, 4, 4))
+    for i in range(Q.shape[0]):
+        world_frames(F, P, base, types, Q[i], frames, axes)
+        place_shapes(frames, body, local, W)
+        best, arg = np.inf, -1
+        res = (np.inf, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+        for k in range(pairs.shape[0]):
+            a, b = pairs[k, 0], pairs[k, 1]
+            r = pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])
+            if r[0] < best:
+                best, arg, res = r[0], k, r
+        dmin[i] = best
+        grad[i] = 0.0
+        if arg < 0:
+            continue
+        d, nx, ny, nz, ax, ay, az, bx, by, bz = res
+        bodyA, bodyB = body[pairs[arg, 0]], body[pairs[arg, 1]]
+        for j in range(dof):  # joint j (0-based) moves bodies j + 1 ..
+            g = 0.0
+            if bodyB > j:
+                vx, vy, vz = _point_velocity(axes, types, j, bx, by, bz)
+                g += nx * vx + ny * vy + nz * vz
+            if bodyA > j:
+                vx, vy, vz = _point_velocity(axes, types, j, ax, ay, az)
+                g -= nx * vx + ny * vy + nz * vz
+            grad[i, j] = g

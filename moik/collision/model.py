@@ -1,0 +1,270 @@
+"""A robot's collision geometry, a scene of obstacles, and the compiled checker of both.
+
+* :class:`CollisionModel`: shapes attached to the robot's bodies. Body ``j`` is the
+  frame :meth:`Robot.frames` numbers ``j`` (0: the base, ``j``: moved by joints
+  ``1 .. j``); bodies are named (``links``; default ``"link0" .. "link<dof>"``, URDF
+  models use the URDF link names) and shapes are given per name. An allowed-collision
+  matrix (``allowed``: pairs of link names never checked) comes on top of the rule
+  that a body is never checked against itself or its neighbours in the chain
+  (MoveIt's "adjacent" pairs); :func:`moik.collision.acm.sample_allowed` finds the
+  pairs that never or always touch by sampling, as MoveIt's setup assistant does.
+* :class:`Scene`: named obstacles in the world frame.
+* :class:`CollisionChecker`: one model and (optionally) one scene compiled into the
+  arrays of :mod:`moik.collision.kernels`, with batched distances, the minimum, its
+  gradient, and per-pair distances.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import Any
+
+import numpy as np
+
+from moik._validate import flag
+from moik.collision import kernels
+from moik.collision.shapes import HalfSpace, Shape, shape_arrays
+from moik.exceptions import GeometryError, UnknownNameError
+from moik.robots.chain import Robot
+
+
+def default_links(robot: Robot) -> tuple[str, ...]:
+    """``("link0", ..., "link<dof>")``: the names of a robot's bodies without a URDF."""
+    return tuple(f"link{j}" for j in range(robot.dof + 1))
+
+
+def _shapes(owner: str, shapes: Any) -> tuple[Shape, ...]:
+    items = (shapes,) if isinstance(shapes, Shape) else tuple(shapes)
+    for s in items:
+        if not isinstance(s, Shape):
+            raise GeometryError(f"{owner} must be moik.collision shapes (Sphere, Capsule, Box, "
+                                f"HalfSpace), got {type(s).__name__}")
+    return items
+
+
+@dataclass(frozen=True, eq=False, kw_only=True)
+class CollisionModel:
+    """Collision shapes on a robot's bodies, and the body pairs never checked.
+
+    Args:
+        robot: The arm.
+        shapes: ``{link name: shape or shapes}`` in that link's frame.
+        links: The names of bodies ``0 .. dof`` (default :func:`default_links`).
+        allowed: Pairs of link names whose collisions are not checked (besides a link
+            with itself and its chain neighbours).
+        source: Where the geometry comes from.
+
+    Raises:
+        UnknownNameError: A link name that is not one of ``links``.
+        GeometryError: A half-space on a link, a wrong number of link names, not shapes.
+    """
+
+    robot: Robot
+    shapes: Mapping[str, Any]
+    links: tuple[str, ...] = ()
+    allowed: frozenset[frozenset[str]] = field(default_factory=frozenset)
+    source: str = ""
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.robot, Robot):
+            raise GeometryError(f"robot must be a moik Robot, got {type(self.robot).__name__}")
+        links = tuple(self.links) or default_links(self.robot)
+        if len(links) != self.robot.dof + 1 or len(set(links)) != len(links):
+            raise GeometryError(f"links must be {self.robot.dof + 1} distinct names (the base and "
+                                f"one per joint of {self.robot.name!r}), got {list(links)}")
+        object.__setattr__(self, "links", links)
+        if not isinstance(self.shapes, Mapping):
+            raise GeometryError("shapes must be a mapping {link name: shapes}, got "
+                                f"{type(self.shapes).__name__}")
+        checked: dict[str, tuple[Shape, ...]] = {}
+        for link, shapes in self.shapes.items():
+            if link not in links:
+                raise UnknownNameError(f"link of robot {self.robot.name!r}", link, links)
+            items = _shapes(f"shapes of link {link!r}", shapes)
+            if any(isinstance(s, HalfSpace) for s in items):
+                raise GeometryError(f"link {link!r}: a half-space is unbounded and cannot be part "
+                                    "of a robot; use a box")
+            checked[link] = items
+        object.__setattr__(self, "shapes", checked)
+        pairs = set()
+        for pair in self.allowed:
+            names = tuple(pair)
+            for name in names:
+                if name not in links:
+                    raise UnknownNameError(f"link of robot {self.robot.name!r}", name, links)
+            pairs.add(frozenset(names))
+        object.__setattr__(self, "allowed", frozenset(pairs))
+
+    @property
+    def items(self) -> list[tuple[int, Shape]]:
+        """``(body index, shape)`` for every shape, in link order."""
+        index = {name: j for j, name in enumerate(self.links)}
+        return [(index[link], s) for link, shapes in self.shapes.items() for s in shapes]
+
+    def checked_body_pairs(self) -> list[tuple[int, int]]:
+        """Body pairs ``i < j`` checked for self-collision (not adjacent, not allowed)."""
+        used = sorted({b for b, _ in self.items})
+        return [(i, j) for i in used for j in used if j > i + 1
+                and frozenset((self.links[i], self.links[j])) not in self.allowed]
+
+    def with_allowed(self, pairs: Iterable[Sequence[str]]) -> CollisionModel:
+        """The model with ``pairs`` added to the allowed-collision matrix."""
+        return CollisionModel(robot=self.robot, shapes=self.shapes, links=self.links,
+                              allowed=self.allowed | {frozenset(p) for p in pairs},
+                              source=self.source)
+
+
+@dataclass(frozen=True, eq=False)
+class Scene:
+    """Obstacles in the world frame (the robot's base frame is placed by ``robot.base``).
+
+    Args:
+        obstacles: ``{name: shape}`` (or a sequence of shapes, named ``obstacle0`` ...).
+        allowed: ``(obstacle name, link name)`` pairs never checked (the table an arm is
+            mounted on and its base link, as in MoveIt's allowed-collision matrix); the link
+            names are checked against the model when a :class:`CollisionChecker` is built.
+    """
+
+    obstacles: Mapping[str, Shape] = field(default_factory=dict)
+    allowed: frozenset[tuple[str, str]] = field(default_factory=frozenset)
+
+    def __post_init__(self) -> None:
+        pairs = frozenset(tuple(p) for p in self.allowed)
+        if any(len(p) != 2 for p in pairs):
+            raise GeometryError("scene allowed pairs must be (obstacle name, link name) pairs")
+        object.__setattr__(self, "allowed", pairs)
+        obs = self.obstacles
+        if not isinstance(obs, Mapping):
+            obs = {f"obstacle{k}": s for k, s in enumerate(_shapes("scene obstacles", obs))}
+        for name, s in obs.items():
+            if not isinstance(name, str) or not name:
+                raise GeometryError(f"obstacle names must be non-empty strings, got {name!r}")
+            _shapes(f"obstacle {name!r}", s)
+        object.__setattr__(self, "obstacles", dict(obs))
+        for name, _ in self.allowed:
+            if name not in self.obstacles:
+                raise UnknownNameError("obstacle", name, self.obstacles)
+
+
+class CollisionChecker:
+    """A model (self-collision) and a scene, compiled for batched distance queries.
+
+    Args:
+        model: The robot's :class:`CollisionModel`.
+        scene: Obstacles (or ``None``).
+        self_collision: Whether the model's checked body pairs are evaluated.
+
+    The pairs are the robot's checked self pairs (if ``self_collision``) and every robot
+    shape against every obstacle; :attr:`pair_names` names them.
+    """
+
+    def __init__(self, *, model: CollisionModel, scene: Scene | None = None,
+                 self_collision: bool = True) -> None:
+        if not isinstance(model, CollisionModel):
+            raise GeometryError(f"model must be a CollisionModel, got {type(model).__name__}")
+        if scene is not None and not isinstance(scene, Scene):
+            raise GeometryError(f"scene must be a Scene, got {type(scene).__name__}")
+        self.model, self.scene = model, scene
+        self.self_collision = flag("self_collision", self_collision)
+        robot = model.robot
+        items = model.items
+        names = [f"{model.links[b]}[{k}]" for k, (b, _) in enumerate(items)]
+        bodies = [b for b, _ in items]
+        shapes = [s for _, s in items]
+        obstacles = {} if scene is None else scene.obstacles
+        for name, s in obstacles.items():
+            names.append(name)
+            bodies.append(-1)
+            shapes.append(s)
+        kinds, local, sizes = shape_arrays(shapes)
+        pairs = []
+        if self.self_collision:
+            checked = set(model.checked_body_pairs())
+            pairs += [(a, b) for a in range(len(items)) for b in range(a + 1, len(items))
+                      if (bodies[a], bodies[b]) in checked]
+        for _, link in (() if scene is None else scene.allowed):
+            if link not in model.links:
+                raise UnknownNameError(f"link of robot {robot.name!r}", link, model.links)
+        skip = frozenset() if scene is None else scene.allowed
+        pairs += [(a, len(items) + o) for a in range(len(items))
+                  for o, obstacle in enumerate(obstacles)
+                  if (obstacle, model.links[bodies[a]]) not in skip]
+        chain = robot.kinematic_chain
+        self._args = (chain.origins, chain.link_frames, np.array(robot.base, dtype=float),
+                      chain.joint_types)
+        self._shape_args = (np.array(bodies, dtype=np.int64), local, kinds, sizes,
+                            np.array(pairs, dtype=np.int64).reshape(-1, 2))
+        self.shape_names = tuple(names)
+        self.pair_names = tuple((names[a], names[b]) for a, b in pairs)
+        self.pair_bodies = tuple((bodies[a], bodies[b]) for a, b in pairs)  # -1: the world
+
+    @property
+    def robot(self) -> Robot:
+        """The model's robot."""
+        return self.model.robot
+
+    @property
+    def n_pairs(self) -> int:
+        """Number of evaluated pairs."""
+        return len(self.pair_names)
+
+    def distances(self, q) -> np.ndarray:
+        """Signed distance of every pair, ``(n, n_pairs)`` (or ``(n_pairs,)`` for one ``q``)."""
+        Q = self.robot.check_q(q)
+        Q2 = Q[None] if Q.ndim == 1 else Q
+        out = np.empty((Q2.shape[0], self.n_pairs))
+        kernels.pair_distances(*self._args, Q2, *self._shape_args, out)
+        return out[0] if Q.ndim == 1 else out
+
+    def min_distance(self, q) -> np.ndarray:
+        """Smallest signed distance over the pairs, ``(n,)`` (a float for one ``q``).
+
+        ``inf`` when there is no pair to check.
+        """
+        Q = self.robot.check_q(q)
+        Q2 = Q[None] if Q.ndim == 1 else Q
+        d, which = np.empty(Q2.shape[0]), np.empty(Q2.shape[0], dtype=np.int64)
+        kernels.min_distances(*self._args, Q2, *self._shape_args, d, which)
+        return d[0] if Q.ndim == 1 else d
+
+    def min_distance_batch(self, Q: np.ndarray) -> np.ndarray:
+        """:meth:`min_distance` of a 2-D batch without the finiteness check (hot path)."""
+        Q2 = self.robot.kernel_batch(Q)
+        d, which = np.empty(Q2.shape[0]), np.empty(Q2.shape[0], dtype=np.int64)
+        kernels.min_distances(*self._args, Q2, *self._shape_args, d, which)
+        return d
+
+    def closest_pair(self, q) -> tuple[float, tuple[str, str] | None]:
+        """The smallest distance of one joint vector and the names of the pair attaining it."""
+        Q = self.robot.check_q(q, "q")
+        if Q.ndim != 1:
+            raise GeometryError(f"closest_pair takes one joint vector, got shape {Q.shape}")
+        d, which = np.empty(1), np.empty(1, dtype=np.int64)
+        kernels.min_distances(*self._args, Q[None], *self._shape_args, d, which)
+        return float(d[0]), (self.pair_names[which[0]] if which[0] >= 0 else None)
+
+    def min_distance_and_gradient(self, q) -> tuple[np.ndarray, np.ndarray]:
+        """Smallest distance ``(n,)`` and its gradient w.r.t. ``q``, ``(n, dof)``."""
+        Q = self.robot.check_q(q)
+        Q2 = Q[None] if Q.ndim == 1 else Q
+        d, g = np.empty(Q2.shape[0]), np.empty((Q2.shape[0], self.robot.dof))
+        kernels.min_distance_gradients(*self._args, Q2, *self._shape_args, d, g)
+        return (d[0], g[0]) if Q.ndim == 1 else (d, g)
+
+    @cached_property
+    def arrays(self) -> dict[str, np.ndarray]:
+        """The compiled arrays (for code that calls :mod:`moik.collision.kernels` itself)."""
+        body, local, kinds, sizes, pairs = self._shape_args
+        return {"body": body, "local": local, "kinds": kinds, "sizes": sizes, "pairs": pairs}
+
+    def world_shapes(self, q) -> list[tuple[str, Shape]]:
+        """Every shape placed in the world at one joint vector (for plots and oracles)."""
+        frames = self.robot.frames(q)
+        out: list[tuple[str, Shape]] = []
+        for k, (b, s) in enumerate(self.model.items):
+            out.append((self.shape_names[k], s.moved(frames[b])))
+        if self.scene is not None:
+            out += list(self.scene.obstacles.items())
+        return out

@@ -1,0 +1,67 @@
+"""Collision shapes in a 3-D robot plot: capsules, spheres and boxes as translucent
+surfaces, half-spaces as a translucent patch of their boundary plane.
+
+Called by :func:`moik.plotting.robot.plot_robot` with ``collision=`` (a
+:class:`~moik.collision.model.CollisionChecker`): the robot's shapes at the first
+configuration (blue) and the scene's obstacles (grey).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from moik.collision.model import CollisionChecker
+from moik.collision.shapes import Box, Capsule, HalfSpace, Shape, Sphere
+
+ROBOT_COLOR, OBSTACLE_COLOR = "tab:blue", "0.45"
+
+
+def _capsule_mesh(s: Capsule | Sphere, n: int = 16):
+    """Points of a capsule (sphere: length 0) surface in its own frame, ``(3, m, n)``."""
+    r = s.radius
+    h = s.length / 2 if isinstance(s, Capsule) else 0.0
+    u = np.linspace(0, 2 * np.pi, n)
+    v = np.linspace(0, np.pi, n)
+    x = r * np.outer(np.sin(v), np.cos(u))
+    y = r * np.outer(np.sin(v), np.sin(u))
+    z = r * np.outer(np.cos(v), np.ones_like(u))
+    z = z + np.where(z >= 0, h, -h)  # the two hemispheres pushed apart by the segment
+    return np.stack([x, y, z])
+
+
+def _box_faces(s: Box):
+    hx, hy, hz = (v / 2 for v in s.size)
+    corners = np.array([[sx * hx, sy * hy, sz * hz] for sx in (-1, 1) for sy in (-1, 1)
+                        for sz in (-1, 1)])
+    faces = [[0, 1, 3, 2], [4, 5, 7, 6], [0, 1, 5, 4], [2, 3, 7, 6], [0, 2, 6, 4],
+             [1, 3, 7, 5]]
+    return corners, faces
+
+
+def draw_shape(ax, shape: Shape, *, color: str, span: float, alpha: float = 0.25) -> None:
+    """Draw one shape (in world coordinates) into the 3-D Axes ``ax``."""
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    R, p = shape.pose[:3, :3], shape.pose[:3, 3]
+    if isinstance(shape, (Capsule, Sphere)):
+        P = np.einsum("ij,jmn->imn", R, _capsule_mesh(shape)) + p[:, None, None]
+        ax.plot_surface(P[0], P[1], P[2], color=color, alpha=alpha, linewidth=0,
+                        shade=True)
+    elif isinstance(shape, Box):
+        corners, faces = _box_faces(shape)
+        W = corners @ R.T + p
+        ax.add_collection3d(Poly3DCollection([W[f] for f in faces], facecolor=color,
+                                             edgecolor="0.2", linewidths=0.4, alpha=alpha))
+    elif isinstance(shape, HalfSpace):
+        a, b = R[:, 0], R[:, 1]
+        quad = [p + span * (sa * a + sb * b) for sa, sb in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+        ax.add_collection3d(Poly3DCollection([quad], facecolor=color, edgecolor="none",
+                                             alpha=0.12))
+
+
+def draw_collision(ax, checker: CollisionChecker, q: np.ndarray, *, span: float) -> None:
+    """The robot's shapes at ``q`` and the scene's obstacles."""
+    robot_names = set(checker.shape_names[:len(checker.model.items)])
+    for name, shape in checker.world_shapes(q):
+        draw_shape(ax, shape, span=span,
+                   color=ROBOT_COLOR if name in robot_names else OBSTACLE_COLOR)

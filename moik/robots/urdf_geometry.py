@@ -1,0 +1,138 @@
+"""The ``<collision>`` primitives of a URDF, placed on the bodies of its loaded chain.
+
+Beside :func:`moik.robots.urdf.load_urdf` (reusing its parser, not changing it): for a
+robot loaded from a URDF, every link whose path from ``base_link`` passes only through
+fixed joints and the robot's own joints belongs to body ``b`` = the number of the
+robot's joints on that path (body ``b`` is frame ``b`` of :meth:`Robot.frames`). Each
+such link's ``<collision>`` elements with a primitive geometry (``box``, ``cylinder``,
+``sphere``, ``capsule``) are returned with their pose in that body's frame; meshes are
+reported as skipped (moik never reads meshes). Plain data (dicts): the shapes are built
+by :mod:`moik.collision.urdf`.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+import numpy as np
+
+from moik.exceptions import URDFError
+from moik.robots.chain import Robot
+from moik.robots.urdf import _child, _floats, _link, _origin, _parse, _read
+
+PRIMITIVES = ("box", "cylinder", "sphere", "capsule")
+
+
+def _axis_rotation(axis: np.ndarray, q: float, prismatic: bool) -> np.ndarray:
+    T = np.eye(4)
+    a = axis / np.linalg.norm(axis)
+    if prismatic:
+        T[:3, 3] = q * a
+        return T
+    K = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    T[:3, :3] = np.eye(3) + np.sin(q) * K + (1 - np.cos(q)) * K @ K
+    return T
+
+
+def link_placements(source: Any, robot: Robot, q: Any = None
+                    ) -> tuple[list[str], dict[str, tuple[int, np.ndarray]]]:
+    """Each URDF link on ``robot``'s bodies: ``{link: (body, pose in the body's frame)}``.
+
+    Also returns the URDF name of each body (``dof + 1``: the base link, then each
+    joint's child link). ``q`` is where the link poses are compared with the robot's
+    frames (default: the middle of the limits; the result does not depend on it).
+
+    Raises:
+        URDFError: the URDF does not contain the robot's joints.
+    """
+    root, label = _read(source)
+    links, joints = _parse(root, label)
+    names = list(robot.joint_names)
+    missing = [n for n in names if n not in joints]
+    if missing:
+        raise URDFError(f"{label!r} has no joints {missing}: it is not the URDF of robot "
+                        f"{robot.name!r}")
+    match = re.search(r": (\S+) -> ", robot.source)
+    base = match.group(1) if match and match.group(1) in links else None
+    if base is None:
+        childs = {_child(el) for el in joints.values()}
+        base = sorted(links - childs)[0]
+    qv = (robot.lower + robot.upper) / 2 if q is None else np.asarray(q, dtype=float)
+    values = dict(zip(names, qv, strict=True))
+    children: dict[str, list] = {}
+    for el in joints.values():
+        children.setdefault(_link(el, "parent"), []).append(el)
+    frames = robot.frames(qv)
+    placed: dict[str, tuple[int, np.ndarray]] = {}
+    body_names = [base] + [""] * len(names)
+    stack = [(base, np.eye(4), 0, 0)]
+    while stack:
+        link, T, body, nxt = stack.pop()
+        placed[link] = (body, np.linalg.inv(frames[body]) @ T)
+        for el in children.get(link, []):
+            jname, jtype = el.get("name"), el.get("type")
+            Tj = T @ _origin(el, str(jname))
+            if jtype == "fixed":
+                stack.append((_child(el), Tj, body, nxt))
+            elif nxt < len(names) and jname == names[nxt]:
+                axis_el = el.find("axis")
+                axis = _floats(None if axis_el is None else axis_el.get("xyz"), (1, 0, 0),
+                               f"joint {jname!r} axis")
+                Tj = Tj @ _axis_rotation(axis, values[jname], jtype == "prismatic")
+                body_names[body + 1] = _child(el)
+                stack.append((_child(el), Tj, body + 1, nxt + 1))
+    return body_names, placed
+
+
+def collision_geometry(source: Any, robot: Robot, q: Any = None
+                       ) -> tuple[list[str], list[dict[str, Any]]]:
+    """The primitive collision geometry of a URDF on ``robot``'s bodies.
+
+    Args:
+        source: The URDF file path or text ``robot`` was loaded from.
+        robot: The robot :func:`load_urdf` returned for it.
+        q: As in :func:`link_placements`.
+
+    Returns:
+        The body names of :func:`link_placements`, and one dict per primitive:
+        ``link``, ``body``, ``type``, sizes (``radius``, ``length``, ``size``) and
+        ``pose`` (4x4 list, in body ``body``'s frame); and one dict
+        ``{"link", "body", "type": "mesh", "skipped": True}`` per mesh.
+    """
+    body_names, placed = link_placements(source, robot, q)
+    root, _ = _read(source)
+    link_el = {el.get("name"): el for el in root.findall("link")}
+    out: list[dict[str, Any]] = []
+    for link, (body, offset) in placed.items():
+        for col in link_el[link].findall("collision"):
+            out.extend(_primitives(col, link, body, offset))
+    return body_names, out
+
+
+def _primitives(col: Any, link: str, body: int, offset: np.ndarray) -> list[dict[str, Any]]:
+    geom = col.find("geometry")
+    if geom is None or len(geom) == 0:
+        raise URDFError(f"link {link!r}: a <collision> needs a <geometry>")
+    pose = offset @ _origin(col, f"collision of link {link!r}")
+    out = []
+    for g in geom:
+        if g.tag == "mesh":
+            out.append({"link": link, "body": body, "type": "mesh", "skipped": True})
+            continue
+        if g.tag not in PRIMITIVES:
+            raise URDFError(f"link {link!r}: unknown collision geometry <{g.tag}>; expected one "
+                            f"of {', '.join(PRIMITIVES + ('mesh',))}")
+        item: dict[str, Any] = {"link": link, "body": body, "type": g.tag, "pose": pose.tolist()}
+        try:
+            if g.tag == "box":
+                item["size"] = [float(v) for v in str(g.get("size", "")).split()]
+            else:
+                item["radius"] = float(g.get("radius", "nan"))
+                if g.tag != "sphere":
+                    item["length"] = float(g.get("length", "nan"))
+        except ValueError:
+            raise URDFError(f"link {link!r}: <{g.tag}> sizes must be numbers, got "
+                            f"{dict(g.attrib)}") from None
+        out.append(item)
+    return out

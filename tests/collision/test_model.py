@@ -1,0 +1,100 @@
+"""CollisionModel, Scene and the compiled checker: against coal on random configurations,
+the gradient against finite differences, and the model's validation."""
+
+import numpy as np
+import pytest
+
+from moik import get_robot
+from moik.collision import Box, Capsule, CollisionChecker, CollisionModel, HalfSpace, Scene, Sphere
+from moik.collision.catalog import collision_model
+from moik.collision.io import rpy_pose
+from moik.exceptions import GeometryError, UnknownNameError
+
+coal = pytest.importorskip("coal")
+
+
+def _coal_shape(s):
+    r, h, z = s.sizes
+    if isinstance(s, Sphere):
+        return coal.Sphere(r)
+    if isinstance(s, Capsule):
+        return coal.Capsule(r, 2 * h)
+    if isinstance(s, Box):
+        return coal.Box(*s.size)
+    return coal.Halfspace(np.array([0.0, 0.0, 1.0]), 0.0)
+
+
+def _coal_min(checker, q):
+    placed = dict(checker.world_shapes(q))
+    req = coal.DistanceRequest()
+    req.enable_signed_distance = True
+    req.gjk_tolerance = req.epa_tolerance = 1e-14
+    out = []
+    for a, b in checker.pair_names:
+        A, B = placed[a], placed[b]
+        out.append(coal.distance(_coal_shape(A), coal.Transform3s(A.pose[:3, :3], A.pose[:3, 3]),
+                                 _coal_shape(B), coal.Transform3s(B.pose[:3, :3], B.pose[:3, 3]),
+                                 req, coal.DistanceResult()))
+    return np.array(out)
+
+
+def _scene():
+    return Scene({"table": HalfSpace.plane([0, 0, 1], -0.1),
+                  "shelf": Box(size=(0.3, 0.8, 0.03), pose=rpy_pose([0.55, 0, 0.45])),
+                  "ball": Sphere(radius=0.08, pose=rpy_pose([0.3, 0.4, 0.3])),
+                  "post": Capsule(radius=0.04, length=0.6, pose=rpy_pose([-0.4, 0.3, 0.3]))})
+
+
+@pytest.mark.parametrize("name", ["panda", "ur5", "iiwa14"])
+def test_distances_match_coal_on_random_configurations(name):
+    checker = CollisionChecker(model=collision_model(name), scene=_scene())
+    Q = checker.robot.random_q(30, rng=np.random.default_rng(3))
+    D = checker.distances(Q)
+    for q, d in zip(Q, D, strict=True):
+        np.testing.assert_allclose(d, _coal_min(checker, q), rtol=0, atol=1e-9)
+    np.testing.assert_array_equal(checker.min_distance(Q), D.min(axis=1))
+
+
+def test_gradient_matches_finite_differences():
+    checker = CollisionChecker(model=collision_model("panda"), scene=_scene())
+    rng = np.random.default_rng(5)
+    checked = 0
+    for q in checker.robot.random_q(20, rng=rng):
+        d, g = checker.min_distance_and_gradient(q)
+        if d < 0.005:  # penetrating box pairs use the contact-normal approximation
+            continue
+        eps = 1e-6
+        fd = np.array([(checker.min_distance(q + eps * e) - checker.min_distance(q - eps * e))
+                       / (2 * eps) for e in np.eye(q.size)])
+        np.testing.assert_allclose(g, fd, atol=1e-5)
+        checked += 1
+    assert checked >= 5
+
+
+def test_model_validation():
+    robot = get_robot("planar2")
+    with pytest.raises(UnknownNameError, match="link0, link1, link2"):
+        CollisionModel(robot=robot, shapes={"forearm": Sphere(radius=0.1)})
+    with pytest.raises(GeometryError, match="half-space"):
+        CollisionModel(robot=robot, shapes={"link1": HalfSpace()})
+    with pytest.raises(GeometryError, match="must be moik.collision shapes"):
+        CollisionModel(robot=robot, shapes={"link1": [0.1]})
+    with pytest.raises(UnknownNameError):
+        CollisionModel(robot=robot, shapes={}, allowed=frozenset({frozenset(("link0", "x"))}))
+    with pytest.raises(GeometryError, match="3 distinct names"):
+        CollisionModel(robot=robot, shapes={}, links=("a", "b"))
+
+
+def test_self_collision_switch_and_adjacency():
+    robot = get_robot("planar2")
+    model = CollisionModel(robot=robot, shapes={"link0": Sphere(radius=0.05),
+                                                "link1": Sphere(radius=0.05),
+                                                "link2": Sphere(radius=0.05)})
+    assert model.checked_body_pairs() == [(0, 2)]
+    assert CollisionChecker(model=model).n_pairs == 1
+    assert CollisionChecker(model=model, self_collision=False).n_pairs == 0
+    assert CollisionChecker(model=model, self_collision=False).min_distance(
+        np.zeros(2)) == np.inf
+    # folded back, the tool sphere meets the base sphere: a2 = 0.30 < a1 = 0.35
+    d, pair = CollisionChecker(model=model).closest_pair(np.array([0.0, np.pi]))
+    assert pair == ("link0[0]", "link2[2]") and d == pytest.approx(0.05 - 0.1)

@@ -1,0 +1,27 @@
+"""The collision keys of an IK experiment: the problem wrapped, feasibility recorded."""
+
+import numpy as np
+
+from moik import get_robot
+from moik.experiments.kinds.ik_collision import feasibility, with_collision
+from moik.problems import BiObjectiveIK
+from moik.problems.collision_ik import CollisionIK
+
+SCENE = {"obstacles": [{"name": "table", "type": "halfspace", "normal": [0, 0, 1]},
+                       {"name": "wall", "type": "box", "size": [0.02, 2, 2], "xyz": [0.5, 0, 0]}],
+         "allowed": [["table", "panda_link0"], ["table", "panda_link1"]]}
+
+
+def test_wrapped_only_with_a_scene_and_feasibility_recorded():
+    robot = get_robot("panda")
+    ik = BiObjectiveIK(robot, robot.fk(np.full(7, 0.2)))
+    assert with_collision(ik, {"kind": "bi-objective"}) is ik
+    prob = with_collision(ik, {"kind": "bi-objective", "scene": SCENE, "clearance": 0.01})
+    assert isinstance(prob, CollisionIK) and prob.clearance == 0.01
+    X = robot.random_q(200, rng=np.random.default_rng(2))
+    record: dict = {}
+    ok = feasibility(prob, X, record)
+    d = prob.min_distance(X)
+    assert record["n_feasible"] == int((d >= 0.01).sum()) == int(ok.sum())
+    assert 0 < record["n_feasible"] < 200 and record["min_distance"] == d.min()
+    assert feasibility(ik, X, {}).all()

@@ -31,7 +31,11 @@ class IKResult:
         orientation_error: Geodesic angle (rad) between ``R(q)`` and the target
             rotation, recomputed by FK (0 for position-only targets).
         success: Both errors within tolerance.
-        status: ``"solved"``, ``"unreachable"`` or ``"not-converged"``.
+        status: ``"solved"``, ``"unreachable"``, ``"not-converged"`` or, with a
+            collision check (``scene=`` / ``self_collision=``), ``"collides"``: exact
+            solutions were found but every one is closer than ``clearance`` (``q`` is
+            the one farthest from contact, :attr:`min_distance` its distance); never
+            ``"solved"`` for an answer in collision.
         n_eval: Forward-kinematics evaluations (search + polish + front).
         time: Wall time in seconds.
         solutions: Distinct solutions found (``(k, dof)``), nearest to
@@ -43,6 +47,11 @@ class IKResult:
         detail: Empty when the solve delivered what was asked; else why not, e.g.
             ``"found 33 of the 50 distinct solutions requested (...)"``: a solved
             target with fewer solutions than requested (:attr:`fewer_solutions`).
+        min_distance: With a collision check, the smallest signed distance of ``q``
+            (robot unit; recomputed at the end by the compiled checker; ``inf`` when
+            no pair is checked); ``None`` without one.
+        distances: With a collision check, that distance for each row of
+            ``solutions`` (all >= the clearance); ``None`` without one.
     """
 
     q: np.ndarray
@@ -57,6 +66,8 @@ class IKResult:
     front_q: np.ndarray | None = field(default=None, repr=False)
     n_requested: int = 1
     detail: str = ""
+    min_distance: float | None = None
+    distances: np.ndarray | None = field(default=None, repr=False)
 
     @property
     def fewer_solutions(self) -> bool:
@@ -67,8 +78,12 @@ class IKResult:
 def ik_result(session: SolveSession, q_current, t0: float, searched_out: bool, front, front_q,
               proven: bool = False) -> IKResult:
     """The :class:`IKResult` of a finished solve (``t0``: its start, ``perf_counter``)."""
-    robot, target = session.robot, session.target
+    robot, target, guard = session.robot, session.target, session.guard
     errors: tuple[float, float] | None = None
+    if session.found and guard is not None:  # the distances recomputed, as the errors are
+        keep = guard.free(np.array(session.found))
+        session.found = [q for q, k in zip(session.found, keep, strict=True) if k]
+        session.found_errors = [e for e, k in zip(session.found_errors, keep, strict=True) if k]
     if session.found:
         sols = np.array(session.found)
         if q_current is not None:  # 2 pi copies nearest to the current configuration first
@@ -77,6 +92,9 @@ def ik_result(session: SolveSession, q_current, t0: float, searched_out: bool, f
         else:
             errors = session.found_errors[0]
         q, status, front, front_q = sols[0], "solved", None, None
+    elif session.colliding is not None:  # exact answers, all in collision
+        sols, status, front, front_q = np.empty((0, robot.dof)), "collides", None, None
+        q = session.colliding[1]
     else:
         assert session.best is not None  # every stage considers at least one candidate
         sols = np.empty((0, robot.dof))
@@ -90,14 +108,24 @@ def ik_result(session: SolveSession, q_current, t0: float, searched_out: bool, f
         pos_v, ori_v = pose_errors(robot, target, q, reference=status != "solved")
         errors = (float(pos_v[0]), float(ori_v[0]))
     pos, ori = errors
+    d_q = None if guard is None else float(guard.distances(q)[0])
     if status != "solved" and pos <= session.tol_pos and ori <= session.tol_ori:
-        status, sols = "solved", q[None]  # an answer within tolerance is a solution
+        if d_q is not None and d_q < guard.clearance:  # type: ignore[union-attr]
+            status = "collides"  # exact, but in collision: never a solution
+        else:
+            status, sols = "solved", q[None]  # an answer within tolerance is a solution
     detail = ""
     if status == "solved" and len(sols) < session.wanted:
         why = ("the evaluation budget was spent" if session.n_eval >= session.max_evals
                else "the search stopped finding new ones")
         detail = f"found {len(sols)} of the {session.wanted} distinct solutions requested ({why})"
+    elif status == "collides":
+        detail = (f"{max(session.n_rejected, 1)} exact answer(s) rejected for collision; the "
+                  f"farthest from contact is at {d_q:.4g} {robot.unit}, below the clearance "
+                  f"{guard.clearance:g}")  # type: ignore[union-attr]
     return IKResult(q=q, position_error=pos, orientation_error=ori, success=status == "solved",
                     status=status, n_eval=session.n_eval, time=time.perf_counter() - t0,
                     solutions=sols, front=front, front_q=front_q, n_requested=session.wanted,
-                    detail=detail)
+                    detail=detail, min_distance=d_q,
+                    distances=None if guard is None else guard.distances(sols)
+                    if len(sols) else np.zeros(0))

@@ -18,6 +18,7 @@ from moik.kinematics.criteria_kernels import nearest_copies_into
 from moik.kinematics.rotation_metrics import geodesic_angle
 from moik.problems.targets import Target
 from moik.robots.chain import Robot, fk_reference
+from moik.solver.collision import CollisionGuard
 from moik.solver.context import ik_context
 from moik.solver.polish import polish as polish_q
 from moik.solver.starts import CHECK, PATIENT, found_table, is_distinct, run_starts
@@ -138,10 +139,13 @@ class SolveSession:
         distinct: Joint-space distance above which two solutions are distinct.
         wanted: Number of solutions asked for; no more are kept.
         max_evals: FK evaluation budget (the first stage starts no start past it).
+        guard: The collision test (:mod:`moik.solver.collision`): an exact answer that
+            fails it is not a solution (reject-and-restart), the farthest from contact
+            is kept as :attr:`colliding`.
     """
 
     def __init__(self, robot, target, tol_pos, tol_ori, distinct, wanted,
-                 max_evals: int = 2**62):
+                 max_evals: int = 2**62, guard: CollisionGuard | None = None):
         self.robot, self.target = robot, target
         self.tol_pos, self.tol_ori, self.distinct = tol_pos, tol_ori, distinct
         self.wanted = wanted  # solutions asked for: no more are kept
@@ -150,6 +154,10 @@ class SolveSession:
         self.found: list[np.ndarray] = []
         self.found_errors: list[tuple[float, float]] = []  # (position, orientation) of each
         self.best: tuple[float, np.ndarray] | None = None  # (scaled error, q)
+        self.guard = guard  # the collision test of an answer (None: none)
+        # the exact answer rejected for collision with the largest distance: (distance, q)
+        self.colliding: tuple[float, np.ndarray] | None = None
+        self.n_rejected = 0  # exact answers rejected for collision
         self.ctx = ik_context(robot, target, stop=(STOP_FRACTION * tol_pos,
                                                    STOP_FRACTION * tol_ori),
                               tol=(tol_pos, tol_ori), distinct=distinct,
@@ -176,20 +184,42 @@ class SolveSession:
         Each converged end is re-checked by an FK pass of its own in the same compiled
         call (:func:`~moik.solver.starts.run_starts`), as :meth:`consider` does."""
         dof, n_known = self.robot.dof, len(self.found)
-        found = found_table(self.wanted, dof, self.found, self.found_errors)
-        best = np.empty(dof + 1)
-        best[0] = np.inf if self.best is None else self.best[0]
         starts = kernel_array(Q0)  # overwritten by the ends: the callers' rows are fresh
-        policy = (CHECK | (PATIENT if patient else 0), max(self.max_evals - self.n_eval, 1))
-        n_found, n_eval, _ = run_starts(self.ctx, starts, policy, found, best,
-                                        np.empty((len(starts), 2)))
-        self.n_eval += int(n_eval)
-        for k in range(n_known, n_found):
-            self.found.append(found[k, :dof])
-            self.found_errors.append((float(found[k, dof]), float(found[k, dof + 1])))
-        if self.best is None or best[0] < self.best[0]:
-            self.best = (float(best[0]), best[1:])
-        return n_found > n_known
+        flags = CHECK | (PATIENT if patient else 0)
+        pos = 0
+        while pos < len(starts):  # one pass; again after ends rejected for collision
+            k0 = len(self.found)
+            found = found_table(self.wanted, dof, self.found, self.found_errors)
+            best = np.empty(dof + 1)
+            best[0] = np.inf if self.best is None else self.best[0]
+            policy = (flags, max(self.max_evals - self.n_eval, 1))
+            n_found, n_eval, used = run_starts(self.ctx, starts[pos:], policy, found, best,
+                                               np.empty((len(starts) - pos, 2)))
+            self.n_eval += int(n_eval)
+            pos += int(used)
+            new = found[k0:n_found]
+            keep = (np.ones(len(new), dtype=bool) if self.guard is None
+                    else self._collision_free(new[:, :dof]))
+            for row in new[keep]:
+                self.found.append(row[:dof])
+                self.found_errors.append((float(row[dof]), float(row[dof + 1])))
+            if self.best is None or best[0] < self.best[0]:
+                self.best = (float(best[0]), best[1:])
+            if keep.all() or len(self.found) >= self.wanted or self.n_eval >= self.max_evals:
+                break
+        return len(self.found) > n_known
+
+    def _collision_free(self, Q: np.ndarray) -> np.ndarray:
+        """Which exact answers keep the clearance; the others are counted, the farthest
+        from contact kept as :attr:`colliding`."""
+        assert self.guard is not None
+        d = self.guard.distances(Q)
+        ok = d >= self.guard.clearance
+        for k in np.flatnonzero(~ok):
+            self.n_rejected += 1
+            if self.colliding is None or d[k] > self.colliding[0]:
+                self.colliding = (float(d[k]), Q[k].copy())
+        return ok
 
     def consider(self, Q: np.ndarray) -> None:
         """Check candidates with the reference FK; keep the distinct solutions and the best."""
@@ -199,6 +229,7 @@ class SolveSession:
             if self.best is None or err < self.best[0]:
                 self.best = (err, q)
             if (len(self.found) < self.wanted and p <= self.tol_pos and o <= self.tol_ori
-                    and is_distinct(self.robot, q, self.found, self.distinct)):
+                    and is_distinct(self.robot, q, self.found, self.distinct)
+                    and (self.guard is None or self._collision_free(q[None])[0])):
                 self.found.append(q)
                 self.found_errors.append((float(p), float(o)))

@@ -47,12 +47,13 @@ from moik.solver.options import (
     start_generator,
     starts_sequence,
 )
+from moik.solver.collision import collision_guard
 from moik.solver.result import IKResult, ik_result
 from moik.solver.session import SolveSession, tolerances
 from moik.solver.starts import front as lm_front
 from moik.solver.starts import is_distinct
 
-STATUSES = ("solved", "unreachable", "not-converged")
+STATUSES = ("solved", "unreachable", "not-converged", "collides")
 FINAL_NFEV = 300  # extended refinement of the best candidate before giving up
 FIRST_STARTS = 8  # random starts drawn first; the remaining ``starts`` only when needed
 FOUND_PATIENCE = 1  # idle search rounds once all starts found some, not all, solutions
@@ -83,7 +84,8 @@ def solve_ik(robot: Robot, target, *, method: str = _D["method"],
              pop_size: int | None = _D["pop_size"], generations: int = _D["generations"],
              candidates_per_round: int = _D["candidates_per_round"],
              distinct: float = _D["distinct"], patience: int = _D["patience"],
-             front_method: str = _D["front_method"], front_evals: int = _D["front_evals"]
+             front_method: str = _D["front_method"], front_evals: int = _D["front_evals"],
+             scene=None, self_collision: bool = False, clearance: float = 0.0, collision=None
              ) -> IKResult:
     """Solve IK for one target.
 
@@ -136,6 +138,7 @@ def solve_ik(robot: Robot, target, *, method: str = _D["method"],
             wrong kind for ``method`` / ``front_method``.
         UnknownNameError: An unknown algorithm or orientation metric.
         TargetError, ShapeError, NonFiniteError: A malformed target or ``q_current``.
+        GeometryError: A scene or collision geometry of the wrong type or robot.
     """
     t0 = time.perf_counter()
     robot = as_robot(robot)
@@ -155,8 +158,12 @@ def solve_ik(robot: Robot, target, *, method: str = _D["method"],
     if q_current is not None and q_current.ndim != 1:
         raise ShapeError(f"q_current must be one joint vector ({robot.dof},), got "
                          f"{q_current.shape}")
+    guard = (None if scene is None and self_collision is False and collision is None
+             and clearance == 0.0 and type(clearance) is float
+             else collision_guard(robot, scene=scene, self_collision=self_collision,
+                                  clearance=clearance, collision=collision))
     session = SolveSession(robot, target, tol_pos, tol_ori, opts.distinct, opts.n_solutions,
-                           opts.max_evals)
+                           opts.max_evals, guard=guard)
     if seeds is None:  # the first stage's generator; later stages spawn from the seed
         with start_generator(seed) as starts_rng:
             return _solve(session, opts, starts_rng, q_current, seed, t0)
@@ -188,19 +195,21 @@ def _solve(session: SolveSession, opts: SearchOptions, starts_rng: np.random.Gen
     problem = _search_problem(robot, target, opts.orientation)
     seeds = np.random.SeedSequence(seed) if isinstance(seed, int) else seed
     idle_rounds, patience = 0, opts.patience
-    if session.found and opts.starts > FIRST_STARTS:  # every start ran and found some of the
-        patience = min(patience, FOUND_PATIENCE)  # branches: the rest most likely do not exist
+    if ((session.found or session.colliding is not None)  # every start ran and found some
+            and opts.starts > FIRST_STARTS):  # branches (or only colliding ones): the rest
+        patience = min(patience, FOUND_PATIENCE)  # most likely do not exist
     while (len(session.found) < n_solutions and session.n_eval < opts.max_evals
            and idle_rounds < patience):
         n_found = len(session.found)
         _search_round(session, problem, opts, int(seeds.spawn(1)[0].generate_state(1)[0]))
         idle_rounds = 0 if len(session.found) > n_found else idle_rounds + 1
     searched_out = idle_rounds >= patience  # ended for lack of progress, not for budget
-    if (not session.found and session.best is not None and polish
+    exact = session.colliding is not None  # reached exactly, only in collision
+    if (not session.found and not exact and session.best is not None and polish
             and session.n_eval < opts.max_evals):  # a near miss may need more iterations
         session.refine(session.best[1], polish, max_nfev=FINAL_NFEV)
     front = front_q = None
-    if not session.found and target.rotation is not None:
+    if not session.found and not exact and target.rotation is not None:
         front, front_q = _front(session, opts, seeds)
         if polish and not session.found:
             front, front_q, n = polished_front(robot, target, opts.orientation,

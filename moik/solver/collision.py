@@ -1,0 +1,151 @@
+"""Collision-aware acceptance of IK answers: the :class:`CollisionGuard` of one solve.
+
+``solve_ik(..., scene=..., self_collision=..., clearance=d)`` (and ``solve_ik_batch``,
+``solve_path``) accept a configuration only when its smallest signed distance (the
+robot's checked self pairs when ``self_collision``, every robot shape against every
+obstacle when a scene is given; :class:`~moik.collision.CollisionChecker`) is at least
+``clearance``. The method is reject-and-restart: a converged Levenberg-Marquardt start
+(or a polished search candidate) whose end collides is not counted as found, and the
+start loop goes on with its further starts until enough collision-free solutions are
+known or the budget is spent (:meth:`moik.solver.session.SolveSession.local_starts`).
+The distances of the answers are recomputed at the end (:func:`moik.solver.result.ik_result`),
+as the pose errors are.
+
+Geometry of the robot: ``collision=`` a :class:`~moik.collision.CollisionModel` (of
+this robot) or a ready :class:`~moik.collision.CollisionChecker` (used as it is: its
+own scene and self pairs); by default the shipped capsule model of a catalog arm
+(:func:`moik.collision.collision_model`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from moik._validate import flag, number
+from moik.collision.catalog import collision_model
+from moik.collision.io import load_scene
+from moik.collision.model import CollisionChecker, CollisionModel, Scene
+from moik.exceptions import GeometryError, ParameterError
+from moik.robots.chain import Robot
+
+COLLISION_OPTIONS = ("scene", "self_collision", "clearance", "collision")
+_CHECKERS: dict[tuple[int, int, bool], tuple[Any, Any, CollisionChecker]] = {}
+_MODELS: dict[str, CollisionModel] = {}
+_CACHE_SIZE = 16
+
+
+@dataclass(frozen=True)
+class CollisionGuard:
+    """The collision test of one solve: a checker and the clearance an answer needs.
+
+    Attributes:
+        checker: The compiled pairs (self and/or scene).
+        clearance: Smallest accepted signed distance (robot unit, >= 0).
+    """
+
+    checker: CollisionChecker
+    clearance: float
+
+    def distances(self, Q: np.ndarray) -> np.ndarray:
+        """Smallest signed distance of each row of ``Q`` (``(n,)``; ``inf``: no pair)."""
+        return self.checker.min_distance_batch(np.atleast_2d(np.asarray(Q, dtype=float)))
+
+    def free(self, Q: np.ndarray) -> np.ndarray:
+        """Whether each row of ``Q`` keeps the clearance (``(n,)`` bool)."""
+        return self.distances(Q) >= self.clearance
+
+
+def same_arm(a: Robot, b: Robot) -> bool:
+    """Whether two robots have the same joints (chain, joint types, base)."""
+    if a is b:
+        return True
+    ca, cb = a.kinematic_chain, b.kinematic_chain
+    return (a.dof == b.dof and ca.origins.shape == cb.origins.shape
+            and bool(np.allclose(ca.origins, cb.origins, atol=1e-12))
+            and bool(np.array_equal(ca.joint_types, cb.joint_types))
+            and bool(np.allclose(a.base, b.base, atol=1e-12)))
+
+
+def _shipped(robot: Robot) -> CollisionModel:
+    """The shipped model of ``robot`` (parsed once per name; another arm of that name is
+    refused by :func:`~moik.collision.collision_model`)."""
+    model = _MODELS.get(robot.name)
+    if model is None or not same_arm(model.robot, robot):
+        model = collision_model(robot)
+        _MODELS[robot.name] = model
+    return model
+
+
+def _checker(model: CollisionModel, scene: Scene | None, self_collision: bool
+             ) -> CollisionChecker:
+    """A :class:`CollisionChecker`, reused for the same model and scene objects."""
+    key = (id(model), id(scene), self_collision)
+    hit = _CHECKERS.get(key)
+    if hit is not None and hit[0] is model and hit[1] is scene:
+        return hit[2]
+    checker = CollisionChecker(model=model, scene=scene, self_collision=self_collision)
+    if len(_CHECKERS) >= _CACHE_SIZE:
+        _CHECKERS.pop(next(iter(_CHECKERS)))
+    _CHECKERS[key] = (model, scene, checker)  # the objects kept alive: their ids stay theirs
+    return checker
+
+
+def collision_guard(robot: Robot, *, scene=None, self_collision=False, clearance=0.0,
+                    collision=None) -> CollisionGuard | None:
+    """The :class:`CollisionGuard` of a solve, or ``None`` when it checks nothing.
+
+    Args:
+        robot: The arm solved for.
+        scene: ``None``, a :class:`~moik.collision.Scene`, or a path to a scene JSON
+            file (:func:`~moik.collision.load_scene`).
+        self_collision: Check the model's self pairs too.
+        clearance: Smallest accepted distance (robot unit; finite, >= 0).
+        collision: ``None`` (the catalog's shipped model of ``robot``), a
+            :class:`~moik.collision.CollisionModel` of ``robot``, or a
+            :class:`~moik.collision.CollisionChecker` of ``robot`` used as it is (then
+            ``scene`` and ``self_collision`` must be left at their defaults).
+
+    Raises:
+        ParameterError: NaN, infinite or negative ``clearance``; a non-bool
+            ``self_collision``; ``scene``/``self_collision`` given beside a checker.
+        GeometryError: A scene or geometry of the wrong type, or for another robot.
+        UnknownNameError: No model shipped for the robot (pass ``collision=``).
+    """
+    clearance = number("clearance", clearance, minimum=0.0)
+    self_collision = flag("self_collision", self_collision)
+    if isinstance(scene, str | Path):
+        scene = load_scene(scene)
+    if scene is not None and not isinstance(scene, Scene):
+        raise GeometryError(f"scene must be a moik.collision.Scene or a path to a scene JSON "
+                            f"file, got {type(scene).__name__}")
+    if isinstance(collision, CollisionChecker):
+        if scene is not None or self_collision:
+            raise ParameterError("collision= is a CollisionChecker, which has its own scene and "
+                                 "self pairs: leave scene= and self_collision= unset, or pass "
+                                 "a CollisionModel instead")
+        _check_robot(collision.robot, robot)
+        return CollisionGuard(collision, clearance)
+    if collision is not None and not isinstance(collision, CollisionModel):
+        raise GeometryError(f"collision must be a CollisionModel or a CollisionChecker, got "
+                            f"{type(collision).__name__}")
+    if scene is None and not self_collision:
+        if collision is not None or clearance > 0.0:
+            raise ParameterError(f"{'collision=' if collision is not None else 'clearance='} "
+                                 "was given but nothing is checked: pass scene= and/or "
+                                 "self_collision=True")
+        return None
+    if collision is not None:
+        _check_robot(collision.robot, robot)
+    model = _shipped(robot) if collision is None else collision
+    return CollisionGuard(_checker(model, scene, self_collision), clearance)
+
+
+def _check_robot(model_robot: Robot, robot: Robot) -> None:
+    if not same_arm(model_robot, robot):
+        raise GeometryError(f"the collision geometry is for robot {model_robot.name!r} "
+                            f"({model_robot.dof} joints), not for the robot solved for, "
+                            f"{robot.name!r} ({robot.dof} joints)")

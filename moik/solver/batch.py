@@ -23,6 +23,7 @@ from moik.exceptions import ParameterError, ShapeError, TargetError
 from moik.kinematics.orientation import check_rotation
 from moik.problems.targets import Target
 from moik.robots.catalog import as_robot
+from moik.solver.collision import collision_guard
 from moik.solver.context import ik_context
 from moik.solver.options import search_options, seed_sequence, starts_sequence
 from moik.solver.session import (
@@ -43,12 +44,15 @@ class IKBatchResult:
     Attributes:
         q: ``(n, dof)`` joint vectors within the limits (the solution, or the best
             candidate / compromise of an unsolved target).
-        status: ``(n,)`` ``"solved"``, ``"unreachable"`` or ``"not-converged"``.
+        status: ``(n,)`` ``"solved"``, ``"unreachable"``, ``"not-converged"`` or (with a
+            collision check) ``"collides"``, as :func:`~moik.solver.solve_ik.solve_ik`.
         position_error: ``(n,)`` recomputed by FK (robot unit).
         orientation_error: ``(n,)`` geodesic angle (rad), 0 for position targets.
         success: ``(n,)`` whether each target was solved.
         n_eval: ``(n,)`` FK evaluations spent on each target.
         time: Wall time of the whole call (s).
+        min_distance: With a collision check, ``(n,)`` smallest signed distance of each
+            ``q`` (recomputed at the end); ``None`` without one.
     """
 
     q: np.ndarray
@@ -58,6 +62,7 @@ class IKBatchResult:
     success: np.ndarray
     n_eval: np.ndarray
     time: float
+    min_distance: np.ndarray | None = None
 
 
 def child_seeds(seed, n: int) -> list[np.random.SeedSequence]:
@@ -87,8 +92,9 @@ def _targets(targets) -> tuple[np.ndarray, np.ndarray | None]:
     return positions, rotations
 
 
-def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, **options
-                   ) -> IKBatchResult:
+def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=None,
+                   self_collision: bool = False, clearance: float = 0.0, collision=None,
+                   **options) -> IKBatchResult:
     """Solve IK for a batch of targets; each answer independent of the others.
 
     Args:
@@ -97,6 +103,9 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, **option
         seed: Root seed; target ``i`` uses ``child_seeds(seed, n)[i]``.
         q_current: ``None``, one joint vector ``(dof,)`` for every target, or ``(n, dof)``.
         tol: As in :func:`~moik.solver.solve_ik.solve_ik`.
+        scene, self_collision, clearance, collision: The collision check of
+            :func:`~moik.solver.solve_ik.solve_ik`, per target the same verdict: a
+            first-stage end in collision sends its target to the whole of ``solve_ik``.
         **options: Any other keyword of ``solve_ik`` except ``n_solutions``.
 
     Raises:
@@ -110,6 +119,9 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, **option
         raise ParameterError("solve_ik_batch returns one joint vector per target: n_solutions "
                              "is not an option here (call solve_ik per target for branches)")
     opts = search_options("solve_ik_batch", options)
+    guard = collision_guard(robot, scene=scene, self_collision=self_collision,
+                            clearance=clearance, collision=collision)
+    check = {} if guard is None else {"collision": guard.checker, "clearance": guard.clearance}
     tol_pos, tol_ori = tolerances(tol, robot)
     positions, rotations = _targets(targets)
     n = len(positions)
@@ -127,6 +139,9 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, **option
     if opts.polish and (qc is not None or opts.starts):
         _first_stage(robot, positions, rotations, qc, opts, (tol_pos, tol_ori), seeds,
                      out_Q, solved, n_evals)
+    if guard is not None and solved.any():  # a colliding end: the whole of solve_ik
+        k = np.flatnonzero(solved)
+        solved[k[~guard.free(out_Q[k])]] = False
     if qc is not None:
         out_Q[solved] = nearest_copies(robot, out_Q[solved], qc[solved])
     status = np.full(n, "not-converged", dtype=object)
@@ -138,17 +153,20 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, **option
         p_k, o_k = pose_errors(robot, (positions[k], None if rotations is None
                                        else rotations[k]), out_Q[k])
         ok = (p_k <= tol_pos) & (o_k <= tol_ori)
+        if guard is not None:
+            ok &= guard.free(out_Q[k])
         pos[k], ori[k], solved[k] = p_k, o_k, ok
         status[k[ok]] = "solved"
     for i in np.flatnonzero(~solved):  # the hard tail: the whole of solve_ik
         res = solve_ik(robot, targets_i[i], seed=seeds[i], tol=tol,
-                       q_current=None if qc is None else qc[i], **options)
+                       q_current=None if qc is None else qc[i], **check, **options)
         out_Q[i], status[i], pos[i], ori[i] = res.q, res.status, res.position_error, \
             res.orientation_error
         n_evals[i], solved[i] = res.n_eval, res.success
     return IKBatchResult(q=out_Q, status=status.astype(str), position_error=pos,
                          orientation_error=ori, success=solved, n_eval=n_evals,
-                         time=time.perf_counter() - t0)
+                         time=time.perf_counter() - t0,
+                         min_distance=None if guard is None else guard.distances(out_Q))
 
 
 def _first_stage(robot, positions, rotations, qc, opts, tol, seeds, out_Q, solved, n_evals):

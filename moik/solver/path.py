@@ -23,6 +23,7 @@ from moik._validate import integer, keywords, positive
 from moik.exceptions import ParameterError, TargetError
 from moik.problems.targets import as_target, check_unit_range
 from moik.robots.chain import Robot
+from moik.solver.collision import CollisionGuard, collision_guard
 from moik.solver.options import SEARCH_DEFAULTS, SearchOptions, seed_sequence
 from moik.solver.polish import polish
 from moik.solver.session import pose_errors, tolerances
@@ -40,12 +41,16 @@ class PathResult:
         position_errors: ``(n,)`` recomputed by FK (robot unit).
         orientation_errors: ``(n,)`` geodesic, rad (0 for position targets).
         success: ``(n,)`` both errors within tolerance.
-        statuses: Per target ``"solved"``, ``"unreachable"`` or ``"not-converged"``.
+        statuses: Per target ``"solved"``, ``"unreachable"``, ``"not-converged"`` or
+            (with a collision check) ``"collides"``.
         warm_started: ``(n,)`` whether the warm start alone solved the target.
         joint_steps: ``(n - 1,)`` largest absolute joint change between neighbours.
         max_joint_step: ``joint_steps.max()`` (0 for a single target).
         n_eval: FK evaluations in total.
         time: Wall time in seconds.
+        min_distances: With a collision check, ``(n,)`` smallest signed distance of each
+            row of ``Q`` (recomputed at the end; ``success`` requires the clearance);
+            ``None`` without one.
     """
 
     Q: np.ndarray
@@ -58,10 +63,13 @@ class PathResult:
     max_joint_step: float
     n_eval: int
     time: float
+    min_distances: np.ndarray | None = None
 
 
 def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = None,
-               seed=0, tol=1e-9, first_branches: int = 4, **solve_options) -> PathResult:
+               seed=0, tol=1e-9, first_branches: int = 4, scene=None,
+               self_collision: bool = False, clearance: float = 0.0, collision=None,
+               **solve_options) -> PathResult:
     """Solve a sequence of targets keeping the arm on one branch.
 
     Args:
@@ -75,6 +83,9 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
         tol: As in :func:`moik.solver.solve_ik`.
         first_branches: Without ``q_start``: distinct solutions of the first
             target tried as the path's branch (1: take the first found).
+        scene, self_collision, clearance, collision: The collision check of
+            :func:`moik.solver.solve_ik` at every waypoint: a warm start whose end
+            collides is not taken (the waypoint is solved globally, collision-aware).
         **solve_options: Passed to :func:`moik.solver.solve_ik` (not ``seed``,
             ``q_current``, ``n_solutions``).
 
@@ -102,13 +113,18 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
     max_step = None if max_step is None else positive("max_step", max_step)
     first_branches = integer("first_branches", first_branches, minimum=1)
     tol_pos, tol_ori = tolerances(tol, robot)
+    guard = collision_guard(robot, scene=scene, self_collision=self_collision,
+                            clearance=clearance, collision=collision)
+    if guard is not None:
+        solve_options = {**solve_options, "collision": guard.checker,
+                         "clearance": guard.clearance}
     prev = None if q_start is None else robot.check_q(q_start, "q_start")
     seeds = seed_sequence(seed).spawn(len(targets))
     Q: list[np.ndarray] = []
     statuses: list[str] = []
     warm_flags: list[bool] = []
     n_eval = 0
-    warm = _WarmStart(robot, tol_pos, tol_ori, max_step)
+    warm = _WarmStart(robot, tol_pos, tol_ori, max_step, guard)
     tracked: list[np.ndarray] = []  # warm-start solutions already found by the branch choice
     for i, target in enumerate(targets):
         q, status, used_warm = None, None, False
@@ -136,8 +152,12 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
     pos_err, ori_err = pose_errors_all(robot, targets, Q_path)
     steps = (np.max(np.abs(np.diff(Q_path, axis=0)), axis=1) if len(Q_path) > 1
              else np.zeros(0))
+    dists = None if guard is None else guard.distances(Q_path)
+    success = (pos_err <= tol_pos) & (ori_err <= tol_ori)
+    if dists is not None:
+        success &= dists >= guard.clearance  # type: ignore[union-attr]
     return PathResult(Q=Q_path, position_errors=pos_err, orientation_errors=ori_err,
-                      success=(pos_err <= tol_pos) & (ori_err <= tol_ori),
+                      success=success, min_distances=dists,
                       statuses=tuple(statuses), warm_started=np.array(warm_flags),
                       joint_steps=steps, max_joint_step=float(steps.max()) if steps.size else 0.0,
                       n_eval=n_eval + warm.n_eval, time=time.perf_counter() - t0)
@@ -146,8 +166,10 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
 class _WarmStart:
     """Warm-started refinement from a neighbour's solution, with its FK count."""
 
-    def __init__(self, robot: Robot, tol_pos: float, tol_ori: float, max_step: float | None):
+    def __init__(self, robot: Robot, tol_pos: float, tol_ori: float, max_step: float | None,
+                 guard: CollisionGuard | None = None):
         self.robot, self.tol_pos, self.tol_ori, self.max_step = robot, tol_pos, tol_ori, max_step
+        self.guard = guard
         self.n_eval = 0
 
     def step(self, target, prev: np.ndarray) -> np.ndarray | None:
@@ -159,6 +181,8 @@ class _WarmStart:
         pos, ori = (float(v[0]) for v in pose_errors(self.robot, target, out.q))
         step = float(np.max(np.abs(out.q - prev)))
         ok = pos <= self.tol_pos and ori <= self.tol_ori
+        if ok and self.guard is not None:
+            ok = bool(self.guard.free(out.q)[0])
         return out.q if ok and (self.max_step is None or step <= self.max_step) else None
 
     def furthest(self, candidates: np.ndarray, rest: list) -> tuple[np.ndarray, list]:

@@ -1,0 +1,164 @@
+"""Collision-aware solve_ik / solve_ik_batch / solve_path (moik/solver/collision.py):
+answers checked by coal, forced collisions give "collides", defaults unchanged, bad input."""
+
+import numpy as np
+import pytest
+
+from moik import solve_ik
+from moik.collision import Box, Capsule, CollisionChecker, HalfSpace, Scene, Sphere
+from moik.collision.catalog import collision_model
+from moik.collision.io import rpy_pose
+from moik.exceptions import GeometryError, MoikError, ParameterError
+from moik.problems.targets import as_target
+from moik.solver import solve_ik_batch, solve_path
+from moik.solver.batch import child_seeds
+from moik.solver.session import pose_errors
+
+coal = pytest.importorskip("coal")
+TOL = 1e-9
+
+
+def _coal_shape(s):
+    r, h, _ = s.sizes
+    if isinstance(s, Sphere):
+        return coal.Sphere(r)
+    if isinstance(s, Capsule):
+        return coal.Capsule(r, 2 * h)
+    if isinstance(s, Box):
+        return coal.Box(*s.size)
+    return coal.Halfspace(np.array([0.0, 0.0, 1.0]), 0.0)
+
+
+def coal_min(checker, q):
+    """The smallest signed distance over the checker's pairs, by coal (independent)."""
+    placed = dict(checker.world_shapes(q))
+    req = coal.DistanceRequest()
+    req.enable_signed_distance = True
+    req.gjk_tolerance = req.epa_tolerance = 1e-14
+    out = []
+    for a, b in checker.pair_names:
+        A, B = placed[a], placed[b]
+        out.append(coal.distance(_coal_shape(A), coal.Transform3s(A.pose[:3, :3], A.pose[:3, 3]),
+                                 _coal_shape(B), coal.Transform3s(B.pose[:3, :3], B.pose[:3, 3]),
+                                 req, coal.DistanceResult()))
+    return min(out)
+
+
+@pytest.fixture(scope="module")
+def world():
+    model = collision_model("panda")
+    scene = Scene({"table": HalfSpace.plane([0, 0, 1], 0.0),
+                   "box": Box(size=(0.2, 0.2, 0.2), pose=rpy_pose([0.5, 0.0, 0.4])),
+                   "ball": Sphere(radius=0.1, pose=rpy_pose([0.0, 0.5, 0.5]))},
+                  allowed=frozenset({("table", model.links[0]), ("table", model.links[1])}))
+    checker = CollisionChecker(model=model, scene=scene)
+    Q = model.robot.random_q(400, rng=np.random.default_rng(7))
+    free = Q[checker.min_distance(Q) >= 0.0][:12]
+    return model, scene, checker, model.robot.fk(free)
+
+
+def _check_answer(robot, checker, target, q, clearance):
+    assert np.all(q >= robot.lower) and np.all(q <= robot.upper)
+    pos, ori = pose_errors(robot, as_target(target), q, reference=True)
+    assert pos[0] <= TOL * robot.reach and ori[0] <= TOL
+    assert coal_min(checker, q) >= clearance - 1e-9
+
+
+def test_answers_are_collision_free_by_coal(world):
+    model, scene, checker, T = world
+    robot, blind_hits = model.robot, 0
+    for k, pose in enumerate(T):
+        res = solve_ik(robot, pose, seed=k, scene=scene, self_collision=True)
+        assert res.status == "solved"
+        _check_answer(robot, checker, pose, res.q, 0.0)
+        assert res.min_distance == pytest.approx(coal_min(checker, res.q), abs=1e-9)
+        blind = solve_ik(robot, pose, seed=k)
+        blind_hits += blind.success and coal_min(checker, blind.q) < 0.0
+    assert blind_hits > 0  # the check made a difference on these targets
+
+
+def test_clearance_and_several_solutions(world):
+    model, scene, checker, T = world
+    res = solve_ik(model.robot, T[0], seed=0, scene=scene, self_collision=True,
+                   clearance=0.01, n_solutions=3)
+    assert res.success and len(res.solutions) >= 1
+    assert res.distances is not None and np.all(res.distances >= 0.01)
+    for q in res.solutions:
+        _check_answer(model.robot, checker, T[0], q, 0.01)
+
+
+def test_target_inside_obstacle_collides(world):
+    model, scene, checker, _ = world
+    res = solve_ik(model.robot, [0.5, 0.0, 0.4], seed=0, scene=scene, starts=40,
+                   patience=1, max_evals=5000)
+    assert res.status == "collides" and not res.success and len(res.solutions) == 0
+    assert res.min_distance < 0.0
+    assert res.min_distance == pytest.approx(coal_min(checker, res.q), abs=1e-9)
+    pos, _ = pose_errors(model.robot, as_target([0.5, 0.0, 0.4]), res.q)
+    assert pos[0] <= TOL * model.robot.reach  # the best answer is exact, only colliding
+    assert "rejected for collision" in res.detail
+
+
+def test_clearance_beyond_reach_collides(world):
+    model, scene, _, T = world
+    res = solve_ik(model.robot, T[1], seed=0, scene=scene, clearance=5.0, starts=20,
+                   patience=1, max_evals=3000)
+    assert res.status == "collides" and not res.success
+    assert 0.0 <= res.min_distance < 5.0
+
+
+def test_defaults_unchanged(world):
+    model, _, _, T = world
+    a = solve_ik(model.robot, T[2], seed=4)
+    b = solve_ik(model.robot, T[2], seed=4, scene=None, self_collision=False, clearance=0.0)
+    assert np.array_equal(a.q, b.q) and a.n_eval == b.n_eval and a.status == b.status
+    assert a.min_distance is None and a.distances is None
+
+
+def test_checker_as_geometry(world):
+    model, scene, checker, T = world
+    res = solve_ik(model.robot, T[3], seed=1, collision=checker)
+    assert res.success and coal_min(checker, res.q) >= 0.0
+
+
+def test_batch_verdicts_equal_solve_ik(world):
+    model, scene, checker, T = world
+    b = solve_ik_batch(model.robot, T[:6], seed=5, scene=scene, self_collision=True)
+    assert b.min_distance is not None and np.all(b.success)
+    for i, s in enumerate(child_seeds(5, 6)):
+        r = solve_ik(model.robot, T[i], seed=s, scene=scene, self_collision=True)
+        assert np.array_equal(r.q, b.q[i]) and r.status == b.status[i]
+        _check_answer(model.robot, checker, T[i], b.q[i], 0.0)
+    forced = solve_ik_batch(model.robot, np.array([[0.5, 0.0, 0.4]]), scene=scene, starts=40,
+                            patience=1, max_evals=5000)
+    assert forced.status[0] == "collides" and not forced.success[0]
+
+
+def test_path_waypoints_collision_free(world):
+    model, scene, checker, T = world
+    res = solve_path(model.robot, list(T[:3]), scene=scene, self_collision=True,
+                     first_branches=1)
+    assert res.min_distances is not None and np.all(res.success)
+    for pose, q in zip(T[:3], res.Q, strict=True):
+        _check_answer(model.robot, checker, pose, q, 0.0)
+
+
+@pytest.mark.parametrize("kwargs, error", [
+    ({"scene": 42}, GeometryError),
+    ({"scene": "scene", "clearance": float("nan")}, ParameterError),
+    ({"scene": "scene", "clearance": -0.1}, ParameterError),
+    ({"scene": "scene", "collision": "ur5-model"}, GeometryError),
+    ({"scene": "scene", "collision": "not a model"}, GeometryError),
+    ({"clearance": 0.1}, ParameterError),
+    ({"collision": "checker", "scene": "scene"}, ParameterError),
+    ({"scene": "scene", "self_collision": 1}, ParameterError),
+])
+def test_bad_input(world, kwargs, error):
+    model, scene, checker, T = world
+    subst = {"scene": scene, "ur5-model": collision_model("ur5"), "checker": checker}
+    kw = {k: subst.get(v, v) if isinstance(v, str) else v for k, v in kwargs.items()}
+    for call in (lambda: solve_ik(model.robot, T[0], **kw),
+                 lambda: solve_ik_batch(model.robot, T[:1], **kw)):
+        with pytest.raises(error) as info:
+            call()
+        assert isinstance(info.value, MoikError)

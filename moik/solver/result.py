@@ -80,15 +80,20 @@ def ik_result(session: SolveSession, q_current, t0: float, searched_out: bool, f
     """The :class:`IKResult` of a finished solve (``t0``: its start, ``perf_counter``)."""
     robot, target, guard = session.robot, session.target, session.guard
     errors: tuple[float, float] | None = None
-    if session.found and guard is not None:  # the distances recomputed, as the errors are
-        keep = guard.free(np.array(session.found))
+    dists = None  # the solutions' distances, recomputed at the end as the errors are
+    if session.found and guard is not None:
+        dists = guard.distances(np.array(session.found))
+        keep = dists >= guard.clearance
         session.found = [q for q, k in zip(session.found, keep, strict=True) if k]
         session.found_errors = [e for e, k in zip(session.found_errors, keep, strict=True) if k]
+        dists = dists[keep]
     if session.found:
         sols = np.array(session.found)
         if q_current is not None:  # 2 pi copies nearest to the current configuration first
             sols = nearest_copies(robot, sols, q_current)
-            sols = sols[np.argsort(np.linalg.norm(sols - q_current, axis=1), kind="stable")]
+            order = np.argsort(np.linalg.norm(sols - q_current, axis=1), kind="stable")
+            sols = sols[order]
+            dists = None if dists is None else dists[order]
         else:
             errors = session.found_errors[0]
         q, status, front, front_q = sols[0], "solved", None, None
@@ -108,12 +113,14 @@ def ik_result(session: SolveSession, q_current, t0: float, searched_out: bool, f
         pos_v, ori_v = pose_errors(robot, target, q, reference=status != "solved")
         errors = (float(pos_v[0]), float(ori_v[0]))
     pos, ori = errors
-    d_q = None if guard is None else float(guard.distances(q)[0])
+    d_q = (None if guard is None else float(dists[0]) if dists is not None and len(dists)
+           else float(guard.distances(q)[0]))
     if status != "solved" and pos <= session.tol_pos and ori <= session.tol_ori:
         if d_q is not None and d_q < guard.clearance:  # type: ignore[union-attr]
             status = "collides"  # exact, but in collision: never a solution
         else:
             status, sols = "solved", q[None]  # an answer within tolerance is a solution
+            dists = None if d_q is None else np.array([d_q])
     detail = ""
     if status == "solved" and len(sols) < session.wanted:
         why = ("the evaluation budget was spent" if session.n_eval >= session.max_evals
@@ -127,5 +134,4 @@ def ik_result(session: SolveSession, q_current, t0: float, searched_out: bool, f
                     status=status, n_eval=session.n_eval, time=time.perf_counter() - t0,
                     solutions=sols, front=front, front_q=front_q, n_requested=session.wanted,
                     detail=detail, min_distance=d_q,
-                    distances=None if guard is None else guard.distances(sols)
-                    if len(sols) else np.zeros(0))
+                    distances=None if guard is None else dists if len(sols) else np.zeros(0))

@@ -3,11 +3,14 @@
 (The options are declared in :mod:`moik.cli.parser`, which imports nothing heavy.)
 
 The scene is a JSON file (:func:`moik.collision.io.load_scene`); the arm's geometry is
-its shipped capsule model (:mod:`moik.collision.catalog`; catalog arms only). Each
-printed solution gets its smallest distance (self pairs and the scene) and the pair
-that attains it; a solution closer than ``--clearance`` (default 0) is marked in
-collision, and ``--json`` adds ``min_distance``, ``closest_pair`` and ``collides`` per
-solution. The solver itself does not avoid the scene yet: ``--scene`` checks its answers.
+its shipped capsule model (:mod:`moik.collision.catalog`; catalog arms only). The
+checker (self pairs and the scene) and ``--clearance`` go to the solver
+(``solve_ik(..., collision=checker, clearance=D)``), which returns only collision-free
+solutions, or the status ``collides`` (exit status 1) when every exact one collides.
+Each printed solution gets its smallest distance and the pair that attains it (marked
+in collision when closer than ``--clearance``, default 0); ``--json`` adds
+``min_distance``, ``closest_pair`` and ``collides`` per solution, and ``min_distance``
+of ``q`` at the top level.
 """
 
 from __future__ import annotations
@@ -29,7 +32,12 @@ def checker(args: argparse.Namespace, robot: Robot) -> tuple[CollisionChecker, f
     if getattr(args, "scene", None) is None:
         return None
     return (CollisionChecker(model=collision_model(robot), scene=load_scene(args.scene)),
-            number("--clearance", args.clearance))
+            number("--clearance", args.clearance, minimum=0.0))
+
+
+def solver_options(check: tuple[CollisionChecker, float] | None) -> dict[str, Any]:
+    """The keywords of ``solve_ik`` for ``--scene`` / ``--clearance`` (none without)."""
+    return {} if check is None else {"collision": check[0], "clearance": check[1]}
 
 
 def distances(check: tuple[CollisionChecker, float], Q: np.ndarray) -> list[dict[str, Any]]:

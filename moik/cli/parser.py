@@ -52,10 +52,11 @@ def _solve_arguments(p: argparse.ArgumentParser) -> None:
                    help="current joint values (rad, deg with --deg): the first start; "
                         "solutions nearest to it first; needed by --pareto joint_motion")
     p.add_argument("--scene", metavar="FILE",
-                   help="JSON scene of obstacles: report each solution's distance to it and "
-                        "to the arm itself (shipped capsule models of the catalog arms)")
+                   help="JSON scene of obstacles: solve for collision-free solutions (scene and "
+                        "self pairs, shipped capsule models of the catalog arms) and report "
+                        "each one's distance; status collides (exit 1) if all exact ones collide")
     p.add_argument("--clearance", type=float, default=0.0, metavar="D",
-                   help="with --scene: a solution nearer than D (robot unit) is in collision")
+                   help="with --scene: the smallest accepted distance (robot unit, >= 0)")
     p.add_argument("--tol", nargs="+", type=float, metavar="TOL",
                    help="tolerance: one number t (position t*reach, orientation t rad; default "
                         "1e-9) or two (position in the robot's unit, orientation in rad)")

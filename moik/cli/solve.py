@@ -71,7 +71,8 @@ def _tol(values: list[float] | None):
 
 
 def cmd_solve(args: argparse.Namespace) -> int:
-    """Solve, print (text or JSON), optionally plot; 0 when solved, 1 otherwise."""
+    """Solve, print (text or JSON), optionally plot; 0 when solved, 1 otherwise (``collides``
+    included)."""
     if args.pareto:
         return pareto.run_pareto(args, robot=robot(args))
     seed = integer("--seed", args.seed, minimum=0)
@@ -85,7 +86,8 @@ def cmd_solve(args: argparse.Namespace) -> int:
     with library_call(SOLVE_OPTIONS):
         res = solve_ik(arm, goal, method=args.algorithm, seed=seed, tol=_tol(args.tol),
                        n_solutions=args.n_solutions, starts=args.starts,
-                       max_evals=args.max_evals, q_current=q_current)
+                       max_evals=args.max_evals, q_current=q_current,
+                       **collision.solver_options(check))
     Q = res.solutions if len(res.solutions) else res.q[None]
     errors = [(res.position_error, res.orientation_error)] + _errors(arm, goal, Q[1:])
     if plots:

@@ -46,3 +46,26 @@ def test_bad_scene_file(tmp_path, capsys):
     bad.write_text('{"obstacles": [{"type": "cone"}]}')
     assert main(["solve", "panda", "--target", "0.5", "0.1", "0.45", "--scene", str(bad)]) != 0
     assert "cone" in capsys.readouterr().err
+
+
+def test_scene_goes_to_the_solver(scene_file, capsys):
+    code = main(["solve", "panda", "--target", "0.5", "0.1", "0.45", "--scene", str(scene_file),
+                 "--clearance", "0.02", "--n-solutions", "3", "--json"])
+    doc = json.loads(capsys.readouterr().out)
+    assert code == 0 and doc["status"] == "solved"
+    assert doc["min_distance"] >= 0.02
+    assert doc["solutions"] and not any(sol["collides"] for sol in doc["solutions"])
+
+
+def test_target_in_an_obstacle_collides(scene_file, capsys):
+    code = main(["solve", "panda", "--target", "0.55", "0.0", "0.35", "--scene", str(scene_file),
+                 "--starts", "30", "--max-evals", "3000", "--json"])
+    doc = json.loads(capsys.readouterr().out)
+    assert code == 1 and doc["status"] == "collides" and not doc["success"]
+    assert doc["min_distance"] < 0 and doc["solutions"] == []
+
+
+def test_negative_clearance(scene_file, capsys):
+    assert main(["solve", "panda", "--target", "0.5", "0.1", "0.45", "--scene", str(scene_file),
+                 "--clearance", "-1"]) != 0
+    assert "--clearance" in capsys.readouterr().err

@@ -34,7 +34,6 @@ import time
 
 import numpy as np
 from _output import OUT_HELP, table_output
-
 from solve_ik import rtb_robot
 
 from moik import solve_ik

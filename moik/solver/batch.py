@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -121,7 +122,8 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=No
     opts = search_options("solve_ik_batch", options)
     guard = collision_guard(robot, scene=scene, self_collision=self_collision,
                             clearance=clearance, collision=collision)
-    check = {} if guard is None else {"collision": guard.checker, "clearance": guard.clearance}
+    check: dict[str, Any] = ({} if guard is None else
+                             {"collision": guard.checker, "clearance": guard.clearance})
     tol_pos, tol_ori = tolerances(tol, robot)
     positions, rotations = _targets(targets)
     n = len(positions)

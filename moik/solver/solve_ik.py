@@ -38,6 +38,7 @@ from moik.problems.ik import BiObjectiveIK, PoseIK, PositionIK
 from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.catalog import as_robot
 from moik.robots.chain import Robot
+from moik.solver.collision import collision_guard
 from moik.solver.front import FRONT_STARTS, polished_front, reach_excess
 from moik.solver.options import (
     SEARCH_DEFAULTS,
@@ -47,7 +48,6 @@ from moik.solver.options import (
     start_generator,
     starts_sequence,
 )
-from moik.solver.collision import collision_guard
 from moik.solver.result import IKResult, ik_result
 from moik.solver.session import SolveSession, tolerances
 from moik.solver.starts import front as lm_front

@@ -11,6 +11,10 @@ known or the budget is spent (:meth:`moik.solver.session.SolveSession.local_star
 The distances of the answers are recomputed at the end (:func:`moik.solver.result.ik_result`),
 as the pose errors are.
 
+``solve_ik_pareto`` takes the same arguments: its members keep the clearance, and the
+criterion name ``"clearance"`` (maximise the smallest distance) becomes
+:func:`clearance_criterion`.
+
 Geometry of the robot: ``collision=`` a :class:`~moik.collision.CollisionModel` (of
 this robot) or a ready :class:`~moik.collision.CollisionChecker` (used as it is: its
 own scene and self pairs); by default the shipped capsule model of a catalog arm
@@ -30,6 +34,7 @@ from moik.collision.catalog import collision_model
 from moik.collision.io import load_scene
 from moik.collision.model import CollisionChecker, CollisionModel, Scene
 from moik.exceptions import GeometryError, ParameterError
+from moik.kinematics.criteria import MAXIMIZE, Criterion
 from moik.robots.chain import Robot
 
 COLLISION_OPTIONS = ("scene", "self_collision", "clearance", "collision")
@@ -149,3 +154,26 @@ def _check_robot(model_robot: Robot, robot: Robot) -> None:
         raise GeometryError(f"the collision geometry is for robot {model_robot.name!r} "
                             f"({model_robot.dof} joints), not for the robot solved for, "
                             f"{robot.name!r} ({robot.dof} joints)")
+
+
+def clearance_criterion(checker: CollisionChecker) -> Criterion:
+    """The criterion ``clearance`` of :func:`~moik.solver.solve_ik_pareto` (maximised):
+    the smallest signed distance of each joint vector over the checker's pairs."""
+    return Criterion("clearance", checker.min_distance_batch, MAXIMIZE)
+
+
+def with_clearance(objectives: Any, guard: CollisionGuard | None) -> Any:
+    """``objectives`` with the name ``"clearance"`` replaced by :func:`clearance_criterion`.
+
+    Raises:
+        ParameterError: ``"clearance"`` named without a collision check.
+    """
+    items = (objectives,) if isinstance(objectives, str) else objectives
+    if not isinstance(items, list | tuple) or not any(
+            isinstance(o, str) and o.lower() == "clearance" for o in items):
+        return objectives
+    if guard is None:
+        raise ParameterError("criterion 'clearance' needs geometry to measure: pass scene= "
+                             "and/or self_collision=True (or collision=a CollisionChecker)")
+    return tuple(clearance_criterion(guard.checker)
+                 if isinstance(o, str) and o.lower() == "clearance" else o for o in items)

@@ -51,6 +51,7 @@ from moik.exceptions import ParameterError, ShapeError
 from moik.metrics.compromise import closest_to_utopia
 from moik.problems.pareto_ik import ParetoIK
 from moik.robots.catalog import as_robot
+from moik.solver.collision import CollisionGuard, collision_guard, with_clearance
 from moik.solver.options import seed_sequence
 from moik.solver.pareto_local import local_search, local_search_starts
 from moik.solver.pareto_search import (
@@ -87,6 +88,8 @@ class ParetoIKResult:
             found, modulo 2 pi).
         n_eval: FK (+ Jacobian) evaluations.
         time: Wall time in seconds.
+        min_distances: With a collision check, ``(k,)`` smallest signed distance of
+            each member (all >= the clearance); ``None`` without one.
     """
 
     X: np.ndarray
@@ -99,6 +102,7 @@ class ParetoIKResult:
     n_exact: int
     n_eval: int
     time: float
+    min_distances: np.ndarray | None = None
 
     @property
     def F_min(self) -> np.ndarray:
@@ -143,7 +147,8 @@ def solve_ik_pareto(robot, target, *, objectives=DEFAULT_OBJECTIVES, q_current=N
                     n_solutions: int = 20, tol=1e-9, seed=0, method: str = "moeosma",
                     rotation=None, starts: int = 128, pop_size: int = 30,
                     generations: int = 20, local_iterations: int = 12,
-                    local_step: float = 0.2) -> ParetoIKResult:
+                    local_step: float = 0.2, scene=None, self_collision: bool = False,
+                    clearance: float = 0.0, collision=None) -> ParetoIKResult:
     """The exact IK solutions of ``target`` that are Pareto-optimal in secondary criteria.
 
     Args:
@@ -169,6 +174,10 @@ def solve_ik_pareto(robot, target, *, objectives=DEFAULT_OBJECTIVES, q_current=N
         pop_size, generations: Of the multi-objective search.
         local_iterations, local_step: Iterations and first step length (rad) of
             the null-space local search (0 iterations: none).
+        scene, self_collision, clearance, collision: A collision check as in
+            :func:`~moik.solver.solve_ik.solve_ik`: only members at least ``clearance``
+            from contact are returned (the archive filtered at the end), and the
+            criterion ``"clearance"`` (maximised) is the smallest signed distance.
 
     Returns:
         A :class:`ParetoIKResult` (empty ``X`` when no exact solution was found).
@@ -184,6 +193,9 @@ def solve_ik_pareto(robot, target, *, objectives=DEFAULT_OBJECTIVES, q_current=N
     """
     t0 = time.perf_counter()
     robot = as_robot(robot)
+    guard = collision_guard(robot, scene=scene, self_collision=self_collision,
+                            clearance=clearance, collision=collision)
+    objectives = with_clearance(objectives, guard)
     problem = ParetoIK(robot, target, objectives=objectives, q_current=q_current,
                        rotation=rotation, tol=tol)
     n_solutions = integer("n_solutions", n_solutions, minimum=1)
@@ -217,13 +229,18 @@ def solve_ik_pareto(robot, target, *, objectives=DEFAULT_OBJECTIVES, q_current=N
             begin, weights = local_search_starts(projector)
             local_search(projector, begin, weights, iterations=local_iterations,
                          step=local_step)
-    return _result(problem, projector, n_solutions, redundant, t0)
+    return _result(problem, projector, n_solutions, redundant, t0, guard)
 
 
 def _result(problem: ParetoIK, projector: Projector, n_solutions: int, redundant: bool,
-            t0: float) -> ParetoIKResult:
-    """The archive thinned to ``n_solutions``, re-checked by the reference FK, sorted."""
-    X = projector.X[spread_subset(projector.F, n_solutions)]
+            t0: float, guard: CollisionGuard | None = None) -> ParetoIKResult:
+    """The archive (its collision-free members with a guard) thinned to ``n_solutions``,
+    re-checked by the reference FK, sorted."""
+    X_all, F_all = projector.X, projector.F
+    if guard is not None and len(X_all):
+        keep = guard.free(X_all)
+        X_all, F_all = X_all[keep], F_all[keep]
+    X = X_all[spread_subset(F_all, n_solutions)]
     pos, ori = pose_errors(problem.robot, problem.target, X, reference=True)
     exact = (pos <= problem.tol_position) & (ori <= problem.tol_orientation)
     X, pos, ori = X[exact], pos[exact], ori[exact]
@@ -233,4 +250,6 @@ def _result(problem: ParetoIK, projector: Projector, n_solutions: int, redundant
                           senses=problem.senses, position_errors=pos[order],
                           orientation_errors=ori[order], redundant=redundant,
                           n_exact=projector.n_exact, n_eval=projector.n_eval,
-                          time=time.perf_counter() - t0)
+                          time=time.perf_counter() - t0,
+                          min_distances=None if guard is None else guard.distances(X[order])
+                          if len(X) else np.zeros(0))

@@ -10,7 +10,7 @@ from moik.collision.catalog import collision_model
 from moik.collision.io import rpy_pose
 from moik.exceptions import GeometryError, MoikError, ParameterError
 from moik.problems.targets import as_target
-from moik.solver import solve_ik_batch, solve_path
+from moik.solver import solve_ik_batch, solve_ik_pareto, solve_path
 from moik.solver.batch import child_seeds
 from moik.solver.session import pose_errors
 
@@ -162,3 +162,16 @@ def test_bad_input(world, kwargs, error):
         with pytest.raises(error) as info:
             call()
         assert isinstance(info.value, MoikError)
+
+
+def test_pareto_clearance_criterion(world):
+    model, scene, checker, T = world
+    res = solve_ik_pareto(model.robot, T[0], objectives=("clearance", "manipulability"),
+                          scene=scene, self_collision=True, clearance=0.005, seed=0, starts=32,
+                          generations=3, local_iterations=2, n_solutions=8)
+    assert res.objectives[0] == "clearance" and res.senses[0] == "max" and len(res.X)
+    for q, f in zip(res.X, res.F[:, 0], strict=True):
+        assert f == pytest.approx(coal_min(checker, q), abs=1e-9) and f >= 0.005
+        _check_answer(model.robot, checker, T[0], q, 0.005)
+    with pytest.raises(ParameterError, match="clearance"):
+        solve_ik_pareto(model.robot, T[0], objectives=("clearance", "manipulability"))

@@ -6,7 +6,8 @@ import ast
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1] / "moik"
-ORDER = ("exceptions", "_validate", "_jit", "_version", "_lazy", "robots", "kinematics", "problems")
+ORDER = ("exceptions", "_validate", "_jit", "_version", "_lazy", "robots", "kinematics", "fronts",
+         "problems")
 INDEPENDENT = {"algorithms": {"algorithms", "exceptions", "_validate", "_jit"},
                "metrics": {"metrics", "exceptions", "_validate", "_jit"}}
 LAZY = {("cli", "moik.plotting")}  # matplotlib only when a plot is asked for

@@ -21,7 +21,16 @@ from moik.cli.parser import build_parser
 from moik.exceptions import MoikError, MoikWarning
 
 if TYPE_CHECKING:
-    from moik.cli import algorithms, catalog, experiment, fk, kernels, report, solve  # noqa: F401
+    from moik.cli import (  # noqa: F401
+        algorithms,
+        catalog,
+        experiment,
+        fk,
+        kernels,
+        problems,
+        report,
+        solve,
+    )
 
 
 def _handler(spec: str):

@@ -147,6 +147,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("q", nargs="+", type=float, help="joint values (rad, or deg with --deg)")
     p.add_argument("--deg", action="store_true", help="revolute joint values in degrees")
     p.set_defaults(handler="fk:cmd_fk")
+    p = sub.add_parser("problems", help="list the IK benchmark problems (moik.problems.available)"
+                       " and their reference fronts")
+    p.add_argument("--json", action="store_true", help="print JSON")
+    p.set_defaults(handler="problems:cmd_problems")
     p = sub.add_parser("algorithms", help="list the registered algorithms (name, kind, source)")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(handler="algorithms:cmd_algorithms")

@@ -23,6 +23,7 @@ from moik.experiments.dh_fit import FUNCTIONS as DH_FIT_FUNCTIONS
 from moik.experiments.front_quality import FUNCTIONS as FRONT_FUNCTIONS
 from moik.experiments.front_shares import FUNCTIONS as SHARES_FUNCTIONS
 from moik.experiments.per_target import FUNCTIONS
+from moik.experiments.reference_fronts import FUNCTIONS as REFERENCE_FUNCTIONS
 from moik.experiments.solution_sets import FUNCTIONS as RANK_FUNCTIONS
 from moik.experiments.store import ResultStore
 from moik.experiments.tables import Results, Table, fmt
@@ -259,7 +260,7 @@ def analyze(store: ResultStore) -> tuple[Results, list[Table]]:
         for name in res.config.get("analyses", ["summary"]):
             tables += {**ANALYSIS_FUNCTIONS, **FUNCTIONS, **DH_FIT_FUNCTIONS,
                        **RANK_FUNCTIONS, **CONSISTENCY_FUNCTIONS,
-                       **FRONT_FUNCTIONS, **SHARES_FUNCTIONS}[name](res)
+                       **FRONT_FUNCTIONS, **SHARES_FUNCTIONS, **REFERENCE_FUNCTIONS}[name](res)
     for table in tables:
         if res.paper_note and any("paper" in row for row in table.rows):
             table.notes.append(res.paper_note)

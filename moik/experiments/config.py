@@ -59,7 +59,8 @@ from moik.experiments.kinds.functions import EXTRAS
 
 ANALYSES = ("summary", "ranksum", "friedman-hv", "joint-motion", "compromise", "signed-rank",
             "per-target", "per-target-ranksum", "branches", "dh-fit", "solution-rank",
-            "paper-consistency", "front-quality", "mean-ranks", "versus-random", "hv-shares")
+            "paper-consistency", "front-quality", "mean-ranks", "versus-random", "hv-shares",
+            "reference-front")
 """Report tables an experiment can ask for (see :mod:`moik.experiments.analysis`)."""
 
 _TOP_KEYS = {"name", "title", "source", "robot", "problem", "targets", "algorithms", "pop_size",

@@ -19,6 +19,7 @@ from moik.experiments.front_quality import HEADLINES as FRONT_HEADLINES
 from moik.experiments.front_shares import HEADLINES as SHARES_HEADLINES
 from moik.experiments.kinds.ik import experiment_robot
 from moik.experiments.per_target import cluster_solutions
+from moik.experiments.reference_fronts import FUNCTIONS as REFERENCE_FUNCTIONS
 from moik.experiments.solution_sets import FUNCTIONS as RANK_FUNCTIONS
 from moik.experiments.tables import Results, fmt
 from moik.metrics import ranksum_pvalues, signed_rank, success_rate, summarize
@@ -240,6 +241,7 @@ HEADLINES = {"summary": summary_lines, "ranksum": ranksum_lines,
              "dh-fit": notes_of(DH_FIT_FUNCTIONS["dh-fit"]),
              "solution-rank": notes_of(RANK_FUNCTIONS["solution-rank"]),
              "paper-consistency": notes_of(CONSISTENCY_FUNCTIONS["paper-consistency"]),
+             "reference-front": notes_of(REFERENCE_FUNCTIONS["reference-front"]),
              **FRONT_HEADLINES, **SHARES_HEADLINES}
 """Analysis name -> headline function (every name of ``ANALYSES`` has one)."""
 

@@ -28,6 +28,8 @@ from pymoo.core.problem import Problem
 from moik._jit import jit, kernel_array
 from moik._validate import positive, real_array
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetError
+from moik.fronts.cache import cached_front
+from moik.fronts.front import ReferenceFront
 from moik.kinematics.rotation_metrics import metric_code, metric_target, rotation_error
 from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.chain import Robot
@@ -246,3 +248,22 @@ class BiObjectiveIK(_OrientedIK):
                          displacement_weight=displacement_weight, q_start=q_start)
 
     _mode = BI_OBJECTIVE
+
+    def reference_front(self, *, use_cache: bool = True) -> ReferenceFront:
+        """The reference Pareto front (:func:`moik.fronts.cache.cached_front`): computed on
+        first use (seconds), then read from the disk cache (milliseconds).
+
+        Raises:
+            ParameterError: With the displacement term (Eq. 31) on: the reference front
+                covers the two pose errors only.
+        """
+        if self.displacement_weight > 0:
+            raise ParameterError("the reference front covers displacement_weight = 0 only "
+                                 f"(got {self.displacement_weight})")
+        return cached_front(self.robot, self.target.position, self.target.rotation,
+                            metric=self.orientation, use_cache=use_cache)
+
+    def _calc_pareto_front(self, *args, **kwargs) -> np.ndarray:
+        """pymoo's ``pareto_front()``: the reference front's ``F`` (see
+        :meth:`reference_front`), so pymoo's IGD, IGD+, GD and HV work as on ZDT."""
+        return self.reference_front().F.copy()

@@ -33,7 +33,7 @@ from moik.algorithms import available, get_algorithm
 PROBLEMS = {
     **{f"ctp{i}": {} for i in range(1, 9)},
     **{f"mw{i}": {} for i in range(1, 15)},
-    **{f"dascmop{i}": {"difficulty": 8} for i in range(1, 10)},
+    **{f"dascmop{i}": {"args": (8,)} for i in range(1, 10)},  # DAS-CMOP7-9 name it otherwise
     **{name: {} for name in ("truss2d", "welded_beam", "osy", "tnk", "bnh", "srn", "carside",
                              "c1dtlz1", "c2dtlz2", "c3dtlz4", "dc1dtlz1", "dc2dtlz3",
                              "kursawe", "zdt4", "zdt6")},
@@ -62,7 +62,7 @@ def _check_reported(problem, res, where: str) -> None:
 @pytest.mark.parametrize("problem_name", sorted(PROBLEMS))
 @pytest.mark.parametrize("name", available("multi-objective"))
 def test_runs_and_reports_only_feasible_finite_members(name, problem_name):
-    problem = get_problem(problem_name, **PROBLEMS[problem_name])
+    problem = get_problem(problem_name, *PROBLEMS[problem_name].get("args", ()))
     for seed in SEEDS:
         with np.errstate(all="ignore"), warnings.catch_warnings():
             warnings.simplefilter("ignore", RuntimeWarning)  # the problems' own sqrt/log of < 0

@@ -29,7 +29,7 @@ from pymoo.util.display.column import Column
 from pymoo.util.display.output import Output
 
 from moik.algorithms import available, entry, get_algorithm, is_multi_objective
-from moik.algorithms.array_state import ArrayStateMixin
+from moik.algorithms.array_base import ArrayStateAlgorithm
 
 NAMES = available()
 N_GEN = 5
@@ -269,7 +269,7 @@ def test_checkpoint_resume_with_new_termination(name):
     assert res.algorithm.n_gen == 21 and res.F is not None
 
 
-ARRAY_STATE = [n for n in NAMES if issubclass(entry(n).cls, ArrayStateMixin)]
+ARRAY_STATE = [n for n in NAMES if issubclass(entry(n).cls, ArrayStateAlgorithm)]
 
 
 @pytest.mark.parametrize(("name", "module"), [*((n, dill) for n in NAMES),

@@ -24,6 +24,10 @@ def test_quick_runs_and_report(tmp_path, capsys):
     assert "| moeosma | paper | 5.07631 | 0.0201 | 1.40 (1) |" in report
     # the uncovered part of the P1 box [0, ref]: 2.088567 x 2.466816 - 5.07631 (paper row)
     assert "| 0.0758 | 1.47 % |" in report and "box [0, ref] (5.1521)" in report
+    # the reference-front analysis (moik.fronts): the shipped P1 front, its HV, IGD+ per run
+    assert "#### Against the reference front at P1" in report
+    assert "reference front: 75 points, HV 5.09615" in report
+    assert "#### Against the reference front at P2" in report and "HV 4.28017" in report
     assert "| m-pso | pso | paper | 0 | 465 |" in report
     assert "![Pareto fronts at P1 (first run)](eosma-table8/figures/front-0.png)" in report
     assert (out / "eosma-table8" / "figures" / "front-0.png").exists()

@@ -38,6 +38,8 @@ from pymoo.core.problem import Problem
 from pymoo.util.nds.non_dominated_sorting import NonDominatedSorting
 from pymoo.util.ref_dirs import get_reference_directions
 
+from moik.problems import available as ik_problems
+
 ZDT_FRONT_POINTS = 1000
 """Points of a ZDT front (pymoo's ``pareto_front(n)``)."""
 
@@ -92,8 +94,14 @@ def tnk_front(problem: Problem) -> np.ndarray:
 OWN_FRONTS: dict[str, Callable[[Problem], np.ndarray]] = {"osy": osy_front, "tnk": tnk_front}
 """Problems whose front is built here (pymoo downloads theirs)."""
 
-ANALYTIC_FRONTS = PYMOO_FRONTS + tuple(OWN_FRONTS)
-"""Every problem with an analytic front."""
+IK_FRONTS = tuple(n for n in ik_problems() if not n.endswith("-motion"))
+"""The bi-objective IK problems of :mod:`moik.problems.registry`: their fronts are the
+reference fronts of :mod:`moik.fronts` (local solutions to 1e-9, shipped with moik), not
+closed forms. A reachable pose's front is the one point (0, 0), whose HV reference point
+(:func:`hv_reference`) is (0, 0) too: use the unreachable ones for HV."""
+
+ANALYTIC_FRONTS = PYMOO_FRONTS + tuple(OWN_FRONTS) + IK_FRONTS
+"""Every problem with a known front."""
 
 CONSTRAINED = ("bnh", "osy", "srn", "tnk")
 """The constrained problems among :data:`ANALYTIC_FRONTS`."""
@@ -103,6 +111,8 @@ def analytic_front(problem: Problem, name: str) -> np.ndarray:
     """The closed-form Pareto front of the problem ``name`` (see the module docstring)."""
     if name in OWN_FRONTS:
         return OWN_FRONTS[name](problem)
+    if name in IK_FRONTS:
+        return np.asarray(problem.pareto_front(), dtype=float)
     if name.startswith("dtlz"):
         dirs = get_reference_directions("das-dennis", problem.n_obj,
                                         n_partitions=DTLZ_PARTITIONS[problem.n_obj])

@@ -10,7 +10,9 @@ Such an experiment has no robot and no targets; its problem is::
 Each entry of ``names`` is a problem of :data:`ANALYTIC_FRONTS` (pymoo's
 ``get_problem`` name) or a dict with that ``name``, an optional display
 ``label`` and ``params`` (``n_var``; ``n_obj`` for DTLZ, 2 or 3; none for the
-constrained BNH, OSY, SRN, TNK). Trials are (algorithm x problem x run), with
+constrained BNH, OSY, SRN, TNK and for the bi-objective IK problems of
+:func:`moik.problems.available`, e.g. ``eosma-p1``, whose fronts are moik's reference
+fronts). Trials are (algorithm x problem x run), with
 the same seeds for every algorithm.
 
 Budget: with ``evaluations`` every algorithm runs until that many evaluations
@@ -64,11 +66,13 @@ from moik.experiments.checks import check_keys, integer
 from moik.experiments.kinds.moo_fronts import (
     ANALYTIC_FRONTS,
     CONSTRAINED,
+    IK_FRONTS,
     analytic_front,
     hv_reference,
 )
 from moik.experiments.spec import TrialSpec
 from moik.metrics import hypervolume
+from moik.problems import get_problem as get_ik_problem
 
 PROBLEM_KINDS = ("moo-benchmark",)
 MULTI_OBJECTIVE = PROBLEM_KINDS
@@ -95,7 +99,10 @@ class MooTarget:
 
 
 def build_problem(name: str, params: Mapping) -> Problem:
-    """The pymoo problem ``name`` with ``params`` (``n_var``, ``n_obj``)."""
+    """The pymoo problem ``name`` with ``params`` (``n_var``, ``n_obj``), or the IK problem
+    ``name`` of :func:`moik.problems.get_problem` (no params)."""
+    if name in IK_FRONTS:
+        return get_ik_problem(name)
     return get_problem(name, **dict(params))
 
 
@@ -149,7 +156,8 @@ def _entry(where: str, raw: Any) -> dict:
         raise ConfigError(f"{where}: unknown problem {name!r}; expected one with an analytic "
                           f"front: {', '.join(ANALYTIC_FRONTS)}")
     dtlz = name.startswith("dtlz")
-    allowed = {"n_var", "n_obj"} if dtlz else set() if name in CONSTRAINED else {"n_var"}
+    fixed = name in CONSTRAINED or name in IK_FRONTS
+    allowed = {"n_var", "n_obj"} if dtlz else set() if fixed else {"n_var"}
     params = dict(check_keys(f"{where}.params", entry.get("params", {}), allowed))
     n_obj = params.get("n_obj", 3) if dtlz else 2
     if dtlz:

@@ -10,9 +10,12 @@ from hypothesis import strategies as st
 from pymoo.problems import get_problem
 
 from moik.experiments.kinds import moo_fronts as fr
+from moik.experiments.kinds import moo_functions as mf
 
 
 def _problem(name):
+    if name in fr.IK_FRONTS:  # moik's IK problems: reference fronts shipped as package data
+        return mf.build_problem(name, {})
     return get_problem(name, n_obj=3) if name.startswith("dtlz") else get_problem(name)
 
 

@@ -163,3 +163,17 @@ def test_random_search_keeps_only_feasible_points_when_some_are():
     X, F = mf.random_search(problem, 400, np.random.default_rng(3))
     assert len(X) and np.all(mf.violation(problem, X) == 0.0)
     np.testing.assert_array_equal(F, X)  # TNK: f = x
+
+
+def test_ik_problems_run_against_their_reference_fronts():
+    cfg = ExperimentConfig.from_dict(_moo(problem={"kind": "moo-benchmark", "evaluations": 120,
+                                                   "names": ["eosma-p1"]}))
+    rec, arrays = run_trial({s.trial_id: s for s in build_trials(cfg)}["nsga2/0/0"])
+    assert rec["status"] == "ok", rec.get("error")
+    front = mf.analytic_front(mf.build_problem("eosma-p1", {}), "eosma-p1")
+    assert front.shape == (75, 2)  # the shipped reference front (moik.fronts)
+    igd, hv = mf.front_scores(arrays["front_F"], front)
+    assert (igd, hv) == (rec["igd"], rec["hv"]) and igd > 0
+    with pytest.raises(ConfigError, match=r"params"):
+        ExperimentConfig.from_dict(_moo(problem={"kind": "moo-benchmark", "names": [
+            {"name": "eosma-p1", "params": {"n_var": 4}}]}))

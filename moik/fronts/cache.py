@@ -1,0 +1,120 @@
+"""Reference fronts cached on disk, keyed by a fingerprint of everything they depend on.
+
+A front (:func:`moik.fronts.front.bi_objective_front`) costs seconds; :func:`cached_front`
+computes it once per (robot kinematics and limits, target, metric, method settings and
+seed, :data:`~moik.fronts.front.METHOD_VERSION`) and keeps it in
+``$XDG_CACHE_HOME/moik/fronts`` (``~/.cache/moik/fronts`` when unset) as one ``.npz``
+file named by the fingerprint. The fronts of the registered problems
+(:mod:`moik.problems.registry`) ship in ``moik/fronts/data`` under the same names and
+are read from there first (``python -m studies.ik_fronts --write`` regenerates them).
+A change of any of those inputs gives another fingerprint (the old file is simply not
+read). An unwritable or unreadable cache is not an error: the front is then computed
+and returned without being stored; a damaged file is recomputed.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from moik.fronts.front import METHOD_VERSION, ReferenceFront, bi_objective_front
+from moik.robots.chain import Robot
+
+FRONT_SEED = 20240  # the random starts' seed of every cached front
+SHIPPED = Path(__file__).with_name("data")  # fronts shipped with moik, by fingerprint
+DEFAULT_SETTINGS = {"levels": 40, "starts": 16, "checks": 1, "tol": 1e-9, "seed": FRONT_SEED}
+
+
+def cache_dir() -> Path:
+    """Where fronts are kept: ``$XDG_CACHE_HOME/moik/fronts`` or ``~/.cache/moik/fronts``."""
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return Path(base) / "moik" / "fronts"
+
+
+def fingerprint(robot: Robot, position, rotation, metric: str, settings: dict) -> str:
+    """A hex digest of what the front depends on (not of the robot's name or source)."""
+    chain = robot.kinematic_chain
+    h = hashlib.sha256()
+    for a in (chain.origins, chain.joint_types, robot.lower, robot.upper, position, rotation):
+        arr = np.ascontiguousarray(np.asarray(a, dtype=float))
+        h.update(str(arr.shape).encode())
+        h.update(arr.tobytes())
+    h.update(json.dumps({"metric": metric, "version": METHOD_VERSION, **settings},
+                        sort_keys=True).encode())
+    return h.hexdigest()[:32]
+
+
+def _meta(front: ReferenceFront) -> dict:
+    return {"reachable": front.reachable, "metric": front.metric, "starts": front.starts,
+            "levels": front.levels, "checks": front.checks, "tol": front.tol,
+            "guarantee": front.guarantee, "version": front.version, "extra": front.extra}
+
+
+def _load(path: Path, key: str) -> ReferenceFront | None:
+    try:
+        with np.load(path, allow_pickle=False) as data:
+            meta = json.loads(str(data["meta"]))
+            if meta.pop("fingerprint") != key:
+                return None
+            return ReferenceFront(F=data["F"], Q=data["Q"], kkt=data["kkt"], **meta)
+    except (OSError, ValueError, KeyError, TypeError, json.JSONDecodeError):
+        return None
+
+
+def store(path: Path, key: str, front: ReferenceFront) -> bool:
+    """Write ``front`` to ``path`` (atomically) under fingerprint ``key``; False when the
+    folder is not writable."""
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
+        with os.fdopen(fd, "wb") as f:
+            np.savez(f, F=front.F, Q=front.Q, kkt=front.kkt,
+                     meta=np.array(json.dumps({"fingerprint": key, **_meta(front)})))
+        os.replace(tmp, path)
+        return True
+    except OSError:
+        return False
+
+
+def cached_front(robot: Robot, position, rotation, *, metric: str, levels: int = 40,
+                 starts: int = 16, checks: int = 1, tol: float = 1e-9,
+                 seed: int = FRONT_SEED, use_cache: bool = True) -> ReferenceFront:
+    """:func:`~moik.fronts.front.bi_objective_front` with the random starts drawn from
+    ``numpy.random.default_rng(seed)``, read from the disk cache when there.
+
+    Args:
+        robot, position, rotation, metric: The problem (see ``bi_objective_front``).
+        levels, starts, checks, tol: The method's settings.
+        seed: The random starts' seed (part of the fingerprint).
+        use_cache: False computes without reading or writing the cache.
+    """
+    settings = {"levels": levels, "starts": starts, "checks": checks, "tol": tol, "seed": seed}
+    key = fingerprint(robot, position, rotation, metric, settings)
+    path = cache_dir() / f"{key}.npz"
+    for where in (SHIPPED / f"{key}.npz", path) if use_cache else ():
+        front = _load(where, key) if where.is_file() else None
+        if front is not None:
+            return front
+    front = bi_objective_front(robot, position, rotation, metric=metric, levels=levels,
+                               starts=starts, checks=checks, tol=tol,
+                               rng=np.random.default_rng(seed))
+    if use_cache:
+        store(path, key, front)
+    return front
+
+
+def ship(robot: Robot, position, rotation, *, metric: str,
+         directory: Path = SHIPPED) -> tuple[ReferenceFront, Path]:
+    """Compute the front with :func:`cached_front`'s default settings (cache not read)
+    and store it in ``directory`` (the shipped data by default) under its fingerprint."""
+    key = fingerprint(robot, position, rotation, metric, DEFAULT_SETTINGS)
+    front = cached_front(robot, position, rotation, metric=metric, use_cache=False)
+    path = Path(directory) / f"{key}.npz"
+    if not store(path, key, front):
+        raise OSError(f"cannot write {path}")
+    return front, path

@@ -1,0 +1,70 @@
+"""The disk cache of reference fronts: fingerprint, round trip, unwritable folders."""
+
+import inspect
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from moik.fronts import cache
+from moik.robots.catalog import get_robot
+
+
+def _planar_target(psi=0.8, phi=-0.4, dist=0.9):
+    c, s = np.cos(phi), np.sin(phi)
+    return (np.array([dist * np.cos(psi), dist * np.sin(psi), 0.0]),
+            np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]))
+
+
+def test_fingerprint_moves_with_robot_target_metric_and_settings():
+    robot = get_robot("planar2")
+    p, R = _planar_target()
+    settings = {"levels": 40, "starts": 16, "checks": 1, "tol": 1e-9, "seed": 1}
+    base = cache.fingerprint(robot, p, R, "geodesic", settings)
+    assert base == cache.fingerprint(robot, p.copy(), R.copy(), "geodesic", dict(settings))
+    other_robot = replace(robot, upper=robot.upper * 0.5)
+    moved = [cache.fingerprint(robot, p + [0, 1e-12, 0], R, "geodesic", settings),
+             cache.fingerprint(robot, p, R.T, "geodesic", settings),
+             cache.fingerprint(robot, p, R, "frobenius", settings),
+             cache.fingerprint(robot, p, R, "geodesic", {**settings, "seed": 2}),
+             cache.fingerprint(get_robot("eosma7-m"), p, R, "geodesic", settings),
+             cache.fingerprint(other_robot, p, R, "geodesic", settings)]
+    assert base not in moved and len(set(moved)) == len(moved)
+
+
+def test_round_trip_through_the_cache(tmp_path, monkeypatch):
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    robot = get_robot("planar2")
+    p, R = _planar_target()
+    first = cache.cached_front(robot, p, R, metric="geodesic", levels=6, starts=2)
+    files = list((tmp_path / "moik" / "fronts").glob("*.npz"))
+    assert len(files) == 1
+    again = cache.cached_front(robot, p, R, metric="geodesic", levels=6, starts=2)
+    np.testing.assert_array_equal(first.F, again.F)
+    np.testing.assert_array_equal(first.Q, again.Q)
+    assert again.guarantee == first.guarantee and again.reachable == first.reachable
+    files[0].write_bytes(b"damaged")  # a damaged file is recomputed, not an error
+    third = cache.cached_front(robot, p, R, metric="geodesic", levels=6, starts=2)
+    np.testing.assert_array_equal(first.F, third.F)
+
+
+def test_unwritable_cache_still_returns_the_front(tmp_path, monkeypatch):
+    blocker = tmp_path / "file"
+    blocker.write_text("not a folder")
+    monkeypatch.setenv("XDG_CACHE_HOME", str(blocker))
+    p, R = _planar_target()
+    front = cache.cached_front(get_robot("planar2"), p, R, metric="geodesic", levels=4,
+                               starts=1)
+    assert len(front.F) >= 2
+
+
+def test_ship_uses_cached_fronts_defaults():
+    defaults = {k: v.default for k, v in inspect.signature(cache.cached_front).parameters.items()
+                if k in cache.DEFAULT_SETTINGS}
+    assert defaults == cache.DEFAULT_SETTINGS
+
+
+@pytest.mark.parametrize("name", ["cache_dir"])
+def test_cache_dir_follows_xdg(monkeypatch, tmp_path, name):
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    assert getattr(cache, name)() == tmp_path / "moik" / "fronts"

@@ -11,7 +11,7 @@ without a cache instead, so importing moik never fails for a cache.
 
 numba keys a cached function by its own source file only, while moik's kernels
 inline helpers from other modules (a fused IK objective holds the FK kernel of
-:mod:`moik.robots.dh`): after an edit of ``dh.py`` the cached objective would be
+:mod:`moik.robots.fk_kernels`): after an edit of ``fk_kernels.py`` the cached objective would be
 stale. So the cache key also holds a digest of every moik module that compiles
 kernels (those importing this module); editing one recompiles them all, once.
 

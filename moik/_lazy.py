@@ -8,7 +8,7 @@ reads the same imports statically.
 
 :func:`lazy_module` is the standard library's :class:`importlib.util.LazyLoader`: a
 module object whose code runs at its first attribute access. ``moik.robots.chain``
-holds its compiled FK kernels (:mod:`moik.robots.dh`, which imports numba) this way,
+holds its compiled FK kernels (:mod:`moik.robots.fk_kernels`, which imports numba) this way,
 so listing or describing robots (``moik robots``) does not pay numba's import; the
 module states the same edge under ``TYPE_CHECKING`` for the import-graph test.
 """

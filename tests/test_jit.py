@@ -18,7 +18,7 @@ from moik.kinematics import rotation_metrics
 from moik.kinematics.jacobian import pose_and_jacobian
 from moik.kinematics.orientation import orientation_error
 from moik.problems import BiObjectiveIK, PoseIK, PositionIK, ik, random_reachable_targets
-from moik.robots import dh, get_robot, trig
+from moik.robots import fk_kernels, get_robot, trig
 
 # Runs in a fresh interpreter: FK through the kernels, checked against the oracle.
 SCRIPT = """
@@ -67,9 +67,9 @@ def test_one_compiled_version_per_kernel():
                         BiObjectiveIK(robot, target, orientation="zyx-euler")):
             problem.evaluate(np.asarray(Q, dtype=float))
         orientation_error(robot.fk_parts(Q)[0], target.rotation, "frobenius")
-    kernels = [dh.fk_poses, dh.fk_positions, dh.fk_rotations_positions, dh.fk_frames,
-               dh.all_finite, jac.poses_and_jacobians, jac.parts_and_jacobians,
-               ik.ik_objectives, rotation_metrics.rotation_errors]
+    kernels = [fk_kernels.fk_poses, fk_kernels.fk_positions, fk_kernels.fk_rotations_positions,
+               fk_kernels.fk_frames, fk_kernels.all_finite, jac.poses_and_jacobians,
+               jac.parts_and_jacobians, ik.ik_objectives, rotation_metrics.rotation_errors]
     for kernel in kernels:
         assert len(kernel.signatures) == 1, (kernel.py_func.__name__, kernel.signatures)
 
@@ -144,7 +144,7 @@ def test_read_only_installation_compiles_without_cache(tmp_path):
 
 @pytest.mark.parametrize("name", ["fk_poses", "chain_block", "sin_cos"])
 def test_kernels_are_numba_dispatchers(name):
-    kernel = getattr(trig if name == "sin_cos" else dh, name)
+    kernel = getattr(trig if name == "sin_cos" else fk_kernels, name)
     assert hasattr(kernel, "py_func") and hasattr(kernel, "signatures")
 
 
@@ -203,7 +203,7 @@ _HEAL = """
 import sys
 from pathlib import Path
 name, suffix, damage = sys.argv[1:4]
-path = next(Path(sys.argv[4]).rglob(f"dh.{name}-*{suffix}"))
+path = next(Path(sys.argv[4]).rglob(f"fk_kernels.{name}-*{suffix}"))
 raw = bytearray(path.read_bytes())
 if damage == "truncate":
     raw = raw[: len(raw) // 2]
@@ -246,7 +246,7 @@ def test_a_damaged_cache_heals_in_the_next_process(tmp_path, built_cache, name, 
     assert "CacheWarning: moik: discarded a damaged kernel cache file" in out.stderr
     assert "Traceback" not in out.stderr
     head = len(_jit._MAGIC) + 32
-    for path in cache.rglob(f"dh.{name}-*.nb[ic]"):  # rewritten, intact
+    for path in cache.rglob(f"fk_kernels.{name}-*.nb[ic]"):  # rewritten, intact
         raw = path.read_bytes()
         assert raw.startswith(_jit._MAGIC)
         assert __import__("hashlib").sha256(raw[head:]).digest() == raw[len(_jit._MAGIC):head]
@@ -295,8 +295,8 @@ def test_forty_single_bit_flips_of_real_cache_files_are_all_caught(tmp_path, bui
     """Every flipped bit of a real index or data file is caught before numba reads it."""
     from moik import _jit
     rng = np.random.default_rng(40)
-    index = next(built_cache.rglob("dh.fk_poses-*.nbi"))
-    data = next(built_cache.rglob("dh.fk_poses-*.1.nbc"))
+    index = next(built_cache.rglob("fk_kernels.fk_poses-*.nbi"))
+    data = next(built_cache.rglob("fk_kernels.fk_poses-*.1.nbc"))
     base = index.name[: -len(".nbi")]
     for k in range(40):
         original = (index if k % 2 else data).read_bytes()

@@ -34,7 +34,8 @@ is about), and the solving ones ``"target"``, ``"status"``, ``"success"``, ``"n_
 * ``fk`` (``"command": "fk"``): the common keys, ``"pose"`` (4x4), ``"position"``,
   ``"rotation"``, ``"zyx_euler"``, ``"eosma_euler"``, ``"within_limits"``.
 * ``solve`` (``"command": "solve"``): the common and solving keys, ``"n_solutions"``
-  (how many distinct solutions were asked for), ``"front"``
+  (how many distinct solutions were asked for), ``"fewer_solutions"`` (solved, but
+  fewer distinct solutions found than asked for), ``"front"``
   (``[[position_error, orientation_error], ...]`` or null), ``"plots"`` (files).
 * ``solve --pareto`` (``"command": "pareto"``): the common and solving keys (``q``: the
   compromise member, or null when no exact solution was found; ``solutions``: every

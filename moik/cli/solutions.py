@@ -64,7 +64,8 @@ def print_solve_json(robot: Robot, target: Target, res, errors: list, plots: lis
         "target": {"position": target.position.tolist(),
                    "rotation": None if target.rotation is None else target.rotation.tolist()},
         "status": res.status, "success": res.success, "n_eval": res.n_eval,
-        "n_solutions": n_solutions,
+        "n_solutions": n_solutions, "fewer_solutions": bool(res.fewer_solutions),
+        "detail": res.detail,
         "time_s": res.time, "q": res.q.tolist(), "position_error": res.position_error,
         "orientation_error": res.orientation_error,
         **({} if res.min_distance is None else {"min_distance": res.min_distance}),
@@ -107,5 +108,7 @@ def print_solve(robot: Robot, target: Target, res, Q: np.ndarray, errors: list, 
                                               f"errors: {len(res.front)} points)")
         print(f"not converged: the best candidate above is the closest found{front}; more "
               "--max-evals, --starts or another --seed may solve it")
+    if res.fewer_solutions:  # the solver's words: found k of the n requested (why)
+        print(f"note: {res.detail or 'fewer distinct solutions than --n-solutions asked for'}")
     if plots:
         print("plot written to " + " and ".join(str(p) for p in plots))

@@ -17,11 +17,11 @@ from moik.cli import collision, pareto, solutions
 from moik.cli.common import SOLVE_OPTIONS, joint_values, library_call, robot
 from moik.cli.solutions import target
 from moik.exceptions import ParameterError
-from moik.kinematics.orientation import orientation_error
 from moik.plotting.explorer import pareto_explorer
 from moik.problems.targets import Target
 from moik.robots import Robot
 from moik.solver import solve_ik
+from moik.solver.session import pose_errors
 
 PLOT_FORMATS = (".png", ".pdf", ".svg")
 
@@ -48,17 +48,6 @@ def plot_files(spec: str | None) -> list[Path]:
     if not os.access(folder, os.W_OK):
         raise ParameterError(f"--plot folder {str(folder)!r} is not writable")
     return [path] if suffix else [path.with_name(path.name + ext) for ext in (".png", ".pdf")]
-
-
-def _errors(robot: Robot, target: Target, Q: np.ndarray) -> list[tuple[float, float]]:
-    """Position error (robot unit) and geodesic orientation error (rad) of each row, by FK."""
-    if len(Q) == 0:
-        return []
-    T = robot.fk(Q)
-    pos = np.linalg.norm(T[:, :3, 3] - target.position, axis=1)
-    ori = (np.zeros(len(Q)) if target.rotation is None
-           else np.atleast_1d(orientation_error(T[:, :3, :3], target.rotation, "geodesic")))
-    return [(float(p), float(o)) for p, o in zip(pos, ori, strict=True)]
 
 
 def _tol(values: list[float] | None):
@@ -89,7 +78,9 @@ def cmd_solve(args: argparse.Namespace) -> int:
                        max_evals=args.max_evals, q_current=q_current,
                        **collision.solver_options(check))
     Q = res.solutions if len(res.solutions) else res.q[None]
-    errors = [(res.position_error, res.orientation_error)] + _errors(arm, goal, Q[1:])
+    pos, ori = pose_errors(arm, goal, Q[1:]) if len(Q) > 1 else ((), ())
+    errors = [(res.position_error, res.orientation_error)] + [
+        (float(p), float(o)) for p, o in zip(pos, ori, strict=True)]
     if plots:
         _plot(arm, goal, Q, res.status, plots)
     near = None if check is None else collision.distances(check, Q)

@@ -4,7 +4,7 @@ A compiled collision set is the shapes of a robot and of a scene in one list: ki
 ``body`` (0 the base frame, ``j`` the frame of joint ``j`` as :meth:`Robot.frames`
 numbers them, ``-1`` the world), local pose ``(4, 4)`` in that frame, sizes ``(3,)``;
 and the pairs ``(p, 2)`` of shape indices to evaluate. For each joint vector the chain
-is walked once (as :func:`moik.robots.dh.fk_frames_into` does, recording the joint
+is walked once (as :func:`moik.robots.fk_kernels.fk_frames_into` does, recording the joint
 axes on the way, as :mod:`moik.kinematics.jacobian` does), every shape is placed in the
 world, and every pair goes through :func:`moik.collision.distance.pair_distance`.
 
@@ -23,7 +23,7 @@ import numpy as np
 
 from moik._jit import jit
 from moik.collision.distance import pair_distance
-from moik.robots.dh import compose, move_joint, pose_state, store_pose
+from moik.robots.fk_kernels import compose, move_joint, pose_state, store_pose
 from moik.robots.transforms import PRISMATIC
 
 

@@ -6,7 +6,7 @@ error ``f2`` of :mod:`moik.kinematics.rotation_metrics`. The subproblems of
 :mod:`moik.fronts.scalarised` work with their squares ``s1 = f1^2`` and ``s2 = f2^2``
 (smooth where ``f1``, ``f2`` vanish, unlike the norms). :func:`squared_errors_and_gradients`
 gives both and their gradients by central differences with step ``h`` in one compiled
-call (``2 dof + 1`` forward kinematics, the FK kernel of :mod:`moik.robots.dh` and the
+call (``2 dof + 1`` forward kinematics, the FK kernel of :mod:`moik.robots.fk_kernels` and the
 metric kernel of :mod:`moik.kinematics.rotation_metrics`, inlined): a truncation error
 ``O(h^2)`` and a rounding error ``O(1e-16 / h)`` per entry.
 """
@@ -26,7 +26,7 @@ from moik.kinematics.rotation_metrics import (
     rotation_error,
     zyx_euler_angles,
 )
-from moik.robots.dh import chain_pose
+from moik.robots.fk_kernels import chain_pose
 
 
 @jit(inline=True)

@@ -18,7 +18,7 @@ import numpy as np
 
 from moik._jit import jit
 from moik.robots.chain import Robot
-from moik.robots.dh import PRISMATIC, compose, move_joint, pose_state, store_pose
+from moik.robots.fk_kernels import PRISMATIC, compose, move_joint, pose_state, store_pose
 
 
 @jit

@@ -33,7 +33,7 @@ from moik.fronts.front import ReferenceFront
 from moik.kinematics.rotation_metrics import metric_code, metric_target, rotation_error
 from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.chain import Robot
-from moik.robots.dh import (
+from moik.robots.fk_kernels import (
     BLOCK,
     all_finite,
     block_position,

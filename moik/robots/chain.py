@@ -8,7 +8,7 @@ evaluates forward kinematics for one joint vector ``(dof,)`` or a batch
 
 Every robot is evaluated in the general form ``F_0 M_1(q_1) F_1 ... M_n(q_n) F_n``
 (:attr:`Robot.kinematic_chain`, the base folded into ``F_0`` and the tool into
-``F_n``) by the compiled kernels of :mod:`moik.robots.dh`; :func:`fk_reference`
+``F_n``) by the compiled kernels of :mod:`moik.robots.fk_kernels`; :func:`fk_reference`
 (plain numpy, textbook DH matrices or 4x4 products, then base and tool) is the
 oracle the tests compare them with.
 
@@ -46,10 +46,10 @@ UNITS = checks.UNITS
 JOINT_TYPES = checks.JOINT_TYPES
 if TYPE_CHECKING:
     from moik import _jit
-    from moik.robots import dh
+    from moik.robots import fk_kernels
 else:  # loaded at the first FK: describing a robot needs no numba (moik._lazy)
     _jit = lazy_module("moik._jit")
-    dh = lazy_module("moik.robots.dh")
+    fk_kernels = lazy_module("moik.robots.fk_kernels")
 _IDENTITY = np.eye(4)
 _IDENTITY.setflags(write=False)
 
@@ -200,7 +200,7 @@ class Robot:
     def kinematic_chain(self) -> KinematicChain:
         """The general-form constants the compiled FK kernels take (built once).
 
-        Pass its arrays to the kernels of :mod:`moik.robots.dh` (and
+        Pass its arrays to the kernels of :mod:`moik.robots.fk_kernels` (and
         :mod:`moik.kinematics.jacobian`) from compiled code, e.g.
         ``fk_pose_into(chain.origins, chain.joint_types, q, out)``.
         """
@@ -263,7 +263,7 @@ class Robot:
                 f"{name} for robot {self.name!r} must have shape ({self.dof},) or "
                 f"(n, {self.dof}), got {Q.shape}"
             )
-        if not dh.all_finite(Q.reshape(-1)):
+        if not fk_kernels.all_finite(Q.reshape(-1)):
             raise NonFiniteError(f"{name} must be finite, got NaN or inf in {name}")
         checks.warn_if_joint_degrees(self.name, self.joint_names, self.lower, self.upper,
                                      self.is_prismatic, Q, name, stacklevel=3)
@@ -304,7 +304,7 @@ class Robot:
         chain = self.kinematic_chain
         Q = self.kernel_batch(q)
         R, p = np.empty((Q.shape[0], 3, 3)), np.empty((Q.shape[0], 3))
-        dh.fk_rotations_positions(chain.origins, chain.joint_types, Q, R, p)
+        fk_kernels.fk_rotations_positions(chain.origins, chain.joint_types, Q, R, p)
         return R, p
 
     def fk_position(self, q) -> np.ndarray:
@@ -313,7 +313,7 @@ class Robot:
         chain = self.kinematic_chain
         Q = self.kernel_batch(q)
         p = np.empty((Q.shape[0], 3))
-        dh.fk_positions(chain.origins, chain.joint_types, Q, p)
+        fk_kernels.fk_positions(chain.origins, chain.joint_types, Q, p)
         return p
 
     def fk(self, q) -> np.ndarray:
@@ -329,7 +329,7 @@ class Robot:
         Q2 = Q[None] if Q.ndim == 1 else Q
         chain = self.kinematic_chain
         T = np.empty((Q2.shape[0], 4, 4))
-        dh.fk_poses(chain.origins, chain.joint_types, Q2, T)
+        fk_kernels.fk_poses(chain.origins, chain.joint_types, Q2, T)
         return T[0] if Q.ndim == 1 else T
 
     def frames(self, q) -> np.ndarray:
@@ -343,7 +343,7 @@ class Robot:
         Q2 = Q[None] if Q.ndim == 1 else Q
         chain = self.kinematic_chain
         out = np.empty((Q2.shape[0], self.dof + 1, 4, 4))
-        dh.fk_frames(chain.origins, chain.link_frames, chain.joint_types, Q2, out)
+        fk_kernels.fk_frames(chain.origins, chain.link_frames, chain.joint_types, Q2, out)
         out[:, 0] = self.base
         return out[0] if Q.ndim == 1 else out
 
@@ -381,8 +381,8 @@ def fk_reference(robot: Robot, q) -> np.ndarray:
     Q = robot.check_q(q)
     Q2 = np.atleast_2d(Q)
     if robot.is_dh:
-        T = dh.fk_reference(robot.a, robot.alpha, robot.d, robot.theta, robot.is_prismatic,
-                            robot.convention, Q2)
+        T = fk_kernels.fk_reference(robot.a, robot.alpha, robot.d, robot.theta,
+                                    robot.is_prismatic, robot.convention, Q2)
     else:
         assert robot.origins is not None  # a chain not given by DH rows has origins
         T = fk_general_reference(robot.origins, robot.is_prismatic, Q2)

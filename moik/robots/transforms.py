@@ -4,7 +4,7 @@ Any serial chain of 1-DOF joints can be written as
 ``F_0 M_1(q_1) F_1 M_2(q_2) ... M_n(q_n) F_n`` where each ``F_j`` is a constant
 rigid transform and ``M_j`` is ``Rz(q_j)`` (revolute) or ``Tz(q_j)``
 (prismatic). URDF chains, DH chains and chains with locked joints all take this
-form, which the compiled FK kernels of :mod:`moik.robots.dh` evaluate. This
+form, which the compiled FK kernels of :mod:`moik.robots.fk_kernels` evaluate. This
 module builds the constants (elementary transforms with exact values at
 multiples of pi/2, DH rows to origins, locked joints, base and tool transforms
 folded in), holds them as the kernels take them (:class:`KinematicChain`) and

@@ -2,7 +2,7 @@
 
 fdlibm's minimax polynomials (k_sin.c, k_cos.c) on ``[-pi/4, pi/4]`` after a
 Cody-Waite reduction by pi/2 (e_rem_pio2.c), branch-free so that the batched FK
-kernels of :mod:`moik.robots.dh` vectorise; libm beyond :data:`TRIG_MAX`.
+kernels of :mod:`moik.robots.fk_kernels` vectorise; libm beyond :data:`TRIG_MAX`.
 """
 
 from __future__ import annotations

@@ -22,7 +22,7 @@ from moik.kinematics.criteria_kernels import wrapped_distance
 from moik.kinematics.rotation_metrics import geodesic_angle
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
-from moik.robots.dh import fk_pose_into
+from moik.robots.fk_kernels import fk_pose_into
 from moik.solver.context import NO_STOP, ik_context, lm_workspace, retarget
 from moik.solver.lm import FRONT_STALL_RATIO, STALL_RATIO, copy_into, lm_start
 

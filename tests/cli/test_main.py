@@ -443,3 +443,13 @@ def test_fk_solve_and_pareto_json_share_one_schema_family(capsys):
     for doc in (solve, pareto):
         assert set(doc["solutions"][0]) == {"q", "position_error", "orientation_error"}
         assert set(doc["target"]) == {"position", "rotation"}
+
+
+def test_fewer_solutions_than_asked_are_said(capsys):
+    """planar2 has two branches for a reachable position: asking for 5 finds 2, and says so."""
+    assert main(["solve", "planar2", "--target", "0.4", "0.2", "0", "--n-solutions", "5"]) == 0
+    assert "note: found 2 of the 5 distinct solutions requested" in capsys.readouterr().out
+    main(["solve", "planar2", "--target", "0.4", "0.2", "0", "--n-solutions", "5", "--json"])
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["fewer_solutions"] is True and len(doc["solutions"]) == 2
+    assert doc["n_solutions"] == 5 and "found 2 of the 5" in doc["detail"]

@@ -19,7 +19,7 @@ from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 from moik.exceptions import DegreesWarning, ShapeError
-from moik.robots import Robot, available_robots, dh, fk_reference, get_robot
+from moik.robots import Robot, available_robots, fk_kernels, fk_reference, get_robot
 from moik.robots.transforms import fk_general_reference
 from moik.robots.urdf import load_urdf
 
@@ -132,8 +132,8 @@ def test_general_chain_frames_are_partial_products(tmp_path):
 @numba.njit
 def _rows_one_by_one(F, types, Q, T, p):
     for i in range(Q.shape[0]):
-        dh.fk_pose_into(F, types, Q[i], T[i])
-        dh.fk_position_into(F, types, Q[i], p[i])
+        fk_kernels.fk_pose_into(F, types, Q[i], T[i])
+        fk_kernels.fk_position_into(F, types, Q[i], p[i])
 
 
 def test_single_row_kernels_bit_identical_to_batched(tmp_path):
@@ -171,7 +171,7 @@ def test_non_finite_joint_values_give_non_finite_poses():
         Q = np.zeros((5, robot.dof))
         Q[1, j] = bad
         T = np.empty((5, 4, 4))
-        dh.fk_poses(chain.origins, chain.joint_types, Q, T)
+        fk_kernels.fk_poses(chain.origins, chain.joint_types, Q, T)
         assert not np.all(np.isfinite(T[1]))
         assert np.all(np.isfinite(np.delete(T, 1, axis=0)))
 
@@ -184,7 +184,7 @@ def test_kinematic_chain_is_the_general_form(tmp_path):
         assert chain.origins.shape == (robot.dof + 1, 4, 4)
         assert chain.link_frames.shape == (robot.dof, 4, 4)
         np.testing.assert_array_equal(chain.origins, robot.chain_origins())
-        np.testing.assert_array_equal(chain.joint_types == dh.PRISMATIC, robot.is_prismatic)
+        np.testing.assert_array_equal(chain.joint_types == fk_kernels.PRISMATIC, robot.is_prismatic)
         for arr in (chain.origins, chain.joint_types, chain.link_frames):
             assert arr.flags.c_contiguous and not arr.flags.writeable
         again = pickle.loads(pickle.dumps(robot)).kinematic_chain

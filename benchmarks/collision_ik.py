@@ -113,6 +113,7 @@ def collision_aware(checker: CollisionChecker, n: int, *, rng: np.random.Generat
     free = Q[checker.min_distance(Q) >= 0.0][:n]
     T = robot.fk(free)
     solve_ik(robot, T[0], seed=0, collision=checker)  # compiled outside the timing
+    solve_ik_batch(robot, T[:2], seed=0, collision=checker)
     t0 = time.perf_counter()
     batch = solve_ik_batch(robot, T, seed=0, collision=checker)
     t_batch = time.perf_counter() - t0

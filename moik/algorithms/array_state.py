@@ -254,6 +254,34 @@ def initial_infill(problem, n: int, xl: np.ndarray, xu: np.ndarray, *, X0, sampl
                          f"Population, got {type(sampling).__name__}")
 
 
+class GivenPoints(Sampling):
+    """A pymoo ``Sampling`` of given points (an array or a ``Population``, 1 to ``n``
+    rows), the rows not given drawn uniformly: pymoo's array and Population forms of
+    ``sampling=`` for a pymoo algorithm that takes only a ``Sampling`` (MOPSO-CD)."""
+
+    def __init__(self, points) -> None:
+        super().__init__()
+        self.points = points
+
+    def _do(self, problem, n_samples, *args, random_state=None, **kwargs):
+        xl, xu = (np.asarray(b, dtype=float) for b in problem.bounds())
+        return initial_infill(problem, n_samples, xl, xu, X0=None, sampling=self.points,
+                              rng=random_state).get("X")
+
+
+def given_rows(X0, sampling, n: int) -> int:
+    """How many rows of the initial population of size ``n`` the user gave (``X0`` or
+    ``sampling=``: all of them for a pymoo ``Sampling``); an algorithm with its own
+    initialisation (chaotic maps) draws only the others."""
+    if X0 is not None:
+        return len(np.atleast_2d(X0))
+    if sampling is None:
+        return 0
+    if isinstance(sampling, Sampling):
+        return n
+    return len(sampling) if isinstance(sampling, Population) else len(np.atleast_2d(sampling))
+
+
 def budget_left(max_evals: float, n_eval: int, n: int) -> int:
     """How many of ``n`` candidates the evaluation budget still allows."""
     left = max_evals - n_eval

@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from moik.experiments.analysis import front_hv
+from moik.experiments.collision_report import FUNCTIONS as COLLISION_FUNCTIONS
 from moik.experiments.consistency import FUNCTIONS as CONSISTENCY_FUNCTIONS
 from moik.experiments.dh_fit import FUNCTIONS as DH_FIT_FUNCTIONS
 from moik.experiments.front_quality import HEADLINES as FRONT_HEADLINES
@@ -242,6 +243,7 @@ HEADLINES = {"summary": summary_lines, "ranksum": ranksum_lines,
              "solution-rank": notes_of(RANK_FUNCTIONS["solution-rank"]),
              "paper-consistency": notes_of(CONSISTENCY_FUNCTIONS["paper-consistency"]),
              "reference-front": notes_of(REFERENCE_FUNCTIONS["reference-front"]),
+             "collision": notes_of(COLLISION_FUNCTIONS["collision"]),
              **FRONT_HEADLINES, **SHARES_HEADLINES}
 """Analysis name -> headline function (every name of ``ANALYSES`` has one)."""
 

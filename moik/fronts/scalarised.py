@@ -20,7 +20,6 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from scipy import optimize
 
 from moik.fronts.kernels import (
     batch_pose_errors,
@@ -34,7 +33,14 @@ from moik.kinematics.rotation_metrics import (
 )
 from moik.robots.chain import Robot
 
-_minimize: Any = optimize.minimize  # scipy-stubs' overloads do not cover SLSQP's dict constraints
+
+def _minimize(*args: Any, **kwargs: Any) -> Any:
+    """scipy's ``optimize.minimize``, imported at the first front computed: importing
+    :mod:`moik.problems` (and a first-stage solve) need not load scipy.optimize (0.3 s);
+    typed ``Any``: scipy-stubs' overloads do not cover SLSQP's dict constraints."""
+    from scipy import optimize
+
+    return optimize.minimize(*args, **kwargs)
 FD_STEP = 1e-6  # central-difference step of the gradients (rad, or robot unit)
 FTOL = 1e-16  # SLSQP stopping tolerance on the scaled squared objective
 ZERO_EPS = 1e-8  # a level this small is the constraint f_m = 0 (pose equations)

@@ -53,7 +53,7 @@ from pymoo.util.archive import MultiObjectiveArchive, Truncation
 
 from moik._validate import integer, number, positive
 from moik.algorithms.archive import constrained_nondominated_mask
-from moik.algorithms.array_state import refuse_unknown_keywords
+from moik.algorithms.array_state import GivenPoints, refuse_unknown_keywords
 from moik.algorithms.moo.dominance import constrained_dominates
 
 
@@ -115,6 +115,8 @@ class MOPSOCD(MOPSO_CD):
                 number(coefficient, kwargs[coefficient])
         if "max_velocity_rate" in kwargs:
             positive("max_velocity_rate", kwargs["max_velocity_rate"])
+        if isinstance(kwargs.get("sampling"), (np.ndarray, list, tuple, Population)):
+            kwargs["sampling"] = GivenPoints(kwargs["sampling"])  # pymoo's MOPSO_CD: a Sampling
         super().__init__(**kwargs)
         if kwargs.get("termination") is not None:
             self.termination = kwargs["termination"]  # pymoo's __init__ replaced it

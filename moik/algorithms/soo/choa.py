@@ -54,6 +54,7 @@ from __future__ import annotations
 import numpy as np
 
 from moik._validate import interval
+from moik.algorithms.array_state import given_rows
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.mechanics import clip_to_bounds, ranking_fitness
 from moik.algorithms.soo.eo import update_pool
@@ -196,9 +197,9 @@ class ChOA(ArrayAlgorithm):
 
     def _initialize_infill(self):
         pop = super()._initialize_infill()
-        if self.chaotic_init:
+        k = given_rows(self.X0, self.sampling, self.pop_size)
+        if self.chaotic_init and k < self.pop_size:
             X = pop.get("X")
-            k = 0 if self.X0 is None else len(self.X0)
             X[k:] = chaotic_population(self.pop_size - k, self.xl, self.xu, b=self.b,
                                        rng=self.random_state)
             pop.set("X", X)

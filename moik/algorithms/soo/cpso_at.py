@@ -30,6 +30,7 @@ from __future__ import annotations
 import numpy as np
 
 from moik._validate import integer, interval
+from moik.algorithms.array_state import given_rows
 from moik.algorithms.base import ArrayAlgorithm, Step
 from moik.algorithms.mechanics import clip_to_bounds, greedy_memory
 from moik.algorithms.soo.pso import clamp_velocity, pso_velocity
@@ -83,7 +84,9 @@ class CPSOAT(ArrayAlgorithm):
     def _initialize_infill(self):
         pop = super()._initialize_infill()
         X = pop.get("X")
-        k = 0 if self.X0 is None else len(self.X0)
+        k = given_rows(self.X0, self.sampling, self.pop_size)
+        if k >= self.pop_size:
+            return pop
         z0 = self.random_state.uniform(0.01, 0.99, self.xl.size)
         X[k:] = self.xl + (self.xu - self.xl) * logistic_sequence(z0, self.pop_size - k)
         pop.set("X", X)

@@ -54,11 +54,10 @@ def test_benchmark_config_errors(change, match):
 
 
 def test_missing_extra_is_one_clear_error(monkeypatch, tmp_path):
-    from moik.experiments import run_experiment
-    from moik.experiments.kinds import functions
+    from moik.experiments import config, run_experiment
 
     cfg = ExperimentConfig.from_dict(_bench(requires=["cec"]))
-    monkeypatch.setattr(functions.importlib.util, "find_spec", lambda name: None)
+    monkeypatch.setattr(config.importlib.util, "find_spec", lambda name: None)
     with pytest.raises(ConfigError, match=r"needs the optional extra 'cec' .*moik\[cec\]"):
         run_experiment(cfg, out=tmp_path / "r")
 

@@ -22,6 +22,7 @@ The compiled kernels take a shape as a kind code, a pose and three sizes
 
 from __future__ import annotations
 
+from abc import ABC, abstractmethod
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
@@ -53,7 +54,7 @@ def _length(owner: str, what: str, value: Any, *, allow_zero: bool) -> float:
 
 
 @dataclass(frozen=True, eq=False, kw_only=True)
-class Shape:
+class Shape(ABC):
     """Base of the primitives: a pose and the kernel's kind code and sizes."""
 
     pose: np.ndarray = field(default_factory=lambda: np.eye(4))
@@ -63,9 +64,9 @@ class Shape:
         object.__setattr__(self, "pose", _pose(type(self).__name__, self.pose))
 
     @property
+    @abstractmethod
     def sizes(self) -> tuple[float, float, float]:
         """The three numbers the kernels take (see :mod:`moik.collision.distance`)."""
-        raise NotImplementedError
 
     def moved(self, transform: Any) -> Shape:
         """The same shape with pose ``transform @ pose``."""
@@ -79,8 +80,9 @@ class Shape:
         out["pose"] = self.pose.tolist()
         return out
 
+    @abstractmethod
     def _sizes_dict(self) -> dict[str, Any]:
-        raise NotImplementedError
+        """The shape's own sizes, by name (its part of :meth:`to_dict`)."""
 
 
 def _replace_pose(shape: Shape, pose: np.ndarray) -> Shape:

@@ -45,7 +45,7 @@ Convention = Literal["standard", "modified"]
 UNITS = checks.UNITS
 JOINT_TYPES = checks.JOINT_TYPES
 if TYPE_CHECKING:
-    from moik import _jit
+    import moik._jit as _jit
     from moik.robots import fk_kernels
 else:  # loaded at the first FK: describing a robot needs no numba (moik._lazy)
     _jit = lazy_module("moik._jit")

@@ -13,29 +13,7 @@ from moik.exceptions import GeometryError, UnknownNameError
 coal = pytest.importorskip("coal")
 
 
-def _coal_shape(s):
-    r, h, z = s.sizes
-    if isinstance(s, Sphere):
-        return coal.Sphere(r)
-    if isinstance(s, Capsule):
-        return coal.Capsule(r, 2 * h)
-    if isinstance(s, Box):
-        return coal.Box(*s.size)
-    return coal.Halfspace(np.array([0.0, 0.0, 1.0]), 0.0)
-
-
-def _coal_min(checker, q):
-    placed = dict(checker.world_shapes(q))
-    req = coal.DistanceRequest()
-    req.enable_signed_distance = True
-    req.gjk_tolerance = req.epa_tolerance = 1e-14
-    out = []
-    for a, b in checker.pair_names:
-        A, B = placed[a], placed[b]
-        out.append(coal.distance(_coal_shape(A), coal.Transform3s(A.pose[:3, :3], A.pose[:3, 3]),
-                                 _coal_shape(B), coal.Transform3s(B.pose[:3, :3], B.pose[:3, 3]),
-                                 req, coal.DistanceResult()))
-    return np.array(out)
+from tests.coal_oracle import coal_distances as _coal_min  # noqa: E402  (after the skip)
 
 
 def _scene():

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from moik import solve_ik
-from moik.collision import Box, Capsule, CollisionChecker, HalfSpace, Scene, Sphere
+from moik.collision import Box, CollisionChecker, HalfSpace, Scene, Sphere
 from moik.collision.catalog import collision_model
 from moik.collision.io import rpy_pose
 from moik.exceptions import GeometryError, MoikError, ParameterError
@@ -15,33 +15,14 @@ from moik.solver.batch import child_seeds
 from moik.solver.session import pose_errors
 
 coal = pytest.importorskip("coal")
+from tests.coal_oracle import coal_distances  # noqa: E402  (after the skip)
+
 TOL = 1e-9
-
-
-def _coal_shape(s):
-    r, h, _ = s.sizes
-    if isinstance(s, Sphere):
-        return coal.Sphere(r)
-    if isinstance(s, Capsule):
-        return coal.Capsule(r, 2 * h)
-    if isinstance(s, Box):
-        return coal.Box(*s.size)
-    return coal.Halfspace(np.array([0.0, 0.0, 1.0]), 0.0)
 
 
 def coal_min(checker, q):
     """The smallest signed distance over the checker's pairs, by coal (independent)."""
-    placed = dict(checker.world_shapes(q))
-    req = coal.DistanceRequest()
-    req.enable_signed_distance = True
-    req.gjk_tolerance = req.epa_tolerance = 1e-14
-    out = []
-    for a, b in checker.pair_names:
-        A, B = placed[a], placed[b]
-        out.append(coal.distance(_coal_shape(A), coal.Transform3s(A.pose[:3, :3], A.pose[:3, 3]),
-                                 _coal_shape(B), coal.Transform3s(B.pose[:3, :3], B.pose[:3, 3]),
-                                 req, coal.DistanceResult()))
-    return min(out)
+    return float(coal_distances(checker, q).min())
 
 
 @pytest.fixture(scope="module")

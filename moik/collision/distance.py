@@ -27,6 +27,12 @@ with respect to a rigid motion of B is then exactly ``n`` at ``b``; Ericson,
   a penetrating pair are the deepest support point of A and that point moved by ``d n``;
   the gradient there is the contact-normal approximation, not an exact derivative;
 * anything against a half-space: the deepest point of the shape along the normal, exact.
+
+:func:`pair_bound` is the broad phase: a lower bound on a pair's signed distance from
+bounding spheres (a half-space: the plane distance of the other shape's sphere), which
+holds for penetrating pairs too (a shape lies in its sphere, so separating the spheres
+separates the shapes). A pair whose bound exceeds the smallest distance known cannot be
+the minimum, and is not evaluated (:func:`moik.collision.kernels.min_distance_of`).
 """
 
 from __future__ import annotations
@@ -338,6 +344,28 @@ def box_halfspace(PA, sA, PB):
     ax, ay, az = _support_box(PA, sA, -mx, -my, -mz)
     d = mx * (ax - PB[0, 3]) + my * (ay - PB[1, 3]) + mz * (az - PB[2, 3])
     return d, -mx, -my, -mz, ax, ay, az, ax - d * mx, ay - d * my, az - d * mz
+
+
+@jit(inline=True)
+def _bounding_radius(k, s):
+    """Radius of the sphere about the pose's origin that holds a shape (not a half-space)."""
+    if k == SPHERE:
+        return s[0]
+    if k == CAPSULE:
+        return s[0] + s[1]
+    return math.sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2])
+
+
+@jit
+def pair_bound(kA, PA, sA, kB, PB, sB):
+    """A lower bound on the signed distance of a pair (bounding spheres; the module doc)."""
+    if kA == HALFSPACE or kB == HALFSPACE:
+        H, P, k, s = (PA, PB, kB, sB) if kA == HALFSPACE else (PB, PA, kA, sA)
+        return (H[0, 2] * (P[0, 3] - H[0, 3]) + H[1, 2] * (P[1, 3] - H[1, 3])
+                + H[2, 2] * (P[2, 3] - H[2, 3])) - _bounding_radius(k, s)
+    dx, dy, dz = PB[0, 3] - PA[0, 3], PB[1, 3] - PA[1, 3], PB[2, 3] - PA[2, 3]
+    return (math.sqrt(dx * dx + dy * dy + dz * dz) - _bounding_radius(kA, sA)
+            - _bounding_radius(kB, sB))
 
 
 @jit

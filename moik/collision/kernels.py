@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 
 from moik._jit import jit
-from moik.collision.distance import pair_distance
+from moik.collision.distance import pair_bound, pair_distance
 from moik.robots.fk_kernels import compose, move_joint, pose_state, store_pose
 from moik.robots.transforms import PRISMATIC
 
@@ -84,15 +84,40 @@ def min_distances(F, P, base, types, Q, body, local, kinds, sizes, pairs, dmin, 
     axes = np.empty((dof, 6))
     W = np.empty((body.size, 4, 4))
     for i in range(Q.shape[0]):
-        world_frames(F, P, base, types, Q[i], frames, axes)
-        place_shapes(frames, body, local, W)
-        best, arg = np.inf, -1
-        for k in range(pairs.shape[0]):
-            a, b = pairs[k, 0], pairs[k, 1]
-            d = pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])[0]
-            if d < best:
-                best, arg = d, k
-        dmin[i], which[i] = best, arg
+        dmin[i], which[i] = min_distance_of(F, P, base, types, Q[i], (body, local, kinds, sizes,
+                                                                        pairs), (frames, axes, W))
+
+
+@jit
+def min_distance_of(F, P, base, types, q, shapes, scratch):
+    """Smallest pair distance of one joint vector and the pair attaining it (``inf``, -1:
+    no pair). ``shapes = (body, local, kinds, sizes, pairs)``; ``scratch = (frames
+    (dof + 1, 4, 4), axes (dof, 6), W (m, 4, 4))``."""
+    body, local, kinds, sizes, pairs = shapes
+    frames, axes, W = scratch
+    world_frames(F, P, base, types, q, frames, axes)
+    place_shapes(frames, body, local, W)
+    first, low = -1, np.inf  # the pair of the smallest bound is evaluated first
+    for k in range(pairs.shape[0]):
+        a, b = pairs[k, 0], pairs[k, 1]
+        lb = pair_bound(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])
+        if first < 0 or lb < low:
+            first, low = k, lb
+    best, arg = np.inf, -1
+    if first >= 0:
+        a, b = pairs[first, 0], pairs[first, 1]
+        best = pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])[0]
+        arg = first
+    for k in range(pairs.shape[0]):
+        if k == first:
+            continue
+        a, b = pairs[k, 0], pairs[k, 1]
+        if pair_bound(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b]) > best:
+            continue  # its distance is at least its bound: not below the minimum
+        d = pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])[0]
+        if d < best or (d == best and k < arg):  # the first pair attaining it, as in order
+            best, arg = d, k
+    return best, arg
 
 
 @jit(inline=True)

@@ -25,6 +25,7 @@ import numpy as np
 
 from moik._validate import flag
 from moik.collision import kernels
+from moik.collision.compiled import CollisionSet, collision_set
 from moik.collision.shapes import HalfSpace, Shape, shape_arrays
 from moik.exceptions import GeometryError, UnknownNameError
 from moik.robots.chain import Robot
@@ -252,6 +253,12 @@ class CollisionChecker:
         d, g = np.empty(Q2.shape[0]), np.empty((Q2.shape[0], self.robot.dof))
         kernels.min_distance_gradients(*self._args, Q2, *self._shape_args, d, g)
         return (d[0], g[0]) if Q.ndim == 1 else (d, g)
+
+    @cached_property
+    def compiled(self) -> CollisionSet:
+        """The checker as one compiled value (:class:`~moik.collision.compiled.CollisionSet`),
+        for the solver's start loop."""
+        return collision_set(self._args, self._shape_args)
 
     @cached_property
     def arrays(self) -> dict[str, np.ndarray]:

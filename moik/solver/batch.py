@@ -26,7 +26,7 @@ from moik.problems.targets import Target
 from moik.robots.catalog import as_robot
 from moik.solver.collision import collision_guard
 from moik.solver.context import ik_context
-from moik.solver.options import search_options, seed_sequence, starts_sequence
+from moik.solver.options import STARTS_KEY, search_options, seed_sequence
 from moik.solver.session import (
     LM_ITERATIONS,
     STOP_FRACTION,
@@ -69,8 +69,14 @@ class IKBatchResult:
 def child_seeds(seed, n: int) -> list[np.random.SeedSequence]:
     """The per-target seeds: ``SeedSequence(seed).spawn(n)`` (without spawning from ``seed``)."""
     root = seed_sequence(seed)
-    return [np.random.SeedSequence(root.entropy, spawn_key=(*root.spawn_key, i),
-                                   pool_size=root.pool_size) for i in range(n)]
+    return [_child(root, i) for i in range(n)]
+
+
+def _child(root: np.random.SeedSequence, i: int, *key: int) -> np.random.SeedSequence:
+    """Target ``i``'s seed (``child_seeds(root, n)[i]``), or with ``key`` appended to its
+    spawn key (``starts_sequence`` of it: one SeedSequence built instead of two)."""
+    return np.random.SeedSequence(root.entropy, spawn_key=(*root.spawn_key, i, *key),
+                                  pool_size=root.pool_size)
 
 
 def _targets(targets) -> tuple[np.ndarray, np.ndarray | None]:
@@ -105,8 +111,10 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=No
         q_current: ``None``, one joint vector ``(dof,)`` for every target, or ``(n, dof)``.
         tol: As in :func:`~moik.solver.solve_ik.solve_ik`.
         scene, self_collision, clearance, collision: The collision check of
-            :func:`~moik.solver.solve_ik.solve_ik`, per target the same verdict: a
-            first-stage end in collision sends its target to the whole of ``solve_ik``.
+            :func:`~moik.solver.solve_ik.solve_ik`, per target the same verdict: the
+            compiled first stage rejects ends in collision and tries the next start; a
+            target it leaves without a collision-free answer goes through the whole of
+            ``solve_ik``.
         **options: Any other keyword of ``solve_ik`` except ``n_solutions``.
 
     Raises:
@@ -135,58 +143,62 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=No
         elif qc.shape[0] != n:
             raise ShapeError(f"q_current must be ({robot.dof},) or ({n}, {robot.dof}), got "
                              f"{qc.shape}")
-    seeds = child_seeds(seed, n)
+    root = seed_sequence(seed)  # target i's seed: _child(root, i), made only if needed
     out_Q, solved = np.empty((n, robot.dof)), np.zeros(n, dtype=np.bool_)
     n_evals = np.zeros(n, dtype=np.int64)
     if opts.polish and (qc is not None or opts.starts):
-        _first_stage(robot, positions, rotations, qc, opts, (tol_pos, tol_ori), seeds,
-                     out_Q, solved, n_evals)
-    if guard is not None and solved.any():  # a colliding end: the whole of solve_ik
-        k = np.flatnonzero(solved)
-        solved[k[~guard.free(out_Q[k])]] = False
+        _first_stage(robot, positions, rotations, qc, opts, (tol_pos, tol_ori), root,
+                     guard, (out_Q, solved, n_evals))
     if qc is not None:
         out_Q[solved] = nearest_copies(robot, out_Q[solved], qc[solved])
     status = np.full(n, "not-converged", dtype=object)
-    pos, ori = np.zeros(n), np.zeros(n)
-    targets_i = [Target(positions[i], None if rotations is None else rotations[i])
-                 for i in range(n)]
+    pos, ori, dist = np.zeros(n), np.zeros(n), np.full(n, np.nan)
     if solved.any():  # the honest re-check, as solve_ik does it
         k = np.flatnonzero(solved)
         p_k, o_k = pose_errors(robot, (positions[k], None if rotations is None
                                        else rotations[k]), out_Q[k])
         ok = (p_k <= tol_pos) & (o_k <= tol_ori)
         if guard is not None:
-            ok &= guard.free(out_Q[k])
+            dist[k] = guard.distances(out_Q[k])
+            ok &= dist[k] >= guard.clearance
         pos[k], ori[k], solved[k] = p_k, o_k, ok
         status[k[ok]] = "solved"
     for i in np.flatnonzero(~solved):  # the hard tail: the whole of solve_ik
-        res = solve_ik(robot, targets_i[i], seed=seeds[i], tol=tol,
+        target = Target(positions[i], None if rotations is None else rotations[i])
+        res = solve_ik(robot, target, seed=_child(root, i), tol=tol,
                        q_current=None if qc is None else qc[i], **check, **options)
         out_Q[i], status[i], pos[i], ori[i] = res.q, res.status, res.position_error, \
             res.orientation_error
         n_evals[i], solved[i] = res.n_eval, res.success
+        if guard is not None:
+            dist[i] = res.min_distance
     return IKBatchResult(q=out_Q, status=status.astype(str), position_error=pos,
                          orientation_error=ori, success=solved, n_eval=n_evals,
                          time=time.perf_counter() - t0,
-                         min_distance=None if guard is None else guard.distances(out_Q))
+                         min_distance=None if guard is None else dist)
 
 
-def _first_stage(robot, positions, rotations, qc, opts, tol, seeds, out_Q, solved, n_evals):
+def _first_stage(robot, positions, rotations, qc, opts, tol, root, guard, out):
     """The Levenberg-Marquardt starts ``solve_ik`` makes, for every target in compiled loops
     (:func:`~moik.solver.starts.run_batch`): ``q_current[i]`` (patient), then the first
-    :data:`~moik.solver.solve_ik.FIRST_STARTS` random starts, then the rest for the unsolved."""
+    :data:`~moik.solver.solve_ik.FIRST_STARTS` random starts, then the rest for the unsolved.
+    With a collision ``guard`` an end in collision is rejected inside the loop, as
+    ``solve_ik``'s start loop does. ``out = (out_Q, solved, n_evals)``, written."""
+    out_Q, solved, n_evals = out
     n, dof = len(positions), robot.dof
     first = Target(positions[0], None if rotations is None else rotations[0])
     ctx = ik_context(robot, first, stop=(STOP_FRACTION * tol[0], STOP_FRACTION * tol[1]),
-                     distinct=opts.distinct, max_iter=LM_ITERATIONS)
+                     distinct=opts.distinct, max_iter=LM_ITERATIONS,
+                     collision=None if guard is None else guard.checker.compiled,
+                     clearance=0.0 if guard is None else guard.clearance)
     targets = (kernel_array(np.tile(np.eye(3), (n, 1, 1)) if rotations is None else rotations),
                kernel_array(positions))
     found = np.full((n, 1, dof + 2), np.nan)
     if qc is not None:
         current = np.array(qc[:, None], dtype=np.float64, copy=True)  # run_batch moves it
         run_batch(ctx, current, targets, (PATIENT, opts.max_evals), found, n_evals)
-    rngs = [np.random.Generator(np.random.PCG64(starts_sequence(s)))  # as solve_ik's
-            for s in seeds]
+    rngs = [np.random.Generator(np.random.PCG64(_child(root, i, STARTS_KEY)))  # as solve_ik's
+            for i in range(n)]
     first_n = min(opts.starts, FIRST_STARTS)  # then the rest, for the unsolved only
     run_batch(ctx, kernel_array(np.stack([robot.random_q(first_n, rng=g) for g in rngs])),
               targets, (0, opts.max_evals), found, n_evals)

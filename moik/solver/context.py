@@ -19,17 +19,12 @@ workspace never crosses into Python: :func:`lm_workspace` builds it (a NamedTupl
 arrays, about 1 us) inside the compiled start loop, once per call instead of once
 per start.
 
-Extension points for collision terms (the collision issue): (1) add the collision
-model's arrays (capsules on link frames, obstacles, a margin) as fields of
-:class:`IKContext` (``FIELDS``, :func:`_new_context`, and one keyword of
-:func:`ik_context`: empty arrays when a solve has none), (2) add the scratch of their
-distances and gradients to :class:`LMWorkspace` / :func:`lm_workspace`, (3) add their
-residual rows in :func:`moik.solver.lm.residual` (after the 6 pose rows, with ``r`` and
-``Jr`` sized for them in the workspace) or a distance test in
-:func:`moik.solver.starts.recheck` (the acceptance of an end). The start loop
-(:func:`moik.solver.starts.run_starts`, :func:`~moik.solver.starts.run_batch`) and its
-callers stay as they are. A context is not picklable or copyable (numba StructRef):
-objects that pymoo deep-copies build theirs per call, as
+Collision terms: the context carries the solve's
+:class:`~moik.collision.compiled.CollisionSet` and clearance; the start loop tests an
+accepted end against them (:func:`moik.solver.starts.run_starts`). Hinge residual rows on
+distance would go in :func:`moik.solver.lm.residual` (after the 6 pose rows, with ``r``
+and ``Jr`` sized for them in the workspace). A context is not picklable or copyable (numba
+StructRef): objects that pymoo deep-copies build theirs per call, as
 :class:`~moik.solver.pareto_search.Projector` does.
 """
 
@@ -42,6 +37,7 @@ from numba import types as nb_types
 from numba.experimental import structref
 
 from moik._jit import jit, kernel_array
+from moik.collision.compiled import CollisionSet, no_collision
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
 
@@ -73,20 +69,26 @@ class IKContext(structref.StructRefProxy):
         distinct: Joint-space distance (revolute joints modulo 2 pi) above which two
             solutions are distinct.
         max_iter: Levenberg-Marquardt iterations per start.
+        collision: The collision check of an accepted end
+            (:class:`~moik.collision.compiled.CollisionSet`; no pair: none).
+        clearance: Smallest signed distance an accepted end keeps (robot unit).
     """
 
 
 FIELDS = ("origins", "joint_types", "lower", "upper", "rotation", "position", "has_rotation",
           "inv_reach", "stop_position", "stop_orientation", "tol_position", "tol_orientation",
-          "distinct", "max_iter")
+          "distinct", "max_iter", "collision", "clearance")
 structref.define_proxy(IKContext, IKContextType, list(FIELDS))
 
 
 @jit
-def _new_context(chain, target, stops, tols, distinct, max_iter):
-    """The compiled constructor (cached; the proxy's own would compile in every process)."""
+def _new_context(chain, target, stops, accept, collision, sizes):
+    """The compiled constructor (cached; the proxy's own would compile in every process).
+    ``collision`` is an argument of its own: numba types a StructRef inside a tuple
+    argument in Python (about 50 us a call, measured), one on its own in C (about 2 us)."""
     return IKContext(chain[0], chain[1], chain[2], chain[3], target[0], target[1], target[2],
-                     stops[0], stops[1], stops[2], tols[0], tols[1], distinct, max_iter)
+                     stops[0], stops[1], stops[2], accept[0], accept[1], sizes[0], sizes[1],
+                     collision, accept[2])
 
 
 def target_arrays(target: Target) -> tuple[np.ndarray, np.ndarray, bool]:
@@ -99,7 +101,8 @@ def target_arrays(target: Target) -> tuple[np.ndarray, np.ndarray, bool]:
 
 def ik_context(robot: Robot, target: Target, *, stop: tuple[float, float],
                tol: tuple[float, float] = (0.0, 0.0), distinct: float = 0.1,
-               max_iter: int = 30) -> IKContext:
+               max_iter: int = 30, collision: CollisionSet | None = None,
+               clearance: float = 0.0) -> IKContext:
     """The :class:`IKContext` of ``robot`` and ``target`` (the one place it is built).
 
     Args:
@@ -109,12 +112,18 @@ def ik_context(robot: Robot, target: Target, *, stop: tuple[float, float],
         tol: ``(position, orientation)`` within which a re-checked end is a solution.
         distinct: Joint-space distance above which two solutions are distinct.
         max_iter: Levenberg-Marquardt iterations per start.
+        collision, clearance: An end is accepted only if its smallest distance over the
+            pairs of ``collision`` (a checker's
+            :attr:`~moik.collision.CollisionChecker.compiled`) is at least ``clearance``;
+            ``None``: no check.
     """
     chain = robot.kinematic_chain
     return _new_context((chain.origins, chain.joint_types, robot.lower, robot.upper),
                         target_arrays(target),
                         (1.0 / robot.reach, float(stop[0]), float(stop[1])),
-                        (float(tol[0]), float(tol[1])), float(distinct), int(max_iter))
+                        (float(tol[0]), float(tol[1]), float(clearance)),
+                        no_collision() if collision is None else collision,
+                        (float(distinct), int(max_iter)))
 
 
 @jit

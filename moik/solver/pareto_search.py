@@ -92,7 +92,7 @@ class Projector:
     def _ends(self, ctx, X, flags: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """LM from every row of ``X`` on ``ctx``: the ends, which converged, their costs."""
         P = np.array(X, dtype=np.float64, order="C", copy=True).reshape(-1, self.robot.dof)
-        ends = np.empty((len(P), 2))
+        ends = np.empty((len(P), 3))
         self.n_eval += int(run_starts(ctx, P, (flags, UNLIMITED),
                                       np.empty((0, self.robot.dof + 2)),
                                       np.empty(self.robot.dof + 1), ends)[1])

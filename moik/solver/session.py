@@ -161,7 +161,9 @@ class SolveSession:
         self.ctx = ik_context(robot, target, stop=(STOP_FRACTION * tol_pos,
                                                    STOP_FRACTION * tol_ori),
                               tol=(tol_pos, tol_ori), distinct=distinct,
-                              max_iter=LM_ITERATIONS)
+                              max_iter=LM_ITERATIONS,
+                              collision=None if guard is None else guard.checker.compiled,
+                              clearance=0.0 if guard is None else guard.clearance)
 
     def refine(self, q0: np.ndarray, do_polish: bool, max_nfev: int = 60) -> None:
         """Least-squares polish of ``q0`` (or only clipping), then :meth:`consider`."""
@@ -182,31 +184,32 @@ class SolveSession:
         ``patient``: no start is abandoned for slow progress (a start near a solution).
         The rows of ``Q0`` are overwritten by the ends (pass a copy to keep them).
         Each converged end is re-checked by an FK pass of its own in the same compiled
-        call (:func:`~moik.solver.starts.run_starts`), as :meth:`consider` does."""
+        call (:func:`~moik.solver.starts.run_starts`), as :meth:`consider` does; with a
+        collision check, an exact end in collision is rejected there too (the loop goes on
+        with the next start), counted in :attr:`n_rejected`, the farthest from contact kept
+        as :attr:`colliding`."""
         dof, n_known = self.robot.dof, len(self.found)
         starts = kernel_array(Q0)  # overwritten by the ends: the callers' rows are fresh
-        flags = CHECK | (PATIENT if patient else 0)
-        pos = 0
-        while pos < len(starts):  # one pass; again after ends rejected for collision
-            k0 = len(self.found)
-            found = found_table(self.wanted, dof, self.found, self.found_errors)
-            best = np.empty(dof + 1)
-            best[0] = np.inf if self.best is None else self.best[0]
-            policy = (flags, max(self.max_evals - self.n_eval, 1))
-            n_found, n_eval, used = run_starts(self.ctx, starts[pos:], policy, found, best,
-                                               np.empty((len(starts) - pos, 2)))
-            self.n_eval += int(n_eval)
-            pos += int(used)
-            new = found[k0:n_found]
-            keep = (np.ones(len(new), dtype=bool) if self.guard is None
-                    else self._collision_free(new[:, :dof]))
-            for row in new[keep]:
-                self.found.append(row[:dof])
-                self.found_errors.append((float(row[dof]), float(row[dof + 1])))
-            if self.best is None or best[0] < self.best[0]:
-                self.best = (float(best[0]), best[1:])
-            if keep.all() or len(self.found) >= self.wanted or self.n_eval >= self.max_evals:
-                break
+        found = found_table(self.wanted, dof, self.found, self.found_errors)
+        best = np.empty(dof + 1)
+        best[0] = np.inf if self.best is None else self.best[0]
+        ends = np.empty((len(starts), 3))
+        policy = (CHECK | (PATIENT if patient else 0), max(self.max_evals - self.n_eval, 1))
+        n_found, n_eval, used = run_starts(self.ctx, starts, policy, found, best, ends)
+        self.n_eval += int(n_eval)
+        for row in found[n_known:n_found]:
+            self.found.append(row[:dof])
+            self.found_errors.append((float(row[dof]), float(row[dof + 1])))
+        if self.best is None or best[0] < self.best[0]:
+            self.best = (float(best[0]), best[1:])
+        if self.guard is not None:  # exact ends the start loop rejected for collision
+            d = ends[:used, 2]
+            rejected = np.flatnonzero(d < self.guard.clearance)
+            self.n_rejected += len(rejected)
+            if len(rejected):
+                k = rejected[np.argmax(d[rejected])]
+                if self.colliding is None or d[k] > self.colliding[0]:
+                    self.colliding = (float(d[k]), starts[k].copy())
         return len(self.found) > n_known
 
     def _collision_free(self, Q: np.ndarray) -> np.ndarray:

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from moik._jit import jit, kernel_array
+from moik.collision.compiled import set_min_distance, set_scratch
 from moik.kinematics.criteria import joint_distance
 from moik.kinematics.criteria_kernels import wrapped_distance
 from moik.kinematics.rotation_metrics import geodesic_angle
@@ -29,7 +30,7 @@ from moik.solver.lm import FRONT_STALL_RATIO, STALL_RATIO, copy_into, lm_start
 # policy flags of run_starts
 CHECK = 1  # a converged end is a solution only if an FK re-check puts it within tolerance
 PATIENT = 2  # no start is abandoned for slow progress (a start near a solution)
-PROJECT = 4  # every row is run and kept in place (ends[i] = converged, cost); none collected
+PROJECT = 4  # every row is run and kept in place (ends[i] = converged, cost, -); none collected
 UNLIMITED = 2**62  # a budget that never stops the loop
 
 
@@ -105,7 +106,10 @@ def run_starts(ctx, starts, policy, found, best, ends):
             ``pos / L + ori``). With :data:`CHECK`, an end that did not converge but whose
             cost could be within the tolerances (a start may stall between the stop and
             the tolerance) is re-checked too, and a solution when it is within them.
-        ends: ``(n, 2)``: each start's (converged, cost), written for the starts run.
+        ends: ``(n, 3)``: each start's (converged, cost, distance), written for the
+            starts run; distance: the smallest signed distance of an end that passed
+            the pose test when ``ctx.collision`` has pairs (an end below
+            ``ctx.clearance`` is rejected: the loop goes on), else NaN.
 
     Returns:
         ``(n_found, n_eval, n_used)``: solutions known now, FK evaluations, starts run.
@@ -118,6 +122,9 @@ def run_starts(ctx, starts, policy, found, best, ends):
     tp, to = ctx.tol_position * ctx.inv_reach, ctx.tol_orientation
     tol_cost = 0.5 * (tp * tp + to * to)  # an end within both tolerances costs at most this
     ws = lm_workspace(dof)
+    cs = ctx.collision
+    collide = cs.pairs.shape[0] > 0
+    scratch = set_scratch(cs)
     n_known = 0
     while n_known < want and not np.isnan(found[n_known, 0]):
         n_known += 1
@@ -129,13 +136,17 @@ def run_starts(ctx, starts, policy, found, best, ends):
         q = starts[s]
         conv, cost, ne = lm_start(ctx, ws, q, scale, stall_ratio)
         n_eval += ne
-        ends[s, 0], ends[s, 1] = conv, cost
+        ends[s, 0], ends[s, 1], ends[s, 2] = conv, cost, np.nan
         if cost < low_cost:
             low, low_cost = s, cost
         if project or not (conv or (check and cost <= tol_cost)):
             continue
         if check and not recheck(ctx, ws, q):
             continue
+        if collide:
+            ends[s, 2] = set_min_distance(cs, q, scratch)
+            if not ends[s, 2] >= ctx.clearance:  # in collision (or NaN): not a solution
+                continue
         if not check:
             ws.err[0], ws.err[1] = np.nan, np.nan
         n_before = n_found
@@ -162,7 +173,7 @@ def run_batch(ctx, starts, targets, policy, found, n_evals):
     budget of ``policy`` counts each target's ``n_evals[i]`` (accumulated)."""
     flags, budget = policy
     n, k, dof = starts.shape
-    best, ends = np.empty(dof + 1), np.empty((k, 2))
+    best, ends = np.empty(dof + 1), np.empty((k, 3))
     for i in range(n):
         if not np.isnan(found[i, 0, 0]) or n_evals[i] >= budget:
             continue
@@ -262,7 +273,7 @@ def multistart(robot: Robot, target: Target, Q0: np.ndarray, *, stop_position: f
     found = found_table(want, robot.dof, () if known is None else known)
     best = np.full(robot.dof + 1, np.inf)
     n_found, n_eval, used = run_starts(ctx, starts, (PATIENT if patient else 0, max_evals),
-                                       found, best, np.empty((len(starts), 2)))
+                                       found, best, np.empty((len(starts), 3)))
     return MultiStartResult(found[:n_found, :robot.dof], best[1:], float(best[0]), int(n_eval),
                             int(used))
 

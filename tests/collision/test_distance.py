@@ -5,7 +5,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from moik.collision.distance import BOX, CAPSULE, HALFSPACE, SPHERE, pair_distance
+from moik.collision.distance import BOX, CAPSULE, HALFSPACE, SPHERE, pair_bound, pair_distance
 
 coal = pytest.importorskip("coal")
 
@@ -76,6 +76,19 @@ def test_signed_distance_matches_coal(x, y):
     else:
         assert abs(d[0] - expected) <= 1e-9, (d[0], expected)
     assert (d[0] < 0) == (expected < 0) or abs(expected) < 1e-12
+
+
+@settings(max_examples=400, deadline=None)
+@given(shape, shape)
+def test_broad_phase_bound_is_a_lower_bound(x, y):
+    """The bounding-sphere bound never exceeds the signed distance, penetrating or not."""
+    a, b = _build(x), _build(y)
+    if a[0] == HALFSPACE and b[0] == HALFSPACE:
+        return
+    d = pair_distance(a[0], a[1], a[2], b[0], b[1], b[2])[0]
+    lb = pair_bound(a[0], a[1], a[2], b[0], b[1], b[2])
+    assert lb <= d + 1e-12, (lb, d)
+    assert pair_bound(b[0], b[1], b[2], a[0], a[1], a[2]) == pytest.approx(lb, abs=1e-15)
 
 
 @settings(max_examples=150, deadline=None)

@@ -33,6 +33,18 @@ def test_distances_match_coal_on_random_configurations(name):
     np.testing.assert_array_equal(checker.min_distance(Q), D.min(axis=1))
 
 
+@pytest.mark.parametrize("name", ["panda", "ur5", "iiwa14"])
+def test_pruned_minimum_is_the_minimum_over_every_pair(name):
+    """The broad phase skips pairs, never the minimum: min_distance and closest_pair
+    equal the minimum (and first pair attaining it) of every pair's distance."""
+    checker = CollisionChecker(model=collision_model(name), scene=_scene())
+    Q = checker.robot.random_q(500, rng=np.random.default_rng(11))
+    D = checker.distances(Q)
+    np.testing.assert_array_equal(checker.min_distance(Q), D.min(axis=1))
+    for q, d in zip(Q[:50], D[:50], strict=True):
+        assert checker.closest_pair(q)[1] == checker.pair_names[int(np.argmin(d))]
+
+
 def test_gradient_matches_finite_differences():
     checker = CollisionChecker(model=collision_model("panda"), scene=_scene())
     rng = np.random.default_rng(5)

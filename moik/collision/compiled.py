@@ -1,0 +1,82 @@
+"""A :class:`~moik.collision.CollisionChecker`'s arrays as one compiled value (numba StructRef).
+
+The solver's start loop (:func:`moik.solver.starts.run_starts`) tests each converged
+end against the collision check in the same compiled call, so a colliding exact
+answer is rejected and the next start tried without a return to Python. A
+:class:`CollisionSet` carries what :func:`moik.collision.kernels.min_distance_of`
+needs (the chain, the base, the shapes and the pairs) and is typed by numba as one
+value, as :class:`~moik.solver.context.IKContext` is (see there for why a StructRef);
+:data:`no_collision` is the empty set of a solve without a check (no pair: the test
+is skipped).
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import numpy as np
+from numba import types as nb_types
+from numba.experimental import structref
+
+from moik._jit import jit
+from moik.collision.kernels import min_distance_of
+
+
+@structref.register
+class CollisionSetType(nb_types.StructRef):
+    """numba type of :class:`CollisionSet` (literal field types widened)."""
+
+    def preprocess_fields(self, fields):
+        return tuple((name, nb_types.unliteral(typ)) for name, typ in fields)
+
+
+class CollisionSet(structref.StructRefProxy):
+    """A checker's arrays for compiled code (build it with :func:`collision_set`).
+
+    Fields: ``origins``, ``link_frames``, ``base``, ``joint_types`` (the chain, as
+    :func:`~moik.collision.kernels.world_frames` takes it), ``body``, ``local``,
+    ``kinds``, ``sizes``, ``pairs`` (the shapes and the pairs evaluated).
+    """
+
+
+FIELDS = ("origins", "link_frames", "base", "joint_types", "body", "local", "kinds", "sizes",
+          "pairs")
+structref.define_proxy(CollisionSet, CollisionSetType, list(FIELDS))
+
+
+@jit
+def _new_set(chain, shapes):
+    """The compiled constructor (cached)."""
+    return CollisionSet(chain[0], chain[1], chain[2], chain[3], shapes[0], shapes[1],
+                        shapes[2], shapes[3], shapes[4])
+
+
+def collision_set(chain: tuple, shapes: tuple) -> CollisionSet:
+    """A :class:`CollisionSet` from ``(origins, link_frames, base, joint_types)`` and
+    ``(body, local, kinds, sizes, pairs)`` (the arrays of a checker)."""
+    return _new_set(chain, shapes)
+
+
+@cache
+def no_collision() -> CollisionSet:
+    """The empty set (no shape, no pair) of a solve without a collision check."""
+    e3 = np.zeros((0, 4, 4))
+    return _new_set((e3, e3, np.eye(4), np.zeros(0, dtype=np.int64)),
+                    (np.zeros(0, dtype=np.int64), e3, np.zeros(0, dtype=np.int64),
+                     np.zeros((0, 3)), np.zeros((0, 2), dtype=np.int64)))
+
+
+@jit
+def set_scratch(cs):
+    """Scratch of :func:`set_min_distance` (``frames``, ``axes``, ``W``) for ``cs``."""
+    dof = cs.joint_types.size
+    return (np.empty((dof + 1, 4, 4)), np.empty((dof, 6)), np.empty((cs.body.size, 4, 4)))
+
+
+@jit
+def set_min_distance(cs, q, scratch):
+    """Smallest signed distance of ``q`` over the pairs of ``cs`` (``inf``: none)."""
+    if cs.pairs.shape[0] == 0:
+        return np.inf
+    return min_distance_of(cs.origins, cs.link_frames, cs.base, cs.joint_types, q,
+                           (cs.body, cs.local, cs.kinds, cs.sizes, cs.pairs), scratch)[0]

@@ -165,7 +165,7 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=No
         status[k[ok]] = "solved"
     for i in np.flatnonzero(~solved):  # the hard tail: the whole of solve_ik
         target = Target(positions[i], None if rotations is None else rotations[i])
-        res = solve_ik(robot, target, seed=_child(root, i), tol=tol,
+        res = solve_ik(robot, target, seed=_child(root, int(i)), tol=tol,
                        q_current=None if qc is None else qc[i], **check, **options)
         out_Q[i], status[i], pos[i], ori[i] = res.q, res.status, res.position_error, \
             res.orientation_error

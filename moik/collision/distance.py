@@ -347,25 +347,28 @@ def box_halfspace(PA, sA, PB):
 
 
 @jit(inline=True)
-def _bounding_radius(k, s):
-    """Radius of the sphere about the pose's origin that holds a shape (not a half-space)."""
-    if k == SPHERE:
-        return s[0]
-    if k == CAPSULE:
-        return s[0] + s[1]
-    return math.sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2])
+def _bounding_radius(kinds, sizes, k):
+    """Radius of the sphere about shape ``k``'s origin that holds it (not a half-space)."""
+    if kinds[k] == SPHERE:
+        return sizes[k, 0]
+    if kinds[k] == CAPSULE:
+        return sizes[k, 0] + sizes[k, 1]
+    return math.sqrt(sizes[k, 0] ** 2 + sizes[k, 1] ** 2 + sizes[k, 2] ** 2)
 
 
-@jit
-def pair_bound(kA, PA, sA, kB, PB, sB):
-    """A lower bound on the signed distance of a pair (bounding spheres; the module doc)."""
-    if kA == HALFSPACE or kB == HALFSPACE:
-        H, P, k, s = (PA, PB, kB, sB) if kA == HALFSPACE else (PB, PA, kA, sA)
-        return (H[0, 2] * (P[0, 3] - H[0, 3]) + H[1, 2] * (P[1, 3] - H[1, 3])
-                + H[2, 2] * (P[2, 3] - H[2, 3])) - _bounding_radius(k, s)
-    dx, dy, dz = PB[0, 3] - PA[0, 3], PB[1, 3] - PA[1, 3], PB[2, 3] - PA[2, 3]
-    return (math.sqrt(dx * dx + dy * dy + dz * dz) - _bounding_radius(kA, sA)
-            - _bounding_radius(kB, sB))
+@jit(inline=True)
+def pair_bound(kinds, W, sizes, a, b):
+    """A lower bound on the signed distance of shapes ``a`` and ``b`` (kinds ``(m,)``, world
+    poses ``W (m, 4, 4)``, sizes ``(m, 3)``): bounding spheres, or the plane distance of
+    the other shape's sphere for a half-space (the module doc). Scalar reads only (no
+    array views: this runs for every pair of every query)."""
+    if kinds[a] == HALFSPACE or kinds[b] == HALFSPACE:
+        h, o = (a, b) if kinds[a] == HALFSPACE else (b, a)
+        return (W[h, 0, 2] * (W[o, 0, 3] - W[h, 0, 3]) + W[h, 1, 2] * (W[o, 1, 3] - W[h, 1, 3])
+                + W[h, 2, 2] * (W[o, 2, 3] - W[h, 2, 3])) - _bounding_radius(kinds, sizes, o)
+    dx, dy, dz = W[b, 0, 3] - W[a, 0, 3], W[b, 1, 3] - W[a, 1, 3], W[b, 2, 3] - W[a, 2, 3]
+    return (math.sqrt(dx * dx + dy * dy + dz * dz) - _bounding_radius(kinds, sizes, a)
+            - _bounding_radius(kinds, sizes, b))
 
 
 @jit

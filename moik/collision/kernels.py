@@ -100,7 +100,7 @@ def min_distance_of(F, P, base, types, q, shapes, scratch):
     first, low = -1, np.inf  # the pair of the smallest bound is evaluated first
     for k in range(pairs.shape[0]):
         a, b = pairs[k, 0], pairs[k, 1]
-        lb = pair_bound(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])
+        lb = pair_bound(kinds, W, sizes, a, b)
         if first < 0 or lb < low:
             first, low = k, lb
     best, arg = np.inf, -1
@@ -112,7 +112,7 @@ def min_distance_of(F, P, base, types, q, shapes, scratch):
         if k == first:
             continue
         a, b = pairs[k, 0], pairs[k, 1]
-        if pair_bound(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b]) > best:
+        if pair_bound(kinds, W, sizes, a, b) > best:
             continue  # its distance is at least its bound: not below the minimum
         d = pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])[0]
         if d < best or (d == best and k < arg):  # the first pair attaining it, as in order

@@ -35,6 +35,7 @@ from moik.solver.session import (
     tolerances,
 )
 from moik.solver.solve_ik import FIRST_STARTS, solve_ik
+from moik.solver.start_streams import draw_rows, start_streams
 from moik.solver.starts import PATIENT, run_batch
 
 
@@ -72,10 +73,9 @@ def child_seeds(seed, n: int) -> list[np.random.SeedSequence]:
     return [_child(root, i) for i in range(n)]
 
 
-def _child(root: np.random.SeedSequence, i: int, *key: int) -> np.random.SeedSequence:
-    """Target ``i``'s seed (``child_seeds(root, n)[i]``), or with ``key`` appended to its
-    spawn key (``starts_sequence`` of it: one SeedSequence built instead of two)."""
-    return np.random.SeedSequence(root.entropy, spawn_key=(*root.spawn_key, i, *key),
+def _child(root: np.random.SeedSequence, i: int) -> np.random.SeedSequence:
+    """Target ``i``'s seed (``child_seeds(root, n)[i]``)."""
+    return np.random.SeedSequence(root.entropy, spawn_key=(*root.spawn_key, i),
                                   pool_size=root.pool_size)
 
 
@@ -197,17 +197,15 @@ def _first_stage(robot, positions, rotations, qc, opts, tol, root, guard, out):
     if qc is not None:
         current = np.array(qc[:, None], dtype=np.float64, copy=True)  # run_batch moves it
         run_batch(ctx, current, targets, (PATIENT, opts.max_evals), found, n_evals)
-    rngs = [np.random.Generator(np.random.PCG64(_child(root, i, STARTS_KEY)))  # as solve_ik's
-            for i in range(n)]
+    states = start_streams(root, STARTS_KEY, n)  # solve_ik's start generators, compiled
     first_n = min(opts.starts, FIRST_STARTS)  # then the rest, for the unsolved only
-    run_batch(ctx, kernel_array(np.stack([robot.random_q(first_n, rng=g) for g in rngs])),
+    run_batch(ctx, draw_rows(states, np.arange(n), first_n, robot.lower, robot.upper),
               targets, (0, opts.max_evals), found, n_evals)
     rest = np.flatnonzero(np.isnan(found[:, 0, 0]))
     if opts.starts > first_n and len(rest):
-        Q1 = np.stack([robot.random_q(opts.starts - first_n, rng=rngs[i]) for i in rest])
+        Q1 = draw_rows(states, rest, opts.starts - first_n, robot.lower, robot.upper)
         found_r, n_r = found[rest], n_evals[rest]
-        run_batch(ctx, kernel_array(Q1), (kernel_array(targets[0][rest]),
-                                          kernel_array(targets[1][rest])),
+        run_batch(ctx, Q1, (kernel_array(targets[0][rest]), kernel_array(targets[1][rest])),
                   (0, opts.max_evals), found_r, n_r)
         found[rest], n_evals[rest] = found_r, n_r
     solved[:] = ~np.isnan(found[:, 0, 0])

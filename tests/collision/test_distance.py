@@ -86,9 +86,10 @@ def test_broad_phase_bound_is_a_lower_bound(x, y):
     if a[0] == HALFSPACE and b[0] == HALFSPACE:
         return
     d = pair_distance(a[0], a[1], a[2], b[0], b[1], b[2])[0]
-    lb = pair_bound(a[0], a[1], a[2], b[0], b[1], b[2])
+    kinds, W, sizes = np.array([a[0], b[0]]), np.array([a[1], b[1]]), np.array([a[2], b[2]])
+    lb = pair_bound(kinds, W, sizes, 0, 1)
     assert lb <= d + 1e-12, (lb, d)
-    assert pair_bound(b[0], b[1], b[2], a[0], a[1], a[2]) == pytest.approx(lb, abs=1e-15)
+    assert pair_bound(kinds, W, sizes, 1, 0) == pytest.approx(lb, abs=1e-15)
 
 
 @settings(max_examples=150, deadline=None)

@@ -6,17 +6,16 @@ answer is rejected and the next start tried without a return to Python. A
 :class:`CollisionSet` carries what :func:`moik.collision.kernels.min_distance_of`
 needs (the chain, the base, the shapes and the pairs) and is typed by numba as one
 value, as :class:`~moik.solver.context.IKContext` is (see there for why a StructRef);
-:data:`no_collision` is the empty set of a solve without a check (no pair: the test
-is skipped).
+a solve without a check carries ``None`` instead, for which :func:`end_distance`
+compiles to ``inf`` (numba specialises the start loop on the field's type).
 """
 
 from __future__ import annotations
 
-from functools import cache
-
 import numpy as np
 from numba import types as nb_types
 from numba.experimental import structref
+from numba.extending import overload
 
 from moik._jit import jit
 from moik.collision.kernels import min_distance_of
@@ -57,13 +56,43 @@ def collision_set(chain: tuple, shapes: tuple) -> CollisionSet:
     return _new_set(chain, shapes)
 
 
-@cache
-def no_collision() -> CollisionSet:
-    """The empty set (no shape, no pair) of a solve without a collision check."""
-    e3 = np.zeros((0, 4, 4))
-    return _new_set((e3, e3, np.eye(4), np.zeros(0, dtype=np.int64)),
-                    (np.zeros(0, dtype=np.int64), e3, np.zeros(0, dtype=np.int64),
-                     np.zeros((0, 3)), np.zeros((0, 2), dtype=np.int64)))
+def end_distance(cs, q, scratch):  # pragma: no cover (compiled: see the overload)
+    """Smallest signed distance of ``q`` over the pairs of ``cs`` (``inf``: ``cs`` is
+    ``None``, no check). Compiled code only."""
+    raise NotImplementedError("end_distance is called from compiled code only")
+
+
+def end_scratch(cs):  # pragma: no cover (compiled: see the overload)
+    """Scratch of :func:`end_distance` for ``cs``. Compiled code only."""
+    raise NotImplementedError("end_scratch is called from compiled code only")
+
+
+def checks_pairs(cs):  # pragma: no cover (compiled: see the overload)
+    """Whether ``cs`` has pairs to evaluate (``False`` for ``None``). Compiled code only."""
+    raise NotImplementedError("checks_pairs is called from compiled code only")
+
+
+@overload(end_distance, jit_options={"cache": True})
+def _end_distance(cs, q, scratch):
+    """``None`` (a solve without a check) compiles to ``inf``: the start loop of a
+    collision-blind solve holds no distance code (smaller, quicker to load)."""
+    if isinstance(cs, nb_types.NoneType):
+        return lambda cs, q, scratch: np.inf
+    return lambda cs, q, scratch: set_min_distance(cs, q, scratch)
+
+
+@overload(end_scratch, jit_options={"cache": True})
+def _end_scratch(cs):
+    if isinstance(cs, nb_types.NoneType):
+        return lambda cs: 0
+    return lambda cs: set_scratch(cs)
+
+
+@overload(checks_pairs, jit_options={"cache": True})
+def _checks_pairs(cs):
+    if isinstance(cs, nb_types.NoneType):
+        return lambda cs: False
+    return lambda cs: cs.pairs.shape[0] > 0
 
 
 @jit

@@ -37,7 +37,7 @@ from numba import types as nb_types
 from numba.experimental import structref
 
 from moik._jit import jit, kernel_array
-from moik.collision.compiled import CollisionSet, no_collision
+from moik.collision.compiled import CollisionSet
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
 
@@ -70,7 +70,8 @@ class IKContext(structref.StructRefProxy):
             solutions are distinct.
         max_iter: Levenberg-Marquardt iterations per start.
         collision: The collision check of an accepted end
-            (:class:`~moik.collision.compiled.CollisionSet`; no pair: none).
+            (:class:`~moik.collision.compiled.CollisionSet`, or ``None``: none; a
+            context of each kind is its own numba type).
         clearance: Smallest signed distance an accepted end keeps (robot unit).
     """
 
@@ -122,7 +123,7 @@ def ik_context(robot: Robot, target: Target, *, stop: tuple[float, float],
                         target_arrays(target),
                         (1.0 / robot.reach, float(stop[0]), float(stop[1])),
                         (float(tol[0]), float(tol[1]), float(clearance)),
-                        no_collision() if collision is None else collision,
+                        collision,
                         (float(distinct), int(max_iter)))
 
 

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from moik._jit import jit, kernel_array
-from moik.collision.compiled import set_min_distance, set_scratch
+from moik.collision.compiled import checks_pairs, end_distance, end_scratch
 from moik.kinematics.criteria import joint_distance
 from moik.kinematics.criteria_kernels import wrapped_distance
 from moik.kinematics.rotation_metrics import geodesic_angle
@@ -122,9 +122,8 @@ def run_starts(ctx, starts, policy, found, best, ends):
     tp, to = ctx.tol_position * ctx.inv_reach, ctx.tol_orientation
     tol_cost = 0.5 * (tp * tp + to * to)  # an end within both tolerances costs at most this
     ws = lm_workspace(dof)
-    cs = ctx.collision
-    collide = cs.pairs.shape[0] > 0
-    scratch = set_scratch(cs)
+    collide = checks_pairs(ctx.collision)
+    scratch = end_scratch(ctx.collision)
     n_known = 0
     while n_known < want and not np.isnan(found[n_known, 0]):
         n_known += 1
@@ -144,7 +143,7 @@ def run_starts(ctx, starts, policy, found, best, ends):
         if check and not recheck(ctx, ws, q):
             continue
         if collide:
-            ends[s, 2] = set_min_distance(cs, q, scratch)
+            ends[s, 2] = end_distance(ctx.collision, q, scratch)
             if not ends[s, 2] >= ctx.clearance:  # in collision (or NaN): not a solution
                 continue
         if not check:

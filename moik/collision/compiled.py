@@ -72,7 +72,7 @@ def checks_pairs(cs):  # pragma: no cover (compiled: see the overload)
     raise NotImplementedError("checks_pairs is called from compiled code only")
 
 
-@overload(end_distance, jit_options={"cache": True})
+@overload(end_distance)
 def _end_distance(cs, q, scratch):
     """``None`` (a solve without a check) compiles to ``inf``: the start loop of a
     collision-blind solve holds no distance code (smaller, quicker to load)."""
@@ -81,14 +81,14 @@ def _end_distance(cs, q, scratch):
     return lambda cs, q, scratch: set_min_distance(cs, q, scratch)
 
 
-@overload(end_scratch, jit_options={"cache": True})
+@overload(end_scratch)
 def _end_scratch(cs):
     if isinstance(cs, nb_types.NoneType):
         return lambda cs: 0
     return lambda cs: set_scratch(cs)
 
 
-@overload(checks_pairs, jit_options={"cache": True})
+@overload(checks_pairs)
 def _checks_pairs(cs):
     if isinstance(cs, nb_types.NoneType):
         return lambda cs: False

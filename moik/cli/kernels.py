@@ -31,7 +31,7 @@ from moik.solver.batch import solve_ik_batch
 from moik.solver.pareto import solve_ik_pareto
 from moik.solver.path import solve_path
 
-FAMILIES = ("solve", "solve-position", "unreachable", "pareto", "batch-path",
+FAMILIES = ("solve", "solve-position", "unreachable", "pareto", "batch-path", "collision",
             "algorithms-single", "algorithms-multi")
 """The workloads, one process each (see :func:`compile_family`)."""
 
@@ -55,6 +55,9 @@ def _solve_families(name: str) -> None:
                             q_current=target[1].q_source, n_solutions=5)
             solve_ik_pareto(arm, target[0].position, objectives=("limit_margin", "orientation"),
                             rotation=target[1].rotation, n_solutions=5)
+        elif name == "collision":  # the start loop with a distance test (self pairs)
+            solve_ik(arm, target[0].pose, self_collision=True)
+            solve_ik_batch(arm, np.array([t.pose for t in target]), self_collision=True)
         else:
             solve_ik_batch(arm, np.array([t.pose for t in target]))
             solve_path(arm, [t.pose for t in target])

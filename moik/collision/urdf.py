@@ -1,9 +1,10 @@
 """A :class:`CollisionModel` from a URDF's ``<collision>`` primitives.
 
 Boxes, spheres and capsules are taken as they are; cylinders become their enclosing
-capsules (:func:`moik.collision.shapes.cylinder`); meshes are skipped (moik never reads
-meshes: use a shipped capsule model, :mod:`moik.collision.catalog`, or your own capsules
-in JSON, :func:`moik.collision.io.load_model`). Bodies are named by their URDF links.
+capsules (:func:`moik.collision.shapes.cylinder`); meshes are skipped (no mesh is read
+here: use a shipped capsule model, :mod:`moik.collision.catalog`, your own capsules in
+JSON, :func:`moik.collision.io.load_model`, or capsules fitted to the meshes at build
+time, :mod:`moik.collision.fit`). Bodies are named by their URDF links.
 """
 
 from __future__ import annotations

@@ -6,8 +6,10 @@ fixed joints and the robot's own joints belongs to body ``b`` = the number of th
 robot's joints on that path (body ``b`` is frame ``b`` of :meth:`Robot.frames`). Each
 such link's ``<collision>`` elements with a primitive geometry (``box``, ``cylinder``,
 ``sphere``, ``capsule``) are returned with their pose in that body's frame; meshes are
-reported as skipped (moik never reads meshes). Plain data (dicts): the shapes are built
-by :mod:`moik.collision.urdf`.
+reported as skipped (moik never reads meshes). :func:`mesh_geometry` lists the mesh
+references themselves (file name, scale, pose on the body) for a build-time fit
+(:mod:`moik.collision.fit`); it reads no mesh either. Plain data (dicts): the shapes are
+built by :mod:`moik.collision.urdf`.
 """
 
 from __future__ import annotations
@@ -136,3 +138,37 @@ def _primitives(col: Any, link: str, body: int, offset: np.ndarray) -> list[dict
                             f"{dict(g.attrib)}") from None
         out.append(item)
     return out
+
+
+def mesh_geometry(source: Any, robot: Robot, element: str = "collision", q: Any = None
+                  ) -> tuple[list[str], list[dict[str, Any]]]:
+    """The ``<mesh>`` references of a URDF's ``<collision>`` (or ``<visual>``) elements on
+    ``robot``'s bodies; no mesh is read.
+
+    Args:
+        source, robot, q: As in :func:`collision_geometry`.
+        element: ``"collision"`` or ``"visual"``.
+
+    Returns:
+        The body names of :func:`link_placements`, and one dict per mesh: ``link``,
+        ``body``, ``filename`` (as written, e.g. ``package://...``), ``scale`` (3 floats,
+        default 1) and ``pose`` (4x4 array: the element's ``<origin>`` in body ``body``'s
+        frame; a mesh vertex ``v`` lies at ``pose @ (scale * v, 1)``).
+    """
+    if element not in ("collision", "visual"):
+        raise URDFError(f"element must be 'collision' or 'visual', got {element!r}")
+    body_names, placed = link_placements(source, robot, q)
+    root, _ = _read(source)
+    link_el = {el.get("name"): el for el in root.findall("link")}
+    out: list[dict[str, Any]] = []
+    for link, (body, offset) in placed.items():
+        for el in link_el[link].findall(element):
+            pose = offset @ _origin(el, f"{element} of link {link!r}")
+            for m in el.iter("mesh"):
+                filename = m.get("filename")
+                if not filename:
+                    raise URDFError(f"link {link!r}: a <mesh> needs a filename=")
+                scale = _floats(m.get("scale"), (1, 1, 1), f"link {link!r} mesh scale")
+                out.append({"link": link, "body": body, "filename": filename,
+                            "scale": scale, "pose": pose})
+    return body_names, out

@@ -33,6 +33,10 @@ Three sources (moik/collision/data/README.md records which one each file uses):
 The allowed-collision matrix is then sampled (:func:`moik.collision.acm.sample_allowed`,
 10,000 configurations, seed 0). Meshes are read only here, at build time; nothing is
 downloaded.
+
+The shipped ur5.json is built without ``--ur5-meshes``: one capsule per link leaves 3.9 %
+of random UR5 configurations free of self-collision (q = 0 in collision), see
+moik/collision/data/README.md.
 """
 
 from __future__ import annotations

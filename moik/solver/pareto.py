@@ -209,7 +209,7 @@ def solve_ik_pareto(robot, target, *, objectives=DEFAULT_OBJECTIVES, q_current=N
     get_algorithm(method, pop_size=pop_size)  # the algorithm's own limits on pop_size
     seeds = seed_sequence(seed)
     rng = np.random.default_rng(seeds.spawn(1)[0])
-    projector = Projector(problem)
+    projector = Projector(problem, guard)
     first = np.empty((0, robot.dof)) if problem.q_current is None else problem.q_current[None]
     redundant = robot.dof > projector.task_rows
     if not redundant:

@@ -24,6 +24,7 @@ from moik.algorithms.archive.fronts import first_unique_mask, nondominated_mask
 from moik.algorithms.registry import accepted_parameters
 from moik.problems.pareto_ik import ParetoIK
 from moik.problems.targets import Target
+from moik.solver.collision import CollisionGuard
 from moik.solver.context import ik_context
 from moik.solver.session import STOP_FRACTION, nearest_copies
 from moik.solver.starts import PATIENT, PROJECT, UNLIMITED, multistart, run_starts
@@ -40,16 +41,20 @@ class Projector:
     Args:
         problem: The :class:`~moik.problems.pareto_ik.ParetoIK` problem (target,
             tolerances, criteria, ``q_current``).
+        guard: The collision test (:class:`~moik.solver.collision.CollisionGuard`) of the
+            constraint form: an exact point below its clearance is infeasible, never
+            archived (so it cannot dominate a feasible one), and scored like a point LM
+            did not converge to, worse the deeper it is.
 
     Attributes:
-        X, F: The archive: exact, mutually non-dominated points and their criteria
-            in minimisation form.
+        X, F: The archive: exact (and with a guard collision-free), mutually
+            non-dominated points and their criteria in minimisation form.
         n_eval: FK (+ Jacobian) evaluations so far.
         n_exact: Exact points evaluated so far.
     """
 
-    def __init__(self, problem: ParetoIK):
-        self.problem, self.robot = problem, problem.robot
+    def __init__(self, problem: ParetoIK, guard: CollisionGuard | None = None):
+        self.problem, self.robot, self.guard = problem, problem.robot, guard
         self._has_rot = problem.target.rotation is not None
         self._stops = (STOP_FRACTION * problem.tol_position,
                        STOP_FRACTION * problem.tol_orientation)
@@ -106,13 +111,22 @@ class Projector:
         return np.ascontiguousarray(nearest_copies(self.robot, P, self.problem.q_current))
 
     def objectives(self, P: np.ndarray) -> np.ndarray:
-        """Criteria of exact points in minimisation form; the points enter the archive."""
+        """Criteria of exact points in minimisation form; the points enter the archive
+        (with a guard: the collision-free ones; the others get a penalty score)."""
         F = self.problem.minimization_form(self.problem.natural(P))
         if len(P):
             self.worst = np.maximum(self.worst, F.max(axis=0))
-            self._seen.append((P, F))
             self.n_exact += len(P)
-            X, Fa = np.concatenate([self.X, P]), np.concatenate([self.F, F])
+        if len(P) and self.guard is not None:  # the constraint form: infeasible rows
+            depth = self.guard.clearance - self.guard.distances(P)
+            bad = ~(depth <= 0.0)
+            F[bad] = self.worst + (1.0 + np.abs(self.worst)) * (1.0 + depth[bad, None])
+            P, F_free = P[~bad], F[~bad]
+        else:
+            F_free = F
+        if len(P):
+            self._seen.append((P, F_free))
+            X, Fa = np.concatenate([self.X, P]), np.concatenate([self.F, F_free])
             keep = nondominated_mask(Fa)
             X, Fa = X[keep], Fa[keep]
             keep = first_unique_mask(Fa)

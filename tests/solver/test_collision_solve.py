@@ -156,3 +156,18 @@ def test_pareto_clearance_criterion(world):
         _check_answer(model.robot, checker, T[0], q, 0.005)
     with pytest.raises(ParameterError, match="clearance"):
         solve_ik_pareto(model.robot, T[0], objectives=("clearance", "manipulability"))
+
+
+def test_pareto_constraint_form_keeps_feasible_members(world):
+    """Collision is a constraint of the search, not a filter at the end: a colliding exact
+    point never enters the archive, so it cannot push out the feasible ones it dominates
+    (filtered at the end, targets 1-4 here returned no member though solve_ik solves them)."""
+    model, scene, checker, T = world
+    for k in range(1, 5):
+        kwargs = {"scene": scene, "self_collision": True, "clearance": 0.01, "seed": k}
+        assert solve_ik(model.robot, T[k], **kwargs).status == "solved"
+        res = solve_ik_pareto(model.robot, T[k], objectives=("manipulability", "limit_margin"),
+                              n_solutions=10, **kwargs)
+        assert len(res.X) >= 1
+        for q in res.X:
+            _check_answer(model.robot, checker, T[k], q, 0.01)

@@ -1,12 +1,14 @@
 """EOSMA Table 8 measured against the reference fronts of P1 and P2.
 
-Run: ``.venv/bin/python -m studies.table8_truth [--runs R] [--write]`` from the
-repository root (``--write`` regenerates docs/results/table8-truth.md and its figures).
+Run: ``.venv/bin/python -m studies.table8_truth [--results DIR | --runs R] [--write]``
+from the repository root (``--write`` regenerates docs/results/table8-truth.md and its
+figures).
 
-The stored 560 trials of eosma-table8 are not in this checkout (results folders are not
-in git), so this study reruns the experiment's own trials (:func:`build_trials`, the same
-seeds, full budget: N=100, archive 100, T=1000) for runs ``0 .. R-1`` of every algorithm
-and measures each final front against the reference front (:mod:`moik.fronts`,
+With ``--results DIR`` (the folder of a finished ``moik experiment run eosma-table8``) it
+reads every stored trial's final front; otherwise (results folders are not in git) it
+reruns the experiment's own trials (:func:`build_trials`, the same seeds, full budget:
+N=100, archive 100, T=1000) for runs ``0 .. R-1`` of every algorithm. Each final front
+is measured against the reference front (:mod:`moik.fronts`,
 ``moik.problems.get_problem("eosma-p1")``): HV with the paper's reference point, that HV
 as a share of the reference front's, IGD+ to the reference front (pymoo), and the
 points that beat the reference front in both errors by more than 1e-6 of its range
@@ -24,6 +26,7 @@ import numpy as np
 from pymoo.indicators.igd_plus import IGDPlus
 
 from moik.experiments import registry
+from moik.experiments.store import ResultStore
 from moik.experiments.trials import build_trials, run_trial
 from moik.fronts import dominating_points
 from moik.metrics import hypervolume
@@ -36,31 +39,48 @@ TARGETS = (("P1", "eosma-p1"), ("P2", "eosma-p2"))
 TOL = 1e-6
 
 
-def measure(runs: int, skip: list[str]) -> dict:
+def _stored(folder: Path, skip: list[str]):
+    """``(target index, label, run, record, arrays)`` of every finished trial in ``folder``."""
+    store = ResultStore.open(folder)
+    for rec in store.records():
+        if rec["algorithm"] not in skip:
+            arrays = store.load_arrays(rec["trial"]) if rec["status"] == "ok" else {}
+            yield rec["target"], rec["algorithm"], rec["run"], rec, arrays
+
+
+def _rerun(runs: int, skip: list[str]):
+    """The same tuples from the experiment's trials ``0 .. runs - 1``, run here."""
+    cfg = registry.get_experiment("eosma-table8")
+    for spec in build_trials(cfg):
+        if spec.run < runs and spec.label not in skip:
+            record, arrays = run_trial(spec)
+            yield spec.target_index, spec.label, spec.run, record, arrays
+
+
+def measure(runs: int, skip: list[str], results: Path | None = None) -> dict:
     """Per target: the reference front and, per algorithm, its runs' numbers and run-0 front."""
     cfg = registry.get_experiment("eosma-table8")
-    specs = [s for s in build_trials(cfg) if s.run < runs and s.label not in skip]
+    trials = list(_stored(results, skip) if results is not None else _rerun(runs, skip))
     out = {}
     for ti, (tname, pname) in enumerate(TARGETS):
         ref_point = np.asarray(cfg.targets[ti].hv_ref_point, dtype=float)
         front = get_problem(pname).pareto_front()
         igd = IGDPlus(front)
         per: dict[str, dict] = {}
-        for spec in (s for s in specs if s.target_index == ti):
-            record, arrays = run_trial(spec)
+        for target, label, run, record, arrays in trials:
+            if target != ti:
+                continue
             if record["status"] != "ok":
-                print(f"{tname} {spec.label} run {spec.run}: {record.get('error')}")
+                print(f"{tname} {label} run {run}: {record.get('error')}")
                 continue
             F = np.atleast_2d(arrays["front_F"])
-            row = per.setdefault(spec.label, {"hv": [], "igd": [], "beat": [], "time": []})
+            row = per.setdefault(label, {"hv": [], "igd": [], "beat": [], "time": []})
             row["hv"].append(hypervolume(F, ref_point))
             row["igd"].append(float(igd(F)))
             row["beat"].append(len(dominating_points(front, F, TOL)))
             row["time"].append(record["time"])
-            if spec.run == 0:
+            if run == 0:
                 row["front"] = F
-            print(f"{tname} {spec.label} run {spec.run}: HV {row['hv'][-1]:.5f} IGD+ "
-                  f"{row['igd'][-1]:.3g}", flush=True)
         out[tname] = {"front": front, "ref_point": ref_point, "ref_hv":
                       hypervolume(front, ref_point), "per": per}
     return out
@@ -124,21 +144,28 @@ def main(argv: list[str] | None = None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=1)
     parser.add_argument("--skip", nargs="*", default=[], help="algorithm labels left out")
+    parser.add_argument("--results", type=Path, help="a finished eosma-table8 results folder")
     parser.add_argument("--write", action="store_true")
     args = parser.parse_args(argv)
     load = os.getloadavg()[0]
-    data = measure(args.runs, args.skip)
+    data = measure(args.runs, args.skip, args.results)
     text = "\n".join(tables(data, args.runs))
     print(text)
     if args.write:
         figures(data)
+        if args.results is not None:
+            meta = ResultStore.open(args.results).meta
+            how = (f"--results RESULTS --write` (do not edit by hand): every stored trial of "
+                   f"eosma-table8 (config fingerprint {meta['config_fingerprint'][:12]}), read "
+                   "from its results folder")
+        else:
+            how = (f"--runs {args.runs} --write` (do not edit by hand; load average {load:.1f} "
+                   f"at the start, 2 cores): runs 0 .. {args.runs - 1} of every algorithm of "
+                   "eosma-table8 (the experiment's seeds, full budget), rerun here")
         DOC.write_text(
             "# EOSMA Table 8 against the reference fronts\n\n"
-            f"Generated by `python -m studies.table8_truth --runs {args.runs}"
-            + (" --skip " + " ".join(args.skip) if args.skip else "") + " --write` (do not "
-            f"edit by hand; load average {load:.1f} at the start, 2 cores). Runs 0 .. "
-            f"{args.runs - 1} of every algorithm of eosma-table8 (the experiment's seeds, full "
-            "budget), rerun here: the stored 560 trials are not in this checkout. Left out: "
+            "Generated by `python -m studies.table8_truth "
+            + (f"--skip {' '.join(args.skip)} " if args.skip else "") + how + ". Left out: "
             f"{', '.join(args.skip) or 'none'}. See studies/table8_truth.py.\n\n" + text + "\n")
 
 

@@ -19,8 +19,8 @@ ROOT = Path(__file__).resolve().parents[1]
 DOCS = ROOT / "docs"
 EXAMPLES = sorted((DOCS / "examples").glob("*.py"))
 API = {"moik": "moik", "moik.problems": "problems", "moik.algorithms": "algorithms",
-       "moik.solver": "solver", "moik.metrics": "metrics", "moik.plotting": "plotting"}
-# "moik.collision": "collision",  (once moik.collision lands: docs/api/collision.md)
+       "moik.solver": "solver", "moik.metrics": "metrics", "moik.plotting": "plotting",
+       "moik.collision": "collision"}
 
 
 @pytest.fixture(scope="module")

@@ -14,7 +14,7 @@ permutations (``minionpy/cec_input_data/input_data_2017``, the official
 minionpy is imported when a CEC2017 problem is built, so moik works without it.
 Numbering is the official one (F2 was removed from the suite; bias 100 i).
 
-Checked against the official code: ``tests/problems/test_benchmarks_cec2017_oracle.py``
+Checked against the official code: ``tests/problems/benchmarks/test_cec2017_oracle.py``
 transcribes F3, F5, F8, F9, F14 and F27 from ``cec17_func.cpp`` in numpy, and
 minionpy agrees with it to ~1e-14 relative at D = 10, 30, 50, quirks of the C
 code included (F8's rounding step is overwritten, so F8 is the plain rotated

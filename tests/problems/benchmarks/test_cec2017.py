@@ -3,7 +3,7 @@
 Reference: Awad et al. (2016), CEC2017 problem definitions, and the official
 ``cec17_func.cpp``: F_i(o_i) = 100 i at the shift vector o_i, except F9, whose
 Levy component has its minimum at z = 1 (x = o_9 + M_9^{-1} 1). The official
-formulas are checked in ``test_benchmarks_cec2017_oracle.py``.
+formulas are checked in ``test_cec2017_oracle.py``.
 """
 
 from __future__ import annotations

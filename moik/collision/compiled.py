@@ -56,20 +56,26 @@ def collision_set(chain: tuple, shapes: tuple) -> CollisionSet:
     return _new_set(chain, shapes)
 
 
-def end_distance(cs, q, scratch):  # pragma: no cover (compiled: see the overload)
+def end_distance(cs, q, scratch):
     """Smallest signed distance of ``q`` over the pairs of ``cs`` (``inf``: ``cs`` is
-    ``None``, no check). Compiled code only."""
-    raise NotImplementedError("end_distance is called from compiled code only")
+    ``None``, no check). In compiled code the overload below specialises it on ``cs``."""
+    return np.inf if cs is None else set_min_distance(cs, q, scratch)
 
 
-def end_scratch(cs):  # pragma: no cover (compiled: see the overload)
-    """Scratch of :func:`end_distance` for ``cs``. Compiled code only."""
-    raise NotImplementedError("end_scratch is called from compiled code only")
+def end_scratch(cs):
+    """Scratch of :func:`end_distance` for ``cs`` (``0`` for ``None``: none needed)."""
+    return 0 if cs is None else set_scratch(cs)
 
 
-def checks_pairs(cs):  # pragma: no cover (compiled: see the overload)
-    """Whether ``cs`` has pairs to evaluate (``False`` for ``None``). Compiled code only."""
-    raise NotImplementedError("checks_pairs is called from compiled code only")
+def checks_pairs(cs):
+    """Whether ``cs`` has pairs to evaluate (``False`` for ``None``)."""
+    return cs is not None and n_pairs(cs) > 0
+
+
+@jit
+def n_pairs(cs):
+    """Number of pairs of ``cs`` (read in compiled code: the proxy has no field getters)."""
+    return cs.pairs.shape[0]
 
 
 @overload(end_distance)

@@ -6,7 +6,7 @@ numbers them, ``-1`` the world), local pose ``(4, 4)`` in that frame, sizes ``(3
 and the pairs ``(p, 2)`` of shape indices to evaluate. For each joint vector the chain
 is walked once (as :func:`moik.robots.fk_kernels.fk_frames_into` does, recording the joint
 axes on the way, as :mod:`moik.kinematics.jacobian` does), every shape is placed in the
-world, and every pair goes through :func:`moik.collision.distance.pair_distance`.
+world, and every pair goes through :func:`moik.collision.pairs.pair_distance`.
 
 Gradient of a pair's signed distance ``d`` with respect to ``q`` (witness points
 ``a`` on A, ``b`` on B, unit normal ``n`` from A to B): ``dd/dq_j = n . (v_j(b) - v_j(a))``
@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 
 from moik._jit import jit
-from moik.collision.distance import pair_bound, pair_distance
+from moik.collision.pairs import pair_bound, pair_distance
 from moik.robots.fk_kernels import compose, move_joint, pose_state, store_pose
 from moik.robots.transforms import PRISMATIC
 

@@ -5,7 +5,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from moik.collision.distance import BOX, CAPSULE, HALFSPACE, SPHERE, pair_bound, pair_distance
+from moik.collision.distance import BOX, CAPSULE, HALFSPACE, SPHERE
+from moik.collision.pairs import pair_bound, pair_distance
 
 coal = pytest.importorskip("coal")
 

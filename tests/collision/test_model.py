@@ -88,3 +88,16 @@ def test_self_collision_switch_and_adjacency():
     # folded back, the tool sphere meets the base sphere: a2 = 0.30 < a1 = 0.35
     d, pair = CollisionChecker(model=model).closest_pair(np.array([0.0, np.pi]))
     assert pair == ("link0[0]", "link2[2]") and d == pytest.approx(0.05 - 0.1)
+
+
+def test_end_distance_from_python_equals_the_checker():
+    """The start loop's collision test (moik.collision.compiled) called from Python: the
+    checker's minimum distance, and inf / no pairs without a collision set."""
+    from moik.collision.compiled import checks_pairs, end_distance, end_scratch
+
+    checker = CollisionChecker(model=collision_model("panda"), scene=_scene())
+    q = checker.robot.random_q(1, rng=np.random.default_rng(2))[0]
+    cs = checker.compiled
+    assert checks_pairs(cs) and not checks_pairs(None)
+    assert end_distance(cs, q, end_scratch(cs)) == checker.min_distance(q)
+    assert end_distance(None, q, end_scratch(None)) == np.inf

@@ -30,6 +30,7 @@ from moik.experiments.store import ResultStore
 from moik.experiments.trials import build_trials, run_trial
 from moik.fronts import dominating_points
 from moik.metrics import hypervolume
+from moik.plotting._common import LOG_FLOOR
 from moik.problems import get_problem
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -130,7 +131,7 @@ def figures(data: dict) -> None:
                     ax.set_xlim(-0.02 * F[:, 0].max(), 1.6 * F[:, 0].max())
                     ax.set_ylim(-0.02 * F[:, 1].max(), 1.15 * F[:, 1].max())
             else:
-                ax.plot(*np.maximum(F[0], 1e-16), "k*", ms=16, zorder=20,
+                ax.plot(*np.maximum(F[0], LOG_FLOOR), "k*", ms=16, zorder=20,
                         label="reference front (0, 0)")
             if zoom:
                 ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7)

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import cast
+from typing import Any, cast
 
 from pymoo.algorithms.moo.nsga2 import NSGA2
 from pymoo.algorithms.moo.sms import SMSEMOA
@@ -50,8 +50,8 @@ from moik.algorithms.moo.mopso_cd import MOPSOCD
 from moik.algorithms.moo.mopso_grid import MOPSO
 from moik.algorithms.moo.mosma import MOSMA
 from moik.algorithms.moo.mssa import MSSA
-from moik.algorithms.soo.bes import BES, IBES
-from moik.algorithms.soo.choa import CChOA, ChOA, MChOA, OChOA, OIChOA, WChOA
+from moik.algorithms.soo.bes import BES
+from moik.algorithms.soo.choa import ChOA
 from moik.algorithms.soo.code import CODE
 from moik.algorithms.soo.cpso_at import CPSOAT
 from moik.algorithms.soo.csa import CSA
@@ -93,12 +93,19 @@ class AlgorithmEntry:
         kind: ``"single-objective"`` or ``"multi-objective"`` (:data:`KINDS`).
         source: The paper it implements (authors, year, venue, DOI), or ``"pymoo: ..."``
             for pymoo's own algorithms.
+        preset: The classmethod of ``cls`` that builds this entry (``"ibes"`` for
+            ``BES.ibes``), or None for the plain constructor.
     """
 
     name: str
     cls: type[Algorithm]
     kind: str
     source: str
+    preset: str | None = None
+
+    def build(self, **params) -> Algorithm:
+        """An instance: ``cls(**params)``, or the preset classmethod's."""
+        return getattr(self.cls, self.preset)(**params) if self.preset else self.cls(**params)
 
 
 _YIN_2022 = "Yin et al. 2022, Sci. Rep. 12, 9421, DOI 10.1038/s41598-022-13516-3"
@@ -108,7 +115,7 @@ _SSA_2017 = ("Mirjalili et al. 2017, Adv. Eng. Softw. 114, 163-191, "
 _MCHOA = ("Hou, Luo, Wu, Sun & Zhang, Solution of Inverse Kinematics for Industry Robot "
           "Based on MChOA")
 
-_SINGLE = [
+_SINGLE: list[tuple[Any, ...]] = [
     ("eosma", EOSMA, _YIN_2022),
     ("sma", SMA, "Li et al. 2020, Future Gener. Comput. Syst. 111, 300-323, "
                  "DOI 10.1016/j.future.2020.03.055"),
@@ -144,25 +151,26 @@ _SINGLE = [
     ("ga", GA, "pymoo: genetic algorithm (SBX crossover, polynomial mutation)"),
     ("bes", BES, "Alsattar, Zaidan & Zaidan 2020, Artif. Intell. Rev. 53, 2237-2264, "
                  "DOI 10.1007/s10462-019-09732-5"),
-    ("ibes", IBES, "Zhao et al. 2024, Biomimetics 9, 627, DOI 10.3390/biomimetics9100627"),
+    ("ibes", BES, "Zhao et al. 2024, Biomimetics 9, 627, DOI 10.3390/biomimetics9100627",
+     "ibes"),
     ("fa", FA, "Yang 2009, SAGA 2009, LNCS 5792, 169-178, DOI 10.1007/978-3-642-04944-6_14"),
     ("mtsa", MTSA, "Beskirli, Ozdemir & Temurtas 2020, Neural Comput. Appl. 32, 6877-6911, "
                    "DOI 10.1007/s00521-019-04155-1"),
     ("cpso-at", CPSOAT, "Ma et al. 2019, Symmetry 11, 876, DOI 10.3390/sym11070876"),
     ("choa", ChOA, "Khishe & Mosavi 2020, Expert Syst. Appl. 149, 113338, "
                    "DOI 10.1016/j.eswa.2020.113338"),
-    ("cchoa", CChOA, f"{_MCHOA} (ablation: chaotic initialization only)"),
-    ("oichoa", OIChOA, f"{_MCHOA} (ablation: opposition-inspired coefficient only)"),
-    ("ochoa", OChOA, f"{_MCHOA} (ablation: shared random number only)"),
-    ("wchoa", WChOA, f"{_MCHOA} (ablation: adaptive leader weights only)"),
-    ("mchoa", MChOA, _MCHOA),
+    ("cchoa", ChOA, f"{_MCHOA} (ablation: chaotic initialization only)", "cchoa"),
+    ("oichoa", ChOA, f"{_MCHOA} (ablation: opposition-inspired coefficient only)", "oichoa"),
+    ("ochoa", ChOA, f"{_MCHOA} (ablation: shared random number only)", "ochoa"),
+    ("wchoa", ChOA, f"{_MCHOA} (ablation: adaptive leader weights only)", "wchoa"),
+    ("mchoa", ChOA, _MCHOA, "mchoa"),
     ("ssa", SSA, _SSA_2017),
     ("csa", CSA, "Askarzadeh 2016, Comput. Struct. 169, 1-12, "
                  "DOI 10.1016/j.compstruc.2016.03.001"),
     ("jaya", JAYA, "Rao 2016, Int. J. Ind. Eng. Comput. 7, 19-34, "
                    "DOI 10.5267/j.ijiec.2015.8.004"),
 ]
-_MULTI = [
+_MULTI: list[tuple[Any, ...]] = [
     ("moeosma", MOEOSMA, _YIN_2022),
     ("mo-m-pso", MOMPSO, _ROKBANI_2022),
     ("mssa", MSSA, _SSA_2017),
@@ -195,9 +203,9 @@ _MULTI = [
 ]
 
 _REGISTRY: dict[str, AlgorithmEntry] = {
-    name: AlgorithmEntry(name, cls, kind, source)
+    row[0]: AlgorithmEntry(row[0], row[1], kind, row[2], *row[3:])
     for kind, table in ((SINGLE_OBJECTIVE, _SINGLE), (MULTI_OBJECTIVE, _MULTI))
-    for name, cls, source in table
+    for row in table
 }
 
 # Keywords a class forwards through **kwargs to a collaborator (pymoo's DE -> Variant).
@@ -301,10 +309,10 @@ def get_algorithm(name: str, **params) -> Algorithm:
         UnknownNameError: If ``name`` is not registered (lists the valid names).
         ParameterError: For an unknown keyword or a value outside its range.
     """
-    cls = entry(name).cls
+    found = entry(name)
     keywords(f"algorithm {name!r}", params, accepted_parameters(name))
-    _check_pymoo_options(cls, params)
-    return cls(**params)
+    _check_pymoo_options(found.cls, params)
+    return found.build(**params)
 
 
 __all__ = ["KINDS", "MULTI_OBJECTIVE", "SINGLE_OBJECTIVE", "AlgorithmEntry",

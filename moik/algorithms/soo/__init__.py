@@ -1,7 +1,7 @@
 """Single-objective algorithms, one module each (registered in :mod:`moik.algorithms.registry`)."""
 
-from moik.algorithms.soo.bes import BES, IBES
-from moik.algorithms.soo.choa import CChOA, ChOA, MChOA, OChOA, OIChOA, WChOA
+from moik.algorithms.soo.bes import BES
+from moik.algorithms.soo.choa import ChOA
 from moik.algorithms.soo.code import CODE
 from moik.algorithms.soo.cpso_at import CPSOAT
 from moik.algorithms.soo.csa import CSA
@@ -27,6 +27,6 @@ from moik.algorithms.soo.sma import SMA
 from moik.algorithms.soo.ssa import SSA
 from moik.algorithms.soo.tlbo import TLBO
 
-__all__ = ["BES", "CODE", "CPSOAT", "CSA", "DE", "EO", "EOSMA", "FA", "FPA", "GBO", "HHO", "IBES",
+__all__ = ["BES", "CODE", "CPSOAT", "CSA", "DE", "EO", "EOSMA", "FA", "FPA", "GBO", "HHO",
            "IGWO", "JAYA", "MPA", "MPSO", "MRFO", "MTDE", "MTSA", "PFA", "PSO", "PSOGSA", "SASS",
-           "SMA", "SSA", "TLBO", "CChOA", "ChOA", "MChOA", "OChOA", "OIChOA", "WChOA"]
+           "SMA", "SSA", "TLBO", "ChOA"]

@@ -46,8 +46,6 @@ Readings and deviations:
 
 from __future__ import annotations
 
-from typing import TypedDict
-
 import numpy as np
 
 from moik._validate import flag, interval, positive
@@ -115,15 +113,8 @@ def random_replacement(X_new, xl, xu, *, rng: np.random.Generator) -> np.ndarray
     return np.where(out, xl + k * (xu - xl), X_new)
 
 
-class BESPreset(TypedDict):
-    """The defaults a class fixes for ``levy`` and ``bounds`` (BES, I-BES)."""
-
-    levy: bool
-    bounds: str
-
-
 class BES(ArrayAlgorithm):
-    """Bald eagle search with array state; ``IBES`` is the I-BES preset.
+    """Bald eagle search with array state; ``BES.ibes()`` builds the I-BES preset.
 
     ``X``/``F``/``CV`` is the population after the greedy replacements.
 
@@ -135,22 +126,20 @@ class BES(ArrayAlgorithm):
         c1: Mean learning factor of Eq. 7, in [1, 2] (paper: 1.5).
         c2: Best learning factor of Eq. 7, in [1, 2] (paper: 1.5).
         levy: Use the I-BES Levy-flight search phase (Eqs. 9-10) in place of the
-            spiral (None: the class preset, False for BES).
+            spiral (False for BES).
         beta: Levy exponent in (0, 2] (paper: 1.5).
         levy_scale: Factor of the Levy step, > 0 (Eq. 9 prints 0.01; 1.0 is the
             reading measured by the ``ibes-table8-levy`` experiment).
-        bounds: ``"clip"`` (BES code) or ``"random"`` (I-BES Eq. 13); None: the
-            class preset.
+        bounds: ``"clip"`` (BES code) or ``"random"`` (I-BES Eq. 13).
         X0: Optional initial points.
         **kwargs: pymoo ``Algorithm`` options.
     """
 
     min_pop_size = 3
-    preset: BESPreset = {"levy": False, "bounds": "clip"}
 
     def __init__(self, *, pop_size: int = 150, alpha: float = 1.8, a: float = 8.0,
-                 R: float = 1.4, c1: float = 1.5, c2: float = 1.5, levy: bool | None = None,
-                 beta: float = 1.5, levy_scale: float = 0.01, bounds: str | None = None,
+                 R: float = 1.4, c1: float = 1.5, c2: float = 1.5, levy: bool = False,
+                 beta: float = 1.5, levy_scale: float = 0.01, bounds: str = "clip",
                  X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, **kwargs)
         self.alpha = interval("alpha", alpha, 1.5, 2.0)
@@ -160,12 +149,20 @@ class BES(ArrayAlgorithm):
         self.c2 = interval("c2", c2, 1.0, 2.0)
         self.beta = interval("beta", beta, 0.0, 2.0, lo_open=True)
         self.levy_scale = positive("levy_scale", levy_scale)
-        levy = flag("levy", self.preset["levy"] if levy is None else levy)
-        bounds = self.preset["bounds"] if bounds is None else bounds
+        levy = flag("levy", levy)
         if bounds not in BOUND_HANDLING:
             raise ParameterError(f"bounds must be one of {', '.join(BOUND_HANDLING)}, "
                                  f"got {bounds!r}")
         self.levy, self.bounds = bool(levy), bounds
+
+    @classmethod
+    def ibes(cls, **kwargs) -> BES:
+        """I-BES (Zhao et al. 2024): the Levy search phase (Eqs. 9-10) and the Eq. 13 bounds.
+
+        Args:
+            **kwargs: Any :class:`BES` keyword; ``levy`` and ``bounds`` override the preset.
+        """
+        return cls(**{"levy": True, "bounds": "random", **kwargs})
 
     def _evals_per_iteration(self) -> float:
         return 3.0 * self.pop_size - (0 if self.levy else 1)
@@ -204,9 +201,3 @@ class BES(ArrayAlgorithm):
                               c1=self.c1, c2=self.c2, rng=rng))
         F, CV = yield X
         self._accept(slice(None), X, F, CV)
-
-
-class IBES(BES):
-    """I-BES (Zhao et al. 2024): BES with the Levy search phase and Eq. 13 bounds."""
-
-    preset: BESPreset = {"levy": True, "bounds": "random"}

@@ -153,8 +153,8 @@ def chimp_update(X, leaders, m, f: float, Cg, *, opposition: bool, shared: bool,
 class ChOA(ArrayAlgorithm):
     """Chimp optimization with MChOA's four improvements as switches.
 
-    A switch left as None takes the class preset (all off for ``ChOA``; the
-    named subclasses CChOA, OIChOA, OChOA, WChOA, MChOA turn theirs on).
+    Every switch is off by default (plain ChOA); the classmethods ``cchoa``,
+    ``oichoa``, ``ochoa``, ``wchoa`` and ``mchoa`` build the paper's variants.
     Extra public arrays: ``leaders_X``/``leaders_F`` (the four best so far).
 
     Args:
@@ -172,12 +172,11 @@ class ChOA(ArrayAlgorithm):
     """
 
     min_pop_size = 4
-    preset: dict[str, bool] = {}
 
     def __init__(self, *, pop_size: int = 50, f_max: float = 2.5, chaotic_map: str = "gauss",
-                 b: float = 0.7, chaotic_init: bool | None = None,
-                 oi_coefficient: bool | None = None, shared_random: bool | None = None,
-                 weighted: bool | None = None, f_opt: float = 0.0,
+                 b: float = 0.7, chaotic_init: bool = False,
+                 oi_coefficient: bool = False, shared_random: bool = False,
+                 weighted: bool = False, f_opt: float = 0.0,
                  max_iter: int | None = None, X0: np.ndarray | None = None, **kwargs):
         super().__init__(pop_size=pop_size, X0=X0, max_iter=max_iter, **kwargs)
         self.f_max = interval("f_max", f_max, 0.0, 5.0, lo_open=True)
@@ -190,10 +189,34 @@ class ChOA(ArrayAlgorithm):
         given = dict(zip(SWITCHES, (chaotic_init, oi_coefficient, shared_random, weighted),
                          strict=True))
         for name, value in given.items():
-            value = self.preset.get(name, False) if value is None else value
             if not isinstance(value, (bool, np.bool_)):
-                raise ParameterError(f"{name} must be True, False or None, got {value!r}")
+                raise ParameterError(f"{name} must be True or False, got {value!r}")
             setattr(self, name, bool(value))
+
+    @classmethod
+    def cchoa(cls, **kwargs) -> ChOA:
+        """CChOA: the chaotic (Iteration map) initialization, Eqs. 13-14."""
+        return cls(**{"chaotic_init": True, **kwargs})
+
+    @classmethod
+    def oichoa(cls, **kwargs) -> ChOA:
+        """OIChOA: the opposition-inspired coefficient a, Eq. 18."""
+        return cls(**{"oi_coefficient": True, **kwargs})
+
+    @classmethod
+    def ochoa(cls, **kwargs) -> ChOA:
+        """OChOA: one shared random number of a for the four leaders."""
+        return cls(**{"shared_random": True, **kwargs})
+
+    @classmethod
+    def wchoa(cls, **kwargs) -> ChOA:
+        """WChOA: the adaptive leader weights, Eqs. 19-21."""
+        return cls(**{"weighted": True, **kwargs})
+
+    @classmethod
+    def mchoa(cls, **kwargs) -> ChOA:
+        """MChOA (Hou et al.): all four improvements; a keyword turns one off."""
+        return cls(**{**dict.fromkeys(SWITCHES, True), **kwargs})
 
     def _initialize_infill(self):
         pop = super()._initialize_infill()
@@ -234,33 +257,3 @@ class ChOA(ArrayAlgorithm):
         self.X, self.F, self.CV = X, F, CV
         self.leaders_X, self.leaders_F, self.leaders_CV = update_pool(
             self.leaders_X, self.leaders_F, self.leaders_CV, X, F, CV)
-
-
-class CChOA(ChOA):
-    """ChOA with the chaotic (Iteration map) initialization, Eqs. 13-14."""
-
-    preset = {"chaotic_init": True}
-
-
-class OIChOA(ChOA):
-    """ChOA with the opposition-inspired coefficient a, Eq. 18."""
-
-    preset = {"oi_coefficient": True}
-
-
-class OChOA(ChOA):
-    """ChOA with one shared random number of a for the four leaders."""
-
-    preset = {"shared_random": True}
-
-
-class WChOA(ChOA):
-    """ChOA with the adaptive leader weights, Eqs. 19-21."""
-
-    preset = {"weighted": True}
-
-
-class MChOA(ChOA):
-    """MChOA: all four improvements (Hou et al.)."""
-
-    preset = dict.fromkeys(SWITCHES, True)

@@ -12,7 +12,7 @@ import pytest
 from pymoo.optimize import minimize
 
 import moik
-from moik.algorithms import BES, IBES, get_algorithm
+from moik.algorithms import BES, get_algorithm
 from moik.algorithms.soo.bes import (
     levy_sigma,
     levy_step,
@@ -71,7 +71,7 @@ def test_swoop_eq7():
     np.testing.assert_allclose(out[:, 0], expected, rtol=1e-14)
 
 
-@pytest.mark.parametrize(("cls", "per_iteration"), [(BES, 29), (IBES, 30)])
+@pytest.mark.parametrize(("cls", "per_iteration"), [(BES, 29), (BES.ibes, 30)])
 def test_evaluations_per_iteration_and_exact_budget(sphere, cls, per_iteration):
     res = minimize(sphere(), cls(pop_size=10), ("n_gen", 5), seed=0)
     assert res.algorithm.evaluator.n_eval == 10 + 4 * per_iteration
@@ -90,21 +90,24 @@ def test_deterministic_in_bounds_greedy(sphere, name):
 
 
 def test_presets_and_validation():
-    assert (BES().levy, BES().bounds, IBES().levy, IBES().bounds) == (
+    assert (BES().levy, BES().bounds, BES.ibes().levy, BES.ibes().bounds) == (
         False, "clip", True, "random")
-    assert IBES(bounds="clip").bounds == "clip"
-    b = IBES()
+    assert BES.ibes(bounds="clip").bounds == "clip"
+    built = get_algorithm("ibes", pop_size=20)
+    assert type(built) is BES and (built.levy, built.bounds, built.pop_size) == (
+        True, "random", 20)
+    b = BES.ibes()
     assert (b.pop_size, b.c1, b.c2, b.R, b.alpha, b.a, b.beta) == (150, 1.5, 1.5, 1.4, 1.8,
                                                                      8.0, 1.5)
     with pytest.raises(ParameterError, match=r"alpha must be a number in \[1.5, 2.0\]"):
         BES(alpha=3)
     with pytest.raises(ParameterError, match="bounds must be one of clip, random"):
-        IBES(bounds="wrap")
+        BES.ibes(bounds="wrap")
     with pytest.raises(ParameterError, match="levy must be True or False"):
         BES(levy="yes")
 
 
-@pytest.mark.parametrize("cls", [BES, IBES])
+@pytest.mark.parametrize("cls", [BES, BES.ibes])
 def test_sphere_10d_below_1e_6_within_30k(check, cls):
     check.solves_sphere(lambda: cls(pop_size=30), level=1e-6)
 
@@ -113,10 +116,10 @@ def test_sphere_10d_below_1e_6_within_30k(check, cls):
 def test_ibes_on_classical_benchmarks(check, name, level):
     """F9 (Rastrigin, 10-D): the greedy phases settle in a local basin; over seeds 0-4
     I-BES reaches 6-35 with 15,000 evaluations (BES 0-22), so the level is 40."""
-    check.classical_benchmark(lambda: IBES(pop_size=30), name, level=level)
+    check.classical_benchmark(lambda: BES.ibes(pop_size=30), name, level=level)
 
 
-@pytest.mark.parametrize("cls", [BES, IBES])
+@pytest.mark.parametrize("cls", [BES, BES.ibes])
 def test_spring_best_design_is_feasible(check, cls):
     res = check.spring_feasible(lambda: cls(pop_size=30), n_eval=15_000)
     assert res.F[0] < 0.0135  # best known 0.012665
@@ -124,14 +127,14 @@ def test_spring_best_design_is_feasible(check, cls):
 
 def test_ibes_planar2_position_target_below_1e_12_m():
     problem = moik.problems.PositionIK(moik.robots.get_robot("planar2"), [0.35, 0.35, 0.0])
-    res = minimize(problem, IBES(pop_size=30), ("n_gen", 100), seed=0)
+    res = minimize(problem, BES.ibes(pop_size=30), ("n_gen", 100), seed=0)
     assert res.F[0] < 1e-12
     assert np.all(np.abs(res.X) <= math.pi)
 
 
 def test_levy_scale_reading_multiplies_the_eq9_step():
-    assert IBES().levy_scale == 0.01  # Eq. 9 as printed
+    assert BES.ibes().levy_scale == 0.01  # Eq. 9 as printed
     L = levy_step((1, 2), 1.5, rng=ScriptedRng([[1.0, -2.0]], [[0.125, -1.0]]), scale=1.0)
     np.testing.assert_allclose(L, [[levy_sigma(1.5) * 4.0, -2.0 * levy_sigma(1.5)]], rtol=1e-14)
     with pytest.raises(ParameterError, match="levy_scale must be a positive finite number"):
-        IBES(levy_scale=0.0)
+        BES.ibes(levy_scale=0.0)

@@ -11,8 +11,9 @@ import numpy as np
 import pytest
 from pymoo.optimize import minimize
 
-from moik.algorithms import CChOA, ChOA, MChOA, OChOA, OIChOA, WChOA, get_algorithm
+from moik.algorithms import ChOA, get_algorithm
 from moik.algorithms.soo.choa import (
+    SWITCHES,
     adaptive_weights,
     chaotic_population,
     chaotic_step,
@@ -87,15 +88,18 @@ def test_oi_coefficient_eq18_is_symmetric():
 
 def test_presets_switches_and_validation():
     assert not any([ChOA().chaotic_init, ChOA().weighted])
-    assert (CChOA().chaotic_init, OIChOA().oi_coefficient, OChOA().shared_random,
-            WChOA().weighted) == (True, True, True, True)
-    m = MChOA(weighted=False)
+    assert (ChOA.cchoa().chaotic_init, ChOA.oichoa().oi_coefficient,
+            ChOA.ochoa().shared_random, ChOA.wchoa().weighted) == (True, True, True, True)
+    for name in ("cchoa", "oichoa", "ochoa", "wchoa", "mchoa"):
+        built, preset = get_algorithm(name, pop_size=8), getattr(ChOA, name)(pop_size=8)
+        assert [getattr(built, s) for s in SWITCHES] == [getattr(preset, s) for s in SWITCHES]
+    m = ChOA.mchoa(weighted=False)
     assert (m.chaotic_init, m.oi_coefficient, m.shared_random, m.weighted) == (
         True, True, True, False)
     assert ChOA().f_max == 2.5 and ChOA().pop_size == 50
     with pytest.raises(ParameterError, match="chaotic_map must be one of gauss"):
         ChOA(chaotic_map="tent")
-    with pytest.raises(ParameterError, match="weighted must be True, False or None"):
+    with pytest.raises(ParameterError, match="weighted must be True or False"):
         ChOA(weighted=1)
 
 

@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 
 from moik._validate import number
+from moik.cli.parser import given, library_default
 from moik.collision.catalog import collision_model
 from moik.collision.io import load_scene
 from moik.collision.model import CollisionChecker
@@ -31,8 +32,9 @@ def checker(args: argparse.Namespace, robot: Robot) -> tuple[CollisionChecker, f
     """The checker and clearance of ``--scene``, or None without it (built before solving)."""
     if getattr(args, "scene", None) is None:
         return None
+    clearance = given(args, "clearance").get("clearance", library_default("clearance"))
     return (CollisionChecker(model=collision_model(robot), scene=load_scene(args.scene)),
-            number("--clearance", args.clearance, minimum=0.0))
+            number("--clearance", clearance, minimum=0.0))
 
 
 def solver_options(check: tuple[CollisionChecker, float] | None) -> dict[str, Any]:

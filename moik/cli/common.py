@@ -62,13 +62,21 @@ def joint_values(robot: Robot, values, degrees: bool, what: str) -> np.ndarray:
     return q
 
 
+def tolerance(values: list[float]) -> float | tuple[float, ...]:
+    """``--tol``'s one number (relative) or two (position, orientation) as ``tol=``."""
+    if len(values) > 2:
+        raise ParameterError(f"--tol takes 1 number (relative) or 2 (position in the robot's "
+                             f"unit, orientation in rad), got {len(values)}")
+    return values[0] if len(values) == 1 else tuple(values)
+
+
 SOLVE_OPTIONS = {"q_current": "--q-current", "n_solutions": "--n-solutions",
                  "max_evals": "--max-evals", "starts": "--starts", "tol": "--tol",
-                 "seed": "--seed"}
+                 "seed": "--seed", "method": "--algorithm"}
 """``solve_ik``'s keywords and the ``solve`` options that give them."""
 
-PARETO_OPTIONS = {"q_current": "--q-current", "n_solutions": "--pareto-size",
-                  "seed": "--seed"}
+PARETO_OPTIONS = {"q_current": "--q-current", "n_solutions": "--pareto-size", "tol": "--tol",
+                  "seed": "--seed", "method": "--algorithm"}
 """``solve_ik_pareto``'s keywords and the ``solve --pareto`` options that give them."""
 
 

@@ -17,7 +17,8 @@ from pathlib import Path
 
 import numpy as np
 
-from moik.cli.common import PARETO_OPTIONS, joint_values, library_call
+from moik.cli.common import PARETO_OPTIONS, joint_values, library_call, tolerance
+from moik.cli.parser import given
 from moik.cli.solutions import euler_angles
 from moik.cli.solutions import target as target_of
 from moik.exceptions import ParameterError
@@ -51,10 +52,13 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
                                      degrees=args.deg).rotation
     q_current = (None if args.q_current is None
                  else joint_values(robot, args.q_current, args.deg, "--q-current"))
+    options = given(args, "pareto_size", "pareto_method", "seed", "tol")
+    if "tol" in options:
+        options["tol"] = tolerance(options["tol"])
     with library_call(PARETO_OPTIONS):
         res = solve_ik_pareto(robot, target, objectives=parse_criteria(args.pareto),
-                              q_current=q_current, n_solutions=args.pareto_size,
-                              seed=args.seed, method=args.pareto_method, rotation=rotation)
+                              q_current=q_current, rotation=rotation,
+                              **options)
     index = res.compromise_index() if len(res.X) else None
     plots = []
     if args.plot and len(res.X):

@@ -30,6 +30,48 @@ def positive_int(text: str) -> int:
     return value
 
 
+LIBRARY_DEFAULTS = {"max_evals": ("solve_ik", "max_evals"), "method": ("solve_ik", "method"),
+                    "starts": ("solve_ik", "starts"), "seed": ("solve_ik", "seed"),
+                    "n_solutions": ("solve_ik", "n_solutions"),
+                    "clearance": ("solve_ik", "clearance"), "tol": ("solve_ik", "tol"),
+                    "pareto_size": ("solve_ik_pareto", "n_solutions"),
+                    "pareto_method": ("solve_ik_pareto", "method")}
+"""``solve`` options left None when not given (the library's default applies), by
+argparse ``dest``: the function and keyword they give. The library's signature is
+the one place a default is written; the help text reads it from there."""
+
+
+def library_default(dest: str):
+    """The default of the library keyword behind the ``solve`` option ``dest``.
+
+    Imported when help is shown, not when the parser is built (``moik --help`` and
+    ``moik robots`` need no solver).
+    """
+    import inspect
+
+    from moik import solver
+
+    function, keyword = LIBRARY_DEFAULTS[dest]
+    return inspect.signature(getattr(solver, function)).parameters[keyword].default
+
+
+def given(args: argparse.Namespace, *dests: str) -> dict:
+    """``{library keyword: value}`` of the options ``dests`` the command line gave (a
+    missing one is left to the library's default)."""
+    return {LIBRARY_DEFAULTS[d][1]: getattr(args, d) for d in dests
+            if getattr(args, d, None) is not None}
+
+
+class LibraryDefaultsFormatter(argparse.HelpFormatter):
+    """Help text whose ``{default}`` is :func:`library_default` of the option."""
+
+    def _get_help_string(self, action: argparse.Action) -> str | None:
+        text = action.help
+        if text and "{default}" in text:
+            text = text.replace("{default}", str(library_default(action.dest)))
+        return text
+
+
 def _robot_arguments(p: argparse.ArgumentParser, optional: bool = False) -> None:
     p.add_argument("robot", nargs="?" if optional else None,
                    help="catalog name (see `moik robots`) or URDF file")
@@ -55,20 +97,22 @@ def _solve_arguments(p: argparse.ArgumentParser) -> None:
                    help="JSON scene of obstacles: solve for collision-free solutions (scene and "
                         "self pairs, shipped capsule models of the catalog arms) and report "
                         "each one's distance; status collides (exit 1) if all exact ones collide")
-    p.add_argument("--clearance", type=float, default=0.0, metavar="D",
-                   help="with --scene: the smallest accepted distance (robot unit, >= 0)")
+    p.add_argument("--clearance", type=float, metavar="D",
+                   help="with --scene: the smallest accepted distance (robot unit, >= 0; "
+                        "default {default})")
     p.add_argument("--tol", nargs="+", type=float, metavar="TOL",
                    help="tolerance: one number t (position t*reach, orientation t rad; default "
-                        "1e-9) or two (position in the robot's unit, orientation in rad)")
-    p.add_argument("--max-evals", type=int, default=50_000,
-                   help="FK evaluation budget (default 50000)")
-    p.add_argument("--algorithm", default="eosma",
-                   help="global search algorithm, used when the local starts fail (default eosma)")
-    p.add_argument("--starts", type=int, default=500,
+                        "{default}) or two (position in the robot's unit, orientation in rad)")
+    p.add_argument("--max-evals", type=int, help="FK evaluation budget (default {default})")
+    p.add_argument("--algorithm", dest="method",
+                   help="global search algorithm, used when the local starts fail (default "
+                        "{default})")
+    p.add_argument("--starts", type=int,
                    help="random starts of the compiled Levenberg-Marquardt first stage, tried "
-                        "in turn until solved (default 500; 0: the global search only)")
-    p.add_argument("--seed", type=int, default=0, help="random seed, an integer >= 0 (default 0)")
-    p.add_argument("--n-solutions", type=int, default=1, help="distinct solutions wanted")
+                        "in turn until solved (default {default}; 0: the global search only)")
+    p.add_argument("--seed", type=int, help="random seed, an integer >= 0 (default {default})")
+    p.add_argument("--n-solutions", type=int,
+                   help="distinct solutions wanted (default {default})")
     p.add_argument("--plot", metavar="FILE",
                    help="save a 3-D drawing: FILE.png, .pdf or .svg (no extension: .png and .pdf)")
     p.add_argument("--html", metavar="FILE",
@@ -81,10 +125,10 @@ def _solve_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--preferred-euler", nargs=3, type=float, metavar=("A", "B", "C"),
                    help="with --pareto: preferred orientation of a position target (the "
                         "'orientation' criterion), Euler angles as --euler")
-    p.add_argument("--pareto-size", type=int, default=20,
-                   help="most members returned with --pareto (default 20)")
-    p.add_argument("--pareto-method", default="moeosma",
-                   help="multi-objective algorithm of the --pareto search (default moeosma)")
+    p.add_argument("--pareto-size", type=int,
+                   help="most members returned with --pareto (default {default})")
+    p.add_argument("--pareto-method",
+                   help="multi-objective algorithm of the --pareto search (default {default})")
 
 
 def _experiment_arguments(sub) -> None:
@@ -160,7 +204,8 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("algorithms", help="list the registered algorithms (name, kind, source)")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(handler="algorithms:cmd_algorithms")
-    p = sub.add_parser("solve", help="solve inverse kinematics for one target")
+    p = sub.add_parser("solve", help="solve inverse kinematics for one target",
+                       formatter_class=LibraryDefaultsFormatter)
     _solve_arguments(p)
     p.set_defaults(handler="solve:cmd_solve")
     p = sub.add_parser("compile", help="compile every kernel family once, in parallel "

@@ -14,7 +14,8 @@ import numpy as np
 
 from moik._validate import integer
 from moik.cli import collision, pareto, solutions
-from moik.cli.common import SOLVE_OPTIONS, joint_values, library_call, robot
+from moik.cli.common import SOLVE_OPTIONS, joint_values, library_call, robot, tolerance
+from moik.cli.parser import given
 from moik.cli.solutions import target
 from moik.exceptions import ParameterError
 from moik.plotting.explorer import pareto_explorer
@@ -50,21 +51,16 @@ def plot_files(spec: str | None) -> list[Path]:
     return [path] if suffix else [path.with_name(path.name + ext) for ext in (".png", ".pdf")]
 
 
-def _tol(values: list[float] | None):
-    if values is None:
-        return 1e-9
-    if len(values) > 2:
-        raise ParameterError(f"--tol takes 1 number (relative) or 2 (position in the robot's "
-                             f"unit, orientation in rad), got {len(values)}")
-    return values[0] if len(values) == 1 else tuple(values)
-
-
 def cmd_solve(args: argparse.Namespace) -> int:
     """Solve, print (text or JSON), optionally plot; 0 when solved, 1 otherwise (``collides``
     included)."""
     if args.pareto:
         return pareto.run_pareto(args, robot=robot(args))
-    seed = integer("--seed", args.seed, minimum=0)
+    search = given(args, "method", "n_solutions", "starts", "max_evals", "seed", "tol")
+    if "seed" in search:
+        integer("--seed", search["seed"], minimum=0)
+    if "tol" in search:
+        search["tol"] = tolerance(search["tol"])
     plots = plot_files(args.plot)
     html = pareto.html_file(args.html)
     arm = robot(args)
@@ -73,9 +69,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
                  else joint_values(arm, args.q_current, args.deg, "--q-current"))
     check = collision.checker(args, arm)
     with library_call(SOLVE_OPTIONS):
-        res = solve_ik(arm, goal, method=args.algorithm, seed=seed, tol=_tol(args.tol),
-                       n_solutions=args.n_solutions, starts=args.starts,
-                       max_evals=args.max_evals, q_current=q_current,
+        res = solve_ik(arm, goal, q_current=q_current, **search,
                        **collision.solver_options(check))
     Q = res.solutions if len(res.solutions) else res.q[None]
     pos, ori = pose_errors(arm, goal, Q[1:]) if len(Q) > 1 else ((), ())
@@ -85,7 +79,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
         _plot(arm, goal, Q, res.status, plots)
     near = None if check is None else collision.distances(check, Q)
     if args.json:
-        solutions.print_solve_json(arm, goal, res, errors, plots, args.n_solutions,
+        solutions.print_solve_json(arm, goal, res, errors, plots, res.n_requested,
                                    collision=near)
     else:
         solutions.print_solve(arm, goal, res, Q, errors, plots)

@@ -362,6 +362,26 @@ def test_the_parser_help_names_match_the_library():
     assert tuple(CRITERIA) == CRITERIA_NAMES and EXPERIMENTS_ENV == ENV_VAR
 
 
+def test_solve_help_shows_the_librarys_defaults(capsys):
+    """The parser writes no default of its own: ``moik solve --help`` reads each from the
+    signature of solve_ik / solve_ik_pareto, and an option not given is not passed."""
+    import inspect
+
+    from moik.cli.parser import LIBRARY_DEFAULTS, build_parser, given
+    from moik.solver import solve_ik, solve_ik_pareto
+
+    with pytest.raises(SystemExit):
+        main(["solve", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    functions = {"solve_ik": solve_ik, "solve_ik_pareto": solve_ik_pareto}
+    for dest, (function, keyword) in LIBRARY_DEFAULTS.items():
+        default = inspect.signature(functions[function]).parameters[keyword].default
+        assert f"default {default}" in text, dest
+    args = build_parser().parse_args(["solve", "panda", "--target", "0.4", "0.1", "0.5",
+                                      "--starts", "7"])
+    assert given(args, *LIBRARY_DEFAULTS) == {"starts": 7}
+
+
 @pytest.mark.parametrize(("argv", "absent"), [
     (["--help"], ["numpy", "numba", "scipy", "pymoo"]),
     (["robots"], ["numba", "scipy", "pymoo"]),

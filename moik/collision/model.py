@@ -25,7 +25,7 @@ import numpy as np
 
 from moik._validate import flag
 from moik.collision import kernels
-from moik.collision.compiled import CollisionSet, collision_set
+from moik.collision.compiled import CollisionSet, collision_set, set_min_distances
 from moik.collision.shapes import HalfSpace, Shape, shape_arrays
 from moik.exceptions import GeometryError, UnknownNameError
 from moik.robots.chain import Robot
@@ -233,8 +233,8 @@ class CollisionChecker:
     def min_distance_batch(self, Q: np.ndarray) -> np.ndarray:
         """:meth:`min_distance` of a 2-D batch without the finiteness check (hot path)."""
         Q2 = self.robot.kernel_batch(Q)
-        d, which = np.empty(Q2.shape[0]), np.empty(Q2.shape[0], dtype=np.int64)
-        kernels.min_distances(*self._args, Q2, *self._shape_args, d, which)
+        d = np.empty(Q2.shape[0])
+        set_min_distances(self.compiled, Q2, d)
         return d
 
     def closest_pair(self, q) -> tuple[float, tuple[str, str] | None]:

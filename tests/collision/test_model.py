@@ -101,3 +101,7 @@ def test_end_distance_from_python_equals_the_checker():
     assert checks_pairs(cs) and not checks_pairs(None)
     assert end_distance(cs, q, end_scratch(cs)) == checker.min_distance(q)
     assert end_distance(None, q, end_scratch(None)) == np.inf
+    Q = checker.robot.random_q(50, rng=np.random.default_rng(3))
+    np.testing.assert_array_equal(checker.min_distance_batch(Q), checker.min_distance(Q))
+    empty = CollisionChecker(model=collision_model("panda"), self_collision=False)
+    assert np.all(empty.min_distance_batch(Q[:3]) == np.inf)

@@ -10,7 +10,8 @@ ORDER = ("exceptions", "_validate", "_jit", "_version", "_lazy", "robots", "kine
          "collision", "fronts", "problems")
 INDEPENDENT = {"algorithms": {"algorithms", "exceptions", "_validate", "_jit"},
                "metrics": {"metrics", "exceptions", "_validate", "_jit"}}
-LAZY = {("cli", "moik.plotting")}  # matplotlib only when a plot is asked for
+LAZY = {("cli", "moik.plotting"),  # matplotlib only when a plot is asked for
+        ("cli", "moik.solver")}  # the parser reads the solver's defaults only for `solve --help`
 
 
 def _graph():

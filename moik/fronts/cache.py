@@ -19,10 +19,12 @@ import json
 import os
 import tempfile
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
 from moik.fronts.front import METHOD_VERSION, ReferenceFront, bi_objective_front
+from moik.fronts.motion import motion_front
 from moik.robots.chain import Robot
 
 FRONT_SEED = 20240  # the random starts' seed of every cached front
@@ -36,11 +38,19 @@ def cache_dir() -> Path:
     return Path(base) / "moik" / "fronts"
 
 
-def fingerprint(robot: Robot, position, rotation, metric: str, settings: dict) -> str:
-    """A hex digest of what the front depends on (not of the robot's name or source)."""
+MOTION_SETTINGS: dict[str, Any] = {"levels": 12, "motion_levels": 12, "starts": 8,
+                                   "tol": 1e-9, "seed": FRONT_SEED}
+"""The settings of a three-objective front (:func:`moik.fronts.motion.motion_front`)."""
+
+
+def fingerprint(robot: Robot, position, rotation, metric: str, settings: dict,
+                q_start=None) -> str:
+    """A hex digest of what the front depends on (not of the robot's name or source);
+    ``q_start``: the three-objective front's start configuration (None: bi-objective)."""
     chain = robot.kinematic_chain
     h = hashlib.sha256()
-    for a in (chain.origins, chain.joint_types, robot.lower, robot.upper, position, rotation):
+    arrays = [chain.origins, chain.joint_types, robot.lower, robot.upper, position, rotation]
+    for a in arrays if q_start is None else [*arrays, q_start]:
         arr = np.ascontiguousarray(np.asarray(a, dtype=float))
         h.update(str(arr.shape).encode())
         h.update(arr.tobytes())
@@ -108,12 +118,37 @@ def cached_front(robot: Robot, position, rotation, *, metric: str, levels: int =
     return front
 
 
-def ship(robot: Robot, position, rotation, *, metric: str,
+def cached_motion_front(robot: Robot, position, rotation, q_start, *, metric: str,
+                        use_cache: bool = True) -> ReferenceFront:
+    """:func:`~moik.fronts.motion.motion_front` with :data:`MOTION_SETTINGS`, read from
+    the shipped data or the disk cache when there (as :func:`cached_front`)."""
+    q_start = np.asarray(q_start, dtype=float)
+    key = fingerprint(robot, position, rotation, metric, MOTION_SETTINGS, q_start)
+    path = cache_dir() / f"{key}.npz"
+    for where in (SHIPPED / f"{key}.npz", path) if use_cache else ():
+        front = _load(where, key) if where.is_file() else None
+        if front is not None:
+            return front
+    settings = {k: v for k, v in MOTION_SETTINGS.items() if k != "seed"}
+    front = motion_front(robot, position, rotation, q_start, metric=metric, **settings,
+                         rng=np.random.default_rng(FRONT_SEED))
+    if use_cache:
+        store(path, key, front)
+    return front
+
+
+def ship(robot: Robot, position, rotation, *, metric: str, q_start=None,
          directory: Path = SHIPPED) -> tuple[ReferenceFront, Path]:
-    """Compute the front with :func:`cached_front`'s default settings (cache not read)
-    and store it in ``directory`` (the shipped data by default) under its fingerprint."""
-    key = fingerprint(robot, position, rotation, metric, DEFAULT_SETTINGS)
-    front = cached_front(robot, position, rotation, metric=metric, use_cache=False)
+    """Compute the front with :func:`cached_front`'s default settings (or, with
+    ``q_start``, :func:`cached_motion_front`'s; cache not read) and store it in
+    ``directory`` (the shipped data by default) under its fingerprint."""
+    if q_start is None:
+        key = fingerprint(robot, position, rotation, metric, DEFAULT_SETTINGS)
+        front = cached_front(robot, position, rotation, metric=metric, use_cache=False)
+    else:
+        key = fingerprint(robot, position, rotation, metric, MOTION_SETTINGS, q_start)
+        front = cached_motion_front(robot, position, rotation, q_start, metric=metric,
+                                    use_cache=False)
     path = Path(directory) / f"{key}.npz"
     if not store(path, key, front):
         raise OSError(f"cannot write {path}")

@@ -10,6 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from moik.exceptions import ParameterError
+from moik.fronts.cache import cached_motion_front
 from moik.problems.ik import BiObjectiveIK
 from moik.robots.chain import Robot
 
@@ -23,8 +24,9 @@ class PoseMotionIK(BiObjectiveIK):
         q_start: The configuration the motion is measured from (required).
         orientation: Orientation metric name.
 
-    ``pareto_front()`` is not available: the reference fronts of :mod:`moik.fronts`
-    cover the two pose errors only (it raises :class:`ParameterError`).
+    ``pareto_front()`` is the three-objective reference front
+    (:func:`moik.fronts.motion.motion_front`, shipped for ``eosma-p1-motion``, else
+    computed on first use and cached on disk).
     """
 
     n_obj_ik = 3
@@ -41,10 +43,13 @@ class PoseMotionIK(BiObjectiveIK):
         out["F"] = np.column_stack([pos, ori, motion])
 
     def reference_front(self, *, use_cache: bool = True):
-        """Not available for three objectives.
+        """The three-objective reference front (:func:`moik.fronts.cache.cached_motion_front`):
+        computed on first use (seconds), then read from the disk cache.
 
         Raises:
-            ParameterError: Always.
+            ParameterError: For a ZYX Euler orientation metric (its kinks need the lifted
+                subproblems, written for two objectives only).
         """
-        raise ParameterError("no reference front for PoseMotionIK: moik.fronts computes "
-                             "bi-objective (position, orientation) fronts only")
+        return cached_motion_front(self.robot, self.target.position, self.target.rotation,
+                                   self._q_start, metric=self.orientation,
+                                   use_cache=use_cache)

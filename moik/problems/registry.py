@@ -16,7 +16,8 @@ computed and cached for any other, so pymoo's IGD, IGD+, GD and HV apply.
   out of reach (position along that pose's direction at 1.1 times the arm's reach bound,
   rotation of ``q = lower + 0.7 (upper - lower)``).
 * ``eosma-p1-motion``: ``eosma-p1`` with the joint motion ``||q||`` from ``q = 0`` as a
-  third objective (:class:`~moik.problems.motion_ik.PoseMotionIK`; no reference front).
+  third objective (:class:`~moik.problems.motion_ik.PoseMotionIK`; its reference front is
+  three-objective, :func:`moik.fronts.motion.motion_front`).
 """
 
 from __future__ import annotations

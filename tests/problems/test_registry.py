@@ -64,5 +64,9 @@ def test_three_objective_variant():
     F = problem.evaluate(q)
     pos, ori = problem.errors(q)
     np.testing.assert_allclose(F, [[pos[0], ori[0], 0.0]])
-    with pytest.raises(ParameterError, match="three|bi-objective"):
-        problem.pareto_front()
+    pf = problem.pareto_front()  # the shipped three-objective front (tests/fronts/test_motion)
+    assert pf.shape[1] == 3
+    np.testing.assert_allclose(pf[pf[:, 2].argmin()], F[0], atol=1e-12)  # q = 0 moves by 0
+    with pytest.raises(ParameterError, match="smooth orientation metric"):
+        PoseMotionIK(problem.robot, problem.target, q_start=q[0],
+                     orientation="zyx-euler").pareto_front()

@@ -53,6 +53,7 @@ import numpy as np
 
 from moik._jit import jit, kernel_array
 from moik.algorithms.archive.base import ArchiveBase, check_count, roulette
+from moik.algorithms.mechanics import stable_order
 from moik.exceptions import UnknownNameError
 
 LEADER_RULES = ("min-count", "roulette")
@@ -120,6 +121,23 @@ def _crowding_counts_pairwise(F: np.ndarray, dr: np.ndarray) -> np.ndarray:
 
 
 @jit
+def sorted_positions(a: np.ndarray, v: np.ndarray, right: bool) -> np.ndarray:
+    """``np.searchsorted(a, v, side="right" if right else "left")`` for an ascending
+    finite ``a`` (bisection; numba's own searchsorted takes seconds to compile)."""
+    out = np.empty(v.size, np.int64)
+    for k in range(v.size):
+        lo, hi, x = 0, a.size, v[k]
+        while lo < hi:
+            mid = (lo + hi) // 2
+            if a[mid] < x or (right and a[mid] == x):
+                lo = mid + 1
+            else:
+                hi = mid
+        out[k] = lo
+    return out
+
+
+@jit
 def _crowding_counts_front_2d(F: np.ndarray, dr: np.ndarray) -> np.ndarray:
     """Counts of a two-objective front by binary search (compiled); empty if not a front.
 
@@ -130,7 +148,7 @@ def _crowding_counts_front_2d(F: np.ndarray, dr: np.ndarray) -> np.ndarray:
     pairwise).
     """
     m = F.shape[0]
-    order = np.argsort(F[:, 0], kind="mergesort")
+    order = stable_order(F[:, 0].copy(), np.empty(m, np.int64))
     f1, f2 = F[order, 0], F[order, 1]
     for k in range(1, m):
         if not (f1[k] > f1[k - 1] and f2[k] < f2[k - 1]):
@@ -138,14 +156,15 @@ def _crowding_counts_front_2d(F: np.ndarray, dr: np.ndarray) -> np.ndarray:
     lo = np.zeros(m, dtype=np.int64)
     hi = np.full(m, m, dtype=np.int64)
     if dr[0] > 0:
-        lo = np.searchsorted(f1, f1 - dr[0], side="right")
-        hi = np.searchsorted(f1, f1 + dr[0], side="left")
+        lo = sorted_positions(f1, f1 - dr[0], True)
+        hi = sorted_positions(f1, f1 + dr[0], False)
     if dr[1] > 0:
         g = -f2  # ascending; -(a - b) is exact, so the thresholds match the pairwise test
-        lo = np.maximum(lo, np.searchsorted(g, -(f2 + dr[1]), side="right"))
-        hi = np.minimum(hi, np.searchsorted(g, -(f2 - dr[1]), side="left"))
+        lo = np.maximum(lo, sorted_positions(g, -(f2 + dr[1]), True))
+        hi = np.minimum(hi, sorted_positions(g, -(f2 - dr[1]), False))
     counts = np.empty(m, dtype=np.int64)
-    counts[order] = np.maximum(hi - lo, 1)
+    for k in range(m):  # a loop, not counts[order] = ...: no shape-error code to compile
+        counts[order[k]] = max(hi[k] - lo[k], 1)
     return counts
 
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from moik._jit import jit, kernel_array
+from moik.algorithms.mechanics import stable_order
 
 
 def nondominated_mask(F: np.ndarray) -> np.ndarray:
@@ -53,8 +54,8 @@ def front_mask_2d(F: np.ndarray, unique: bool) -> np.ndarray:
     same f1 has f2 < f2_i; a repeat directly follows an equal row.
     """
     m = F.shape[0]
-    by_f2 = np.argsort(F[:, 1], kind="mergesort")
-    order = by_f2[np.argsort(F[by_f2, 0], kind="mergesort")]  # np.lexsort((f2, f1))
+    by_f2 = stable_order(F[:, 1].copy(), np.empty(m, np.int64))
+    order = by_f2[stable_order(F[by_f2, 0], np.empty(m, np.int64))]  # np.lexsort((f2, f1))
     mask = np.empty(m, dtype=np.bool_)
     before = np.inf  # smallest f2 of the rows with a smaller f1
     k = 0

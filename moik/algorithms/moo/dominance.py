@@ -52,8 +52,11 @@ def _pareto_memory_rows(X, F, PX, PF):
     """Eq. 18 with Pareto dominance (no constraints): new ``(PX, PF)`` arrays."""
     MX, MF = X.copy(), F.copy()
     for i in range(X.shape[0]):
-        if _dominates(PF, 0.0, F, 0.0, i):
-            MX[i], MF[i] = PX[i], PF[i]
+        if _dominates(PF, 0.0, F, 0.0, i):  # element loops: no row assignment, whose
+            for j in range(X.shape[1]):  # shape-error code takes seconds to compile
+                MX[i, j] = PX[i, j]
+            for j in range(F.shape[1]):
+                MF[i, j] = PF[i, j]
     return MX, MF
 
 

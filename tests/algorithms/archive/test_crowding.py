@@ -114,3 +114,16 @@ def test_empty_and_zero_row_additions():
 def test_bad_parameters(kwargs, error, match):
     with pytest.raises(error, match=match):
         CrowdingArchive(**kwargs)
+
+
+def test_sorted_positions_is_numpys_searchsorted():
+    """The compiled bisection of the 2-D counts (numba's searchsorted compiles for seconds)."""
+    from moik.algorithms.archive.crowding import sorted_positions
+
+    rng = np.random.default_rng(0)
+    for _ in range(200):
+        a = np.sort(rng.integers(0, 10, rng.integers(0, 20)).astype(float))
+        v = rng.integers(-1, 11, 15) + rng.choice([0.0, 0.5], 15)
+        for right in (True, False):
+            np.testing.assert_array_equal(sorted_positions(a, v, right),
+                                          np.searchsorted(a, v, "right" if right else "left"))

@@ -9,7 +9,7 @@ ROOT = Path(__file__).resolve().parents[1] / "moik"
 ORDER = ("exceptions", "_validate", "_jit", "_version", "_lazy", "robots", "kinematics",
          "collision", "fronts", "problems")
 INDEPENDENT = {"algorithms": {"algorithms", "exceptions", "_validate", "_jit"},
-               "metrics": {"metrics", "exceptions", "_validate", "_jit"}}
+               "metrics": {"metrics", "exceptions", "_validate", "_jit", "_lazy"}}
 LAZY = {("cli", "moik.plotting"),  # matplotlib only when a plot is asked for
         ("cli", "moik.solver")}  # the parser reads the solver's defaults only for `solve --help`
 

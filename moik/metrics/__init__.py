@@ -1,6 +1,9 @@
 """Metrics for comparing results: hypervolume, its reference-point policy, compromise picks,
 statistics over runs (summaries, Wilcoxon tests, Friedman ranks)."""
 
+from typing import TYPE_CHECKING
+
+from moik._lazy import lazy_names
 from moik.metrics.compromise import (
     closest_to_utopia,
     compromise,
@@ -8,16 +11,27 @@ from moik.metrics.compromise import (
     weighted_choice,
 )
 from moik.metrics.hypervolume import EOSMA_TABLE8_REF_POINTS, hypervolume, reference_point
-from moik.metrics.stats import (
-    FriedmanResult,
-    SignedRank,
-    Summary,
-    friedman_ranks,
-    ranksum_pvalues,
-    signed_rank,
-    success_rate,
-    summarize,
-)
+
+if TYPE_CHECKING:
+    from moik.metrics.stats import (
+        FriedmanResult,
+        SignedRank,
+        Summary,
+        friedman_ranks,
+        ranksum_pvalues,
+        signed_rank,
+        success_rate,
+        summarize,
+    )
+
+_LAZY: dict[str, tuple[str, str | None]] = {
+    name: ("moik.metrics.stats", name)
+    for name in ("FriedmanResult", "SignedRank", "Summary", "friedman_ranks", "ranksum_pvalues",
+                 "signed_rank", "success_rate", "summarize")
+}
+"""Loaded at first use: the statistics import scipy.stats, which the solver's verdict
+(the compromise picks) does not need (start-up time; pymoo's HV is imported by
+:func:`~moik.metrics.hypervolume.hypervolume` at its first call for the same reason)."""
 
 __all__ = [
     "EOSMA_TABLE8_REF_POINTS",
@@ -36,3 +50,5 @@ __all__ = [
     "summarize",
     "weighted_choice",
 ]
+
+__getattr__, __dir__ = lazy_names("moik.metrics", _LAZY, globals(), __all__)

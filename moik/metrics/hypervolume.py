@@ -28,7 +28,6 @@ from __future__ import annotations
 from collections.abc import Iterable
 
 import numpy as np
-from pymoo.indicators.hv import HV
 
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError
 
@@ -83,6 +82,8 @@ def hypervolume(F: object, ref_point: object) -> float:
     _finite("ref_point", ref)
     if F.shape[0] == 0:
         return 0.0
+    from pymoo.indicators.hv import HV  # at the first use: the solver imports this package
+
     return float(HV(ref_point=ref)(F))
 
 

@@ -21,15 +21,15 @@ move the arm least.
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 from pymoo.core.problem import Problem
 
 from moik._jit import jit, kernel_array
+from moik._lazy import lazy_module
 from moik._validate import positive, real_array
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetError
-from moik.fronts.cache import cached_front
-from moik.fronts.front import ReferenceFront
 from moik.kinematics.rotation_metrics import metric_code, metric_target, rotation_error
 from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.chain import Robot
@@ -43,6 +43,12 @@ from moik.robots.fk_kernels import (
 )
 
 POSITION, WEIGHTED_POSE, BI_OBJECTIVE = 0, 1, 2  # what ik_objectives computes
+
+if TYPE_CHECKING:
+    from moik.fronts import cache as front_cache
+    from moik.fronts.front import ReferenceFront
+else:  # loaded at the first reference front (moik._lazy): a solve needs none of it
+    front_cache = lazy_module("moik.fronts.cache")
 
 
 @jit
@@ -260,8 +266,8 @@ class BiObjectiveIK(_OrientedIK):
         if self.displacement_weight > 0:
             raise ParameterError("the reference front covers displacement_weight = 0 only "
                                  f"(got {self.displacement_weight})")
-        return cached_front(self.robot, self.target.position, self.target.rotation,
-                            metric=self.orientation, use_cache=use_cache)
+        return front_cache.cached_front(self.robot, self.target.position, self.target.rotation,
+                                        metric=self.orientation, use_cache=use_cache)
 
     def _calc_pareto_front(self, *args, **kwargs) -> np.ndarray:
         """pymoo's ``pareto_front()``: the reference front's ``F`` (see

@@ -7,12 +7,19 @@ The bi-objective IK problem (MO-m-PSO Eq. 15) with EOSMA's joint-displacement te
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
+from moik._lazy import lazy_module
 from moik.exceptions import ParameterError
-from moik.fronts.cache import cached_motion_front
 from moik.problems.ik import BiObjectiveIK
 from moik.robots.chain import Robot
+
+if TYPE_CHECKING:
+    from moik.fronts import cache as front_cache
+else:  # loaded at the first reference front (moik._lazy)
+    front_cache = lazy_module("moik.fronts.cache")
 
 
 class PoseMotionIK(BiObjectiveIK):
@@ -50,6 +57,6 @@ class PoseMotionIK(BiObjectiveIK):
             ParameterError: For a ZYX Euler orientation metric (its kinks need the lifted
                 subproblems, written for two objectives only).
         """
-        return cached_motion_front(self.robot, self.target.position, self.target.rotation,
-                                   self._q_start, metric=self.orientation,
-                                   use_cache=use_cache)
+        return front_cache.cached_motion_front(self.robot, self.target.position,
+                                               self.target.rotation, self._q_start,
+                                               metric=self.orientation, use_cache=use_cache)

@@ -25,17 +25,25 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from moik._lazy import lazy_module
 from moik._validate import flag, number
-from moik.collision.catalog import collision_model
-from moik.collision.io import load_scene
-from moik.collision.model import CollisionChecker, CollisionModel, Scene
 from moik.exceptions import GeometryError, ParameterError
 from moik.kinematics.criteria import MAXIMIZE, Criterion
 from moik.robots.chain import Robot
+
+if TYPE_CHECKING:
+    from moik.collision import catalog as collision_catalog
+    from moik.collision import io as collision_io
+    from moik.collision import model as collision_models
+    from moik.collision.model import CollisionChecker, CollisionModel, Scene
+else:  # loaded when a solve checks collisions (moik._lazy): a blind solve imports none of it
+    collision_catalog = lazy_module("moik.collision.catalog")
+    collision_io = lazy_module("moik.collision.io")
+    collision_models = lazy_module("moik.collision.model")
 
 COLLISION_OPTIONS = ("scene", "self_collision", "clearance", "collision")
 _CHECKERS: dict[tuple[int, int, bool], tuple[Any, Any, CollisionChecker]] = {}
@@ -80,7 +88,7 @@ def _shipped(robot: Robot) -> CollisionModel:
     refused by :func:`~moik.collision.collision_model`)."""
     model = _MODELS.get(robot.name)
     if model is None or not same_arm(model.robot, robot):
-        model = collision_model(robot)
+        model = collision_catalog.collision_model(robot)
         _MODELS[robot.name] = model
     return model
 
@@ -92,7 +100,8 @@ def _checker(model: CollisionModel, scene: Scene | None, self_collision: bool
     hit = _CHECKERS.get(key)
     if hit is not None and hit[0] is model and hit[1] is scene:
         return hit[2]
-    checker = CollisionChecker(model=model, scene=scene, self_collision=self_collision)
+    checker = collision_models.CollisionChecker(model=model, scene=scene,
+                                                self_collision=self_collision)
     if len(_CHECKERS) >= _CACHE_SIZE:
         _CHECKERS.pop(next(iter(_CHECKERS)))
     _CHECKERS[key] = (model, scene, checker)  # the objects kept alive: their ids stay theirs
@@ -123,18 +132,18 @@ def collision_guard(robot: Robot, *, scene=None, self_collision=False, clearance
     clearance = number("clearance", clearance, minimum=0.0)
     self_collision = flag("self_collision", self_collision)
     if isinstance(scene, str | Path):
-        scene = load_scene(scene)
-    if scene is not None and not isinstance(scene, Scene):
+        scene = collision_io.load_scene(scene)
+    if scene is not None and not isinstance(scene, collision_models.Scene):
         raise GeometryError(f"scene must be a moik.collision.Scene or a path to a scene JSON "
                             f"file, got {type(scene).__name__}")
-    if isinstance(collision, CollisionChecker):
+    if isinstance(collision, collision_models.CollisionChecker):
         if scene is not None or self_collision:
             raise ParameterError("collision= is a CollisionChecker, which has its own scene and "
                                  "self pairs: leave scene= and self_collision= unset, or pass "
                                  "a CollisionModel instead")
         _check_robot(collision.robot, robot)
         return CollisionGuard(collision, clearance)
-    if collision is not None and not isinstance(collision, CollisionModel):
+    if collision is not None and not isinstance(collision, collision_models.CollisionModel):
         raise GeometryError(f"collision must be a CollisionModel or a CollisionChecker, got "
                             f"{type(collision).__name__}")
     if scene is None and not self_collision:

@@ -36,7 +36,7 @@ def clip_to_bounds(X: np.ndarray, xl: np.ndarray, xu: np.ndarray) -> np.ndarray:
     return np.minimum(np.maximum(X, xl), xu)
 
 
-@jit(inline=True)
+@jit
 def ieee_divide(a: float, b: float) -> float:
     """``a / b`` with IEEE 754's (numpy's) answer for ``b == 0``: +-inf, or nan for 0/0."""
     if b != 0.0:
@@ -46,7 +46,7 @@ def ieee_divide(a: float, b: float) -> float:
     return math.copysign(math.inf, a) * math.copysign(1.0, b)
 
 
-@jit(inline=True)
+@jit
 def midpoint_coordinate(x: float, old: float, lo: float, hi: float) -> float:
     """EOSMA Eq. 17 for one coordinate: halfway from ``old`` to the bound ``x`` violates."""
     if x < lo:
@@ -101,7 +101,7 @@ def is_better(f1, cv1, f2, cv2):
     return (cv1 < cv2) | ((cv1 == cv2) & (f1 < f2))
 
 
-@jit(inline=True)
+@jit
 def is_better_scalar(f1: float, cv1: float, f2: float, cv2: float) -> bool:
     """:func:`is_better` for one pair (unconstrained problems pass ``cv = 0``)."""
     return cv1 < cv2 or (cv1 == cv2 and f1 < f2)
@@ -132,7 +132,7 @@ def greedy_memory(X, F, CV, PX, PF, PCV):
     return PX, PF, (None if CV is None else pcv)
 
 
-@jit(inline=True)
+@jit
 def ranking_value(f: float, cv: float, worst_feasible: float) -> float:
     """:func:`ranking_fitness` of one row, given the worst feasible f (0 if none)."""
     return f if cv <= 0.0 else worst_feasible + cv
@@ -153,7 +153,7 @@ def ranking_into(F, CV, out):
     return out
 
 
-@jit(inline=True)
+@jit
 def ranks_before(a: float, b: float) -> bool:
     """Whether ``a`` sorts strictly before ``b`` in numpy's order (nan last)."""
     return a < b or (b != b and a == a)

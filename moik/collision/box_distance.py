@@ -10,7 +10,7 @@ from moik._jit import jit
 from moik.collision.distance import _PARALLEL, _segment
 
 
-@jit(inline=True)
+@jit
 def _to_box(P, x, y, z):
     """World point ``(x, y, z)`` in the frame of the box pose ``P``."""
     dx, dy, dz = x - P[0, 3], y - P[1, 3], z - P[2, 3]
@@ -19,7 +19,7 @@ def _to_box(P, x, y, z):
             P[0, 2] * dx + P[1, 2] * dy + P[2, 2] * dz)
 
 
-@jit(inline=True)
+@jit
 def _from_box(P, x, y, z):
     """Point ``(x, y, z)`` of the box frame ``P`` in world coordinates."""
     return (P[0, 3] + P[0, 0] * x + P[0, 1] * y + P[0, 2] * z,
@@ -27,7 +27,7 @@ def _from_box(P, x, y, z):
             P[2, 3] + P[2, 0] * x + P[2, 1] * y + P[2, 2] * z)
 
 
-@jit(inline=True)
+@jit
 def _cut(p, d, bound):
     """The parameter where ``p + t d`` crosses ``bound`` if it is in (0, 1), else 2."""
     if d == 0.0:
@@ -127,7 +127,7 @@ def capsule_box(PA, sA, PB, sB):
     return d, nx, ny, nz, ax, ay, az, ax + d * nx, ay + d * ny, az + d * nz
 
 
-@jit(inline=True)
+@jit
 def _box_corner(P, s, k):
     """Corner ``k`` (0..7, bits = signs along x, y, z) of the box ``(P, s)``, world frame."""
     x = s[0] if k & 1 else -s[0]
@@ -213,7 +213,7 @@ def box_box(PA, sA, PB, sB):
     return d, nx, ny, nz, ax, ay, az, ax + d * nx, ay + d * ny, az + d * nz
 
 
-@jit(inline=True)
+@jit
 def _support_box(P, s, nx, ny, nz):
     """The corner of the box ``(P, s)`` farthest along ``n``."""
     x = s[0] if nx * P[0, 0] + ny * P[1, 0] + nz * P[2, 0] >= 0.0 else -s[0]

@@ -51,7 +51,7 @@ _PARALLEL = 1e-12  # |u x v|^2 below this: the two directions give no separating
 SPHERE, CAPSULE, BOX, HALFSPACE = 0, 1, 2, 3  # shape kinds, in the order the pairs take them
 
 
-@jit(inline=True)
+@jit
 def _segment(P, s):
     """Centre, unit axis and half length of a capsule (or sphere: h = 0) of pose ``P``."""
     return P[0, 3], P[1, 3], P[2, 3], P[0, 2], P[1, 2], P[2, 2], s[1]
@@ -107,7 +107,7 @@ def capsule_capsule(PA, sA, PB, sB):
             bx - rB * nx, by - rB * ny, bz - rB * nz)
 
 
-@jit(inline=True)
+@jit
 def _normal_to(ux, uy, uz):
     """A unit vector normal to ``u`` (``x`` when ``u`` is zero or along z)."""
     if abs(ux) < 0.9:

@@ -120,7 +120,7 @@ def min_distance_of(F, P, base, types, q, shapes, scratch):
     return best, arg
 
 
-@jit(inline=True)
+@jit
 def _point_velocity(axes, types, j, x, y, z):
     """Velocity of a point at ``(x, y, z)`` moved by joint ``j`` at unit speed."""
     ox, oy, oz, zx, zy, zz = axes[j, 0], axes[j, 1], axes[j, 2], axes[j, 3], axes[j, 4], axes[j, 5]

@@ -17,7 +17,7 @@ from moik.collision.distance import (
 )
 
 
-@jit(inline=True)
+@jit
 def _bounding_radius(kinds, sizes, k):
     """Radius of the sphere about shape ``k``'s origin that holds it (not a half-space)."""
     if kinds[k] == SPHERE:
@@ -27,7 +27,7 @@ def _bounding_radius(kinds, sizes, k):
     return math.sqrt(sizes[k, 0] ** 2 + sizes[k, 1] ** 2 + sizes[k, 2] ** 2)
 
 
-@jit(inline=True)
+@jit
 def pair_bound(kinds, W, sizes, a, b):
     """A lower bound on the signed distance of shapes ``a`` and ``b`` (kinds ``(m,)``, world
     poses ``W (m, 4, 4)``, sizes ``(m, 3)``): bounding spheres, or the plane distance of

@@ -29,7 +29,7 @@ from moik.kinematics.rotation_metrics import (
 from moik.robots.fk_kernels import chain_pose
 
 
-@jit(inline=True)
+@jit
 def pose_errors(F, types, q, p_t, code, R_t, angles_t):
     """``(f1, f2)``: position error and orientation error (metric ``code``) of ``q``."""
     t = chain_pose(F, types, q)
@@ -65,7 +65,7 @@ def squared_errors_and_gradients(F, types, q, p_t, code, R_t, angles_t, h, value
         grad[1, j] = (a2 * a2 - b2 * b2) / (2.0 * h)
 
 
-@jit(inline=True)
+@jit
 def pose_equations(F, types, q, p_t, code, R_t, angles_t, m, scale, out):
     """The equations of ``f_m = 0`` at ``q`` into ``out (3,)`` (see
     :meth:`moik.fronts.scalarised.ErrorModel.residual`)."""

@@ -17,7 +17,7 @@ from moik.kinematics.jacobian import pose_jacobian_into
 from moik.robots.transforms import PRISMATIC
 
 
-@jit(inline=True)
+@jit
 def nearest_copy(q, q_ref, lo, hi):
     """The value ``q + 2 pi k`` within ``[lo, hi]`` nearest to ``q_ref`` (``q`` if none is nearer).
 

@@ -48,13 +48,13 @@ def metric_target(name: str, R_t: np.ndarray) -> np.ndarray:
     return out
 
 
-@jit(inline=True)
+@jit
 def _atan_ratio_c(num, den):
     sign = math.copysign(1.0, den)
     return math.atan2(num * sign, den * sign)
 
 
-@jit(inline=True)
+@jit
 def eosma_euler_angles(rot):
     """EOSMA Eq. 26 angles of the rotation ``rot`` (nine entries, row by row)."""
     r00, r01, r02, r10, r11, r12, r20, r21, r22 = rot
@@ -62,7 +62,7 @@ def eosma_euler_angles(rot):
             _atan_ratio_c(-r01, r00))
 
 
-@jit(inline=True)
+@jit
 def zyx_euler_angles(rot):
     """ZYX angles ``(alpha, beta, gamma)`` of ``rot`` as scipy's ``as_euler("ZYX")``."""
     r00, r01, r02, r10, r11, r12, r20, r21, r22 = rot
@@ -90,7 +90,7 @@ def zyx_euler_angles(rot):
     return _wrap_pi(alpha), _wrap_pi(beta - math.pi / 2), _wrap_pi(gamma)
 
 
-@jit(inline=True)
+@jit
 def _wrap_pi(angle):
     """``angle`` into ``[-pi, pi]`` by one turn at most (scipy keeps ``pi`` as ``pi``)."""
     if angle < -math.pi:
@@ -100,7 +100,7 @@ def _wrap_pi(angle):
     return angle
 
 
-@jit(inline=True)
+@jit
 def geodesic_angle(rot, R_t):
     """Geodesic angle (rad) between ``rot`` (a 9-tuple row by row) and ``R_t (3, 3)``."""
     r00, r01, r02, r10, r11, r12, r20, r21, r22 = rot
@@ -118,7 +118,7 @@ def geodesic_angle(rot, R_t):
     return math.atan2(math.sqrt(vx * vx + vy * vy + vz * vz), m00 + m11 + m22 - 1.0)
 
 
-@jit(inline=True)
+@jit
 def rotation_error(code, rot, R_t, angles_t):
     """Error of metric ``code`` (:func:`metric_code`) between ``rot`` and the target.
 

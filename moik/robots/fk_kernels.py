@@ -36,14 +36,14 @@ BLOCK = 64  # rows per block of the batched kernels (their workspace stays in L1
 _BLOCK_MIN = 4  # fewer rows than this go through the single-row kernel
 
 
-@jit(inline=True)
+@jit
 def pose_state(F, k):
     """``F[k]`` as the twelve-scalar pose state (rotation rows, then position)."""
     return (F[k, 0, 0], F[k, 0, 1], F[k, 0, 2], F[k, 1, 0], F[k, 1, 1], F[k, 1, 2],
             F[k, 2, 0], F[k, 2, 1], F[k, 2, 2], F[k, 0, 3], F[k, 1, 3], F[k, 2, 3])
 
 
-@jit(inline=True)
+@jit
 def rotate_z(t, s, c):
     """Pose state ``t`` right-multiplied by ``Rz(q)``, given ``s, c = sin q, cos q``."""
     r00, r01, r02, r10, r11, r12, r20, r21, r22, px, py, pz = t
@@ -52,7 +52,7 @@ def rotate_z(t, s, c):
             c * r20 + s * r21, c * r21 - s * r20, r22, px, py, pz)
 
 
-@jit(inline=True)
+@jit
 def translate_z(t, q):
     """Pose state ``t`` right-multiplied by ``Tz(q)``."""
     r00, r01, r02, r10, r11, r12, r20, r21, r22, px, py, pz = t
@@ -60,7 +60,7 @@ def translate_z(t, q):
             px + q * r02, py + q * r12, pz + q * r22)
 
 
-@jit(inline=True)
+@jit
 def compose(t, f):
     """Pose state ``t`` right-multiplied by the constant pose state ``f``."""
     r00, r01, r02, r10, r11, r12, r20, r21, r22, px, py, pz = t
@@ -75,7 +75,7 @@ def compose(t, f):
             pz + r20 * f03 + r21 * f13 + r22 * f23)
 
 
-@jit(inline=True)
+@jit
 def move_joint(t, kind, q):
     """Pose state ``t`` right-multiplied by the joint motion ``Rz(q)`` or ``Tz(q)``."""
     if kind == PRISMATIC:
@@ -84,7 +84,7 @@ def move_joint(t, kind, q):
     return rotate_z(t, s, c)
 
 
-@jit(inline=True)
+@jit
 def chain_pose(F, types, q):
     """End-effector pose of one joint vector ``q (dof,)`` as the twelve-scalar state.
 
@@ -96,7 +96,7 @@ def chain_pose(F, types, q):
     return t
 
 
-@jit(inline=True)
+@jit
 def store_pose(t, out):
     """Write the pose state ``t`` into the 4x4 ``out``."""
     out[0, 0], out[0, 1], out[0, 2], out[0, 3] = t[0], t[1], t[2], t[9]
@@ -119,32 +119,32 @@ def fk_position_into(F, types, q, out):
 
 
 # ---------------------------------------------------------------- batched, by blocks of rows
-@jit(inline=True)
+@jit
 def block_state(W, b):
     """Pose state of row ``b`` of a block workspace."""
     return (W[0, b], W[1, b], W[2, b], W[3, b], W[4, b], W[5, b],
             W[6, b], W[7, b], W[8, b], W[9, b], W[10, b], W[11, b])
 
 
-@jit(inline=True)
+@jit
 def block_position(W, b):
     """Position ``(x, y, z)`` of row ``b`` of a block workspace."""
     return W[9, b], W[10, b], W[11, b]
 
 
-@jit(inline=True)
+@jit
 def block_rotation(W, b):
     """Rotation of row ``b`` of a block workspace, row-major 9-tuple."""
     return (W[0, b], W[1, b], W[2, b], W[3, b], W[4, b], W[5, b], W[6, b], W[7, b], W[8, b])
 
 
-@jit(inline=True)
+@jit
 def _set_block_state(W, b, t):
     W[0, b], W[1, b], W[2, b], W[3, b], W[4, b], W[5, b] = t[0], t[1], t[2], t[3], t[4], t[5]
     W[6, b], W[7, b], W[8, b], W[9, b], W[10, b], W[11, b] = t[6], t[7], t[8], t[9], t[10], t[11]
 
 
-@jit(inline=True)
+@jit
 def block_workspace(dof):
     """Scratch of :func:`chain_block`: the states, then joint values, sines, cosines."""
     return np.empty((12 + 3 * dof, BLOCK))

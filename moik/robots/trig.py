@@ -26,7 +26,7 @@ TRIG_MAX = 8.0e5  # below 2**19 * pi/2: the inline reduction is good to 118 bits
 """Largest ``|x|`` the inline polynomials take (libm beyond)."""
 
 
-@jit(inline=True)
+@jit
 def sin_cos_inline(x):
     """``(sin(x), cos(x))`` within 1 ulp for ``|x| <= TRIG_MAX``, branch-free (vectorisable).
 
@@ -56,7 +56,7 @@ def sin_cos_inline(x):
     return s, c
 
 
-@jit(inline=True)
+@jit
 def sin_cos(x):
     """``(sin(x), cos(x))`` within 1 ulp of libm.
 

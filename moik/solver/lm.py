@@ -124,7 +124,7 @@ def cholesky_solve(A, b, x):
     return True
 
 
-@jit(inline=True)
+@jit
 def copy_into(src, dst, offset=0):
     """``dst[offset:offset + len(src)] = src`` by a loop: a slice assignment would compile
     numba's shape-mismatch error path (string formatting), seconds of the first run."""

@@ -47,7 +47,7 @@ def uint32_words(x) -> list[int]:
     return [w for v in x for w in uint32_words(v)]
 
 
-@jit(inline=True)
+@jit
 def _hashmix(value, hash_const):
     """``hashmix`` (value and the running constant, both 32-bit): the new (value, const)."""
     value = (value ^ hash_const) & M32
@@ -56,7 +56,7 @@ def _hashmix(value, hash_const):
     return value ^ (value >> XSHIFT), hash_const
 
 
-@jit(inline=True)
+@jit
 def _mix(x, y):
     result = ((MIX_MULT_L * x) - (MIX_MULT_R * y)) & M32
     return result ^ (result >> XSHIFT)
@@ -97,7 +97,7 @@ def _state_words(pool):
     return out
 
 
-@jit(inline=True)
+@jit
 def _mul_hi(a, b):
     """High 64 bits of the 128-bit product of two 64-bit words."""
     a_lo, a_hi, b_lo, b_hi = a & M32, a >> np.uint64(32), b & M32, b >> np.uint64(32)
@@ -106,7 +106,7 @@ def _mul_hi(a, b):
     return hi_hi + (hi_lo >> np.uint64(32)) + (cross >> np.uint64(32))
 
 
-@jit(inline=True)
+@jit
 def _step(s_hi, s_lo, i_hi, i_lo):
     """One LCG step of the 128-bit state: ``state * MULT + inc`` (mod 2**128)."""
     hi = _mul_hi(s_lo, PCG_MULT_LO) + s_lo * PCG_MULT_HI + s_hi * PCG_MULT_LO

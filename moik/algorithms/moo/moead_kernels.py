@@ -29,7 +29,7 @@ def draw_columns(n_var: int) -> int:
     return N_FIXED + 5 * n_var
 
 
-@jit(inline=True)
+@jit
 def _sbx_betaq(beta: float, u: float, eta: float) -> float:
     """SBX's spread factor for a bound distance ``beta`` (pymoo's ``calc_betaq``)."""
     alpha = 2.0 - beta ** (-(eta + 1.0))
@@ -38,7 +38,7 @@ def _sbx_betaq(beta: float, u: float, eta: float) -> float:
     return (1.0 / (2.0 - u * alpha)) ** (1.0 / (eta + 1.0))
 
 
-@jit(inline=True)
+@jit
 def _pm(x: float, lo: float, hi: float, u: float, eta: float) -> float:
     """Polynomial mutation of one coordinate (pymoo's ``mut_pm``), clamped."""
     d1, d2 = (x - lo) / (hi - lo), (hi - x) / (hi - lo)
@@ -105,7 +105,7 @@ def offspring(X, neighbors, perm, U, xl, xu, delta: float, eta_c: float, eta_m: 
     return Y
 
 
-@jit(inline=True)
+@jit
 def _tchebycheff(F, row: int, w, z) -> float:
     """Eq. 3: ``max_i w_i |f_i - z_i|`` of row ``row`` of ``F``."""
     g = 0.0
@@ -114,7 +114,7 @@ def _tchebycheff(F, row: int, w, z) -> float:
     return g
 
 
-@jit(inline=True)
+@jit
 def _finite_row(F, CV, row: int) -> bool:
     """Whether row ``row`` of ``F`` and ``CV[row]`` are all finite."""
     ok = np.isfinite(CV[row])

@@ -54,7 +54,7 @@ def eosma_rows(P, g_best, pool, W, lam, E, r, idx, r1, r2, vb, A, B, u, z, a1, G
     return out
 
 
-@jit(inline=True)
+@jit
 def difference_coordinate(p1: float, p2: float, p3: float, sf: float) -> float:
     """Eq. 16 for one coordinate: ``pBest_R1 + SF (pBest_R2 - pBest_R3)``."""
     return p1 + sf * (p2 - p3)
@@ -135,7 +135,7 @@ class GenerationDraws:
         np.exp(self.cells[DECAY], out=self.cells[DECAY])
 
 
-@jit(inline=True)
+@jit
 def fill_random(rng, A):
     """``A`` (2-D) filled with ``rng.random()`` in C order, as ``rng.random(A.shape)``."""
     for i in range(A.shape[0]):
@@ -143,7 +143,7 @@ def fill_random(rng, A):
             A[i, j] = rng.random()
 
 
-@jit(inline=True)
+@jit
 def fill_integers(rng, high, A):
     """``A`` (2-D) filled as ``rng.integers(high, size=A.shape)``."""
     values = rng.integers(0, high, size=A.size)
@@ -181,7 +181,7 @@ def generation_draws(handle, pbest_fcv, n_pool, t1, a, q, cells, rows, picks):
     return mutation_draws(rng, q, rows, picks)
 
 
-@jit(inline=True)
+@jit
 def decay_into(cells, t1):
     """``cells[DECAY] = -lam t1`` (numpy's exp follows in the caller, Eq. 8)."""
     for i in range(cells.shape[1]):
@@ -189,7 +189,7 @@ def decay_into(cells, t1):
             cells[DECAY, i, j] = -cells[LAMBDA, i, j] * t1
 
 
-@jit(inline=True)
+@jit
 def uniform_into(rng, lo, hi, A):
     """``A`` (2-D) filled as ``rng.uniform(lo, hi, A.shape)``."""
     for i in range(A.shape[0]):
@@ -197,7 +197,7 @@ def uniform_into(rng, lo, hi, A):
             A[i, j] = rng.uniform(lo, hi)
 
 
-@jit(inline=True)
+@jit
 def mutation_draws(rng, q, rows, picks):
     """The mutation test (EOSMA line 22, MOEOSMA line 26) and, when it passes, R1..R3
     (one ``integers`` call of 3n) and SF of Eq. 16. Returns whether the mutation runs."""
@@ -266,7 +266,7 @@ def remember(X, F, CV, PX, pbest_fcv, pool, pool_fcv, mutate, rows, picks, bound
     return PX, pack(PF, PCV), pool_with_mean(QX), pack(QF, QCV), X_mut
 
 
-@jit(inline=True)
+@jit
 def pack(F, CV):
     """``(F, CV)`` as one (2, n) array."""
     out = np.empty((2, F.size))

@@ -28,6 +28,8 @@
    the machine's noise). The solves are timed a second way too, each right after the
    baseline's calls for its target ("after LM"): measured, that doubles moik's time (the
    baseline's Python and coal code evicts moik's from the caches), so both are printed.
+   ``solve_ik_pareto`` with the scene on the first 20 targets: every member checked by
+   coal, the limits and the pose tolerance.
 
 Run: python benchmarks/collision_ik.py [--n 1000] [--targets 100] [--success 200] [--out FILE]
 """
@@ -47,9 +49,10 @@ from moik.collision.catalog import collision_model
 from moik.collision.io import rpy_pose
 from moik.kinematics.orientation import orientation_error
 from moik.robots import fk_reference
-from moik.solver import solve_ik_batch
+from moik.solver import solve_ik_batch, solve_ik_pareto
 
 BASELINE_STARTS = 50  # ik_LM starts before the baseline gives a target up
+PARETO_TARGETS = 20  # targets per arm whose solve_ik_pareto members are checked by coal
 
 ARMS = ("panda", "ur5", "iiwa14")
 
@@ -171,6 +174,15 @@ def collision_aware(checker: CollisionChecker, n: int, *, rng: np.random.Generat
                     t0 = time.perf_counter()
                     solve_ik(robot, pose, seed=i, collision=checker if aware else None)
                     (t_mixed if aware else t_mixed_blind).append(time.perf_counter() - t0)
+    members = pareto_bad = 0
+    for i, pose in enumerate(T[:PARETO_TARGETS]):  # every member checked independently
+        front = solve_ik_pareto(robot, pose, objectives=("manipulability", "limit_margin"),
+                                collision=checker, seed=i, n_solutions=10)
+        members += len(front.X)
+        pareto_bad += sum(not (strict_ok(robot, pose, q) and coal_distances(checker, q).min()
+                               >= 0) for q in front.X)
+    out.update(pareto_targets=min(len(T), PARETO_TARGETS), pareto_members=members,
+               pareto_bad=pareto_bad)
     out.update(moik=1e3 * float(np.median(t_moik)), blind=1e3 * float(np.median(t_blind)),
                mixed=1e3 * float(np.median(t_mixed)),
                mixed_blind=1e3 * float(np.median(t_mixed_blind)),
@@ -255,6 +267,12 @@ def main() -> None:
                      f"{r['moik']:8.3f} {r['blind']:8.3f} {r['mixed']:8.3f} "
                      f"{r['mixed_blind']:6.3f} {100 * r['base_ok'] / r['n']:9.1f}% "
                      f"{r['base']:10.3f} {r['moik'] / r['base']:6.3f}")
+    lines += ["", "solve_ik_pareto with the scene (manipulability, limit margin; 10 members "
+              "asked), every member checked by coal, the limits and the pose tolerance",
+              f"{'arm':7s} {'targets':>7s} {'members':>7s} {'bad':>4s}"]
+    for arm, r in rows4:
+        lines.append(f"{arm:7s} {r['pareto_targets']:7d} {r['pareto_members']:7d} "
+                     f"{r['pareto_bad']:4d}")
     lines += ["moik ms / blind ms: medians of single solve_ik calls with the scene / without,",
               "  one target after another (3 passes, alternating with the baseline's pass);",
               "after LM / blind: the same solves each made right after the baseline's ik_LM",

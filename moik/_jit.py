@@ -25,8 +25,9 @@ full disk, a vanished folder) warns once and the computation goes on uncached.
 
 Kernels compile lazily, at their first call. The first real compilation in a
 process (not a load from the cache) prints one line on stderr,
-``compiling kinematics kernels, first run only``; it is detected through numba's
-``numba:compile`` event, which numba fires only when it compiles.
+``compiling kinematics kernels, first run only``, and a long one a progress line
+(kernels compiled so far, seconds) every few seconds; they are detected through
+numba's ``numba:compile`` event, which numba fires only when it compiles.
 
 :func:`kernel_array` is what every public entry passes its arrays through before a
 kernel: numba compiles one machine-code version per argument type, and a
@@ -42,6 +43,7 @@ import io
 import os
 import pickle
 import sys
+import time
 import uuid
 import warnings
 from collections.abc import Callable
@@ -64,23 +66,43 @@ _warned: set[str] = set()  # the kinds of cache warning already issued in this p
 _MAGIC = b"moik-kernel-cache-1\n"  # then the SHA-256 digest of the rest, then numba's bytes
 
 
+PROGRESS_EVERY = 3.0  # seconds between two progress lines of a long compilation
+
+
 class _CompileNotice(event.Listener):
-    """Prints :data:`COMPILE_NOTICE` once, when numba starts compiling a moik kernel."""
+    """Prints :data:`COMPILE_NOTICE` once, when numba starts compiling a moik kernel, and
+    then a progress line (kernels compiled so far, seconds) whenever a kernel's
+    compilation ends at least :data:`PROGRESS_EVERY` seconds after the last line (a whole
+    line each time: no carriage return that later output could land on)."""
 
     def on_start(self, ev: event.Event) -> None:
-        data = ev.data if isinstance(ev.data, dict) else {}
-        dispatcher = data.get("dispatcher")
-        if getattr(dispatcher, "py_func", None) in _kernels:
-            if not _notice["printed"]:
-                _notice["printed"] = True
-                print(COMPILE_NOTICE, file=sys.stderr, flush=True)
-            _compiled["kernels"] += 1
+        if not _ours(ev):
+            return
+        if not _notice["printed"]:
+            _notice["printed"] = True
+            _compiled["since"] = _compiled["last"] = time.perf_counter()
+            print(COMPILE_NOTICE, file=sys.stderr, flush=True)
+        _compiled["kernels"] += 1
 
     def on_end(self, ev: event.Event) -> None:
-        pass
+        if not _ours(ev):
+            return
+        now = time.perf_counter()
+        if now - _compiled["last"] >= PROGRESS_EVERY:
+            _compiled["last"] = now
+            print(f"  ... {_compiled['kernels']} kernels compiled so far "
+                  f"({now - _compiled['since']:.0f} s)", file=sys.stderr, flush=True)
 
 
-_compiled = {"kernels": 0}  # moik kernel compilations in this process (compile_count)
+def _ours(ev: event.Event) -> bool:
+    """Whether a numba compile event is for a moik kernel."""
+    data = ev.data if isinstance(ev.data, dict) else {}
+    return getattr(data.get("dispatcher"), "py_func", None) in _kernels
+
+
+# moik kernel compilations in this process (compile_count) and the times of the notice
+# and of the last progress line
+_compiled: dict[str, Any] = {"kernels": 0, "since": 0.0, "last": 0.0}
 
 
 def compile_count() -> int:

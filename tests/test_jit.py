@@ -313,3 +313,40 @@ def test_forty_single_bit_flips_of_real_cache_files_are_all_caught(tmp_path, bui
         with pytest.warns(moik.exceptions.CacheWarning, match="discarded a damaged"):
             got = cache._load_index() if k % 2 else cache._load_data(data.name)
         assert got in ({}, None) and not target.exists(), (k, bit)
+
+
+def test_a_long_compilation_prints_progress_lines(monkeypatch, capsys):
+    """The notice once, then whole progress lines (kernels so far, seconds) at most every
+    PROGRESS_EVERY seconds; events of functions that are not moik kernels are ignored."""
+    from numba.core import event
+
+    import moik._jit as J
+
+    kernel = next(iter(J._kernels))
+    monkeypatch.setattr(J, "_notice", {"printed": False})
+    monkeypatch.setattr(J, "_compiled", {"kernels": 0, "since": 0.0, "last": 0.0})
+    listener = J._CompileNotice()
+
+    class Dispatcher:
+        py_func = kernel
+
+    def fire(status, func=Dispatcher):
+        ev = event.Event(kind="numba:compile", status=status, data={"dispatcher": func})
+        (listener.on_start if status == event.EventStatus.START else listener.on_end)(ev)
+
+    monkeypatch.setattr(J, "PROGRESS_EVERY", 1e9)
+    fire(event.EventStatus.START)
+    fire(event.EventStatus.END)
+    assert capsys.readouterr().err == J.COMPILE_NOTICE + "\n"  # quick: no progress line
+    monkeypatch.setattr(J, "PROGRESS_EVERY", 0.0)
+    fire(event.EventStatus.START)
+    fire(event.EventStatus.END)
+
+    class Other:
+        py_func = len
+
+    fire(event.EventStatus.START, Other)
+    fire(event.EventStatus.END, Other)
+    err = capsys.readouterr().err
+    assert err.startswith("  ... 2 kernels compiled so far (") and err.count("\n") == 1
+    assert J.compile_count() == 2

@@ -320,12 +320,12 @@ def test_a_long_compilation_prints_progress_lines(monkeypatch, capsys):
     PROGRESS_EVERY seconds; events of functions that are not moik kernels are ignored."""
     from numba.core import event
 
-    import moik._jit as J
+    import moik._jit as jit_module
 
-    kernel = next(iter(J._kernels))
-    monkeypatch.setattr(J, "_notice", {"printed": False})
-    monkeypatch.setattr(J, "_compiled", {"kernels": 0, "since": 0.0, "last": 0.0})
-    listener = J._CompileNotice()
+    kernel = next(iter(jit_module._kernels))
+    monkeypatch.setattr(jit_module, "_notice", {"printed": False})
+    monkeypatch.setattr(jit_module, "_compiled", {"kernels": 0, "since": 0.0, "last": 0.0})
+    listener = jit_module._CompileNotice()
 
     class Dispatcher:
         py_func = kernel
@@ -334,11 +334,11 @@ def test_a_long_compilation_prints_progress_lines(monkeypatch, capsys):
         ev = event.Event(kind="numba:compile", status=status, data={"dispatcher": func})
         (listener.on_start if status == event.EventStatus.START else listener.on_end)(ev)
 
-    monkeypatch.setattr(J, "PROGRESS_EVERY", 1e9)
+    monkeypatch.setattr(jit_module, "PROGRESS_EVERY", 1e9)
     fire(event.EventStatus.START)
     fire(event.EventStatus.END)
-    assert capsys.readouterr().err == J.COMPILE_NOTICE + "\n"  # quick: no progress line
-    monkeypatch.setattr(J, "PROGRESS_EVERY", 0.0)
+    assert capsys.readouterr().err == jit_module.COMPILE_NOTICE + "\n"  # quick: no progress line
+    monkeypatch.setattr(jit_module, "PROGRESS_EVERY", 0.0)
     fire(event.EventStatus.START)
     fire(event.EventStatus.END)
 
@@ -349,4 +349,4 @@ def test_a_long_compilation_prints_progress_lines(monkeypatch, capsys):
     fire(event.EventStatus.END, Other)
     err = capsys.readouterr().err
     assert err.startswith("  ... 2 kernels compiled so far (") and err.count("\n") == 1
-    assert J.compile_count() == 2
+    assert jit_module.compile_count() == 2

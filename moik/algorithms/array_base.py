@@ -111,6 +111,9 @@ class ArrayStateAlgorithm(Algorithm):
     max_iter: int
     t: int
     """The iteration of the paper's schedule (0 while the initial population is built)."""
+    n_received: int
+    """Evaluations this algorithm has received (its own count: an outside Evaluator, as in
+    pymoo's ask/tell and loop forms, does not advance ``evaluator.n_eval``)."""
     _max_evals: float
     _plan_varies: bool
     _step: Step | None
@@ -129,7 +132,7 @@ class ArrayStateAlgorithm(Algorithm):
         self.X = self.F = cast(np.ndarray, None)  # set by setup() (the initial population)
         self.CV = None
         self.incumbent: Any = None  # made with the initial population (_make_incumbent)
-        self.t = 0
+        self.t = self.n_received = 0
 
     # ---- pymoo hooks ----------------------------------------------------------------------
     def setup(self, problem, **kwargs):
@@ -199,6 +202,7 @@ class ArrayStateAlgorithm(Algorithm):
         self.incumbent = self._make_incumbent()
         X = infills.get("X")
         F, CV, GH = self._values_of(infills)
+        self.n_received = len(F)
         self.X, self.F, self.CV = X, F, CV
         self._opt_stale = self.incumbent.receive(X, F, CV, GH) | \
             self.incumbent.end_iteration(rng=self.random_state)
@@ -236,6 +240,7 @@ class ArrayStateAlgorithm(Algorithm):
     def _advance(self, infills=None, **kwargs) -> bool:
         assert self._step is not None and self._pending is not None  # an iteration is open
         F, CV, GH = self._values_of(infills)
+        self.n_received += len(F)
         if self.incumbent.receive(self._pending[: len(F)], F, CV, GH):
             self._opt_stale = True
         try:
@@ -315,6 +320,7 @@ class ArrayStateAlgorithm(Algorithm):
             if self._constrained:
                 CV, GH = constraint_values(out.get("G"), out.get("H"), k)
             F, CV = self._sanitise(Xk, F, CV)
+        self.n_received += len(F)
         if self.incumbent.receive(Xk, F, CV, GH):
             self._opt_stale = True
         return pad(n, F, CV)

@@ -151,3 +151,24 @@ def test_the_default_termination_is_the_algorithms_own_schedule(cls, problem):
 def test_a_limit_below_one_is_a_clear_error(cls, problem, termination):
     with pytest.raises(ParameterError, match=f"an '{termination[0]}' termination needs a limit"):
         minimize(_problem(problem), cls(pop_size=10), termination, seed=1)
+
+
+def test_n_received_counts_the_evaluations_under_every_driver():
+    """minimize(): equal to evaluator.n_eval; ask/tell with an outside Evaluator (which
+    leaves algorithm.evaluator at 0): the rows told."""
+    from pymoo.problems import get_problem
+
+    from moik.algorithms import get_algorithm
+
+    problem = get_problem("sphere", n_var=4)
+    res = minimize(problem, get_algorithm("pso", pop_size=10), ("n_eval", 95), seed=1)
+    assert res.algorithm.n_received == res.algorithm.evaluator.n_eval == 95
+    algorithm = get_algorithm("pso", pop_size=10)
+    algorithm.setup(problem, termination=("n_gen", 4), seed=1)
+    told = 0
+    while algorithm.has_next():
+        pop = algorithm.ask()
+        Evaluator().eval(problem, pop)
+        algorithm.tell(infills=pop)
+        told += len(pop)
+    assert algorithm.n_received == told and algorithm.evaluator.n_eval == 0

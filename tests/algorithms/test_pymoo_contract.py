@@ -41,10 +41,6 @@ KNOWN_FAILURES = {
     "(measured on seed 1; MChOA and the other algorithms reach it); not yet checked against "
     "the reference code" for name in ("choa", "cchoa", "ochoa", "wchoa", "fa")}
 KNOWN_FAILURES.update({
-    ("loop-vs-infill", "sass"): "SASS's population reduction follows the evaluator's count, "
-    "which the loop form and minimize() advance differently: the runs differ",
-    ("ask-tell", "sass"): "SASS's population reduction follows algorithm.evaluator.n_eval, "
-    "which an outside Evaluator does not advance: the run differs from minimize()'s",
     ("ask-tell", "moead-pymoo"): "pymoo 0.6.2's own MOEA/D: ask() returns one Individual "
     "(moik's moead passes)",
     ("checkpoint-dill", "moead-pymoo"): "pymoo 0.6.2's own MOEA/D holds a generator: dill "

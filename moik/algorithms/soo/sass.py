@@ -193,7 +193,7 @@ class SASS(ArrayAlgorithm):
             if self.CV is not None:
                 self.CV = np.where(win, CVY, self.CV)
         self._mem_pos = (self._mem_pos + 1) % self.Ms
-        self._reduce(planned_size(self.evaluator.n_eval, self.max_nfes, self.pop_size))
+        self._reduce(planned_size(self.n_received, self.max_nfes, self.pop_size))
 
     def _archive(self, X_old: np.ndarray) -> None:
         cap = int(round(self.Ar * len(self.X)))

@@ -18,6 +18,7 @@ others seeing the result. Ports (files as published):
 - ``mssa_reference``: Mirjalili's MSSA 1.0 (``MSSA.m``);
 - ``moda_reference``: Mirjalili's MODA 1.0 (``MODA.m``, ``Levy.m``);
 - ``momvo_reference``: Mirjalili's MOMVO 1.0 (``MOMVO.m``);
+- ``choa_reference``: Khishe & Mosavi's ChOA 1.0 (``chimp.m``; single-objective);
 - ``mo_csa_reference``: Askarzadeh's ``CSA.m``, one flock per objective (the MO-m-PSO
   paper's construction; it publishes no code), on the EOSMA authors' archive files;
   the last four with Mirjalili's shared archive files (``UpdateArchive.m``,
@@ -48,6 +49,7 @@ lists them (:data:`REFERENCES`).
 
 from __future__ import annotations
 
+from .choa import choa_reference
 from .eosma import mo_csa_reference, moeosma_reference
 from .mirjalili import malo_reference, moda_reference, momvo_reference, mssa_reference
 from .mogwo import mogwo_reference
@@ -61,5 +63,8 @@ REFERENCES = {
     "momvo": momvo_reference,
     "mo-csa": mo_csa_reference,
 }
-"""moik registry name -> port of its reference code."""
+"""moik registry name -> port of its reference code (multi-objective)."""
+
+SINGLE_REFERENCES = {"choa": choa_reference}
+"""moik registry name -> port of its reference code (single-objective: the best point)."""
 

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from pymoo.problems import get_problem
 
-from reference import REFERENCES
+from reference import REFERENCES, SINGLE_REFERENCES
 
 
 @pytest.mark.parametrize("name", sorted(REFERENCES))
@@ -20,3 +20,12 @@ def test_port_runs_two_iterations(name):
     assert (problem.xl - 1e-12 <= X).all() and (problem.xu + 1e-12 >= X).all()
     np.testing.assert_allclose(F, problem.evaluate(X), rtol=1e-12, atol=1e-12)
     assert n_eval >= 10
+
+
+@pytest.mark.parametrize("name", sorted(SINGLE_REFERENCES))
+def test_single_objective_port_runs_two_iterations(name):
+    problem = get_problem("sphere", n_var=4)
+    X, F, n_eval = SINGLE_REFERENCES[name](problem, 10, 2, np.random.default_rng(0))
+    assert X.shape == (1, 4) and F.shape == (1, 1) and n_eval == 20
+    assert (problem.xl <= X).all() and (problem.xu >= X).all()
+    np.testing.assert_allclose(F, problem.evaluate(X), rtol=1e-12)

@@ -76,7 +76,7 @@ SOLVE_OPTIONS = {"q_current": "--q-current", "n_solutions": "--n-solutions",
 """``solve_ik``'s keywords and the ``solve`` options that give them."""
 
 PARETO_OPTIONS = {"q_current": "--q-current", "n_solutions": "--pareto-size", "tol": "--tol",
-                  "seed": "--seed", "method": "--algorithm"}
+                  "seed": "--seed", "method": "--pareto-method"}
 """``solve_ik_pareto``'s keywords and the ``solve --pareto`` options that give them."""
 
 
@@ -86,7 +86,9 @@ def library_call(options: dict[str, str] | None = None) -> Iterator[None]:
 
     A :class:`~moik.exceptions.MoikError` raised inside names the library's keywords
     (``n_solutions must be ...``); it is raised again, of the same class, with each
-    keyword of ``options`` replaced by its option (``--n-solutions must be ...``).
+    keyword of ``options`` replaced by its option (``--n-solutions must be ...``), and an
+    unknown algorithm name prefixed with the option of ``method`` (``--algorithm: unknown
+    algorithm 'x'; ...``).
     """
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", DegreesWarning)
@@ -95,6 +97,9 @@ def library_call(options: dict[str, str] | None = None) -> Iterator[None]:
         except MoikError as exc:
             if not options or not exc.args or not isinstance(exc.args[0], str):
                 raise
+            if exc.args[0].startswith("unknown algorithm ") and "method" in options:
+                exc.args = (f"{options['method']}: {exc.args[0]}", *exc.args[1:])
+                raise  # the one algorithm name a command passes (--algorithm, --pareto-method)
             # a keyword with an underscore anywhere; a plain word only as the subject
             names = "|".join(map(re.escape, options))
             text = re.sub(rf"^({names}) must ", lambda m: f"{options[m.group(1)]} must ",

@@ -413,6 +413,10 @@ PANDA_URDF = str(DATA / "panda.urdf")
      "criterion 'joint_motion' needs --q-current"),
     (["solve", "eosma7", "--target", "10", "50", "40", "--pareto", "manipulability",
       "--pareto-size", "0"], "--pareto-size must be an integer >= 1"),
+    (["solve", "eosma7", "--target", "10", "50", "40", "--algorithm", "nope"],
+     "--algorithm: unknown algorithm 'nope'"),
+    (["solve", "eosma7", "--target", "10", "50", "40", "--pareto", "manipulability",
+      "--pareto-method", "nope"], "--pareto-method: unknown algorithm 'nope'"),
 ])
 def test_errors_name_the_command_line_options(capsys, argv, said):
     assert main(argv) == 2

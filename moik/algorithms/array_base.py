@@ -216,6 +216,16 @@ class ArrayStateAlgorithm(Algorithm):
         if not self.is_initialized or self._step is not None:
             return super().next()
         self._begin_iteration()
+        self._run_generation()
+        self._end_iteration()
+        self._post_advance()
+        if self.termination.has_terminated():
+            self.finalize()
+
+    def _run_generation(self) -> None:
+        """One iteration's batches through the array fast path: ``_generation()``, each
+        yielded batch sent its ``_evaluate`` result (a subclass with a faster path for some
+        problems overrides this and calls it for the others)."""
         step = self._generation()
         X = next(step)
         while True:
@@ -223,10 +233,6 @@ class ArrayStateAlgorithm(Algorithm):
                 X = step.send(self._evaluate(X))
             except StopIteration:
                 break
-        self._end_iteration()
-        self._post_advance()
-        if self.termination.has_terminated():
-            self.finalize()
 
     def _infill(self) -> Population:
         if self._step is None:
@@ -240,9 +246,7 @@ class ArrayStateAlgorithm(Algorithm):
     def _advance(self, infills=None, **kwargs) -> bool:
         assert self._step is not None and self._pending is not None  # an iteration is open
         F, CV, GH = self._values_of(infills)
-        self.n_received += len(F)
-        if self.incumbent.receive(self._pending[: len(F)], F, CV, GH):
-            self._opt_stale = True
+        self._receive(self._pending[: len(F)], F, CV, GH)
         try:
             self._pending = self._step.send(pad(len(self._pending), F, CV))
             return False
@@ -320,10 +324,15 @@ class ArrayStateAlgorithm(Algorithm):
             if self._constrained:
                 CV, GH = constraint_values(out.get("G"), out.get("H"), k)
             F, CV = self._sanitise(Xk, F, CV)
-        self.n_received += len(F)
-        if self.incumbent.receive(Xk, F, CV, GH):
-            self._opt_stale = True
+        self._receive(Xk, F, CV, GH)
         return pad(n, F, CV)
+
+    def _receive(self, X: np.ndarray, F: np.ndarray, CV: np.ndarray | None,
+                 GH: np.ndarray | None) -> None:
+        """Count evaluated rows (``n_received``) and give them to the incumbent."""
+        self.n_received += len(F)
+        if self.incumbent.receive(X, F, CV, GH):
+            self._opt_stale = True
 
     # ---- lazily built pymoo objects -------------------------------------------------------
     def _build_pop(self) -> Population:

@@ -7,7 +7,9 @@ callback, the ``archive=`` option, a problem with ``requires_kwargs=True``, whic
 receives ``algorithm=``), else through the array fast path (:func:`problem_values`:
 ``problem.evaluate`` on the array, counting ``evaluator.n_eval`` exactly; the same values
 without building a ``Population``). ``benchmarks/evaluator_path.py`` prints both paths'
-per-generation cost.
+per-generation cost. An algorithm that evaluates one row at a time (MOEA/D) asks
+:func:`compiled_objectives` for the problem's compiled objectives, where the fast path
+applies.
 """
 
 from __future__ import annotations
@@ -19,7 +21,7 @@ from pymoo.core.problem import Problem
 from moik.algorithms.mechanics import constraint_violation
 
 __all__ = ["DEFAULT_VALUES", "constraint_values", "evaluator_attached", "pad",
-           "problem_values", "values_asked"]
+           "problem_values", "compiled_objectives", "values_asked"]
 
 DEFAULT_VALUES = ["F", "G", "H"]
 """pymoo's ``Evaluator`` default ``evaluate_values_of``."""
@@ -71,3 +73,14 @@ def problem_values(problem, X: np.ndarray, *, constrained: bool,
         if F is not None:
             return {"F": F}
     return problem.evaluate(X, return_values_of=asked, return_as_dictionary=True)
+
+
+def compiled_objectives(problem, evaluator, archive, *, constrained: bool):
+    """The problem's ``compiled_objectives()`` (moik's IK problems: a numba object that
+    compiled code evaluates rows with, :func:`moik._jit.objectives_row`, bit for bit
+    ``evaluate``'s) when the fast path applies (nothing attached to ``evaluator``, no
+    constraints); else None."""
+    if constrained or evaluator_attached(evaluator, archive, problem):
+        return None
+    make = getattr(problem, "compiled_objectives", None)
+    return None if make is None else make()

@@ -24,9 +24,12 @@ import math
 from typing import TYPE_CHECKING
 
 import numpy as np
+from numba import types as nb_types
+from numba.core.extending import overload
+from numba.experimental import structref
 from pymoo.core.problem import Problem
 
-from moik._jit import jit, kernel_array
+from moik._jit import jit, kernel_array, objectives_row
 from moik._lazy import lazy_module
 from moik._validate import positive, real_array
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetError
@@ -95,6 +98,43 @@ def ik_objectives(F, types, Q, mode, p_t, code, R_t, angles_t, weights, q_start,
                 out[i, 1] = ori + disp
 
 
+@structref.register
+class IKObjectivesType(nb_types.StructRef):
+    """numba type of :class:`IKObjectives` (literal field types widened)."""
+
+    def preprocess_fields(self, fields):
+        return tuple((name, nb_types.unliteral(typ)) for name, typ in fields)
+
+
+class IKObjectives(structref.StructRefProxy):
+    """An IK problem's objectives for compiled code (numba StructRef; made by
+    :meth:`_IKProblem.compiled_objectives`): the arguments of :func:`ik_objectives` but
+    the rows, which :func:`moik._jit.objectives_row` takes."""
+
+
+structref.define_proxy(IKObjectives, IKObjectivesType,
+                       ["origins", "types", "mode", "p_t", "code", "R_t", "angles_t", "weights",
+                        "q_start"])
+
+
+@jit
+def _new_objectives(origins, types, mode, p_t, code, R_t, angles_t, weights, q_start):
+    """The compiled constructor (cached; the proxy's own would compile in every process)."""
+    return IKObjectives(origins, types, mode, p_t, code, R_t, angles_t, weights, q_start)
+
+
+@overload(objectives_row)
+def _objectives_row(spec, Q, out, i):
+    """:func:`moik._jit.objectives_row` for :class:`IKObjectives`: :func:`ik_objectives` of
+    row ``i``."""
+    if isinstance(spec, IKObjectivesType):
+        def impl(spec, Q, out, i):
+            ik_objectives(spec.origins, spec.types, Q[i:i + 1], spec.mode, spec.p_t, spec.code,
+                          spec.R_t, spec.angles_t, spec.weights, spec.q_start, out[i:i + 1])
+        return impl
+    return None
+
+
 class _IKProblem(Problem):
     """Shared set-up: robot, target, bounds, displacement term."""
 
@@ -118,12 +158,30 @@ class _IKProblem(Problem):
         at N = 50 that bookkeeping is a third of a generation). ``None`` when a subclass
         evaluates differently (overrides ``evaluate`` or ``_evaluate``): callers then use
         ``evaluate``."""
-        cls = type(self)
-        if cls._evaluate is not _IKProblem._evaluate or cls.evaluate is not _IKProblem.evaluate:
+        if not self._evaluates_as_defined():
             return None
         if X.ndim != 2 or X.shape[1] != self.n_var:
             raise ShapeError(f"X must have shape (n, {self.n_var}), got {X.shape}")
         return self._objectives(X, self._mode, self._weights)
+
+    def compiled_objectives(self) -> IKObjectives | None:
+        """This problem's objectives as compiled code evaluates them (:class:`IKObjectives`,
+        through :func:`moik._jit.objectives_row`: ``evaluate(Q)["F"]`` of a row bit for bit,
+        no check, so the rows must be finite joint values within the bounds): the hot path
+        of an algorithm that evaluates one row at a time, such as MOEA/D. ``None`` when a
+        subclass evaluates differently (as :meth:`batch_objectives`). Made per use, not
+        stored: a numba StructRef does not pickle."""
+        if not self._evaluates_as_defined():
+            return None
+        chain = self.robot.kinematic_chain
+        return _new_objectives(chain.origins, chain.joint_types, self._mode, self._p_t,
+                               self._code, self._R_t, self._angles_t, self._weights,
+                               self._q_start)
+
+    def _evaluates_as_defined(self) -> bool:
+        """Whether ``evaluate`` is this class's own (no subclass overrides it or ``_evaluate``)."""
+        cls = type(self)
+        return cls._evaluate is _IKProblem._evaluate and cls.evaluate is _IKProblem.evaluate
 
     def __init__(self, robot: Robot, target, *, displacement_weight: float = 0.0,
                  q_start=None, needs_orientation: bool = False):

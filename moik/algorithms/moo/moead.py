@@ -25,19 +25,20 @@ moik as ``moead-pymoo``, :mod:`moik.algorithms.moo.moead_pymoo`):
   (capacity ``archive_size``, default ``pop_size``, crowding truncation; see
   :mod:`moik.algorithms.moo.base`), which is the result ``res.X``/``res.F``.
 
-Deviation (for batch evaluation): each generation makes one offspring per subproblem,
-in a random order, all from the population as it stood at the start of the
-generation (pymoo's ``ParallelMOEAD`` scheme), evaluates them as one batch and then
-applies Steps 2.3-2.4 offspring by offspring in that order. Zhang & Li's loop (and
-pymoo's ``MOEAD``) evaluate one offspring at a time, so a later subproblem of the
-same generation may mate with an earlier one's offspring. Quality against pymoo's
-MOEA/D (``python -m studies.moead_vs_pymoo``, 10 seeds, 10,000 evaluations, HV of
-``res.F``, rank-sum p), measured: ZDT1 0.8207 vs 0.8283 (p 0.29), ZDT2 0.2884 vs 0.3485
-(p 0.36), ZDT3 1.2600 vs 1.2755 (p 0.028, pymoo's better), DTLZ2 0.7126 vs 0.6950
-(p < 0.001, moik's better; both Tchebycheff): not the same on ZDT3 and DTLZ2, each way
-once. The final population's non-dominated set is no better than the archive on ZDT3
-(HV 1.2525), so the difference is in the search (the batch scheme above is the known
-difference). Cost: see ``benchmarks/moead.py``.
+The loop is Zhang & Li's (and pymoo's ``MOEAD``): in each generation the subproblems
+are visited in a random order, and each offspring is evaluated and applied (Steps
+2.3-2.4) before the next subproblem mates, so it may mate with an earlier offspring
+of the same generation; one row per evaluation (an ``ask()`` gives a one-row
+``Population``). For moik's IK problems (``compiled_objectives``, nothing attached to
+the Evaluator, no constraints) a whole generation is one compiled call
+(:func:`~moik.algorithms.moo.moead_kernels.generation`, the problem's objectives
+evaluated inside it through :func:`moik._jit.objectives_row`); otherwise each row goes
+through the base's evaluation; both paths give the same run bit for bit. Quality
+against pymoo's MOEA/D and cost: ``python -m studies.moead_vs_pymoo``
+(docs/results/moead-vs-pymoo.md) and ``benchmarks/moead.py``.
+(pymoo's batch variant ``ParallelMOEAD``, all offspring of a generation from the
+population at its start, measured HV 0.664 against 1.2755 for ``MOEAD`` on ZDT3, 10
+seeds, 10,000 evaluations; moik's earlier batch scheme 1.2600.)
 
 Constraints: constraint-domination as in ``moead-pymoo``: z is the best *feasible*
 value per objective; a feasible offspring replaces every infeasible neighbour and
@@ -59,8 +60,10 @@ from scipy.spatial.distance import cdist
 
 from moik._jit import kernel_array
 from moik._validate import integer, interval, optional_integer, positive
+from moik.algorithms.array_state import budget_left
+from moik.algorithms.evaluation import compiled_objectives
 from moik.algorithms.moo.base import MOArrayAlgorithm, Step
-from moik.algorithms.moo.moead_kernels import draw_columns, offspring, update
+from moik.algorithms.moo.moead_kernels import draw_columns, generation, offspring, update
 from moik.algorithms.moo.reference_directions import default_ref_dirs
 from moik.exceptions import ParameterError, ShapeError
 
@@ -144,18 +147,51 @@ class MOEAD(MOArrayAlgorithm):
         feasible = self.F[(self._cv <= 0.0) & np.isfinite(self.F).all(axis=1)]
         self.z = feasible.min(axis=0) if len(feasible) else np.full(self.F.shape[1], np.inf)
 
-    def _generation(self) -> Step:
+    def _draws(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """A generation's random numbers, drawn at its start: the visiting order, the
+        mating draws (one row per offspring) and the replacement order keys."""
         n, d = self.X.shape
         T = self.neighbors.shape[1]
-        nr = T if self.nr is None else min(self.nr, T)
         rng = self.random_state
         perm = rng.permutation(n).astype(np.int64)
         U = rng.random((n, draw_columns(d)))
-        Y = offspring(self.X, self.neighbors, perm, U, self._xl, self._xu, self.delta,
-                      self.eta_c, self.eta_m, min(0.5, 1.0 / d))
-        FY, CVY = yield Y
-        keys = rng.random((n, T)) if nr < T else np.empty((n, 0))
-        self.n_replaced = update(self.X, self.F, self._cv, self.ref_dirs, self.neighbors, perm,
-                                 Y, kernel_array(FY),
-                                 np.zeros(n) if CVY is None else kernel_array(CVY),
-                                 self.z, nr, keys)
+        keys = rng.random((n, T)) if self._nr < T else np.empty((n, 0))
+        return perm, U, keys
+
+    @property
+    def _nr(self) -> int:
+        T = self.neighbors.shape[1]
+        return T if self.nr is None else min(self.nr, T)
+
+    def _rates(self) -> np.ndarray:
+        d = self.X.shape[1]
+        return np.array([self.delta, self.eta_c, self.eta_m, min(0.5, 1.0 / d)])
+
+    def _generation(self) -> Step:
+        perm, U, keys = self._draws()
+        rates, self.n_replaced = self._rates(), 0
+        for i in range(len(perm)):
+            row = slice(i, i + 1)
+            Y = offspring(self.X, self.neighbors, perm[row], U[row], self._xl, self._xu, rates)
+            FY, CVY = yield Y
+            self.n_replaced += update(self.X, self.F, self._cv, self.ref_dirs, self.neighbors,
+                                      perm[row], Y, kernel_array(FY),
+                                      np.zeros(1) if CVY is None else kernel_array(CVY),
+                                      self.z, self._nr, keys[row])
+
+    def _run_generation(self) -> None:
+        """One compiled call for a problem with compiled objectives (module doc), else the
+        base's path."""
+        spec = compiled_objectives(self.problem, self.evaluator, self.__dict__.get("archive"),
+                                   constrained=self._constrained)
+        if spec is None:
+            return super()._run_generation()
+        draws = self._draws()
+        k = budget_left(self._max_evals, self.evaluator.n_eval, len(draws[0]))
+        Y, FY = np.empty((k, self.X.shape[1])), np.empty((k, self.F.shape[1]))
+        self.n_replaced = generation(self.X, self.F, self._cv, self.ref_dirs, self.neighbors,
+                                     draws, self._xl, self._xu, self._rates(), self.z,
+                                     self._nr, Y, FY, spec)
+        self.evaluator.n_eval += k
+        FY, CV = self._sanitise(Y, FY, None)
+        self._receive(Y, FY, CV, None)

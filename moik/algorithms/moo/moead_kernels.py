@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from moik._jit import jit
+from moik._jit import jit, objectives_row
 
 N_FIXED = 4
 """Leading columns of a row of ``U``: the pool test, the two parent picks, the child."""
@@ -53,74 +53,112 @@ def _pm(x: float, lo: float, hi: float, u: float, eta: float) -> float:
 
 
 @jit
-def offspring(X, neighbors, perm, U, xl, xu, delta: float, eta_c: float, eta_m: float,
-              prob_mut: float):
-    """Step 2.1-2.2: one offspring per subproblem, in the order ``perm``.
+def _child(X, neighbors, k: int, u, xl, xu, rates, y) -> None:
+    """Step 2.1-2.2 for subproblem ``k`` from the draws ``u`` (one row of ``U``), into ``y``.
 
-    Offspring ``i`` belongs to subproblem ``perm[i]``: its two parents are distinct
-    members of the neighbourhood with probability ``delta`` (``U[i, 0] < delta``), else
-    of the whole population; SBX (each variable crossed with probability 0.5 unless the
-    parents coincide there, spread ``eta_c``; one of the two children, each variable from
-    either SBX value with probability 0.5), then polynomial mutation (each variable with
-    probability ``prob_mut``, spread ``eta_m``); clamped to the bounds.
+    Its two parents are distinct members of the neighbourhood with probability ``delta``
+    (``u[0] < delta``), else of the whole population; SBX (each variable crossed with
+    probability 0.5 unless the parents coincide there, spread ``eta_c``; one of the two
+    children, each variable from either SBX value with probability 0.5), then polynomial
+    mutation (each variable with probability ``prob_mut``, spread ``eta_m``); clamped to
+    the bounds. ``rates``: ``(delta, eta_c, eta_m, prob_mut)``.
+    """
+    n, d = X.shape
+    delta, eta_c, eta_m, prob_mut = rates[0], rates[1], rates[2], rates[3]
+    T = neighbors.shape[1]
+    m = T if u[0] < delta else n
+    a = min(int(u[1] * m), m - 1)
+    b = min(int(u[2] * (m - 1)), m - 2)
+    if b >= a:
+        b += 1
+    if m == T:
+        a, b = neighbors[k, a], neighbors[k, b]
+    base = a if u[3] < 0.5 else b
+    for j in range(d):
+        c = N_FIXED + 5 * j
+        p1, p2, lo, hi = X[a, j], X[b, j], xl[j], xu[j]
+        v = X[base, j]
+        if u[c] < 0.5 and abs(p1 - p2) > 1.0e-14 and lo != hi:
+            y1, y2 = min(p1, p2), max(p1, p2)
+            spread, w = y2 - y1, u[c + 1]
+            if u[c + 2] < 0.5:
+                v = 0.5 * ((y1 + y2) - _sbx_betaq(1.0 + 2.0 * (y1 - lo) / spread, w, eta_c)
+                           * spread)
+            else:
+                v = 0.5 * ((y1 + y2) + _sbx_betaq(1.0 + 2.0 * (hi - y2) / spread, w, eta_c)
+                           * spread)
+            v = min(max(v, lo), hi)
+        if u[c + 3] < prob_mut and lo != hi:
+            v = _pm(v, lo, hi, u[c + 4], eta_m)
+        y[j] = v
+
+
+@jit
+def offspring(X, neighbors, perm, U, xl, xu, rates):
+    """Step 2.1-2.2 (:func:`_child`) for each subproblem of ``perm``, from the population as
+    it stands.
 
     Args:
         X: Population (n, d). neighbors: Neighbourhood indices (n, T), int64.
-        perm: Subproblem of each offspring (n,), int64. U: Uniform draws (n, 4 + 5 d).
-        xl, xu: Bounds (d,).
+        perm: Subproblem of each offspring (k,), int64. U: Uniform draws (k, 4 + 5 d).
+        xl, xu: Bounds (d,). rates: ``(delta, eta_c, eta_m, prob_mut)``.
 
     Returns:
-        Offspring (n, d).
+        Offspring (k, d), one per entry of ``perm``.
     """
-    n, d = X.shape
-    T = neighbors.shape[1]
-    Y = np.empty((n, d))
-    for i in range(n):
-        k = perm[i]
-        m = T if U[i, 0] < delta else n
-        a = min(int(U[i, 1] * m), m - 1)
-        b = min(int(U[i, 2] * (m - 1)), m - 2)
-        if b >= a:
-            b += 1
-        if m == T:
-            a, b = neighbors[k, a], neighbors[k, b]
-        base = a if U[i, 3] < 0.5 else b
-        for j in range(d):
-            c = N_FIXED + 5 * j
-            p1, p2, lo, hi = X[a, j], X[b, j], xl[j], xu[j]
-            y = X[base, j]
-            if U[i, c] < 0.5 and abs(p1 - p2) > 1.0e-14 and lo != hi:
-                y1, y2 = min(p1, p2), max(p1, p2)
-                spread, u = y2 - y1, U[i, c + 1]
-                if U[i, c + 2] < 0.5:
-                    y = 0.5 * ((y1 + y2) - _sbx_betaq(1.0 + 2.0 * (y1 - lo) / spread, u, eta_c)
-                               * spread)
-                else:
-                    y = 0.5 * ((y1 + y2) + _sbx_betaq(1.0 + 2.0 * (hi - y2) / spread, u, eta_c)
-                               * spread)
-                y = min(max(y, lo), hi)
-            if U[i, c + 3] < prob_mut and lo != hi:
-                y = _pm(y, lo, hi, U[i, c + 4], eta_m)
-            Y[i, j] = y
+    Y = np.empty((perm.shape[0], X.shape[1]))
+    for i in range(perm.shape[0]):
+        _child(X, neighbors, perm[i], U[i], xl, xu, rates, Y[i])
     return Y
 
 
 @jit
-def _tchebycheff(F, row: int, w, z) -> float:
-    """Eq. 3: ``max_i w_i |f_i - z_i|`` of row ``row`` of ``F``."""
+def _tchebycheff(f, w, z) -> float:
+    """Eq. 3: ``max_i w_i |f_i - z_i|``."""
     g = 0.0
-    for o in range(F.shape[1]):
-        g = max(g, w[o] * abs(F[row, o] - z[o]))
+    for o in range(f.shape[0]):
+        g = max(g, w[o] * abs(f[o] - z[o]))
     return g
 
 
 @jit
-def _finite_row(F, CV, row: int) -> bool:
-    """Whether row ``row`` of ``F`` and ``CV[row]`` are all finite."""
-    ok = np.isfinite(CV[row])
-    for o in range(F.shape[1]):
-        ok = ok and np.isfinite(F[row, o])
+def _finite(f, cv: float) -> bool:
+    """Whether the objectives ``f`` and the violation ``cv`` are all finite."""
+    ok = np.isfinite(cv)
+    for o in range(f.shape[0]):
+        ok = ok and np.isfinite(f[o])
     return ok
+
+
+@jit
+def _replace(X, F, CV, W, neighbors, k: int, y, fy, cvy: float, z, nr: int, keys) -> int:
+    """Steps 2.3-2.4 for one offspring ``(y, fy, cvy)`` of subproblem ``k`` (in place):
+    the reference point, then the neighbours it replaces (see :func:`update`)."""
+    if not _finite(fy, cvy):
+        return 0
+    feasible = cvy <= 0.0
+    if feasible:
+        for o in range(fy.shape[0]):
+            z[o] = min(z[o], fy[o])
+    T = neighbors.shape[1]
+    order = np.argsort(keys) if nr < T else np.arange(T)
+    count = 0
+    for t in range(T):
+        j = neighbors[k, order[t]]
+        if not _finite(F[j], CV[j]):
+            better = True  # a member the problem gave no finite value
+        elif feasible:
+            better = CV[j] > 0.0 or _tchebycheff(fy, W[j], z) < _tchebycheff(F[j], W[j], z)
+        else:
+            better = CV[j] > 0.0 and cvy < CV[j]
+        if better:
+            X[j, :] = y
+            F[j, :] = fy
+            CV[j] = cvy
+            count += 1
+            if count >= nr:
+                break
+    return count
 
 
 @jit
@@ -139,39 +177,46 @@ def update(X, F, CV, W, neighbors, perm, Y, FY, CVY, z, nr: int, order_keys):
     Args:
         X, F, CV: Population (n, d), objectives (n, m), violations (n,); updated.
         W: Weight vectors (n, m). neighbors: (n, T) int64. perm: Subproblem of each
-            offspring (n,). Y, FY, CVY: Offspring, their objectives and violations.
+            offspring (k,). Y, FY, CVY: Offspring, their objectives and violations.
         z: Reference point (m,); updated.
-        nr: Replacement limit. order_keys: Uniform draws (n, T) for the visiting order.
+        nr: Replacement limit. order_keys: Uniform draws (k, T) for the visiting order
+            ((k, 0) when ``nr`` does not limit).
 
     Returns:
         Number of replacements made.
     """
-    T = neighbors.shape[1]
     replaced = 0
     for i in range(Y.shape[0]):
-        if not _finite_row(FY, CVY, i):
-            continue
-        feasible = CVY[i] <= 0.0
-        if feasible:
-            for o in range(FY.shape[1]):
-                z[o] = min(z[o], FY[i, o])
-        k = perm[i]
-        order = np.argsort(order_keys[i]) if nr < T else np.arange(T)
-        count = 0
-        for t in range(T):
-            j = neighbors[k, order[t]]
-            if not _finite_row(F, CV, j):
-                better = True  # a member the problem gave no finite value
-            elif feasible:
-                better = CV[j] > 0.0 or _tchebycheff(FY, i, W[j], z) < _tchebycheff(F, j, W[j], z)
-            else:
-                better = CV[j] > 0.0 and CVY[i] < CV[j]
-            if better:
-                X[j, :] = Y[i, :]
-                F[j, :] = FY[i, :]
-                CV[j] = CVY[i]
-                count += 1
-                if count >= nr:
-                    break
-        replaced += count
+        replaced += _replace(X, F, CV, W, neighbors, perm[i], Y[i], FY[i], CVY[i], z, nr,
+                             order_keys[i])
+    return replaced
+
+
+@jit
+def generation(X, F, CV, W, neighbors, draws, xl, xu, rates, z, nr: int, Y, FY, spec) -> int:
+    """One whole generation of the sequential loop for an unconstrained problem with
+    compiled objectives (``spec``, evaluated by :func:`moik._jit.objectives_row`): for each
+    offspring ``i`` in turn, Steps 2.1-2.2 (:func:`_child`) from the population as the
+    earlier ones left it, its objectives into ``FY[i]``, then Steps 2.3-2.4
+    (:func:`_replace`). The same arithmetic as :func:`offspring` and :func:`update` one
+    row at a time, in one call.
+
+    Args:
+        X, F, CV, W, neighbors: As :func:`update` (``X``, ``F`` updated; ``CV`` all zero).
+        draws: ``(perm, U, order_keys)`` of the generation (as :func:`offspring` and
+            :func:`update`).
+        xl, xu, rates: As :func:`offspring`. z, nr: As :func:`update`.
+        Y, FY: The offspring (k, d) and their objectives (k, m), written; ``k`` (at most
+            ``len(perm)``: the budget) offspring are made.
+        spec: The problem's compiled objectives.
+
+    Returns:
+        Number of replacements made.
+    """
+    perm, U, keys = draws
+    replaced = 0
+    for i in range(Y.shape[0]):
+        _child(X, neighbors, perm[i], U[i], xl, xu, rates, Y[i])
+        objectives_row(spec, Y, FY, i)
+        replaced += _replace(X, F, CV, W, neighbors, perm[i], Y[i], FY[i], 0.0, z, nr, keys[i])
     return replaced

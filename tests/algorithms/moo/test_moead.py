@@ -6,6 +6,7 @@ import pickle
 
 import numpy as np
 import pytest
+from pymoo.core.evaluator import Evaluator
 from pymoo.core.population import Population
 from pymoo.core.problem import Problem
 from pymoo.optimize import minimize
@@ -56,6 +57,48 @@ def test_zdt1_hypervolume_near_nsga2(check):
     ours = check.zdt1_hypervolume(lambda: MOEAD(pop_size=50), n_var=10, n_eval=5000)
     nsga2 = check.nsga2_zdt1_hypervolume(n_var=10, n_eval=5000, pop_size=50)
     assert ours > 0.9 * nsga2, (ours, nsga2)
+
+
+class _Plain(Problem):
+    """An IK problem behind a plain pymoo Problem: no compiled writer, so MOEA/D's loop
+    runs through the base's evaluation, one row per batch."""
+
+    def __init__(self, inner):
+        super().__init__(n_var=inner.n_var, n_obj=inner.n_obj, xl=inner.xl, xu=inner.xu)
+        self.inner = inner
+
+    def _evaluate(self, X, out, *args, **kwargs):
+        out["F"] = self.inner.evaluate(X)
+
+
+def test_the_compiled_loop_equals_the_generic_one(check):
+    """The fast path (an IK problem's compiled writer) and the base's evaluation give the
+    same run bit for bit, at a budget that ends inside a generation."""
+    ik = check.mo_problem("ik")
+    fast = minimize(ik, MOEAD(pop_size=20), ("n_eval", 517), seed=3)
+    slow = minimize(_Plain(ik), MOEAD(pop_size=20), ("n_eval", 517), seed=3)
+    assert fast.algorithm.evaluator.n_eval == slow.algorithm.evaluator.n_eval == 517
+    np.testing.assert_array_equal(fast.algorithm.X, slow.algorithm.X)
+    np.testing.assert_array_equal(fast.F, slow.F)
+    assert fast.algorithm.n_replaced == slow.algorithm.n_replaced
+
+
+def test_a_generation_asks_for_one_row_at_a_time():
+    """Zhang & Li's loop (and pymoo's MOEAD): each offspring is evaluated and applied before
+    the next subproblem mates, so a generation asks for one row at a time."""
+    algorithm = MOEAD(pop_size=20)
+    algorithm.setup(get_problem("zdt1", n_var=6), termination=("n_gen", 10), seed=2)
+    algorithm.tell(infills=_evaluated(algorithm.ask(), algorithm.problem))  # initial population
+    sizes = []
+    for _ in range(40):
+        pop = algorithm.ask()
+        sizes.append(len(pop))
+        algorithm.tell(infills=_evaluated(pop, algorithm.problem))
+    assert set(sizes) == {1} and algorithm.n_received == 20 + 40
+
+
+def _evaluated(pop, problem):
+    return Evaluator().eval(problem, pop)
 
 
 def test_replacement_limit_nr():

@@ -1,11 +1,12 @@
 """MOEA/D's kernels (moik.algorithms.moo.moead_kernels): offspring inside the bounds, the
-Tchebycheff replacement rule, the limit nr, non-finite rows."""
+Tchebycheff replacement rule, the limit nr, non-finite rows, the fused sequential step."""
 
 import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from moik.algorithms.moo.moead_kernels import draw_columns, offspring, update
+from moik.algorithms.moo.moead_kernels import draw_columns, generation, offspring, update
+from tests.algorithms.conftest import IKProblems
 
 
 @settings(max_examples=30, deadline=None)
@@ -18,11 +19,11 @@ def test_offspring_stay_in_bounds_and_mix_their_parents(n, d, seed, delta):
     neighbors = np.argsort(rng.random((n, n)), axis=1)[:, :3].astype(np.int64)
     perm = rng.permutation(n).astype(np.int64)
     U = rng.random((n, draw_columns(d)))
-    Y = offspring(X, neighbors, perm, U, xl, xu, delta, 20.0, 20.0, 0.0)
+    Y = offspring(X, neighbors, perm, U, xl, xu, np.array([delta, 20.0, 20.0, 0.0]))
     assert Y.shape == (n, d) and np.all(xl <= Y) and np.all(xu >= Y)
     # with no crossover and no mutation each offspring is one of its parents
     U[:, 4::5] = 1.0
-    Y = offspring(X, neighbors, perm, U, xl, xu, 1.0, 20.0, 20.0, 0.0)
+    Y = offspring(X, neighbors, perm, U, xl, xu, np.array([1.0, 20.0, 20.0, 0.0]))
     for i, k in enumerate(perm):
         assert any(np.array_equal(Y[i], X[j]) for j in neighbors[k])
 
@@ -72,3 +73,39 @@ def test_non_finite_offspring_are_skipped_and_non_finite_members_replaced():
     n = update(X, F, CV, W, neighbors, np.array([0], dtype=np.int64), np.zeros((1, 3)),
                np.array([[9.0, 9.0]]), np.zeros(1), z, 3, np.empty((1, 0)))
     assert n == 1 and np.array_equal(F[2], [9.0, 9.0])
+
+
+@settings(max_examples=10, deadline=None)
+@given(st.integers(4, 10), st.integers(0, 2**32 - 1), st.sampled_from([1, 2, 20]),
+       st.integers(0, 10))
+def test_the_compiled_generation_is_offspring_then_update_one_row_at_a_time(n, seed, nr, short):
+    """generation() (the fast path, an IK problem's compiled objectives) does what offspring,
+    evaluate and update do for each row in turn, each offspring seeing the population as
+    the earlier ones left it (Zhang & Li's loop); ``short`` rows fewer: the budget."""
+    problem = IKProblems.biobjective()
+    d, k = problem.n_var, max(n - short, 0)
+    rng = np.random.default_rng(seed)
+    xl, xu = problem.xl.astype(float), problem.xu.astype(float)
+    W = rng.random((n, 2))
+    neighbors = np.argsort(rng.random((n, n)), axis=1)[:, :3].astype(np.int64)
+    perm = rng.permutation(n).astype(np.int64)
+    U, keys = rng.random((n, draw_columns(d))), rng.random((n, 3))
+    rates = np.array([0.9, 20.0, 20.0, 1.0 / d])
+    X0 = xl + rng.random((n, d)) * (xu - xl)
+    F0 = problem.evaluate(X0)
+
+    X, F, z = X0.copy(), F0.copy(), F0.min(axis=0)
+    replaced = 0
+    for i in range(k):
+        Y = offspring(X, neighbors, perm[i:i + 1], U[i:i + 1], xl, xu, rates)
+        replaced += update(X, F, np.zeros(n), W, neighbors, perm[i:i + 1], Y,
+                           problem.evaluate(Y), np.zeros(1), z, nr, keys[i:i + 1])
+    X2, F2, z2 = X0.copy(), F0.copy(), F0.min(axis=0)
+    Y2, FY2 = np.empty((k, d)), np.empty((k, 2))
+    replaced2 = generation(X2, F2, np.zeros(n), W, neighbors, (perm, U, keys), xl, xu, rates,
+                           z2, nr, Y2, FY2, problem.compiled_objectives())
+    assert replaced == replaced2
+    np.testing.assert_array_equal(X, X2)
+    np.testing.assert_array_equal(F, F2)
+    np.testing.assert_array_equal(z, z2)
+    np.testing.assert_array_equal(FY2, problem.evaluate(Y2).reshape(k, 2))

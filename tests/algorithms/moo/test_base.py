@@ -136,7 +136,8 @@ def test_verbose_prints_pymoos_multi_objective_columns(capsys):
 # ask/tell rounds one generation takes (docs/algorithms.md, "Ask/tell rounds per generation")
 ROUNDS = {"moeosma": (2, 2), "mo-m-pso": (2, 2), "mopso": (1, 2), "mosma": (1, 1),
           "mompa": (1, 1), "mogwo": (1, 1), "moalo": (1, 1), "moda": (1, 1), "momvo": (1, 1),
-          "mssa": (1, 1), "mo-pso": (1, 1), "mo-jaya": (1, 1), "mo-csa": (1, 1)}
+          "mssa": (1, 1), "mo-pso": (1, 1), "mo-jaya": (1, 1), "mo-csa": (1, 1),
+          "moead": (10, 10)}  # one offspring per round: N = 10 directions
 
 
 @pytest.mark.parametrize("name", sorted(ROUNDS))

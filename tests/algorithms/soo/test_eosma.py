@@ -71,7 +71,7 @@ def pose_problem(robot, target):
     return PoseIK(robot, target, weights=(0.5, 0.5), orientation="eosma-euler")
 
 
-def solve_all(robot, scenario: int, threshold: float):
+def solve_all(robot, scenario: int, threshold: float, max_failures: int = 10):
     """Protocol runs over the seeded targets: (final f, first-run f) arrays."""
     n_gen = 500 if scenario == 1 else 1000
     final, first = [], []
@@ -79,7 +79,7 @@ def solve_all(robot, scenario: int, threshold: float):
         problem = PositionIK(robot, target.position) if scenario == 1 else pose_problem(
             robot, target)
         out = solve_until_success(problem, lambda: EOSMA.scenario(scenario), ("n_gen", n_gen),
-                                  seed=i, threshold=threshold)
+                                  seed=i, threshold=threshold, max_failures=max_failures)
         final.append(out.best_f)
         first.append(out.run_f[0])
         assert np.all(robot.within_limits(out.best.X))
@@ -306,17 +306,17 @@ def test_scenario2_pose_table1_metres():
     assert np.sum(first < 1e-8) >= paper_first_run_bound()
 
 
-@pytest.mark.slow
-def test_scenario2_pose_cm_as_measured():
-    """Scenario 2 with the catalog arm in cm: NOT 18 of 20.
+def test_scenario2_pose_in_cm_falls_short_of_the_paper():
+    """Scenario 2 with the catalog arm in cm: the first runs contradict the paper's Table 7.
 
-    The same algorithm and targets; only the unit of length differs. Measured:
-    2 of 20 first runs and 16 of 20 protocol results below 1e-8 (103 runs, about
-    35 s); the best of 10 runs of each of the other 4 still has f = 0.002-0.09.
-    Asserted as measured (lower bound) so that a regression is noticed.
+    The same algorithm and targets as :func:`test_scenario2_pose_table1_metres`; only the
+    unit of length differs. Measured: 2 of 20 first runs below 1e-8 (16 of 20 after the
+    protocol's re-runs, 103 runs; the best of 10 runs of each of the other 4 still has
+    f = 0.002-0.09), below :func:`paper_first_run_bound` (17), which the metres arm meets:
+    the unit the paper's arm is given in matters.
     """
-    final, first = solve_all(get_robot("eosma7"), 2, threshold=1e-6)
-    assert np.sum(final < 1e-8) >= 15
+    _, first = solve_all(get_robot("eosma7"), 2, threshold=1e-6, max_failures=1)
+    assert np.sum(first < 1e-8) < paper_first_run_bound()
 
 
 def test_table9_pose_is_reached_in_metres():

@@ -33,6 +33,7 @@ def test_registered_as_moead_and_default_directions():
     ({"eta_c": 0}, ParameterError, "eta_c must be a positive"),
     ({"ref_dirs": [[0.5, -0.5], [1.0, 0.0]]}, ParameterError, "non-negative weights"),
     ({"n_neighbours": 5}, ParameterError, r"unknown parameter\(s\) n_neighbours"),
+    ({"batch": "yes"}, ParameterError, "batch must be"),
 ])
 def test_bad_options_are_refused(params, error, message):
     with pytest.raises(error, match=message):
@@ -99,6 +100,24 @@ def test_a_generation_asks_for_one_row_at_a_time():
 
 def _evaluated(pop, problem):
     return Evaluator().eval(problem, pop)
+
+
+@pytest.mark.parametrize("problem_name", ["zdt1", "ik"])
+def test_batch_generations_ask_once_and_are_reproducible(check, problem_name):
+    """batch=True: one batch of N offspring per generation (made from the population at the
+    generation's start); seeded, exact budget."""
+    algorithm = MOEAD(pop_size=20, batch=True)
+    algorithm.setup(get_problem("zdt1", n_var=6), termination=("n_gen", 10), seed=2)
+    algorithm.tell(infills=_evaluated(algorithm.ask(), algorithm.problem))
+    assert [len(_tell(algorithm)) for _ in range(3)] == [20, 20, 20]
+    check.mo_reproducible_front(lambda: MOEAD(pop_size=20, batch=True),
+                                check.mo_problem(problem_name), n_eval=1111, seed=4)
+
+
+def _tell(algorithm):
+    pop = algorithm.ask()
+    algorithm.tell(infills=_evaluated(pop, algorithm.problem))
+    return pop
 
 
 def test_replacement_limit_nr():

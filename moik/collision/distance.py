@@ -74,10 +74,18 @@ def segment_points(p, u, h, q, v, k):
         return 0.0, min(max(f, -k), k)
     if k == 0.0:
         return min(max(-c, -h), h), 0.0
-    denom = 1.0 - b * b
+    # t = (b f - c) / (1 - b^2), written by Lagrange's identity as
+    # ((u x v) . (v x r)) / |u x v|^2: for nearly parallel segments 1 - b^2 and b f - c
+    # cancel (at an angle of 2e-8 rad 1 - b^2 is 4e-16 with an error of 1e-16, so the
+    # closest points and the distance were off by ~1e-8 and differed with the order of
+    # the pair); the cross products keep their relative accuracy. Exactly parallel: t = 0,
+    # then the clamps below pick a closest pair.
+    cx, cy, cz = u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]
+    denom = cx * cx + cy * cy + cz * cz
     t = 0.0
-    if denom > _PARALLEL:
-        t = min(max((b * f - c) / denom, -h), h)
+    if denom > 0.0:
+        ex, ey, ez = v[1] * rz - v[2] * ry, v[2] * rx - v[0] * rz, v[0] * ry - v[1] * rx
+        t = min(max((cx * ex + cy * ey + cz * ez) / denom, -h), h)
     w = b * t + f
     if w < -k:
         w = -k

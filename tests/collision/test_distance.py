@@ -109,6 +109,30 @@ def test_witnesses_and_normal(x, y):
         assert np.allclose(swapped[1:4], -n)
 
 
+def _capsule_pose(axis, centre):
+    """A pose whose z axis (the capsule's) is ``axis``, at ``centre``."""
+    z = np.asarray(axis, float) / np.linalg.norm(axis)
+    x = np.cross([0.0, 0.0, 1.0], z) if abs(z[2]) < 0.9 else np.array([1.0, 0.0, 0.0])
+    x /= np.linalg.norm(x)
+    P = np.eye(4)
+    P[:3, :3], P[:3, 3] = np.column_stack([x, np.cross(z, x), z]), centre
+    return P
+
+
+@pytest.mark.parametrize("angle", [1e-8, 1e-6, 1e-3])
+def test_nearly_parallel_crossing_capsules_touch_along_their_axes(angle):
+    """Two capsule axes crossing at (0.3, 0, 0) at a small angle: the segments meet, so the
+    signed distance is minus the sum of the radii, in either order. The earlier formula
+    ((b f - c) / (1 - b^2), cancelling) treated angles below 1e-6 as parallel and put the
+    closest points 0.3 sin(angle) apart (3e-9 at 1e-8), and hypothesis found the two
+    orders of a pair differing by 1e-8."""
+    A = (CAPSULE, _capsule_pose([1.0, 0.0, 0.0], [0.0, 0.0, 0.0]), np.array([0.2, 0.5, 0.0]))
+    B = (CAPSULE, _capsule_pose([np.cos(angle), np.sin(angle), 0.0], [0.3, 0.0, 0.0]),
+         np.array([0.1, 0.5, 0.0]))
+    for a, b in ((A, B), (B, A)):
+        assert pair_distance(*a, *b)[0] == pytest.approx(-0.3, abs=1e-15)
+
+
 def test_hand_cases():
     eye = np.eye(4)
     far = np.eye(4)

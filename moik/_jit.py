@@ -270,13 +270,14 @@ def kernel_array(values: Any) -> np.ndarray:
     return np.array(values, dtype=np.float64, order="C", copy=True)
 
 
-def objectives_row(spec, Q, out, i):  # pragma: no cover - compiled code only
-    """The objectives of row ``i`` of ``Q`` into ``out[i]``, in compiled code, for a problem's
-    compiled objectives ``spec`` (a numba type that the problem's module overloads this
-    function for: moik's IK problems, :meth:`moik.problems.ik.BiObjectiveIK.compiled_objectives`).
+def objectives_row(spec, Q, out, i):
+    """The objectives of row ``i`` of ``Q`` into ``out[i]`` for a problem's compiled
+    objectives ``spec`` (moik's IK problems:
+    :class:`~moik.problems.ik_kernels.IKObjectives`, from their ``compiled_objectives()``).
 
     The protocol by which an algorithm's kernel (which may not import a problem) evaluates
-    one row at a time without returning to Python: numba picks the problem's
-    implementation by the type of ``spec`` when it compiles the caller.
+    one row at a time without returning to Python: the problem's module overloads this
+    function for the numba type of its ``spec``, and numba picks that implementation when
+    it compiles the caller. Called from Python, it is ``spec.write_row(Q, out, i)``.
     """
-    raise NotImplementedError("objectives_row runs in compiled code only")
+    spec.write_row(Q, out, i)

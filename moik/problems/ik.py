@@ -1,9 +1,9 @@
 """Inverse kinematics as vectorized pymoo Problems.
 
 Decision variables are the joint values (bounds = the robot's joint limits).
-``_evaluate`` makes one compiled call per population, :func:`ik_objectives`:
-FK of every row, its error metric and the displacement term, fused, so no
-intermediate pose array is built.
+``_evaluate`` makes one compiled call per population,
+:func:`~moik.problems.ik_kernels.ik_objectives`: FK of every row, its error metric and
+the displacement term, fused, so no intermediate pose array is built.
 
 * :class:`PositionIK`: one objective, the position error (EOSMA Eq. 29; also
   the I-BES and MChOA Eq. 3 objective).
@@ -20,119 +20,33 @@ move the arm least.
 
 from __future__ import annotations
 
-import math
 from typing import TYPE_CHECKING
 
 import numpy as np
-from numba import types as nb_types
-from numba.core.extending import overload
-from numba.experimental import structref
 from pymoo.core.problem import Problem
 
-from moik._jit import jit, kernel_array, objectives_row
+from moik._jit import kernel_array
 from moik._lazy import lazy_module
 from moik._validate import positive, real_array
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetError
-from moik.kinematics.rotation_metrics import metric_code, metric_target, rotation_error
+from moik.kinematics.rotation_metrics import metric_code, metric_target
+from moik.problems.ik_kernels import (
+    BI_OBJECTIVE,
+    POSITION,
+    WEIGHTED_POSE,
+    IKObjectives,
+    ik_objectives,
+    new_objectives,
+)
 from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.chain import Robot
-from moik.robots.fk_kernels import (
-    BLOCK,
-    all_finite,
-    block_position,
-    block_rotation,
-    block_workspace,
-    chain_block,
-)
-
-POSITION, WEIGHTED_POSE, BI_OBJECTIVE = 0, 1, 2  # what ik_objectives computes
+from moik.robots.fk_kernels import all_finite
 
 if TYPE_CHECKING:
     from moik.fronts import cache as front_cache
     from moik.fronts.front import ReferenceFront
 else:  # loaded at the first reference front (moik._lazy): a solve needs none of it
     front_cache = lazy_module("moik.fronts.cache")
-
-
-@jit
-def ik_objectives(F, types, Q, mode, p_t, code, R_t, angles_t, weights, q_start, out):
-    """The IK objectives of every row of ``Q (n, dof)``, into ``out``.
-
-    Args:
-        F, types: ``KinematicChain.origins`` and ``.joint_types``.
-        Q: Joint vectors ``(n, dof)``.
-        mode: :data:`POSITION` (``out (n, 1)``: position error), :data:`WEIGHTED_POSE`
-            (``out (n, 1)``: ``w_pos * position + w_ori * orientation``) or
-            :data:`BI_OBJECTIVE` (``out (n, 2)``: position, orientation).
-        p_t: Target position ``(3,)``.
-        code, R_t, angles_t: Orientation metric, as :func:`rotation_error` takes them.
-        weights: ``(w_pos, w_ori, w_disp)``; the displacement term
-            ``w_disp * ||q - q_start||`` (EOSMA Eq. 31) is added to every objective.
-        q_start: ``(dof,)``, read only when ``w_disp != 0``.
-        out: ``(n, 1)`` or ``(n, 2)``.
-    """
-    W = block_workspace(types.size)
-    for start in range(0, Q.shape[0], BLOCK):
-        m = min(BLOCK, Q.shape[0] - start)
-        chain_block(F, types, Q, start, m, W)
-        for b in range(m):
-            i = start + b
-            x, y, z = block_position(W, b)
-            dx, dy, dz = x - p_t[0], y - p_t[1], z - p_t[2]
-            pos = math.sqrt(dx * dx + dy * dy + dz * dz)
-            disp = 0.0
-            if weights[2] != 0.0:
-                acc = 0.0
-                for j in range(types.size):
-                    diff = Q[i, j] - q_start[j]
-                    acc += diff * diff
-                disp = weights[2] * math.sqrt(acc)
-            if mode == POSITION:
-                out[i, 0] = pos + disp
-                continue
-            ori = rotation_error(code, block_rotation(W, b), R_t, angles_t)
-            if mode == WEIGHTED_POSE:
-                out[i, 0] = weights[0] * pos + weights[1] * ori + disp
-            else:
-                out[i, 0] = pos + disp
-                out[i, 1] = ori + disp
-
-
-@structref.register
-class IKObjectivesType(nb_types.StructRef):
-    """numba type of :class:`IKObjectives` (literal field types widened)."""
-
-    def preprocess_fields(self, fields):
-        return tuple((name, nb_types.unliteral(typ)) for name, typ in fields)
-
-
-class IKObjectives(structref.StructRefProxy):
-    """An IK problem's objectives for compiled code (numba StructRef; made by
-    :meth:`_IKProblem.compiled_objectives`): the arguments of :func:`ik_objectives` but
-    the rows, which :func:`moik._jit.objectives_row` takes."""
-
-
-structref.define_proxy(IKObjectives, IKObjectivesType,
-                       ["origins", "types", "mode", "p_t", "code", "R_t", "angles_t", "weights",
-                        "q_start"])
-
-
-@jit
-def _new_objectives(origins, types, mode, p_t, code, R_t, angles_t, weights, q_start):
-    """The compiled constructor (cached; the proxy's own would compile in every process)."""
-    return IKObjectives(origins, types, mode, p_t, code, R_t, angles_t, weights, q_start)
-
-
-@overload(objectives_row)
-def _objectives_row(spec, Q, out, i):
-    """:func:`moik._jit.objectives_row` for :class:`IKObjectives`: :func:`ik_objectives` of
-    row ``i``."""
-    if isinstance(spec, IKObjectivesType):
-        def impl(spec, Q, out, i):
-            ik_objectives(spec.origins, spec.types, Q[i:i + 1], spec.mode, spec.p_t, spec.code,
-                          spec.R_t, spec.angles_t, spec.weights, spec.q_start, out[i:i + 1])
-        return impl
-    return None
 
 
 class _IKProblem(Problem):
@@ -174,7 +88,7 @@ class _IKProblem(Problem):
         if not self._evaluates_as_defined():
             return None
         chain = self.robot.kinematic_chain
-        return _new_objectives(chain.origins, chain.joint_types, self._mode, self._p_t,
+        return new_objectives(chain.origins, chain.joint_types, self._mode, self._p_t,
                                self._code, self._R_t, self._angles_t, self._weights,
                                self._q_start)
 

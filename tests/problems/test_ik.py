@@ -19,7 +19,7 @@ from moik.kinematics.orientation import (
 )
 from moik.kinematics.rotation_metrics import metric_code, metric_target
 from moik.problems import BiObjectiveIK, PoseIK, PositionIK, Target, random_reachable_targets
-from moik.problems.ik import WEIGHTED_POSE, ik_objectives
+from moik.problems.ik_kernels import WEIGHTED_POSE, ik_objectives
 from moik.robots import available_robots, fk_reference, get_robot
 
 

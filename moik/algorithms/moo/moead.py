@@ -178,23 +178,15 @@ class MOEAD(MOArrayAlgorithm):
 
     def _generation(self) -> Step:
         perm, U, keys = self._draws()
-        rates, self.n_replaced = self._rates(), 0
-        if self.batch:  # every offspring from the population at the generation's start
-            Y = offspring(self.X, self.neighbors, perm, U, self._xl, self._xu, rates)
-            FY, CVY = yield Y
-            self.n_replaced = update(self.X, self.F, self._cv, self.ref_dirs, self.neighbors,
-                                     perm, Y, kernel_array(FY),
-                                     np.zeros(len(Y)) if CVY is None else kernel_array(CVY),
-                                     self.z, self._nr, keys)
-            return
-        for i in range(len(perm)):
-            row = slice(i, i + 1)
+        rates, nr, self.n_replaced = self._rates(), self._nr, 0
+        n = len(perm)  # batch: one batch of every offspring; else one row at a time
+        for row in [slice(0, n)] if self.batch else [slice(i, i + 1) for i in range(n)]:
             Y = offspring(self.X, self.neighbors, perm[row], U[row], self._xl, self._xu, rates)
             FY, CVY = yield Y
             self.n_replaced += update(self.X, self.F, self._cv, self.ref_dirs, self.neighbors,
                                       perm[row], Y, kernel_array(FY),
-                                      np.zeros(1) if CVY is None else kernel_array(CVY),
-                                      self.z, self._nr, keys[row])
+                                      np.zeros(len(Y)) if CVY is None else kernel_array(CVY),
+                                      self.z, nr, keys[row])
 
     def _run_generation(self) -> None:
         """One compiled call for a problem with compiled objectives (module doc), else the

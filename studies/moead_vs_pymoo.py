@@ -57,9 +57,9 @@ def main() -> None:
     parser.add_argument("--budget", type=int, default=10_000)
     parser.add_argument("--write", action="store_true", help=f"write {DOC.name}")
     args = parser.parse_args()
-    lines = [f"| problem | set | moead HV (mean +- std) | moead-pymoo HV | rank-sum p | "
-             f"s per run (moik / pymoo) |  ({args.seeds} seeds, {args.budget} evaluations)",
-             "|---|---|---|---|---|---|"]
+    lines = [f"{args.seeds} seeds, {args.budget} evaluations per run.", "",
+             "| problem | set | moead HV (mean +- std) | moead-pymoo HV | rank-sum p | "
+             "s per run (moik / pymoo) |", "|---|---|---|---|---|---|"]
     print("\n".join(lines), flush=True)
     for problem in PROBLEMS:
         runs = {n: np.array([run(n, problem, s, args.budget) for s in range(args.seeds)])

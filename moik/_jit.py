@@ -258,6 +258,19 @@ def jit(func: Callable | None = None) -> Any:
     return dispatcher
 
 
+def is_cached(dispatcher: Any) -> bool:
+    """Whether the kernel cache holds a version of ``dispatcher`` (a :func:`jit` kernel)
+    compiled from the current sources, for any signature; also True when it has no cache
+    (nothing another process compiles could reach it)."""
+    cache = getattr(dispatcher, "_cache", None)
+    if not isinstance(cache, _KernelCache):
+        return True
+    digest = _kernel_sources_digest()
+    with contextlib.suppress(Exception):  # an unreadable index: as if empty
+        return any(key[-1] == digest for key in cache._cache_file._load_index())
+    return False
+
+
 def kernel_array(values: Any) -> np.ndarray:
     """``values`` as a C-contiguous, writeable ``float64`` array (no copy when it is one).
 

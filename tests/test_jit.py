@@ -350,3 +350,17 @@ def test_a_long_compilation_prints_progress_lines(monkeypatch, capsys):
     err = capsys.readouterr().err
     assert err.startswith("  ... 2 kernels compiled so far (") and err.count("\n") == 1
     assert jit_module.compile_count() == 2
+
+
+def test_is_cached_says_which_kernels_the_cache_holds(built_cache, tmp_path):
+    """The FK script's cache holds fk_poses (the kernel robot.fk calls), not a front kernel."""
+    root = Path(moik.__file__).parent
+    script = ("from moik._jit import is_cached\n"
+              "from moik.robots.fk_kernels import fk_poses\n"
+              "from moik.algorithms.archive.fronts import front_mask_2d\n"
+              "print(is_cached(fk_poses), is_cached(front_mask_2d))\n")
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                         env=_env(NUMBA_CACHE_DIR=str(built_cache), PYTHONPATH=str(root.parent)),
+                         cwd=tmp_path, timeout=600)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.split() == ["True", "False"]

@@ -41,6 +41,7 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -52,19 +53,12 @@ from moik.metrics.compromise import closest_to_utopia
 from moik.problems.pareto_ik import ParetoIK
 from moik.robots.catalog import as_robot
 from moik.solver.collision import CollisionGuard, collision_guard, with_clearance
+from moik.solver.memetic import memetic_search, precompile
 from moik.solver.options import seed_sequence
-from moik.solver.pareto_local import local_search, local_search_starts
-from moik.solver.pareto_search import (
-    BRANCH_STARTS,
-    Projector,
-    enumerate_branches,
-    mo_search,
-    spread_subset,
-)
+from moik.solver.pareto_search import BRANCH_STARTS, Projector, enumerate_branches, spread_subset
 from moik.solver.session import pose_errors
 
 DEFAULT_OBJECTIVES = ("joint_motion", "manipulability")
-ORIENTATION_STARTS = 16  # LM ends of the random starts moved towards the preferred rotation
 
 
 @dataclass(frozen=True)
@@ -215,20 +209,13 @@ def solve_ik_pareto(robot, target, *, objectives=DEFAULT_OBJECTIVES, q_current=N
     if not redundant:
         enumerate_branches(projector, np.vstack([first, robot.random_q(BRANCH_STARTS, rng=rng)]))
     else:
-        P, ok, _ = projector.project(first, patient=True)
-        Q, ok_q, _ = projector.project(robot.random_q(starts, rng=rng))
-        exact = np.vstack([P[ok], Q[ok_q]])
-        if problem.rotation is not None and "orientation" in problem.names:
-            R, ok_r, _ = projector.project_via_pose(Q[:ORIENTATION_STARTS], problem.rotation)
-            exact = np.vstack([exact, R[ok_r]])
-        projector.objectives(exact)
-        if generations:
-            mo_search(projector, method, exact, pop_size=pop_size, generations=generations,
-                      seed=int(seeds.spawn(1)[0].generate_state(1)[0]))
-        if local_iterations and len(projector.X):
-            begin, weights = local_search_starts(projector)
-            local_search(projector, begin, weights, iterations=local_iterations,
-                         step=local_step)
+        search: dict[str, Any] = {
+            "starts": starts, "method": method, "pop_size": pop_size,
+            "generations": generations, "local_iterations": local_iterations,
+            "local_step": local_step, "seed": int(seeds.spawn(1)[0].generate_state(1)[0])}
+        compiling = precompile(problem, objectives, first, search)
+        memetic_search(projector, first, rng, **search,
+                       ready=None if compiling is None else compiling.wait)
     return _result(problem, projector, n_solutions, redundant, t0, guard)
 
 

@@ -1,0 +1,150 @@
+"""moik/solver/memetic.py: the memetic search's kernels compiled in a child process
+while the first LM stage compiles (when it starts, what the child is given, and that a
+cold first Pareto solve then compiles none of them itself and gives the same result)."""
+
+import json
+import os
+import pickle
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import moik
+from moik import _jit
+from moik.kinematics.criteria import Criterion
+from moik.problems.pareto_ik import ParetoIK
+from moik.robots import get_robot
+from moik.solver import memetic
+from moik.solver.memetic import IdentityProjector, joint_value
+
+TARGET = np.array([0.4, 0.2, 0.5])
+SEARCH = {"starts": 8, "method": "moeosma", "pop_size": 10, "generations": 2,
+          "local_iterations": 1, "local_step": 0.2, "seed": 1}
+
+
+def _problem(objectives=("manipulability", "limit_margin")):
+    return ParetoIK(get_robot("iiwa14"), TARGET, objectives=objectives)
+
+
+class _Popen:
+    """Stands in for subprocess.Popen: keeps what the child would read."""
+
+    started: list = []
+
+    def __init__(self, argv, stdin=None, **kwargs):
+        self.argv, self.kwargs, self.written = argv, kwargs, b""
+        self.stdin = self
+        _Popen.started.append(self)
+
+    def write(self, data):
+        self.written += data
+
+    def close(self):
+        pass
+
+    def poll(self):
+        return 0
+
+    def wait(self, timeout=None):
+        return 0
+
+
+@pytest.fixture()
+def popen(monkeypatch):
+    _Popen.started = []
+    monkeypatch.setattr(memetic.subprocess, "Popen", _Popen)
+    monkeypatch.setattr(memetic, "_cpus", lambda: 2)
+    monkeypatch.setattr(_jit, "is_cached", lambda kernel: False)
+    monkeypatch.delenv(memetic.ENV_SWITCH, raising=False)
+    return _Popen
+
+
+def test_starts_a_child_with_the_problem_and_search(popen):
+    problem = _problem()
+    handle = memetic.precompile(problem, ("manipulability", "limit_margin"),
+                                   np.empty((0, 7)), SEARCH)
+    assert handle is not None and len(popen.started) == 1
+    child = popen.started[0]
+    assert child.argv[1:] == ["-m", "moik.solver.memetic"]
+    assert child.kwargs["env"][memetic.ENV_SWITCH] == "0"  # no grandchild
+    arguments, first, search = pickle.loads(child.written)
+    assert arguments["objectives"] == ["manipulability", "limit_margin"]
+    assert arguments["robot"].name == "iiwa14" and search == SEARCH and first.shape == (0, 7)
+    handle.wait()
+
+
+def test_the_child_never_calls_a_users_criterion(popen):
+    calls = []
+
+    def mine(Q):
+        calls.append(len(Q))
+        return Q[:, 0]
+
+    objectives = ("manipulability", Criterion("reach", mine, "max"))
+    memetic.precompile(_problem(objectives), objectives, np.empty((0, 7)), SEARCH)
+    arguments, _, _ = pickle.loads(popen.started[0].written)
+    stand_in = arguments["objectives"][1]
+    assert (stand_in.name, stand_in.sense) == ("reach", "max")
+    Q = np.arange(14.0).reshape(2, 7)
+    np.testing.assert_array_equal(stand_in.function(Q), Q[:, 1])
+    assert stand_in.function.func is joint_value and calls == []
+
+
+@pytest.mark.parametrize("why", ["switched off", "one cpu", "cached"])
+def test_does_not_start_where_it_cannot_help(popen, monkeypatch, why):
+    if why == "switched off":
+        monkeypatch.setenv(memetic.ENV_SWITCH, "0")
+    elif why == "one cpu":
+        monkeypatch.setattr(memetic, "_cpus", lambda: 1)
+    else:
+        monkeypatch.setattr(_jit, "is_cached", lambda kernel: True)
+    problem = _problem()
+    assert memetic.precompile(problem, ("manipulability", "limit_margin"),
+                                 np.empty((0, 7)), SEARCH) is None
+    assert not popen.started
+
+
+def test_identity_projection_keeps_every_point_within_the_limits():
+    projector = IdentityProjector(_problem())
+    robot = projector.robot
+    X = np.vstack([robot.lower - 1.0, (robot.lower + robot.upper) / 2])
+    P, ok, cost = projector.project(X)
+    np.testing.assert_array_equal(P, [robot.lower, (robot.lower + robot.upper) / 2])
+    assert ok.all() and not cost.any()
+
+
+COLD = """
+import json, numpy as np, moik
+from numba.core import event
+compiled = []
+class Recorder(event.Listener):
+    def on_start(self, ev):
+        compiled.append(str(ev.data["dispatcher"].py_func.__module__))
+    def on_end(self, ev):
+        pass
+event.register("numba:compile", Recorder())
+res = moik.solve_ik_pareto("iiwa14", np.array([0.4, 0.2, 0.5]), objectives=("manipulability",
+    "limit_margin"), n_solutions=5, starts=8, pop_size=10, generations=2, local_iterations=1)
+print(json.dumps({"X": res.X.tolist(), "modules": sorted(set(compiled))}))
+"""
+
+
+@pytest.mark.skipif(memetic._cpus() < 2, reason="the child needs a second CPU")
+def test_cold_first_pareto_solve_loads_the_memetic_kernels_the_child_compiled(tmp_path):
+    root = Path(moik.__file__).parent
+    env = {k: v for k, v in os.environ.items()
+           if not k.startswith(("NUMBA_", "MOIK_")) and k != "PYTHONPATH"}
+    env.update(NUMBA_CACHE_DIR=str(tmp_path / "cache"), PYTHONPATH=str(root.parent))
+    out = subprocess.run([sys.executable, "-c", COLD], capture_output=True, text=True,
+                         env=env, cwd=tmp_path, timeout=900)
+    assert out.returncode == 0, out.stderr
+    cold = json.loads(out.stdout.splitlines()[-1])
+    assert "moik.solver.lm" in cold["modules"]  # the cache was cold: LM compiled here
+    assert not [m for m in cold["modules"] if m.startswith("moik.algorithms")], cold["modules"]
+    warm = moik.solve_ik_pareto("iiwa14", TARGET, objectives=("manipulability", "limit_margin"),
+                                n_solutions=5, starts=8, pop_size=10, generations=2,
+                                local_iterations=1)
+    np.testing.assert_array_equal(np.array(cold["X"]), warm.X)

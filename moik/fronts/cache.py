@@ -28,6 +28,7 @@ from moik.fronts.motion import motion_front
 from moik.robots.chain import Robot
 
 FRONT_SEED = 20240  # the random starts' seed of every cached front
+KEY_DECIMALS = 9  # of the numbers in a front's key (fingerprint)
 SHIPPED = Path(__file__).with_name("data")  # fronts shipped with moik, by fingerprint
 DEFAULT_SETTINGS = {"levels": 40, "starts": 16, "checks": 1, "tol": 1e-9, "seed": FRONT_SEED}
 
@@ -46,12 +47,16 @@ MOTION_SETTINGS: dict[str, Any] = {"levels": 12, "motion_levels": 12, "starts": 
 def fingerprint(robot: Robot, position, rotation, metric: str, settings: dict,
                 q_start=None) -> str:
     """A hex digest of what the front depends on (not of the robot's name or source);
-    ``q_start``: the three-objective front's start configuration (None: bi-objective)."""
+    ``q_start``: the three-objective front's start configuration (None: bi-objective).
+
+    Every number enters rounded to :data:`KEY_DECIMALS` decimals (and ``-0.0`` as ``0.0``):
+    a target computed by numpy (a norm, an FK) differs in its last bits between kinds
+    of machine (numpy's sums dispatch on SIMD), and must find the same shipped front."""
     chain = robot.kinematic_chain
     h = hashlib.sha256()
     arrays = [chain.origins, chain.joint_types, robot.lower, robot.upper, position, rotation]
     for a in arrays if q_start is None else [*arrays, q_start]:
-        arr = np.ascontiguousarray(np.asarray(a, dtype=float))
+        arr = np.ascontiguousarray(np.round(np.asarray(a, dtype=float), KEY_DECIMALS) + 0.0)
         h.update(str(arr.shape).encode())
         h.update(arr.tobytes())
     h.update(json.dumps({"metric": metric, "version": METHOD_VERSION, **settings},

@@ -22,8 +22,13 @@ def test_fingerprint_moves_with_robot_target_metric_and_settings():
     settings = {"levels": 40, "starts": 16, "checks": 1, "tol": 1e-9, "seed": 1}
     base = cache.fingerprint(robot, p, R, "geodesic", settings)
     assert base == cache.fingerprint(robot, p.copy(), R.copy(), "geodesic", dict(settings))
+    # the last bits of a numpy-computed target (they differ between kinds of machine)
+    # and the sign of a zero do not move it
+    ulp = np.spacing(np.abs(p)) * np.array([1, -2, 3])
+    assert base == cache.fingerprint(robot, p + ulp, np.where(R == 0, -0.0, R), "geodesic",
+                                     settings)
     other_robot = replace(robot, upper=robot.upper * 0.5)
-    moved = [cache.fingerprint(robot, p + [0, 1e-12, 0], R, "geodesic", settings),
+    moved = [cache.fingerprint(robot, p + [0, 1e-8, 0], R, "geodesic", settings),
              cache.fingerprint(robot, p, R.T, "geodesic", settings),
              cache.fingerprint(robot, p, R, "frobenius", settings),
              cache.fingerprint(robot, p, R, "geodesic", {**settings, "seed": 2}),

@@ -88,7 +88,13 @@ def test_planar_front_is_the_closed_form(fronts, metric):
     # the front is covered: no gap wider than a twentieth of its extent in either error
     span = F.max(axis=0) - F.min(axis=0)
     assert np.all(np.abs(np.diff(F, axis=0)) <= span / 20)
-    assert front.max_kkt < 1e-4 and front.starts == 8 and front.metric == metric
+    # KKT points: the projected residual is small, except at the end levels, where the
+    # level sits within tol of the constrained error's own minimum: there the constraint's
+    # gradient vanishes (~1e-4), its multiplier is ~1e4 and the residual is SLSQP's rounding
+    # times that (measured 1.8e-4 at the position end on an AVX-512 machine, 1e-9 elsewhere);
+    # those two points are checked against the closed form above instead
+    assert np.nanmax(front.kkt[1:-1]) < 1e-4
+    assert front.starts == 8 and front.metric == metric
     assert "local" in front.guarantee
 
 

@@ -28,6 +28,7 @@ from moik.problems import BiObjectiveIK, PoseIK, random_reachable_targets
 from moik.robots import get_robot
 from moik.solver import solve_ik
 from moik.solver.batch import solve_ik_batch
+from moik.solver.memetic import ENV_SWITCH
 from moik.solver.pareto import solve_ik_pareto
 from moik.solver.path import solve_path
 
@@ -83,6 +84,12 @@ def compile_family(name: str) -> tuple[str, float, int]:
     return name, time.perf_counter() - t0, _jit.compile_count()
 
 
+def worker_setup() -> None:
+    """In each worker: no background compile of its own (a Pareto solve's child process,
+    :mod:`moik.solver.memetic`): the pool already runs the families side by side."""
+    os.environ[ENV_SWITCH] = "0"
+
+
 def cmd_compile(args: argparse.Namespace) -> int:
     """Compile every family, in ``--processes`` processes (default: the cores)."""
     workers = integer("--processes", args.processes if args.processes is not None
@@ -92,7 +99,8 @@ def cmd_compile(args: argparse.Namespace) -> int:
           "first run only: later runs load them from numba's cache)", flush=True)
     t0 = time.perf_counter()
     ctx = multiprocessing.get_context("spawn")
-    with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
+    with ProcessPoolExecutor(max_workers=workers, mp_context=ctx,
+                             initializer=worker_setup) as pool:
         futures = [pool.submit(compile_family, name) for name in FAMILIES]
         failed = 0
         for k, future in enumerate(as_completed(futures), start=1):

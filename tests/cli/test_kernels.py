@@ -5,12 +5,19 @@ import subprocess
 import sys
 
 from moik.cli import main
-from moik.cli.kernels import FAMILIES, compile_family
+from moik.cli.kernels import FAMILIES, compile_family, worker_setup
+from moik.solver.memetic import ENV_SWITCH
 
 
 def test_processes_must_be_positive(capsys):
     assert main(["compile", "--processes", "0"]) == 2
     assert "--processes must be an integer >= 1, got 0" in capsys.readouterr().err
+
+
+def test_workers_start_no_background_compile_of_their_own(monkeypatch):
+    monkeypatch.setenv(ENV_SWITCH, "1")  # restored afterwards
+    worker_setup()
+    assert os.environ[ENV_SWITCH] == "0"
 
 
 def test_a_family_runs_and_reports_what_it_compiled():

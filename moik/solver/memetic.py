@@ -95,7 +95,6 @@ def memetic_search(projector: Projector, first: np.ndarray, rng: np.random.Gener
         local_search(projector, begin, weights, iterations=local_iterations, step=local_step)
 
 
-
 def _cpus() -> int:
     try:
         return len(os.sched_getaffinity(0))
@@ -157,14 +156,10 @@ class IdentityProjector(Projector):
     """A :class:`~moik.solver.pareto_search.Projector` whose projection keeps every point
     (no LM): the child's search calls every kernel of the memetic search but LM's."""
 
-    def project(self, X, patient: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        P = np.array(X, dtype=np.float64, order="C", copy=True).reshape(-1, self.robot.dof)
+    def _ends(self, ctx, X, flags: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        P = np.asarray(X, dtype=np.float64).reshape(-1, self.robot.dof)
         P = np.clip(P, self.robot.lower, self.robot.upper)
-        return self.copies(P), np.ones(len(P), dtype=bool), np.zeros(len(P))
-
-    def project_via_pose(self, X, rotation: np.ndarray
-                         ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        return self.project(X)
+        return P, np.ones(len(P), dtype=bool), np.zeros(len(P))
 
 
 def _child() -> None:

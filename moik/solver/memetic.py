@@ -1,34 +1,43 @@
 """The memetic search of :func:`~moik.solver.pareto.solve_ik_pareto` on a redundant arm
-(:func:`memetic_search`, the steps 1-3 of that module), and its kernels compiled in a
-second process while the first stage runs (:func:`precompile`).
+(:func:`memetic_search`, the steps 1-3 of that module), and its algorithm's kernels
+compiled in a second process while the first stage runs (:func:`precompile`).
 
 With an empty kernel cache, the first :func:`~moik.solver.pareto.solve_ik_pareto` of a
 redundant arm compiles two independent families of kernels one after the other: the
-Levenberg-Marquardt start loop of its projection (:mod:`moik.solver.starts`, about
-half of the time) and the memetic search's (the multi-objective algorithm, the
-criteria, the archive's fronts). numba compiles one kernel at a time in a process, so
-where a second CPU is free :func:`precompile` runs the same search in a child process with
-an identity projection instead of LM (the same problem and search parameters, hence
-the same kernels and argument types, and no LM kernel): it writes the memetic kernels
-to the cache while this process compiles the LM ones, and :meth:`Precompile.wait`
-waits for it before this process's search, which then loads them
+kinematic ones (the Levenberg-Marquardt start loop of its projection,
+:mod:`moik.solver.starts`, about half of the time, then the criteria and the local
+search's Jacobians, which share its FK kernels) and those of the multi-objective
+algorithm and the archive's fronts (:mod:`moik.algorithms`). numba compiles one kernel
+at a time in a process, so where a second CPU is free :func:`precompile` runs the same
+algorithm in a child process (the same ``method``, population, generations and numbers
+of joints and criteria, hence the same kernels and argument types) on stand-ins: an
+identity projection instead of LM and plain-numpy stand-ins of the criteria
+(:func:`stand_in`), so it compiles no kinematic kernel, and no local search. It writes
+the algorithm's kernels to the cache while this process compiles LM's, says so on its
+stdout (:data:`READY`), and then evaluates the built-in criteria and the local search's
+Jacobians on a few configurations: their kernels (which share the FK kernels this
+process has cached by then) are often cached too when this process gets to them.
+:meth:`Precompile.wait` waits for the line after this process's first criteria and
+before its archive and search, which then load the algorithm's kernels
 (``benchmarks/startup.py`` times the cold first ``--pareto`` solve).
 
-It starts only where it can help: a memetic kernel is not cached yet, more than one
+It starts only where it can help: an algorithm kernel is not cached yet, more than one
 CPU is available to this process, and ``MOIK_BACKGROUND_COMPILE`` is not ``0``. The
-child changes nothing but time: it draws nothing from the caller's seeds, calls no
-criterion of the user's (a stand-in instead: the kernels are the same), and whatever
-it did not write (it failed, or took longer than :data:`WAIT_LIMIT`) this process
+child changes nothing but time: it draws nothing from the caller's seeds, never calls
+a criterion of the user's (a stand-in instead), and whatever it did not write (it failed, took
+longer than :data:`WAIT_LIMIT`, or its stand-ins took another path) this process
 compiles itself.
 """
 
 from __future__ import annotations
 
 import atexit
+import contextlib
 import os
 import pickle
 import subprocess
 import sys
+import threading
 from collections.abc import Callable
 from functools import partial
 from pathlib import Path
@@ -38,7 +47,8 @@ import numpy as np
 from moik import _jit
 from moik.algorithms.archive.fronts import front_mask_2d
 from moik.algorithms.moo.moeosma_kernels import generation_draws
-from moik.kinematics.criteria import Criterion
+from moik.kinematics.criteria import Criterion, joint_distance
+from moik.kinematics.jacobian import parts_and_jacobian
 from moik.problems.pareto_ik import ParetoIK
 from moik.solver.pareto_local import local_search, local_search_starts
 from moik.solver.pareto_search import Projector, mo_search
@@ -46,20 +56,31 @@ from moik.solver.pareto_search import Projector, mo_search
 ORIENTATION_STARTS = 16  # LM ends of the random starts moved towards the preferred rotation
 WAIT_LIMIT = 120.0  # seconds the search waits for the child at most
 ENV_SWITCH = "MOIK_BACKGROUND_COMPILE"
+READY = "ready\n"  # the child's line once the algorithm's kernels are cached
 
 
 class Precompile:
-    """A running child process compiling the memetic kernels (from :func:`precompile`)."""
+    """A running child process compiling the search's kernels (from :func:`precompile`).
+
+    The child writes a line on its stdout once the algorithm's kernels are in the cache
+    (:data:`READY`); it then goes on with the kinematic ones of the criteria and the local
+    search, which this process may already be compiling or loading by then."""
 
     def __init__(self, process: subprocess.Popen):
         self.process = process
+        self._ready = threading.Event()
+        threading.Thread(target=self._read, daemon=True).start()
         atexit.register(self._stop)
 
+    def _read(self) -> None:
+        with contextlib.suppress(Exception):  # a closed pipe: as if the child ended
+            self.process.stdout.readline()  # type: ignore[union-attr]
+        self._ready.set()
+
     def wait(self) -> None:
-        """Wait for the child (at most :data:`WAIT_LIMIT` s; then it is stopped)."""
-        try:
-            self.process.wait(timeout=WAIT_LIMIT)
-        except subprocess.TimeoutExpired:
+        """Wait until the child has written the algorithm's kernels (or ended), at most
+        :data:`WAIT_LIMIT` s (then it is stopped)."""
+        if not self._ready.wait(timeout=WAIT_LIMIT):
             self._stop()
 
     def _stop(self) -> None:
@@ -84,9 +105,10 @@ def memetic_search(projector: Projector, first: np.ndarray, rng: np.random.Gener
     if problem.rotation is not None and "orientation" in problem.names:
         R, ok_r, _ = projector.project_via_pose(Q[:ORIENTATION_STARTS], problem.rotation)
         exact = np.vstack([exact, R[ok_r]])
+    F = projector.criteria(exact)  # the criteria's kernels compile beside the child
     if ready is not None:
         ready()
-    projector.objectives(exact)
+    projector.objectives(exact, F)
     if generations:
         mo_search(projector, method, exact, pop_size=pop_size, generations=generations,
                   seed=seed)
@@ -104,32 +126,36 @@ def _cpus() -> int:
 
 def precompile(problem: ParetoIK, objectives, first: np.ndarray, search: dict
                ) -> Precompile | None:
-    """Start compiling the memetic search's kernels in a child process, or return None
-    where that cannot help (see the module docstring).
+    """Start compiling the search's kernels in a child process, or return None where that
+    cannot help (see the module docstring).
 
     Args:
         problem: The :class:`~moik.problems.pareto_ik.ParetoIK` problem of the search.
-        objectives: Its criteria as given (names, :class:`Criterion` objects, callables);
-            the child evaluates the built-in ones and a stand-in (a joint value) for
-            every other: a user's function is never called there.
+        objectives: Its criteria as given (names, :class:`Criterion` objects, callables):
+            the child's search runs on stand-ins (:func:`stand_in`) of every one; then
+            it evaluates the built-in ones by name (their kernels) and never calls a
+            function of the user's.
         first, search: The arguments :func:`memetic_search` will be given.
     """
     probes = [generation_draws] + ([front_mask_2d] if problem.n_obj <= 2 else [])
     if (os.environ.get(ENV_SWITCH) == "0" or _cpus() < 2
             or all(_jit.is_cached(kernel) for kernel in probes)):
         return None
-    names = list(objectives) if isinstance(objectives, (list, tuple)) else [objectives]
+    names = list(objectives) if isinstance(objectives, list | tuple) else [objectives]
     if len(names) != problem.n_obj:
         return None
+    m = problem.n_obj
     arguments = {"robot": problem.robot, "target": problem.target,
-                 "q_current": problem.q_current, "rotation": problem.rotation,
                  "tol": (problem.tol_position, problem.tol_orientation),
-                 "objectives": [item if isinstance(item, str) else
-                                Criterion(problem.names[k], partial(joint_value, k),
-                                          problem.senses[k])
-                                for k, item in enumerate(names)]}
+                 "rotation": problem.rotation}
+    stand_ins = [Criterion(problem.names[k], partial(stand_in, k, m, sense), sense)
+                 for k, sense in enumerate(problem.senses)]
+    kinematic = [item if isinstance(item, str) else stand_ins[k] for k, item in enumerate(names)]
     try:
-        payload = pickle.dumps((arguments, first, search))
+        payload = pickle.dumps(({**arguments, "objectives": stand_ins}, first,
+                                {**search, "local_iterations": 0},
+                                {**arguments, "objectives": kinematic,
+                                 "q_current": problem.q_current}))
     except Exception:  # noqa: BLE001 - a robot pickle cannot take: compile here
         return None
     root = str(Path(__file__).resolve().parents[2])  # where this moik is imported from
@@ -137,7 +163,7 @@ def precompile(problem: ParetoIK, objectives, first: np.ndarray, search: dict
            "PYTHONPATH": os.pathsep.join(p for p in (root, os.environ.get("PYTHONPATH")) if p)}
     try:
         process = subprocess.Popen([sys.executable, "-m", __name__], stdin=subprocess.PIPE,
-                                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                   stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
                                    env=env)
         assert process.stdin is not None
         process.stdin.write(payload)
@@ -147,14 +173,24 @@ def precompile(problem: ParetoIK, objectives, first: np.ndarray, search: dict
     return Precompile(process)
 
 
-def joint_value(k: int, Q: np.ndarray) -> np.ndarray:
-    """The stand-in of a user's ``k``-th criterion in the child: joint ``k mod dof``."""
-    return Q[:, k % Q.shape[1]].copy()
+def stand_in(k: int, m: int, sense: str, Q: np.ndarray) -> np.ndarray:
+    """The child's ``k``-th of ``m`` criteria (natural sign for ``sense``): joint values, no
+    kinematics. In minimisation form the first ``m - 1`` are joints ``0 .. m - 2`` and
+    the last is ``1 - `` their mean plus a tenth of the next joint, so the criteria
+    conflict (most points are non-dominated, some dominated; the archive fills and is
+    thinned, as on a real front)."""
+    dof = Q.shape[1]
+    if k < m - 1:
+        f = Q[:, k % dof].copy()
+    else:
+        f = 1.0 - Q[:, [j % dof for j in range(m - 1)]].mean(axis=1) + 0.1 * Q[:, (m - 1) % dof]
+    return f if sense == "min" else -f
 
 
 class IdentityProjector(Projector):
     """A :class:`~moik.solver.pareto_search.Projector` whose projection keeps every point
-    (no LM): the child's search calls every kernel of the memetic search but LM's."""
+    (no LM): with stand-in criteria the child's search calls the algorithm's and the
+    archive's kernels and no kinematic one."""
 
     def _ends(self, ctx, X, flags: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         P = np.asarray(X, dtype=np.float64).reshape(-1, self.robot.dof)
@@ -163,10 +199,19 @@ class IdentityProjector(Projector):
 
 
 def _child() -> None:
-    """The child: the memetic search on the pickled problem (from stdin), unprojected."""
-    problem, first, search = pickle.loads(sys.stdin.buffer.read())
-    memetic_search(IdentityProjector(ParetoIK(**problem)), first, np.random.default_rng(0),
-                   **{**search, "seed": 0})
+    """The child (its problem from stdin): the memetic search unprojected, on stand-in
+    criteria, without the local search; :data:`READY` on stdout; then the built-in
+    criteria and the local search's Jacobians on a few configurations."""
+    search_problem, first, search, kinematic = pickle.loads(sys.stdin.buffer.read())
+    memetic_search(IdentityProjector(ParetoIK(**search_problem)), first,
+                   np.random.default_rng(0), **{**search, "seed": 0})
+    sys.stdout.write(READY)
+    sys.stdout.flush()
+    problem = ParetoIK(**kinematic)
+    Q = problem.robot.random_q(4, rng=np.random.default_rng(0))
+    problem.natural(Q)
+    parts_and_jacobian(problem.robot, Q)
+    joint_distance(problem.robot, Q[0], Q)
 
 
 if __name__ == "__main__":

@@ -110,10 +110,15 @@ class Projector:
             return P
         return np.ascontiguousarray(nearest_copies(self.robot, P, self.problem.q_current))
 
-    def objectives(self, P: np.ndarray) -> np.ndarray:
-        """Criteria of exact points in minimisation form; the points enter the archive
-        (with a guard: the collision-free ones; the others get a penalty score)."""
-        F = self.problem.minimization_form(self.problem.natural(P))
+    def criteria(self, P: np.ndarray) -> np.ndarray:
+        """Criteria of the rows of ``P`` in minimisation form (nothing enters the archive)."""
+        return self.problem.minimization_form(self.problem.natural(P))
+
+    def objectives(self, P: np.ndarray, F: np.ndarray | None = None) -> np.ndarray:
+        """Criteria of exact points in minimisation form (``F``: :meth:`criteria` of ``P``
+        when already computed); the points enter the archive (with a guard: the
+        collision-free ones; the others get a penalty score)."""
+        F = self.criteria(P) if F is None else F
         if len(P):
             self.worst = np.maximum(self.worst, F.max(axis=0))
             self.n_exact += len(P)

@@ -1,12 +1,15 @@
-"""moik/solver/memetic.py: the memetic search's kernels compiled in a child process
-while the first LM stage compiles (when it starts, what the child is given, and that a
-cold first Pareto solve then compiles none of them itself and gives the same result)."""
+"""moik/solver/memetic.py: the search algorithm's kernels compiled in a child process
+while the first LM stage compiles (when it starts, what the child is given, its stand-in
+criteria, when the parent goes on, and that a cold first Pareto solve then compiles none
+of them itself and gives the same result)."""
 
+import io
 import json
 import os
 import pickle
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import numpy as np
@@ -14,11 +17,12 @@ import pytest
 
 import moik
 from moik import _jit
+from moik.algorithms.archive.fronts import nondominated_mask
 from moik.kinematics.criteria import Criterion
 from moik.problems.pareto_ik import ParetoIK
 from moik.robots import get_robot
 from moik.solver import memetic
-from moik.solver.memetic import IdentityProjector, joint_value
+from moik.solver.memetic import IdentityProjector, stand_in
 
 TARGET = np.array([0.4, 0.2, 0.5])
 SEARCH = {"starts": 8, "method": "moeosma", "pop_size": 10, "generations": 2,
@@ -37,6 +41,7 @@ class _Popen:
     def __init__(self, argv, stdin=None, **kwargs):
         self.argv, self.kwargs, self.written = argv, kwargs, b""
         self.stdin = self
+        self.stdout = io.BytesIO(memetic.READY.encode())
         _Popen.started.append(self)
 
     def write(self, data):
@@ -65,14 +70,19 @@ def popen(monkeypatch):
 def test_starts_a_child_with_the_problem_and_search(popen):
     problem = _problem()
     handle = memetic.precompile(problem, ("manipulability", "limit_margin"),
-                                   np.empty((0, 7)), SEARCH)
+                                np.empty((0, 7)), SEARCH)
     assert handle is not None and len(popen.started) == 1
     child = popen.started[0]
     assert child.argv[1:] == ["-m", "moik.solver.memetic"]
     assert child.kwargs["env"][memetic.ENV_SWITCH] == "0"  # no grandchild
-    arguments, first, search = pickle.loads(child.written)
-    assert arguments["objectives"] == ["manipulability", "limit_margin"]
-    assert arguments["robot"].name == "iiwa14" and search == SEARCH and first.shape == (0, 7)
+    searched, first, search, kinematic = pickle.loads(child.written)
+    # the search runs on stand-ins of the criteria (no kinematic kernel), no local search
+    assert [(c.name, c.sense, c.function.func) for c in searched["objectives"]] == [
+        ("manipulability", "max", stand_in), ("limit_margin", "max", stand_in)]
+    assert search == {**SEARCH, "local_iterations": 0} and first.shape == (0, 7)
+    # then the built-in criteria by name (their kernels)
+    assert kinematic["objectives"] == ["manipulability", "limit_margin"]
+    assert searched["robot"].name == kinematic["robot"].name == "iiwa14"
     handle.wait()
 
 
@@ -85,12 +95,39 @@ def test_the_child_never_calls_a_users_criterion(popen):
 
     objectives = ("manipulability", Criterion("reach", mine, "max"))
     memetic.precompile(_problem(objectives), objectives, np.empty((0, 7)), SEARCH)
-    arguments, _, _ = pickle.loads(popen.started[0].written)
-    stand_in = arguments["objectives"][1]
-    assert (stand_in.name, stand_in.sense) == ("reach", "max")
-    Q = np.arange(14.0).reshape(2, 7)
-    np.testing.assert_array_equal(stand_in.function(Q), Q[:, 1])
-    assert stand_in.function.func is joint_value and calls == []
+    searched, _, _, kinematic = pickle.loads(popen.started[0].written)
+    for arguments in (searched, kinematic):
+        replaced = arguments["objectives"][1]
+        assert (replaced.name, replaced.sense) == ("reach", "max")
+        assert replaced.function.func is stand_in
+    assert kinematic["objectives"][0] == "manipulability" and calls == []
+
+
+@pytest.mark.parametrize("m", [2, 3])
+def test_stand_in_criteria_conflict_like_a_front(m):
+    """In minimisation form the stand-ins leave most points non-dominated and some
+    dominated (the archive's kernels all run), with the sign of each sense."""
+    Q = get_robot("iiwa14").random_q(200, rng=np.random.default_rng(3))
+    F = np.column_stack([stand_in(k, m, "min", Q) for k in range(m)])
+    front = nondominated_mask(F)
+    assert 0.2 * len(Q) < front.sum() < len(Q)
+    np.testing.assert_array_equal(stand_in(m - 1, m, "max", Q), -F[:, m - 1])
+
+
+def test_the_parent_goes_on_when_the_child_is_ready(monkeypatch):
+    """wait() returns at the child's READY line, while the child goes on (then it is
+    stopped at exit); a child that ends without the line releases it too."""
+    monkeypatch.setattr(memetic, "WAIT_LIMIT", 60.0)
+    code = f"import sys, time; sys.stdout.write({memetic.READY!r}); sys.stdout.flush(); " \
+           "time.sleep(60)"
+    for argv in ([sys.executable, "-c", code], [sys.executable, "-c", "pass"]):
+        process = subprocess.Popen(argv, stdout=subprocess.PIPE)
+        handle = memetic.Precompile(process)
+        t0 = time.perf_counter()
+        handle.wait()
+        assert time.perf_counter() - t0 < 30
+        handle._stop()
+        assert process.poll() is not None
 
 
 @pytest.mark.parametrize("why", ["switched off", "one cpu", "cached"])

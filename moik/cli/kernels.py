@@ -21,6 +21,7 @@ import numpy as np
 from pymoo.optimize import minimize
 
 from moik import _jit
+from moik._background import ENV_SWITCH
 from moik._validate import integer
 from moik.algorithms import available, get_algorithm
 from moik.algorithms.registry import is_multi_objective
@@ -28,7 +29,6 @@ from moik.problems import BiObjectiveIK, PoseIK, random_reachable_targets
 from moik.robots import get_robot
 from moik.solver import solve_ik
 from moik.solver.batch import solve_ik_batch
-from moik.solver.memetic import ENV_SWITCH
 from moik.solver.pareto import solve_ik_pareto
 from moik.solver.path import solve_path
 

@@ -151,6 +151,14 @@ class Robot:
         checks.warn_if_degrees(self.name, cols, np.array([t == "prismatic" for t in types]),
                                stacklevel=3)
 
+    def __setstate__(self, state: dict) -> None:
+        """Unpickled, the arrays are read-only again, as the constructor leaves them (and
+        so of the numba types kernels were compiled for in the pickling process)."""
+        for value in state.values():
+            if isinstance(value, np.ndarray):
+                value.flags.writeable = False
+        self.__dict__.update(state)
+
     # ------------------------------------------------------------------ properties
     @property
     def dof(self) -> int:

@@ -7,44 +7,32 @@ redundant arm compiles two independent families of kernels one after the other: 
 kinematic ones (the Levenberg-Marquardt start loop of its projection,
 :mod:`moik.solver.starts`, about half of the time, then the criteria and the local
 search's Jacobians, which share its FK kernels) and those of the multi-objective
-algorithm and the archive's fronts (:mod:`moik.algorithms`). numba compiles one kernel
-at a time in a process, so where a second CPU is free :func:`precompile` runs the same
-algorithm in a child process (the same ``method``, population, generations and numbers
-of joints and criteria, hence the same kernels and argument types) on stand-ins: an
-identity projection instead of LM and plain-numpy stand-ins of the criteria
-(:func:`stand_in`), so it compiles no kinematic kernel, and no local search. It writes
-the algorithm's kernels to the cache while this process compiles LM's, says so on its
-stdout (:data:`READY`), and then evaluates the built-in criteria and the local search's
-Jacobians on a few configurations: their kernels (which share the FK kernels this
-process has cached by then) are often cached too when this process gets to them.
-:meth:`Precompile.wait` waits for the line after this process's first criteria and
-before its archive and search, which then load the algorithm's kernels
-(``benchmarks/startup.py`` times the cold first ``--pareto`` solve).
+algorithm and the archive's fronts (:mod:`moik.algorithms`). Where a second CPU is free
+:func:`precompile` runs the same algorithm in a child process (:mod:`moik._background`:
+the same ``method``, population, generations and numbers of joints and criteria, hence
+the same kernels and argument types) on stand-ins: an identity projection instead of LM
+and plain-numpy stand-ins of the criteria (:func:`stand_in`), so it compiles no
+kinematic kernel, and no local search. It writes the algorithm's kernels to the cache
+while this process compiles LM's, says so, and then evaluates the built-in criteria and
+the local search's Jacobians on a few configurations: their kernels (which share the FK
+kernels this process has cached by then) are often cached too when this process gets to
+them. This process waits for the child's word after its first criteria and before its
+archive and search, which then load the algorithm's kernels (``benchmarks/startup.py``
+times the cold first ``--pareto`` solve).
 
-It starts only where it can help: an algorithm kernel is not cached yet, more than one
-CPU is available to this process, and ``MOIK_BACKGROUND_COMPILE`` is not ``0``. The
-child changes nothing but time: it draws nothing from the caller's seeds, never calls
-a criterion of the user's (a stand-in instead), and whatever it did not write (it failed, took
-longer than :data:`WAIT_LIMIT`, or its stand-ins took another path) this process
-compiles itself.
+The child changes nothing but time: it draws nothing from the caller's seeds, never
+calls a criterion of the user's (a stand-in instead), and whatever it did not write
+this process compiles itself.
 """
 
 from __future__ import annotations
 
-import atexit
-import contextlib
-import os
-import pickle
-import subprocess
-import sys
-import threading
 from collections.abc import Callable
 from functools import partial
-from pathlib import Path
 
 import numpy as np
 
-from moik import _jit
+from moik import _background
 from moik.algorithms.archive.fronts import front_mask_2d
 from moik.algorithms.moo.moeosma_kernels import generation_draws
 from moik.kinematics.criteria import Criterion, joint_distance
@@ -54,39 +42,6 @@ from moik.solver.pareto_local import local_search, local_search_starts
 from moik.solver.pareto_search import Projector, mo_search
 
 ORIENTATION_STARTS = 16  # LM ends of the random starts moved towards the preferred rotation
-WAIT_LIMIT = 120.0  # seconds the search waits for the child at most
-ENV_SWITCH = "MOIK_BACKGROUND_COMPILE"
-READY = "ready\n"  # the child's line once the algorithm's kernels are cached
-
-
-class Precompile:
-    """A running child process compiling the search's kernels (from :func:`precompile`).
-
-    The child writes a line on its stdout once the algorithm's kernels are in the cache
-    (:data:`READY`); it then goes on with the kinematic ones of the criteria and the local
-    search, which this process may already be compiling or loading by then."""
-
-    def __init__(self, process: subprocess.Popen):
-        self.process = process
-        self._ready = threading.Event()
-        threading.Thread(target=self._read, daemon=True).start()
-        atexit.register(self._stop)
-
-    def _read(self) -> None:
-        with contextlib.suppress(Exception):  # a closed pipe: as if the child ended
-            self.process.stdout.readline()  # type: ignore[union-attr]
-        self._ready.set()
-
-    def wait(self) -> None:
-        """Wait until the child has written the algorithm's kernels (or ended), at most
-        :data:`WAIT_LIMIT` s (then it is stopped)."""
-        if not self._ready.wait(timeout=WAIT_LIMIT):
-            self._stop()
-
-    def _stop(self) -> None:
-        if self.process.poll() is None:
-            self.process.kill()
-            self.process.wait()
 
 
 def memetic_search(projector: Projector, first: np.ndarray, rng: np.random.Generator, *,
@@ -117,17 +72,10 @@ def memetic_search(projector: Projector, first: np.ndarray, rng: np.random.Gener
         local_search(projector, begin, weights, iterations=local_iterations, step=local_step)
 
 
-def _cpus() -> int:
-    try:
-        return len(os.sched_getaffinity(0))
-    except AttributeError:  # not on every platform
-        return os.cpu_count() or 1
-
-
 def precompile(problem: ParetoIK, objectives, first: np.ndarray, search: dict
-               ) -> Precompile | None:
+               ) -> _background.Background | None:
     """Start compiling the search's kernels in a child process, or return None where that
-    cannot help (see the module docstring).
+    cannot help (see the module docstring and :mod:`moik._background`).
 
     Args:
         problem: The :class:`~moik.problems.pareto_ik.ParetoIK` problem of the search.
@@ -137,10 +85,6 @@ def precompile(problem: ParetoIK, objectives, first: np.ndarray, search: dict
             function of the user's.
         first, search: The arguments :func:`memetic_search` will be given.
     """
-    probes = [generation_draws] + ([front_mask_2d] if problem.n_obj <= 2 else [])
-    if (os.environ.get(ENV_SWITCH) == "0" or _cpus() < 2
-            or all(_jit.is_cached(kernel) for kernel in probes)):
-        return None
     names = list(objectives) if isinstance(objectives, list | tuple) else [objectives]
     if len(names) != problem.n_obj:
         return None
@@ -151,26 +95,11 @@ def precompile(problem: ParetoIK, objectives, first: np.ndarray, search: dict
     stand_ins = [Criterion(problem.names[k], partial(stand_in, k, m, sense), sense)
                  for k, sense in enumerate(problem.senses)]
     kinematic = [item if isinstance(item, str) else stand_ins[k] for k, item in enumerate(names)]
-    try:
-        payload = pickle.dumps(({**arguments, "objectives": stand_ins}, first,
-                                {**search, "local_iterations": 0},
-                                {**arguments, "objectives": kinematic,
-                                 "q_current": problem.q_current}))
-    except Exception:  # noqa: BLE001 - a robot pickle cannot take: compile here
-        return None
-    root = str(Path(__file__).resolve().parents[2])  # where this moik is imported from
-    env = {**os.environ, ENV_SWITCH: "0",
-           "PYTHONPATH": os.pathsep.join(p for p in (root, os.environ.get("PYTHONPATH")) if p)}
-    try:
-        process = subprocess.Popen([sys.executable, "-m", __name__], stdin=subprocess.PIPE,
-                                   stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
-                                   env=env)
-        assert process.stdin is not None
-        process.stdin.write(payload)
-        process.stdin.close()
-    except (OSError, ValueError):  # no interpreter to start, no pipe: compile here
-        return None
-    return Precompile(process)
+    probes = [generation_draws] + ([front_mask_2d] if m <= 2 else [])
+    return _background.start(__name__, ({**arguments, "objectives": stand_ins}, first,
+                                        {**search, "local_iterations": 0},
+                                        {**arguments, "objectives": kinematic,
+                                         "q_current": problem.q_current}), probes)
 
 
 def stand_in(k: int, m: int, sense: str, Q: np.ndarray) -> np.ndarray:
@@ -199,14 +128,13 @@ class IdentityProjector(Projector):
 
 
 def _child() -> None:
-    """The child (its problem from stdin): the memetic search unprojected, on stand-in
-    criteria, without the local search; :data:`READY` on stdout; then the built-in
-    criteria and the local search's Jacobians on a few configurations."""
-    search_problem, first, search, kinematic = pickle.loads(sys.stdin.buffer.read())
+    """The child: the memetic search unprojected, on stand-in criteria, without the local
+    search; then (its parent told, :func:`moik._background.ready`) the built-in criteria
+    and the local search's Jacobians on a few configurations."""
+    search_problem, first, search, kinematic = _background.child_arguments()
     memetic_search(IdentityProjector(ParetoIK(**search_problem)), first,
                    np.random.default_rng(0), **{**search, "seed": 0})
-    sys.stdout.write(READY)
-    sys.stdout.flush()
+    _background.ready()
     problem = ParetoIK(**kinematic)
     Q = problem.robot.random_q(4, rng=np.random.default_rng(0))
     problem.natural(Q)

@@ -40,6 +40,7 @@ from moik.robots.catalog import as_robot
 from moik.robots.chain import Robot
 from moik.solver.collision import collision_guard
 from moik.solver.front import FRONT_STARTS, polished_front, reach_excess
+from moik.solver.lm_precompile import precompile as precompile_starts
 from moik.solver.options import (
     SEARCH_DEFAULTS,
     SearchOptions,
@@ -176,7 +177,10 @@ def _solve(session: SolveSession, opts: SearchOptions, starts_rng: np.random.Gen
     """The stages of :func:`solve_ik` (``seed``: an integer or a SeedSequence)."""
     robot, target = session.robot, session.target
     n_solutions, polish = opts.n_solutions, opts.polish
-    if reach_excess(robot, target) > 0:  # proven out of reach: no start or search can help
+    out_of_reach = reach_excess(robot, target) > 0
+    if session.guard is None:  # a cold first solve: LM's leaf kernels compile beside it
+        precompile_starts(robot, reachable=not out_of_reach)
+    if out_of_reach:  # proven out of reach: no start or search can help
         return _out_of_reach(session, opts, starts_rng, q_current, t0)
     if polish and (q_current is not None or opts.starts):
         if q_current is not None:  # the user's hint: never abandoned for slow progress

@@ -217,3 +217,20 @@ def test_a_chain_whose_reach_overflows_is_refused():
     ok = Robot(name="big", a=[1e50] * 3, alpha=zeros, d=zeros, theta=zeros,
                lower=-np.ones(3), upper=np.ones(3))
     assert np.isfinite(ok.fk(np.zeros(3))).all()
+
+
+def test_an_unpickled_robot_keeps_its_arrays_read_only():
+    """As the constructor leaves them: an unpickled robot (a worker's, a background
+    compile's) is as immutable, and its arrays of the same numba types."""
+    import pickle
+
+    import numba
+
+    from moik.robots import get_robot
+
+    robot = get_robot("puma560")
+    again = pickle.loads(pickle.dumps(robot))
+    for name in ("lower", "upper", "a", "alpha", "d", "theta", "base", "tool"):
+        assert not getattr(again, name).flags.writeable, name
+        assert numba.typeof(getattr(again, name)) == numba.typeof(getattr(robot, name))
+    np.testing.assert_array_equal(again.fk(np.zeros(6)), robot.fk(np.zeros(6)))

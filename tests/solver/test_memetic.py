@@ -9,14 +9,13 @@ import os
 import pickle
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 import moik
-from moik import _jit
+from moik import _background, _jit
 from moik.algorithms.archive.fronts import nondominated_mask
 from moik.kinematics.criteria import Criterion
 from moik.problems.pareto_ik import ParetoIK
@@ -41,7 +40,7 @@ class _Popen:
     def __init__(self, argv, stdin=None, **kwargs):
         self.argv, self.kwargs, self.written = argv, kwargs, b""
         self.stdin = self
-        self.stdout = io.BytesIO(memetic.READY.encode())
+        self.stdout = io.BytesIO(_background.READY.encode())
         _Popen.started.append(self)
 
     def write(self, data):
@@ -60,10 +59,10 @@ class _Popen:
 @pytest.fixture()
 def popen(monkeypatch):
     _Popen.started = []
-    monkeypatch.setattr(memetic.subprocess, "Popen", _Popen)
-    monkeypatch.setattr(memetic, "_cpus", lambda: 2)
+    monkeypatch.setattr(_background.subprocess, "Popen", _Popen)
+    monkeypatch.setattr(_background, "cpus", lambda: 2)
     monkeypatch.setattr(_jit, "is_cached", lambda kernel: False)
-    monkeypatch.delenv(memetic.ENV_SWITCH, raising=False)
+    monkeypatch.delenv(_background.ENV_SWITCH, raising=False)
     return _Popen
 
 
@@ -74,7 +73,7 @@ def test_starts_a_child_with_the_problem_and_search(popen):
     assert handle is not None and len(popen.started) == 1
     child = popen.started[0]
     assert child.argv[1:] == ["-m", "moik.solver.memetic"]
-    assert child.kwargs["env"][memetic.ENV_SWITCH] == "0"  # no grandchild
+    assert child.kwargs["env"][_background.ENV_SWITCH] == "0"  # no grandchild
     searched, first, search, kinematic = pickle.loads(child.written)
     # the search runs on stand-ins of the criteria (no kinematic kernel), no local search
     assert [(c.name, c.sense, c.function.func) for c in searched["objectives"]] == [
@@ -114,36 +113,6 @@ def test_stand_in_criteria_conflict_like_a_front(m):
     np.testing.assert_array_equal(stand_in(m - 1, m, "max", Q), -F[:, m - 1])
 
 
-def test_the_parent_goes_on_when_the_child_is_ready(monkeypatch):
-    """wait() returns at the child's READY line, while the child goes on (then it is
-    stopped at exit); a child that ends without the line releases it too."""
-    monkeypatch.setattr(memetic, "WAIT_LIMIT", 60.0)
-    code = f"import sys, time; sys.stdout.write({memetic.READY!r}); sys.stdout.flush(); " \
-           "time.sleep(60)"
-    for argv in ([sys.executable, "-c", code], [sys.executable, "-c", "pass"]):
-        process = subprocess.Popen(argv, stdout=subprocess.PIPE)
-        handle = memetic.Precompile(process)
-        t0 = time.perf_counter()
-        handle.wait()
-        assert time.perf_counter() - t0 < 30
-        handle._stop()
-        assert process.poll() is not None
-
-
-@pytest.mark.parametrize("why", ["switched off", "one cpu", "cached"])
-def test_does_not_start_where_it_cannot_help(popen, monkeypatch, why):
-    if why == "switched off":
-        monkeypatch.setenv(memetic.ENV_SWITCH, "0")
-    elif why == "one cpu":
-        monkeypatch.setattr(memetic, "_cpus", lambda: 1)
-    else:
-        monkeypatch.setattr(_jit, "is_cached", lambda kernel: True)
-    problem = _problem()
-    assert memetic.precompile(problem, ("manipulability", "limit_margin"),
-                                 np.empty((0, 7)), SEARCH) is None
-    assert not popen.started
-
-
 def test_identity_projection_keeps_every_point_within_the_limits():
     projector = IdentityProjector(_problem())
     robot = projector.robot
@@ -169,7 +138,7 @@ print(json.dumps({"X": res.X.tolist(), "modules": sorted(set(compiled))}))
 """
 
 
-@pytest.mark.skipif(memetic._cpus() < 2, reason="the child needs a second CPU")
+@pytest.mark.skipif(_background.cpus() < 2, reason="the child needs a second CPU")
 def test_cold_first_pareto_solve_loads_the_memetic_kernels_the_child_compiled(tmp_path):
     root = Path(moik.__file__).parent
     env = {k: v for k, v in os.environ.items()

@@ -1,0 +1,89 @@
+"""moik/_background.py: when a background compile starts, what the child is run with,
+and when its parent goes on."""
+
+import pickle
+import subprocess
+import sys
+import time
+
+import pytest
+
+from moik import _background, _jit
+
+
+class _Popen:
+    """Stands in for subprocess.Popen: keeps what the child would read."""
+
+    started: list = []
+
+    def __init__(self, argv, stdin=None, stdout=None, **kwargs):
+        self.argv, self.kwargs, self.written = argv, kwargs, b""
+        self.stdin, self.stdout = self, None
+        _Popen.started.append(self)
+
+    def write(self, data):
+        self.written += data
+
+    def close(self):
+        pass
+
+    def poll(self):
+        return 0
+
+
+@pytest.fixture()
+def popen(monkeypatch):
+    _Popen.started = []
+    monkeypatch.setattr(_background.subprocess, "Popen", _Popen)
+    monkeypatch.setattr(_background, "cpus", lambda: 2)
+    monkeypatch.setattr(_jit, "is_cached", lambda kernel: False)
+    monkeypatch.delenv(_background.ENV_SWITCH, raising=False)
+    return _Popen
+
+
+def test_starts_the_module_with_its_arguments_and_no_grandchild(popen):
+    handle = _background.start("moik.some_module", {"a": (1, 2)}, probes=[object()])
+    assert handle is not None and len(popen.started) == 1
+    child = popen.started[0]
+    assert child.argv == [sys.executable, "-m", "moik.some_module"]
+    assert child.kwargs["env"][_background.ENV_SWITCH] == "0"
+    assert pickle.loads(child.written) == {"a": (1, 2)}
+
+
+@pytest.mark.parametrize("why", ["switched off", "one cpu", "cached", "unpicklable"])
+def test_does_not_start_where_it_cannot_help(popen, monkeypatch, why):
+    arguments: object = (1,)
+    if why == "switched off":
+        monkeypatch.setenv(_background.ENV_SWITCH, "0")
+    elif why == "one cpu":
+        monkeypatch.setattr(_background, "cpus", lambda: 1)
+    elif why == "cached":
+        monkeypatch.setattr(_jit, "is_cached", lambda kernel: True)
+    else:
+        arguments = lambda: None  # noqa: E731 - a lambda cannot be pickled
+    assert _background.start("moik.some_module", arguments, probes=[object()]) is None
+    assert not popen.started
+
+
+def test_the_parent_goes_on_when_the_child_is_ready(monkeypatch):
+    """wait() returns at the child's READY line while the child goes on (stop() ends it);
+    a child that ends without the line releases it too."""
+    monkeypatch.setattr(_background, "WAIT_LIMIT", 60.0)
+    code = (f"import sys, time; sys.stdout.write({_background.READY!r}); sys.stdout.flush(); "
+            "time.sleep(60)")
+    for argv in ([sys.executable, "-c", code], [sys.executable, "-c", "pass"]):
+        process = subprocess.Popen(argv, stdout=subprocess.PIPE)
+        handle = _background.Background(process)
+        t0 = time.perf_counter()
+        handle.wait()
+        assert time.perf_counter() - t0 < 30
+        handle.stop()
+        assert process.poll() is not None
+
+
+def test_a_child_that_never_says_ready_is_stopped_after_the_wait_limit(monkeypatch):
+    monkeypatch.setattr(_background, "WAIT_LIMIT", 0.5)
+    process = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)"],
+                               stdout=subprocess.PIPE)
+    _background.Background(process).wait()
+    assert process.poll() is not None

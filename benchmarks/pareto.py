@@ -29,9 +29,9 @@ import time
 import numpy as np
 
 from moik import get_robot, solve_ik, solve_ik_pareto
+from moik.kinematics.criteria import nearest_copies
 from moik.problems import random_reachable_targets
 from moik.robots import fk_reference
-from moik.solver.session import nearest_copies
 
 try:
     from benchmarks.solve_ik import rtb_robot

@@ -44,6 +44,7 @@ from moik.kinematics.criteria_kernels import (
     joint_motions,
     limit_margins,
     manipulabilities,
+    nearest_copies_into,
 )
 from moik.kinematics.orientation import check_rotation
 from moik.kinematics.rotation_metrics import GEODESIC, rotation_errors
@@ -122,6 +123,21 @@ def joint_distance(robot: Robot, q: np.ndarray, others: np.ndarray) -> np.ndarra
                          f"{np.shape(q)} and rows of {others.shape[1]}")
     out = np.empty(len(others))
     distances_into(others, kernel_array(q), robot.kinematic_chain.joint_types, out)
+    return out
+
+
+def nearest_copies(robot: Robot, Q: np.ndarray, q_ref: np.ndarray) -> np.ndarray:
+    """Each row of ``Q`` with its revolute joints shifted by multiples of 2 pi towards ``q_ref``.
+
+    ``q_j + 2 pi k`` is the same arm configuration; of the copies within the joint
+    limits, the one nearest to ``q_ref_j`` is taken (``q_j`` itself if no other copy
+    fits). Prismatic joints are left as they are. ``q_ref`` is one joint vector or
+    one per row.
+    """
+    Q = kernel_array(np.atleast_2d(Q))
+    out = np.empty_like(Q)
+    nearest_copies_into(Q, kernel_array(np.broadcast_to(q_ref, Q.shape)), robot.lower,
+                        robot.upper, robot.kinematic_chain.joint_types, out)
     return out
 
 

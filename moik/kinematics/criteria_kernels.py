@@ -3,9 +3,10 @@
 Each works on a batch of joint vectors ``Q (n, dof)`` and writes into ``out``:
 the joint motion to the nearest 2 pi copy of each revolute joint, Yoshikawa's
 manipulability from the geometric Jacobian, and the normalised margin to the
-joint limits. :func:`nearest_copies_into` is shared with the solver's session
-(the same configuration moved next to a reference), :func:`wrapped_distance` (the
-one 2 pi joint distance) with the solver's start loop and the experiments' branches.
+joint limits; :func:`nearest_copies_into` moves a configuration to its 2 pi copy next
+to a reference (:func:`~moik.kinematics.criteria.nearest_copies`), :func:`wrapped_distance`
+(the one 2 pi joint distance) is shared with the solver's start loop and the
+experiments' branches.
 """
 
 from __future__ import annotations
@@ -19,19 +20,23 @@ from moik.robots.transforms import PRISMATIC
 
 @jit
 def nearest_copy(q, q_ref, lo, hi):
-    """The value ``q + 2 pi k`` within ``[lo, hi]`` nearest to ``q_ref`` (``q`` if none is nearer).
+    """The value ``q + 2 pi k`` within ``[lo, hi]`` nearest to ``q_ref`` (``q`` when no copy
+    is within them).
 
-    The rounded shift and its two neighbours are tried (the rule of
-    :func:`moik.solver.session.nearest_copies`, which calls it).
+    ``|q + 2 pi k - q_ref|`` is convex in ``k``, so the best ``k`` within the limits is
+    the unconstrained one (rounded) clipped to the turns that keep the copy within them,
+    for any reference (one within the limits, as ``q_current`` is, or not). A copy that
+    rounding puts a hair outside a limit is moved a turn back inside.
     """
     two_pi = 2.0 * np.pi
-    k = np.round((q_ref - q) / two_pi)
-    best = q
-    for dk in (-1.0, 0.0, 1.0):
-        c = q + (k + dk) * two_pi
-        if lo <= c <= hi and abs(c - q_ref) < abs(best - q_ref):
-            best = c
-    return best
+    k_lo, k_hi = np.ceil((lo - q) / two_pi), np.floor((hi - q) / two_pi)
+    k = min(max(np.round((q_ref - q) / two_pi), k_lo), k_hi)
+    for _ in range(2):
+        c = q if k == 0.0 else q + k * two_pi
+        if lo <= c <= hi:
+            return c
+        k += 1.0 if c < lo else -1.0
+    return q
 
 
 @jit

@@ -21,6 +21,7 @@ import numpy as np
 from moik._jit import kernel_array
 from moik._validate import finite_array
 from moik.exceptions import ParameterError, ShapeError, TargetError
+from moik.kinematics.criteria import nearest_copies
 from moik.kinematics.orientation import check_rotation
 from moik.problems.targets import Target
 from moik.robots.catalog import as_robot
@@ -31,7 +32,6 @@ from moik.solver.options import STARTS_KEY, search_options, seed_sequence
 from moik.solver.session import (
     LM_ITERATIONS,
     STOP_FRACTION,
-    nearest_copies,
     pose_errors,
     tolerances,
 )

@@ -22,11 +22,12 @@ from pymoo.core.sampling import Sampling
 from moik.algorithms import get_algorithm
 from moik.algorithms.archive.fronts import first_unique_mask, nondominated_mask
 from moik.algorithms.registry import accepted_parameters
+from moik.kinematics.criteria import nearest_copies
 from moik.problems.pareto_ik import ParetoIK
 from moik.problems.targets import Target
 from moik.solver.collision import CollisionGuard
 from moik.solver.context import ik_context
-from moik.solver.session import STOP_FRACTION, nearest_copies
+from moik.solver.session import STOP_FRACTION
 from moik.solver.starts import PATIENT, PROJECT, UNLIMITED, multistart, run_starts
 
 LM_ITERATIONS = 30  # per projection (the first stage of solve_ik uses as many)

@@ -14,8 +14,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from moik.kinematics.criteria import nearest_copies
 from moik.metrics.compromise import closest_to_utopia
-from moik.solver.session import SolveSession, nearest_copies, pose_errors
+from moik.solver.session import SolveSession, pose_errors
 
 UNREACHABLE_FACTOR = 1e3  # best error beyond this many tolerances after a full search
 

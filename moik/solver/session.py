@@ -14,7 +14,6 @@ import numpy as np
 from moik._jit import jit, kernel_array
 from moik._validate import positive
 from moik.exceptions import ParameterError
-from moik.kinematics.criteria_kernels import nearest_copies_into
 from moik.kinematics.rotation_metrics import geodesic_angle
 from moik.problems.targets import Target
 from moik.robots.chain import Robot, fk_reference
@@ -112,22 +111,6 @@ def geodesic_errors(R, Rts, out):
         rot = (R[i, 0, 0], R[i, 0, 1], R[i, 0, 2], R[i, 1, 0], R[i, 1, 1], R[i, 1, 2],
                R[i, 2, 0], R[i, 2, 1], R[i, 2, 2])
         out[i] = geodesic_angle(rot, Rts[0] if Rts.shape[0] == 1 else Rts[i])
-
-
-def nearest_copies(robot: Robot, Q: np.ndarray, q_ref: np.ndarray) -> np.ndarray:
-    """Each row of ``Q`` with its revolute joints shifted by multiples of 2 pi towards ``q_ref``.
-
-    ``q_j + 2 pi k`` is the same arm configuration; of the copies within the joint
-    limits, the one nearest to ``q_ref_j`` is taken (``q_j`` itself if no other copy
-    fits). Prismatic joints are left as they are. ``q_ref`` is one joint vector or
-    one per row.
-    """
-    Q = kernel_array(np.atleast_2d(Q))
-    out = np.empty_like(Q)
-    chain = robot.kinematic_chain
-    nearest_copies_into(Q, kernel_array(np.broadcast_to(q_ref, Q.shape)), robot.lower,
-                        robot.upper, chain.joint_types, out)
-    return out
 
 
 class SolveSession:

@@ -2,10 +2,18 @@
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError, UnknownNameError
-from moik.kinematics.criteria import CRITERIA, Criterion, build_criteria, build_criterion
+from moik.kinematics.criteria import (
+    CRITERIA,
+    Criterion,
+    build_criteria,
+    build_criterion,
+    nearest_copies,
+)
 from moik.kinematics.criteria_kernels import determinant
 from moik.robots import Robot, fk_reference, get_robot
 
@@ -135,3 +143,28 @@ def test_build_criteria_refuses_bad_lists():
     with pytest.raises(ParameterError, match=r"objectives\[1\] must be a criterion name"):
         build_criteria(["manipulability", 3], robot)
     assert [c.name for c in build_criteria("limit_margin", robot)] == ["limit_margin"]
+
+
+@settings(max_examples=40, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1))
+def test_nearest_copies_are_the_same_configuration_nearest_the_reference(seed):
+    """Each revolute joint moves by a whole number of turns, stays within its limits and
+    lands nearest the reference among such copies (enumerated here); a prismatic joint
+    stays; the pose is unchanged (reference FK)."""
+    rng = np.random.default_rng(seed)
+    robot = Robot(name="wide", a=[0.3, 0.2, 0.0], alpha=[0.0, np.pi / 2, 0.0],
+                  d=[0.1, 0.0, 0.2], theta=[0.0, 0.0, 0.0], lower=[-7.0, -2.0, 0.0],
+                  upper=[7.0, 9.0, 0.5], joint_types=["revolute", "revolute", "prismatic"])
+    Q = robot.random_q(5, rng=rng)
+    q_ref = rng.uniform(-10.0, 10.0, 3)
+    out = nearest_copies(robot, Q, q_ref)
+    turns = (out - Q) / (2 * np.pi)
+    np.testing.assert_allclose(turns[:, :2], np.round(turns[:, :2]), atol=1e-9)
+    np.testing.assert_array_equal(out[:, 2], Q[:, 2])
+    assert np.all(out >= robot.lower - 1e-12) and np.all(out <= robot.upper + 1e-12)
+    for q, o in zip(Q, out, strict=True):
+        for j in range(2):
+            copies = q[j] + 2 * np.pi * np.arange(-4, 5)
+            inside = copies[(copies >= robot.lower[j]) & (copies <= robot.upper[j])]
+            assert abs(o[j] - q_ref[j]) <= np.min(np.abs(inside - q_ref[j])) + 1e-12
+        np.testing.assert_allclose(fk_reference(robot, o), fk_reference(robot, q), atol=1e-12)

@@ -38,8 +38,8 @@ def precompile(robot: Robot, reachable: bool = True) -> None:
     ``reachable``: False for a target proven out of reach (its solve needs the batch FK of
     the re-check before the start loop's bookkeeping, so the child compiles it first)."""
     global _started
-    if _started or run_starts.overloads:  # already compiled or loaded in this process
-        return
+    if _started or getattr(run_starts, "overloads", True):  # compiled or loaded here (or
+        return  # not compiled at all: NUMBA_DISABLE_JIT)
     _started = True
     _background.start(__name__, (robot, reachable), probes=[run_starts])
 

@@ -121,7 +121,7 @@ class IdentityProjector(Projector):
     (no LM): with stand-in criteria the child's search calls the algorithm's and the
     archive's kernels and no kinematic one."""
 
-    def _ends(self, ctx, X, flags: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def _ends(self, target, X, flags: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         P = np.asarray(X, dtype=np.float64).reshape(-1, self.robot.dof)
         P = np.clip(P, self.robot.lower, self.robot.upper)
         return P, np.ones(len(P), dtype=bool), np.zeros(len(P))

@@ -28,7 +28,7 @@ from moik.problems.targets import Target
 from moik.solver.collision import CollisionGuard
 from moik.solver.context import ik_context
 from moik.solver.session import STOP_FRACTION
-from moik.solver.starts import PATIENT, PROJECT, UNLIMITED, multistart, run_starts
+from moik.solver.starts import PATIENT, UNLIMITED, multistart, run_starts
 
 LM_ITERATIONS = 30  # per projection (the first stage of solve_ik uses as many)
 BRANCH_STARTS = 256  # random starts that enumerate a non-redundant arm's branches
@@ -82,26 +82,23 @@ class Projector:
         """``(P, ok, cost)``: the LM ends from the rows of ``X`` (within the limits, shifted
         to the 2 pi copies nearest ``q_current``), which converged, their residual costs.
         ``patient``: no start is abandoned for slow progress."""
-        ctx = ik_context(self.robot, self.problem.target, stop=self._stops,
-                         max_iter=LM_ITERATIONS)  # built per call: a Projector is deep-copied
-        P, ok, cost = self._ends(ctx, X, PROJECT | (PATIENT if patient else 0))
+        P, ok, cost = self._ends(self.problem.target, X, PATIENT if patient else 0)
         return self.copies(P), ok, cost
 
     def project_via_pose(self, X, rotation: np.ndarray
                          ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """:meth:`project` after LM towards the pose (target position, ``rotation``): the
         starts of the ``orientation`` criterion (0 where that pose is reachable)."""
-        ctx = ik_context(self.robot, Target(self.problem.target.position, rotation),
-                         stop=self._stops, max_iter=LM_ITERATIONS)
-        return self.project(self._ends(ctx, X, PROJECT)[0])
+        return self.project(self._ends(Target(self.problem.target.position, rotation), X, 0)[0])
 
-    def _ends(self, ctx, X, flags: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """LM from every row of ``X`` on ``ctx``: the ends, which converged, their costs."""
+    def _ends(self, target: Target, X, flags: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """LM towards ``target`` from every row of ``X`` (a projection, :func:`run_starts`
+        with ``found=None``): the ends, which converged, their costs. The context is built
+        per call: a Projector is deep-copied (pymoo), and a context cannot be."""
+        ctx = ik_context(self.robot, target, stop=self._stops, max_iter=LM_ITERATIONS)
         P = np.array(X, dtype=np.float64, order="C", copy=True).reshape(-1, self.robot.dof)
         ends = np.empty((len(P), 3))
-        self.n_eval += int(run_starts(ctx, P, (flags, UNLIMITED),
-                                      np.empty((0, self.robot.dof + 2)),
-                                      np.empty(self.robot.dof + 1), ends)[1])
+        self.n_eval += int(run_starts(ctx, P, (flags, UNLIMITED), None, None, ends)[1])
         return P, ends[:, 0] != 0.0, ends[:, 1]
 
     def copies(self, P: np.ndarray) -> np.ndarray:

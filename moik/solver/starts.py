@@ -3,8 +3,8 @@
 :func:`run_starts` runs the compiled Levenberg-Marquardt from the rows of ``starts`` in
 turn on one :class:`~moik.solver.context.IKContext`; its ``policy`` says what becomes
 of each end: collected when it converged and is new (modulo 2 pi; optionally only after
-an FK re-check within the tolerances), or kept per row (a projection). Every caller uses
-it: :class:`~moik.solver.session.SolveSession` (re-checked starts), the batch
+an FK re-check within the tolerances), or kept per row (``found=None``: a projection).
+Every caller uses it: :class:`~moik.solver.session.SolveSession` (re-checked starts), the batch
 (:func:`run_batch`, one context re-targeted per target), the Pareto projector and
 branch enumeration (:mod:`moik.solver.pareto_search`) and :func:`multistart`.
 :func:`lm_front` solves the weighted-sum scalarisations of an unreachable pose's front.
@@ -30,7 +30,6 @@ from moik.solver.lm import FRONT_STALL_RATIO, STALL_RATIO, copy_into, lm_start
 # policy flags of run_starts
 CHECK = 1  # a converged end is a solution only if an FK re-check puts it within tolerance
 PATIENT = 2  # no start is abandoned for slow progress (a start near a solution)
-PROJECT = 4  # every row is run and kept in place (ends[i] = converged, cost, -); none collected
 UNLIMITED = 2**62  # a budget that never stops the loop
 
 
@@ -94,12 +93,15 @@ def run_starts(ctx, starts, policy, found, best, ends):
     Args:
         ctx: The solve's :class:`~moik.solver.context.IKContext`.
         starts: ``(n, dof)`` starts, overwritten by the ends.
-        policy: ``(flags, budget)``: :data:`CHECK`, :data:`PATIENT`, :data:`PROJECT` or'd;
-            no start begins once ``budget`` FK evaluations are spent.
+        policy: ``(flags, budget)``: :data:`CHECK`, :data:`PATIENT` or'd; no start begins
+            once ``budget`` FK evaluations are spent.
         found: ``(want, dof + 2)`` solutions, each ``[q, position error, orientation
             error]`` (the errors NaN when not re-checked); the rows known before are
             filled, the others NaN. New ends (farther than ``ctx.distinct`` from every
-            other, modulo 2 pi) are appended until it is full.
+            other, modulo 2 pi) are appended until it is full. ``None``: a projection,
+            every row is run (whatever the budget) and only ``ends`` is written; numba
+            compiles that case alone (no re-check, collision test or bookkeeping: the
+            Pareto search's cold start compiles less), ``best`` is then ``None`` too.
         best: ``[value, q]`` (``dof + 1``), replaced by a smaller candidate: without
             :data:`CHECK` the lowest-cost end (value: its cost ``0.5 |r|^2``); with it the
             re-checked new solutions, or the lowest-cost end when none was new (value:
@@ -116,12 +118,19 @@ def run_starts(ctx, starts, policy, found, best, ends):
     """
     flags, budget = policy
     n, dof = starts.shape
-    want, check, project = found.shape[0], flags & CHECK != 0, flags & PROJECT != 0
     stall_ratio = 1.0 if flags & PATIENT else STALL_RATIO
     scale = (ctx.inv_reach, 1.0)
+    ws = lm_workspace(dof)
+    if found is None:  # a projection (the branch numba keeps for found=None, and only it)
+        n_eval = 0
+        for s in range(n):
+            conv, cost, ne = lm_start(ctx, ws, starts[s], scale, stall_ratio)
+            n_eval += ne
+            ends[s, 0], ends[s, 1], ends[s, 2] = conv, cost, np.nan
+        return 0, n_eval, n
+    want, check = found.shape[0], flags & CHECK != 0
     tp, to = ctx.tol_position * ctx.inv_reach, ctx.tol_orientation
     tol_cost = 0.5 * (tp * tp + to * to)  # an end within both tolerances costs at most this
-    ws = lm_workspace(dof)
     collide = checks_pairs(ctx.collision)
     scratch = end_scratch(ctx.collision)
     n_known = 0
@@ -129,7 +138,7 @@ def run_starts(ctx, starts, policy, found, best, ends):
         n_known += 1
     n_found, n_eval, used, low, low_cost = n_known, 0, 0, -1, np.inf
     for s in range(n):
-        if not project and (n_found >= want or n_eval >= budget):
+        if n_found >= want or n_eval >= budget:
             break
         used += 1
         q = starts[s]
@@ -138,7 +147,7 @@ def run_starts(ctx, starts, policy, found, best, ends):
         ends[s, 0], ends[s, 1], ends[s, 2] = conv, cost, np.nan
         if cost < low_cost:
             low, low_cost = s, cost
-        if project or not (conv or (check and cost <= tol_cost)):
+        if not (conv or (check and cost <= tol_cost)):
             continue
         if check and not recheck(ctx, ws, q):
             continue
@@ -152,7 +161,7 @@ def run_starts(ctx, starts, policy, found, best, ends):
         n_found = _keep(ctx, ws, found, n_found, q)
         if check and n_found > n_before:
             _improve(ctx, ws, best, q)
-    if low < 0 or project:
+    if low < 0:
         return n_found, n_eval, used
     if not check:
         if low_cost < best[0]:

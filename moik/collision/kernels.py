@@ -34,13 +34,13 @@ def world_frames(F, P, base, types, q, frames, axes):
     ``axes[j] = (o_j, z_j)``: the point and direction of joint ``j + 1``'s axis.
     """
     frames[0] = base
-    t = pose_state(F, 0)
+    t = pose_state(F[0])
     for j in range(types.size):
         axes[j, 0], axes[j, 1], axes[j, 2] = t[9], t[10], t[11]
         axes[j, 3], axes[j, 4], axes[j, 5] = t[2], t[5], t[8]
         t = move_joint(t, types[j], q[j])
-        store_pose(compose(t, pose_state(P, j)), frames[j + 1])
-        t = compose(t, pose_state(F, j + 1))
+        store_pose(compose(t, pose_state(P[j])), frames[j + 1])
+        t = compose(t, pose_state(F[j + 1]))
 
 
 @jit

@@ -27,12 +27,12 @@ def pose_jacobian_into(F, types, q, T, J):
 
     ``F`` and ``types`` are ``KinematicChain.origins`` and ``.joint_types``.
     """
-    t = pose_state(F, 0)
+    t = pose_state(F[0])
     dof = types.size
     for j in range(dof):  # the joint's axis point and direction, kept in J for now
         J[0, j], J[1, j], J[2, j] = t[9], t[10], t[11]
         J[3, j], J[4, j], J[5, j] = t[2], t[5], t[8]
-        t = compose(move_joint(t, types[j], q[j]), pose_state(F, j + 1))
+        t = compose(move_joint(t, types[j], q[j]), pose_state(F[j + 1]))
     px, py, pz = t[9], t[10], t[11]
     for j in range(dof):
         zx, zy, zz = J[3, j], J[4, j], J[5, j]

@@ -37,10 +37,12 @@ _BLOCK_MIN = 4  # fewer rows than this go through the single-row kernel
 
 
 @jit
-def pose_state(F, k):
-    """``F[k]`` as the twelve-scalar pose state (rotation rows, then position)."""
-    return (F[k, 0, 0], F[k, 0, 1], F[k, 0, 2], F[k, 1, 0], F[k, 1, 1], F[k, 1, 2],
-            F[k, 2, 0], F[k, 2, 1], F[k, 2, 2], F[k, 0, 3], F[k, 1, 3], F[k, 2, 3])
+def pose_state(T):
+    """The ``(4, 4)`` transform ``T`` as the twelve-scalar pose state (rotation rows, then
+    position). Callers pass ``F[k]``: one compiled version for every ``k`` (an index
+    argument would compile once more for the literal ``0``)."""
+    return (T[0, 0], T[0, 1], T[0, 2], T[1, 0], T[1, 1], T[1, 2],
+            T[2, 0], T[2, 1], T[2, 2], T[0, 3], T[1, 3], T[2, 3])
 
 
 @jit
@@ -90,9 +92,9 @@ def chain_pose(F, types, q):
 
     Returns ``(r00, r01, r02, r10, r11, r12, r20, r21, r22, px, py, pz)``.
     """
-    t = pose_state(F, 0)
+    t = pose_state(F[0])
     for j in range(types.size):
-        t = compose(move_joint(t, types[j], q[j]), pose_state(F, j + 1))
+        t = compose(move_joint(t, types[j], q[j]), pose_state(F[j + 1]))
     return t
 
 
@@ -177,11 +179,11 @@ def chain_block(F, types, Q, start, m, W):
             for b in range(m):
                 sj[b], cj[b] = sin_cos_inline(qj[b])
                 far += abs(qj[b]) > TRIG_MAX
-    f = pose_state(F, 0)
+    f = pose_state(F[0])
     for b in range(m):
         _set_block_state(W, b, f)
     for j in range(dof):
-        f = pose_state(F, j + 1)
+        f = pose_state(F[j + 1])
         if types[j] == PRISMATIC:
             for b in range(m):
                 _set_block_state(W, b, compose(translate_z(block_state(W, b), QT[j, b]), f))
@@ -252,11 +254,11 @@ def fk_frames_into(F, P, types, q, out):
     out[0] = 0.0
     for k in range(4):
         out[0, k, k] = 1.0
-    t = pose_state(F, 0)
+    t = pose_state(F[0])
     for j in range(types.size):
         t = move_joint(t, types[j], q[j])
-        store_pose(compose(t, pose_state(P, j)), out[j + 1])
-        t = compose(t, pose_state(F, j + 1))
+        store_pose(compose(t, pose_state(P[j])), out[j + 1])
+        t = compose(t, pose_state(F[j + 1]))
 
 
 @jit

@@ -125,11 +125,11 @@ def cholesky_solve(A, b, x):
 
 
 @jit
-def copy_into(src, dst, offset=0):
-    """``dst[offset:offset + len(src)] = src`` by a loop: a slice assignment would compile
-    numba's shape-mismatch error path (string formatting), seconds of the first run."""
+def copy_into(src, dst):
+    """``dst[:len(src)] = src`` by a loop: a slice assignment would compile numba's
+    shape-mismatch error path (string formatting), seconds of the first run."""
     for j in range(src.shape[0]):
-        dst[offset + j] = src[j]
+        dst[j] = src[j]
 
 
 @jit

@@ -82,7 +82,7 @@ def _improve(ctx, ws, best, q):
     scaled = ws.err[0] * ctx.inv_reach + ws.err[1]
     if scaled < best[0]:
         best[0] = scaled
-        copy_into(q, best, 1)
+        copy_into(q, best[1:])
 
 
 @jit
@@ -166,7 +166,7 @@ def run_starts(ctx, starts, policy, found, best, ends):
     if not check:
         if low_cost < best[0]:
             best[0] = low_cost
-            copy_into(starts[low], best, 1)
+            copy_into(starts[low], best[1:])
     elif n_found == n_known:
         recheck(ctx, ws, starts[low])
         _improve(ctx, ws, best, starts[low])

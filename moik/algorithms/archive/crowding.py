@@ -123,7 +123,9 @@ def _crowding_counts_pairwise(F: np.ndarray, dr: np.ndarray) -> np.ndarray:
 @jit
 def sorted_positions(a: np.ndarray, v: np.ndarray, right: bool) -> np.ndarray:
     """``np.searchsorted(a, v, side="right" if right else "left")`` for an ascending
-    finite ``a`` (bisection; numba's own searchsorted takes seconds to compile)."""
+    finite ``a`` (bisection; numba's own searchsorted takes seconds to compile). Callers
+    pass ``right`` as ``np.bool_``: one compiled version for both sides, not one per
+    literal."""
     out = np.empty(v.size, np.int64)
     for k in range(v.size):
         lo, hi, x = 0, a.size, v[k]
@@ -156,12 +158,12 @@ def _crowding_counts_front_2d(F: np.ndarray, dr: np.ndarray) -> np.ndarray:
     lo = np.zeros(m, dtype=np.int64)
     hi = np.full(m, m, dtype=np.int64)
     if dr[0] > 0:
-        lo = sorted_positions(f1, f1 - dr[0], True)
-        hi = sorted_positions(f1, f1 + dr[0], False)
+        lo = sorted_positions(f1, f1 - dr[0], np.bool_(True))
+        hi = sorted_positions(f1, f1 + dr[0], np.bool_(False))
     if dr[1] > 0:
         g = -f2  # ascending; -(a - b) is exact, so the thresholds match the pairwise test
-        lo = np.maximum(lo, sorted_positions(g, -(f2 + dr[1]), True))
-        hi = np.minimum(hi, sorted_positions(g, -(f2 - dr[1]), False))
+        lo = np.maximum(lo, sorted_positions(g, -(f2 + dr[1]), np.bool_(True)))
+        hi = np.minimum(hi, sorted_positions(g, -(f2 - dr[1]), np.bool_(False)))
     counts = np.empty(m, dtype=np.int64)
     for k in range(m):  # a loop, not counts[order] = ...: no shape-error code to compile
         counts[order[k]] = max(hi[k] - lo[k], 1)

@@ -107,9 +107,9 @@ def stand_in(k: int, m: int, sense: str, Q: np.ndarray) -> np.ndarray:
     kinematics. In minimisation form the first ``m - 1`` are joints ``0 .. m - 2`` and
     the last is ``1 - `` their mean plus a tenth of the next joint, so the criteria
     conflict (most points are non-dominated, some dominated; the archive fills and is
-    thinned, as on a real front)."""
+    thinned, as on a real front); a single criterion is joint 0."""
     dof = Q.shape[1]
-    if k < m - 1:
+    if k < m - 1 or m == 1:
         f = Q[:, k % dof].copy()
     else:
         f = 1.0 - Q[:, [j % dof for j in range(m - 1)]].mean(axis=1) + 0.1 * Q[:, (m - 1) % dof]

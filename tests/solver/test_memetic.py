@@ -102,6 +102,11 @@ def test_the_child_never_calls_a_users_criterion(popen):
     assert kinematic["objectives"][0] == "manipulability" and calls == []
 
 
+def test_a_single_stand_in_criterion_is_a_joint_value():
+    Q = get_robot("iiwa14").random_q(5, rng=np.random.default_rng(4))
+    np.testing.assert_array_equal(stand_in(0, 1, "max", Q), -Q[:, 0])
+
+
 @pytest.mark.parametrize("m", [2, 3])
 def test_stand_in_criteria_conflict_like_a_front(m):
     """In minimisation form the stand-ins leave most points non-dominated and some

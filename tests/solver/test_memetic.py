@@ -102,6 +102,15 @@ def test_the_child_never_calls_a_users_criterion(popen):
     assert kinematic["objectives"][0] == "manipulability" and calls == []
 
 
+def test_does_not_start_when_the_algorithm_kernels_are_cached(popen, monkeypatch):
+    probed = []
+    monkeypatch.setattr(_jit, "is_cached", lambda kernel: probed.append(kernel) or True)
+    assert memetic.precompile(_problem(), ("manipulability", "limit_margin"),
+                              np.empty((0, 7)), SEARCH) is None
+    assert not popen.started
+    assert memetic.generation_draws in probed and memetic.front_mask_2d in probed
+
+
 def test_a_single_stand_in_criterion_is_a_joint_value():
     Q = get_robot("iiwa14").random_q(5, rng=np.random.default_rng(4))
     np.testing.assert_array_equal(stand_in(0, 1, "max", Q), -Q[:, 0])

@@ -178,8 +178,8 @@ def _solve(session: SolveSession, opts: SearchOptions, starts_rng: np.random.Gen
     robot, target = session.robot, session.target
     n_solutions, polish = opts.n_solutions, opts.polish
     out_of_reach = reach_excess(robot, target) > 0
-    if session.guard is None:  # a cold first solve: LM's leaf kernels compile beside it
-        precompile_starts(robot, reachable=not out_of_reach)
+    if session.guard is None and polish:  # a cold first solve (LM runs only with polish):
+        precompile_starts(robot, reachable=not out_of_reach)  # LM's leaves compile beside it
     if out_of_reach:  # proven out of reach: no start or search can help
         return _out_of_reach(session, opts, starts_rng, q_current, t0)
     if polish and (q_current is not None or opts.starts):

@@ -51,8 +51,8 @@ def memetic_search(projector: Projector, first: np.ndarray, rng: np.random.Gener
     """Steps 1-3 of a redundant arm's search (module docstring): LM from ``first`` and
     ``starts`` random configurations (from ``rng``), the multi-objective ``method`` (seeded
     by ``seed``), the local search; every exact point enters ``projector``'s archive.
-    ``ready`` is called between the LM starts and the first criteria (a background
-    compilation of the search's kernels is waited for there)."""
+    ``ready`` is called after the first criteria, before the archive and the search (a
+    background compilation of the algorithm's kernels is waited for there)."""
     problem, robot = projector.problem, projector.robot
     P, ok, _ = projector.project(first, patient=True)
     Q, ok_q, _ = projector.project(robot.random_q(starts, rng=rng))

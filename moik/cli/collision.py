@@ -1,12 +1,15 @@
-"""``moik solve ... --scene FILE [--clearance D]``: the answers' distances to a scene.
+"""``moik solve ... --scene FILE | --self-collision [--clearance D]``: the answers' distances.
 
 (The options are declared in :mod:`moik.cli.parser`, which imports nothing heavy.)
 
 The scene is a JSON file (:func:`moik.collision.io.load_scene`); the arm's geometry is
 its shipped capsule model (:mod:`moik.collision.catalog`; catalog arms only). The
-checker (self pairs and the scene) and ``--clearance`` go to the solver
+checker (self pairs and the scene; the self pairs alone with ``--self-collision`` and
+no scene) and ``--clearance`` go to the solver
 (``solve_ik(..., collision=checker, clearance=D)``), which returns only collision-free
-solutions, or the status ``collides`` (exit status 1) when every exact one collides.
+solutions, or the status ``collides`` (exit status 1) when every exact one collides;
+with ``--pareto`` to ``solve_ik_pareto`` (members keep the clearance; the criterion
+``clearance`` maximises the smallest distance).
 Each printed solution gets its smallest distance and the pair that attains it (marked
 in collision when closer than ``--clearance``, default 0); ``--json`` adds
 ``min_distance``, ``closest_pair`` and ``collides`` per solution, and ``min_distance``
@@ -25,15 +28,27 @@ from moik.cli.parser import given, library_default
 from moik.collision.catalog import collision_model
 from moik.collision.io import load_scene
 from moik.collision.model import CollisionChecker
+from moik.exceptions import ParameterError
 from moik.robots import Robot
 
 
 def checker(args: argparse.Namespace, robot: Robot) -> tuple[CollisionChecker, float] | None:
-    """The checker and clearance of ``--scene``, or None without it (built before solving)."""
-    if getattr(args, "scene", None) is None:
+    """The checker and clearance of ``--scene`` / ``--self-collision``, or None without
+    either (built before solving).
+
+    Raises:
+        ParameterError: ``--clearance`` given with neither (nothing would be checked).
+    """
+    scene = getattr(args, "scene", None)
+    clearance = given(args, "clearance").get("clearance")
+    if scene is None and not getattr(args, "self_collision", False):
+        if clearance is not None:
+            raise ParameterError("--clearance needs geometry to keep clear of: give --scene "
+                                 "FILE and/or --self-collision")
         return None
-    clearance = given(args, "clearance").get("clearance", library_default("clearance"))
-    return (CollisionChecker(model=collision_model(robot), scene=load_scene(args.scene)),
+    clearance = library_default("clearance") if clearance is None else clearance
+    return (CollisionChecker(model=collision_model(robot),
+                             scene=None if scene is None else load_scene(scene)),
             number("--clearance", clearance, minimum=0.0))
 
 
@@ -53,10 +68,12 @@ def distances(check: tuple[CollisionChecker, float], Q: np.ndarray) -> list[dict
     return out
 
 
-def print_distances(rows: list[dict[str, Any]], unit: str) -> None:
-    """One line per solution, in the order the solutions were printed."""
-    for k, row in enumerate(rows, start=1):
+def print_distances(rows: list[dict[str, Any]], unit: str, label: str = "solution",
+                    start: int = 1) -> None:
+    """One line per solution, in the order the solutions were printed (numbered from
+    ``start``, as their table numbers them)."""
+    for k, row in enumerate(rows, start=start):
         pair = " - ".join(row["closest_pair"]) if row["closest_pair"] else "no pair"
         verdict = "IN COLLISION" if row["collides"] else "collision-free"
-        print(f"solution {k}: {verdict}, smallest distance {row['min_distance']:.4f} {unit} "
+        print(f"{label} {k}: {verdict}, smallest distance {row['min_distance']:.4f} {unit} "
               f"({pair})")

@@ -3,7 +3,9 @@
 :func:`run_pareto` is what ``solve`` runs when ``--pareto`` is given (the options are
 in :mod:`moik.cli.parser`). It prints the members (joint values in degrees;
 prismatic ones in the robot's unit) with their criteria and marks the compromise,
-or with ``--json`` one JSON object (joint values in radians); ``--plot FILE``
+or with ``--json`` one JSON object (joint values in radians); ``--scene FILE`` /
+``--self-collision`` (and ``--clearance``) make it collision-aware, as for ``solve``
+(:mod:`moik.cli.collision`: each member's distance printed); ``--plot FILE``
 draws the front and postures (:func:`moik.plotting.pareto.plot_pareto_ik`), ``--html
 FILE`` writes the interactive explorer (:func:`moik.plotting.pareto_explorer`). Exit
 status 0 when an exact solution was found, 1 otherwise.
@@ -17,6 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
+from moik.cli import collision
 from moik.cli.common import PARETO_OPTIONS, joint_values, library_call, tolerance
 from moik.cli.parser import given
 from moik.cli.solutions import euler_angles
@@ -55,10 +58,14 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
     options = given(args, "pareto_size", "pareto_method", "seed", "tol")
     if "tol" in options:
         options["tol"] = tolerance(options["tol"])
+    criteria = parse_criteria(args.pareto)
+    check = collision.checker(args, robot)
+    if check is None and "clearance" in (c.lower() for c in criteria):
+        raise ParameterError("--pareto criterion clearance needs geometry to measure: give "
+                             "--scene FILE and/or --self-collision")
     with library_call(PARETO_OPTIONS):
-        res = solve_ik_pareto(robot, target, objectives=parse_criteria(args.pareto),
-                              q_current=q_current, rotation=rotation,
-                              **options)
+        res = solve_ik_pareto(robot, target, objectives=criteria, q_current=q_current,
+                              rotation=rotation, **options, **collision.solver_options(check))
     index = res.compromise_index() if len(res.X) else None
     plots = []
     if args.plot and len(res.X):
@@ -67,8 +74,13 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
         plot_pareto_ik(robot, res.X, res.F, objectives=res.objectives, senses=res.senses,
                        target=target.position, compromise=index, save=stem)
         plots = [f"{stem}.png", f"{stem}.pdf"]
-    print(json.dumps(as_json(robot, target, res, index, plots)) if args.json
-          else format_result(robot, target, res, index))
+    near = None if check is None else collision.distances(check, res.X)
+    if args.json:
+        print(json.dumps(as_json(robot, target, res, index, plots, near)))
+    else:
+        print(format_result(robot, target, res, index))
+        if near:
+            collision.print_distances(near, robot.unit, label="member", start=0)
     if plots and not args.json:
         print(f"plot written to {plots[0]} and {plots[1]}")
     if html is not None and len(res.X):
@@ -92,17 +104,21 @@ def html_file(spec: str | None) -> Path | None:
 
 
 def as_json(robot, target: Target, res: ParetoIKResult, compromise: int | None,
-            plots: list[str] | None = None) -> dict:
+            plots: list[str] | None = None, collision: list[dict] | None = None) -> dict:
     """The result as plain JSON types, in the schema family of ``solve`` (see :mod:`moik.cli`).
 
     ``q`` and its errors are the compromise member's (null without a member);
-    ``solutions`` every member; ``status`` ``"solved"`` with members, else
-    ``"not-converged"`` (no exact solution found).
+    ``solutions`` every member (with ``--scene`` / ``--self-collision`` also its
+    ``min_distance``, ``closest_pair`` and ``collides``, as ``solve`` gives them, and
+    ``min_distance`` of ``q`` at the top level); ``status`` ``"solved"`` with members,
+    else ``"not-converged"`` (no exact solution found).
     """
     solved = compromise is not None
     members = [{"q": q.tolist(), "position_error": float(p), "orientation_error": float(o)}
                for q, p, o in zip(res.X, res.position_errors, res.orientation_errors,
                                   strict=True)]
+    for member, near in zip(members, collision or [], strict=False):
+        member.update(near)
     best = members[compromise] if compromise is not None else None
     return {"command": "pareto", "robot": robot.name, "unit": robot.unit,
             "joint_names": list(robot.joint_names),
@@ -115,7 +131,9 @@ def as_json(robot, target: Target, res: ParetoIKResult, compromise: int | None,
             "orientation_error": None if best is None else best["orientation_error"],
             "solutions": members, "objectives": list(res.objectives),
             "senses": list(res.senses), "F": res.F.tolist(), "compromise": compromise,
-            "redundant": res.redundant, "n_exact": res.n_exact, "plots": plots or []}
+            "redundant": res.redundant, "n_exact": res.n_exact, "plots": plots or [],
+            **({} if collision is None else
+               {"min_distance": None if best is None else best["min_distance"]})}
 
 
 def format_result(robot, target: Target, res: ParetoIKResult, compromise: int | None) -> str:

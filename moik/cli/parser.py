@@ -97,9 +97,12 @@ def _solve_arguments(p: argparse.ArgumentParser) -> None:
                    help="JSON scene of obstacles: solve for collision-free solutions (scene and "
                         "self pairs, shipped capsule models of the catalog arms) and report "
                         "each one's distance; status collides (exit 1) if all exact ones collide")
+    p.add_argument("--self-collision", action="store_true",
+                   help="without --scene: solve for solutions free of self-collision only "
+                        "(the arm's shipped capsule model; --scene checks its self pairs too)")
     p.add_argument("--clearance", type=float, metavar="D",
-                   help="with --scene: the smallest accepted distance (robot unit, >= 0; "
-                        "default {default})")
+                   help="with --scene or --self-collision: the smallest accepted distance "
+                        "(robot unit, >= 0; default {default})")
     p.add_argument("--tol", nargs="+", type=float, metavar="TOL",
                    help="tolerance: one number t (position t*reach, orientation t rad; default "
                         "{default}) or two (position in the robot's unit, orientation in rad)")

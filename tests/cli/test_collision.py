@@ -1,4 +1,5 @@
-"""``moik solve --scene FILE [--clearance D]``: each solution's distance, in text and JSON."""
+"""``moik solve --scene FILE | --self-collision [--clearance D]`` (also with ``--pareto``):
+each solution's distance, in text and JSON."""
 
 import json
 
@@ -69,3 +70,49 @@ def test_negative_clearance(scene_file, capsys):
     assert main(["solve", "panda", "--target", "0.5", "0.1", "0.45", "--scene", str(scene_file),
                  "--clearance", "-1"]) != 0
     assert "--clearance" in capsys.readouterr().err
+
+
+PARETO = ["solve", "panda", "--target", "0.5", "0.1", "0.45", "--pareto-size", "4"]
+
+
+def test_pareto_members_keep_the_clearance_of_the_scene(scene_file, capsys):
+    """--pareto is collision-aware as solve is: each member's distance, recomputed here by
+    a checker of our own, is at least --clearance, and the criterion clearance is it."""
+    code = main([*PARETO, "--pareto", "manipulability,clearance", "--scene", str(scene_file),
+                 "--clearance", "0.01", "--json"])
+    doc = json.loads(capsys.readouterr().out)
+    assert code == 0 and doc["solutions"]
+    checker = CollisionChecker(model=collision_model("panda"), scene=load_scene(SCENE))
+    for sol, f in zip(doc["solutions"], doc["F"], strict=True):
+        d = float(checker.min_distance(np.array(sol["q"])))
+        assert sol["min_distance"] == pytest.approx(d, abs=1e-12)
+        assert f[1] == pytest.approx(d, abs=1e-12)
+        assert d >= 0.01 and not sol["collides"]
+    assert doc["min_distance"] == doc["solutions"][doc["compromise"]]["min_distance"]
+
+
+def test_pareto_text_gives_each_members_distance(scene_file, capsys):
+    main([*PARETO, "--pareto", "manipulability,limit_margin", "--scene", str(scene_file)])
+    out = capsys.readouterr().out
+    assert "member 0: collision-free" in out
+
+
+@pytest.mark.parametrize("argv, option", [
+    ([*PARETO, "--pareto", "manipulability,clearance"], "--scene FILE"),
+    (["solve", "panda", "--target", "0.5", "0.1", "0.45", "--clearance", "0.01"], "--scene FILE"),
+])
+def test_clearance_without_geometry_names_the_options(argv, option, capsys):
+    assert main(argv) != 0
+    err = capsys.readouterr().err
+    assert option in err and "--self-collision" in err and "scene=" not in err
+
+
+def test_self_collision_alone_checks_the_self_pairs(capsys):
+    code = main(["solve", "panda", "--target", "0.5", "0.1", "0.45", "--self-collision",
+                 "--clearance", "0.01", "--json"])
+    doc = json.loads(capsys.readouterr().out)
+    assert code == 0 and doc["status"] == "solved"
+    checker = CollisionChecker(model=collision_model("panda"))  # self pairs, no scene
+    assert doc["min_distance"] == pytest.approx(float(checker.min_distance(np.array(doc["q"]))),
+                                                abs=1e-12)
+    assert doc["min_distance"] >= 0.01

@@ -84,7 +84,8 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
     if plots and not args.json:
         print(f"plot written to {plots[0]} and {plots[1]}")
     if html is not None and len(res.X):
-        pareto_explorer(res, robot, html, target=target)
+        pareto_explorer(res, robot, html, target=target,
+                        scene=None if check is None else check[0].scene)
         if not args.json:
             print(f"explorer written to {html}")
     return 0 if len(res.X) else 1

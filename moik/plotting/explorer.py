@@ -22,6 +22,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -36,8 +37,12 @@ from moik.plotting.explorer_panels import (
     front_panel_data,
     plotly_modules,
 )
+from moik.plotting.geometry import scene_traces
 from moik.plotting.pareto import UNITS
 from moik.robots.chain import Robot
+
+if TYPE_CHECKING:
+    from moik.collision.model import Scene
 
 __all__ = ["CurvePanel", "Front", "FrontPanel", "TablePanel", "pareto_explorer",
            "write_explorer"]
@@ -107,7 +112,8 @@ def _as_front(name: str, result, unit: str) -> tuple[Front, list[str], int]:
 
 
 def pareto_explorer(result, robot: Robot, path: str | Path, *, target=None,
-                    title: str | None = None, obstacles: Sequence[dict] = ()) -> Path:
+                    title: str | None = None, scene: Scene | None = None,
+                    obstacles: Sequence[dict] = ()) -> Path:
     """Write the explorer of one or several Pareto sets of IK solutions.
 
     Args:
@@ -121,8 +127,11 @@ def pareto_explorer(result, robot: Robot, path: str | Path, *, target=None,
         target: The target (position, ``(4, 4)`` pose or Target): drawn in the
             posture view, and each member's errors are recomputed against it.
         title: Page title.
-        obstacles: plotly 3-D trace dicts (e.g. ``{"type": "mesh3d", ...}``) drawn in
-            every posture: the hook for the obstacles of a collision scene.
+        scene: A :class:`~moik.collision.Scene` whose obstacles are drawn in every
+            posture (:func:`moik.plotting.geometry.scene_traces`; a half-space as a
+            patch of its plane the size of the robot's reach).
+        obstacles: More plotly 3-D trace dicts (e.g. ``{"type": "mesh3d", ...}``) drawn
+            in every posture.
 
     Returns:
         The path written.
@@ -145,7 +154,9 @@ def pareto_explorer(result, robot: Robot, path: str | Path, *, target=None,
         fronts.append(front)
     panel = FrontPanel(title="Pareto front: click a point to see its posture", fronts=fronts,
                        objectives=labels or [], robot=robot, target=target,
-                       initial=(0, first), obstacles=tuple(obstacles),
+                       initial=(0, first),
+                       obstacles=(*([] if scene is None else
+                                    scene_traces(scene, span=robot.reach)), *obstacles),
                        notes=["The ring marks the member shown; the first member shown is "
                               "the compromise (closest to the utopia point) when the result "
                               "has one. Joint numbers shared by several joints mark joints "

@@ -3,14 +3,16 @@ surfaces, half-spaces as a translucent patch of their boundary plane.
 
 Called by :func:`moik.plotting.robot.plot_robot` with ``collision=`` (a
 :class:`~moik.collision.model.CollisionChecker`): the robot's shapes at the first
-configuration (blue) and the scene's obstacles (grey).
+configuration (blue) and the scene's obstacles (grey). :func:`scene_traces` gives a
+scene's obstacles as plotly ``mesh3d`` traces, for the interactive explorer
+(:func:`moik.plotting.explorer.pareto_explorer`, ``scene=``).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from moik.collision.model import CollisionChecker
+from moik.collision.model import CollisionChecker, Scene
 from moik.collision.shapes import Box, Capsule, HalfSpace, Shape, Sphere
 
 ROBOT_COLOR, OBSTACLE_COLOR = "tab:blue", "0.45"
@@ -65,3 +67,39 @@ def draw_collision(ax, checker: CollisionChecker, q: np.ndarray, *, span: float)
     for name, shape in checker.world_shapes(q):
         draw_shape(ax, shape, span=span,
                    color=ROBOT_COLOR if name in robot_names else OBSTACLE_COLOR)
+
+
+def _mesh(shape: Shape, span: float) -> tuple[np.ndarray, np.ndarray]:
+    """World vertices ``(v, 3)`` and triangles ``(t, 3)`` of one shape's surface."""
+    R, p = shape.pose[:3, :3], shape.pose[:3, 3]
+    if isinstance(shape, (Capsule, Sphere)):
+        n = 12
+        P = _capsule_mesh(shape, n).reshape(3, -1).T
+        cells = [(a * n + b, a * n + b + 1, (a + 1) * n + b, (a + 1) * n + b + 1)
+                 for a in range(n - 1) for b in range(n - 1)]
+        tri = [t for c in cells for t in ((c[0], c[1], c[2]), (c[1], c[3], c[2]))]
+    elif isinstance(shape, Box):
+        P, faces = _box_faces(shape)
+        tri = [t for f in faces for t in ((f[0], f[1], f[2]), (f[0], f[2], f[3]))]
+    elif isinstance(shape, HalfSpace):
+        P = np.array([[sa * span, sb * span, 0.0] for sa, sb in ((-1, -1), (1, -1), (1, 1),
+                                                                 (-1, 1))])
+        tri = [(0, 1, 2), (0, 2, 3)]
+    else:
+        raise TypeError(f"no surface for {type(shape).__name__}")
+    return P @ R.T + p, np.array(tri, dtype=np.int64)
+
+
+def scene_traces(scene: Scene, span: float) -> list[dict]:
+    """The obstacles of ``scene`` as plotly ``mesh3d`` trace dicts (grey, translucent,
+    named by obstacle; a half-space as a square of half-side ``span`` of its boundary
+    plane around its pose's origin)."""
+    traces = []
+    for name, shape in scene.obstacles.items():
+        V, T = _mesh(shape, span)
+        traces.append({"type": "mesh3d", "name": name, "x": V[:, 0].tolist(),
+                       "y": V[:, 1].tolist(), "z": V[:, 2].tolist(), "i": T[:, 0].tolist(),
+                       "j": T[:, 1].tolist(), "k": T[:, 2].tolist(), "color": "grey",
+                       "opacity": 0.12 if isinstance(shape, HalfSpace) else 0.35,
+                       "hoverinfo": "name", "showlegend": False})
+    return traces

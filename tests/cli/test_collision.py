@@ -116,3 +116,12 @@ def test_self_collision_alone_checks_the_self_pairs(capsys):
     assert doc["min_distance"] == pytest.approx(float(checker.min_distance(np.array(doc["q"]))),
                                                 abs=1e-12)
     assert doc["min_distance"] >= 0.01
+
+
+def test_pareto_explorer_draws_the_scene(scene_file, tmp_path, capsys):
+    html = tmp_path / "x.html"
+    assert main([*PARETO, "--pareto", "manipulability,limit_margin", "--scene", str(scene_file),
+                 "--html", str(html)]) == 0
+    text = html.read_text()
+    data = json.loads(text.split('id="moik-data">', 1)[1].split("</script>", 1)[0])
+    assert [t["name"] for t in data["panels"][0]["obstacles"]] == ["table", "shelf"]

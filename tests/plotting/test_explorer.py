@@ -51,6 +51,20 @@ def test_one_self_contained_file_with_plotly_inline_once(tmp_path, panda, member
     assert len(re.findall(r"<script", text)) == 3  # plotly.js, the data, the page's script
 
 
+def test_a_scenes_obstacles_are_drawn_in_every_posture(tmp_path, panda, members):
+    from moik.collision import Box, HalfSpace, Scene
+    from moik.plotting.geometry import scene_traces
+
+    X, F = members
+    scene = Scene({"table": HalfSpace(), "shelf": Box(size=(0.3, 0.7, 0.02))})
+    extra = {"type": "mesh3d", "x": [0, 1, 0], "y": [0, 0, 1], "z": [0, 0, 0], "name": "mine"}
+    path = pareto_explorer({"X": X, "F": F}, panda, tmp_path / "p.html", scene=scene,
+                           obstacles=[extra])
+    drawn = page_data(path)["panels"][0]["obstacles"]
+    assert drawn == [*scene_traces(scene, span=panda.reach), extra]
+    assert [t["name"] for t in drawn] == ["table", "shelf", "mine"]
+
+
 def test_postures_come_from_the_robots_frames(tmp_path, panda, members):
     X, F = members
     target = Target(panda.fk(X[4])[:3, 3], panda.fk(X[4])[:3, :3])

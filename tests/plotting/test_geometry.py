@@ -30,3 +30,31 @@ def test_shapes_and_obstacles_drawn():
     assert len(ax.collections) >= n_plain + n_robot + 2 and added
     assert len(polys) >= n_robot + 2  # surfaces are Poly3DCollections too
     plt.close("all")
+
+
+def test_scene_traces_are_the_obstacles_surfaces():
+    """Each obstacle one mesh3d trace named after it: a box's 8 corners in the world, a
+    capsule's vertices at its radius from its segment, a half-space's on its plane."""
+    from moik.collision import Capsule
+    from moik.plotting.geometry import scene_traces
+
+    box_pose = rpy_pose([0.4, 0.1, 0.3], [0.0, 0.0, 0.5])
+    scene = Scene({"table": HalfSpace.plane([0, 0, 1], 0.05),
+                   "box": Box(size=(0.2, 0.4, 0.1), pose=box_pose),
+                   "post": Capsule.between([0.3, -0.2, 0.0], [0.3, -0.2, 0.5], 0.04)})
+    traces = {t["name"]: t for t in scene_traces(scene, span=1.0)}
+    assert set(traces) == {"table", "box", "post"}
+    for t in traces.values():
+        V = np.column_stack([t["x"], t["y"], t["z"]])
+        T = np.column_stack([t["i"], t["j"], t["k"]])
+        assert t["type"] == "mesh3d" and T.min() >= 0 and T.max() < len(V)
+        traces[t["name"]]["V"] = V
+    local = (traces["box"]["V"] - box_pose[:3, 3]) @ box_pose[:3, :3]
+    np.testing.assert_allclose(np.sort(np.abs(local), axis=0)[0], [0.1, 0.2, 0.05])
+    assert len(traces["box"]["V"]) == 8 and len(traces["box"]["i"]) == 12
+    np.testing.assert_allclose(traces["table"]["V"][:, 2], 0.05)
+    V = traces["post"]["V"]
+    along = np.clip(V[:, 2], 0.0, 0.5)  # the segment runs along z at (0.3, -0.2)
+    dist = np.linalg.norm(V - np.column_stack([np.full(len(V), 0.3), np.full(len(V), -0.2),
+                                               along]), axis=1)
+    np.testing.assert_allclose(dist, 0.04, atol=1e-12)

@@ -136,8 +136,9 @@ def _joint_labels(joints: list, scale: float) -> list[str]:
     return labels
 
 
-def _scene(robot: Robot, postures: list, target) -> dict:
-    """A fixed cube around every embedded posture and the target (switching keeps the scale)."""
+def _scene(robot: Robot, postures: list, target, obstacles: bool = False) -> dict:
+    """A fixed cube around every embedded posture and the target (switching keeps the scale);
+    the caption says what is drawn (``obstacles``: grey surfaces too)."""
     pts = [np.reshape(p["origins"], (-1, 3)) for p in postures if p]
     p_t, _ = target_pose(target)
     if p_t is not None:
@@ -148,7 +149,9 @@ def _scene(robot: Robot, postures: list, target) -> dict:
     return {"margin": {"l": 0, "r": 0, "t": 50, "b": 0}, "showlegend": False,
             "title": {"text": f"posture ({unit}): links through the joint frames, joints "
                               "numbered,<br>frame axes x red, y green, z blue; target: red "
-                              "diamond, its frame dashed", "font": {"size": 12}, "x": 0.02,
+                              "diamond, its frame dashed"
+                              + ("; obstacles grey" if obstacles else ""),
+                      "font": {"size": 12}, "x": 0.02,
                       "xanchor": "left", "y": 0.97},
             "scene": {"aspectmode": "cube", **{
                 f"{a}axis": {"range": [centre[k] - half, centre[k] + half],
@@ -212,7 +215,7 @@ def front_panel_data(panel: FrontPanel, go) -> dict:
                joint_names=list(robot.joint_names) or [f"q{j + 1}" for j in range(robot.dof)],
                target=None if p_t is None else {
                    "position": p_t.tolist(), "rotation": None if R_t is None else R_t.tolist()},
-               scene_layout=_scene(robot, postures, panel.target))
+               scene_layout=_scene(robot, postures, panel.target, bool(panel.obstacles)))
     return out
 
 

@@ -63,6 +63,9 @@ def test_a_scenes_obstacles_are_drawn_in_every_posture(tmp_path, panda, members)
     drawn = page_data(path)["panels"][0]["obstacles"]
     assert drawn == [*scene_traces(scene, span=panda.reach), extra]
     assert [t["name"] for t in drawn] == ["table", "shelf", "mine"]
+    assert "obstacles grey" in page_data(path)["panels"][0]["scene_layout"]["title"]["text"]
+    plain = pareto_explorer({"X": X, "F": F}, panda, tmp_path / "q.html")
+    assert "obstacles" not in page_data(plain)["panels"][0]["scene_layout"]["title"]["text"]
 
 
 def test_postures_come_from_the_robots_frames(tmp_path, panda, members):

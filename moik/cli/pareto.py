@@ -75,10 +75,11 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
                        target=target.position, compromise=index, save=stem)
         plots = [f"{stem}.png", f"{stem}.pdf"]
     near = None if check is None else collision.distances(check, res.X)
+    clearance = None if check is None else check[1]
     if args.json:
-        print(json.dumps(as_json(robot, target, res, index, plots, near)))
+        print(json.dumps(as_json(robot, target, res, index, plots, near, clearance)))
     else:
-        print(format_result(robot, target, res, index))
+        print(format_result(robot, target, res, index, clearance))
         if near:
             collision.print_distances(near, robot.unit, label="member", start=0)
     if plots and not args.json:
@@ -105,14 +106,16 @@ def html_file(spec: str | None) -> Path | None:
 
 
 def as_json(robot, target: Target, res: ParetoIKResult, compromise: int | None,
-            plots: list[str] | None = None, collision: list[dict] | None = None) -> dict:
+            plots: list[str] | None = None, collision: list[dict] | None = None,
+            clearance: float | None = None) -> dict:
     """The result as plain JSON types, in the schema family of ``solve`` (see :mod:`moik.cli`).
 
     ``q`` and its errors are the compromise member's (null without a member);
     ``solutions`` every member (with ``--scene`` / ``--self-collision`` also its
     ``min_distance``, ``closest_pair`` and ``collides``, as ``solve`` gives them, and
     ``min_distance`` of ``q`` at the top level); ``status`` ``"solved"`` with members,
-    else ``"not-converged"`` (no exact solution found).
+    ``"collides"`` without when exact points were found but none keeps the ``clearance``
+    of a collision check (as ``solve`` says it), else ``"not-converged"``.
     """
     solved = compromise is not None
     members = [{"q": q.tolist(), "position_error": float(p), "orientation_error": float(o)}
@@ -125,7 +128,7 @@ def as_json(robot, target: Target, res: ParetoIKResult, compromise: int | None,
             "joint_names": list(robot.joint_names),
             "target": {"position": target.position.tolist(),
                        "rotation": None if target.rotation is None else target.rotation.tolist()},
-            "status": "solved" if solved else "not-converged", "success": solved,
+            "status": _status(res, compromise, clearance), "success": solved,
             "n_eval": res.n_eval, "time_s": res.time,
             "q": None if best is None else best["q"],
             "position_error": None if best is None else best["position_error"],
@@ -137,8 +140,16 @@ def as_json(robot, target: Target, res: ParetoIKResult, compromise: int | None,
                {"min_distance": None if best is None else best["min_distance"]})}
 
 
-def format_result(robot, target: Target, res: ParetoIKResult, compromise: int | None) -> str:
-    """The members as a table: criteria, then joint values in degrees."""
+def _status(res: ParetoIKResult, compromise: int | None, clearance: float | None) -> str:
+    if compromise is not None:
+        return "solved"
+    return "collides" if clearance is not None and res.n_exact else "not-converged"
+
+
+def format_result(robot, target: Target, res: ParetoIKResult, compromise: int | None,
+                  clearance: float | None = None) -> str:
+    """The members as a table: criteria, then joint values in degrees (``clearance``: that
+    of a collision check, for the verdict when no member keeps it)."""
     kind = "pose" if target.rotation is not None else "position"
     how = (f"memetic search over {res.n_exact} exact points" if res.redundant
            else f"the non-dominated of {res.n_exact} branches")
@@ -147,6 +158,10 @@ def format_result(robot, target: Target, res: ParetoIKResult, compromise: int | 
              f"{len(res.X)} exact solutions, mutually non-dominated ({how}, {res.n_eval} FK "
              f"evaluations, {res.time * 1e3:.1f} ms)"]
     if not len(res.X):
+        if _status(res, compromise, clearance) == "collides":
+            return "\n".join(lines + [f"status: collides (no exact point keeps the clearance "
+                                       f"{clearance:g} {robot.unit}; {res.n_exact} exact "
+                                       "points evaluated)"])
         return "\n".join(lines + ["no exact solution found"])
     heads = [f"{n} ({'max' if s == 'max' else 'min'})" for n, s in
              zip(res.objectives, res.senses, strict=True)]

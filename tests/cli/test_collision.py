@@ -125,3 +125,13 @@ def test_pareto_explorer_draws_the_scene(scene_file, tmp_path, capsys):
     text = html.read_text()
     data = json.loads(text.split('id="moik-data">', 1)[1].split("</script>", 1)[0])
     assert [t["name"] for t in data["panels"][0]["obstacles"]] == ["table", "shelf"]
+
+
+def test_pareto_with_no_member_keeping_the_clearance_says_collides(capsys):
+    argv = [*PARETO, "--pareto", "manipulability,limit_margin", "--self-collision",
+            "--clearance", "5"]
+    assert main(argv) == 1
+    assert "status: collides (no exact point keeps the clearance 5 m" in capsys.readouterr().out
+    assert main([*argv, "--json"]) == 1
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["status"] == "collides" and not doc["success"] and doc["solutions"] == []

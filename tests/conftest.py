@@ -1,10 +1,56 @@
-"""Shared pytest configuration: the ``slow`` marker.
+"""Shared pytest configuration: the ``slow`` marker, and the fake child process of the
+background compiles (:func:`fake_popen`).
 
 Tests marked ``slow`` are measurements that take tens of seconds; deselect them
 with ``pytest -m "not slow"``.
 """
 
+import io
+
+import pytest
+
 
 def pytest_configure(config):
     config.addinivalue_line(
         "markers", "slow: long accuracy measurements (deselect with -m 'not slow')")
+
+
+class FakePopen:
+    """Stands in for subprocess.Popen in :mod:`moik._background`: keeps what the child
+    would read on its stdin, and says READY at once."""
+
+    started: list = []
+
+    def __init__(self, argv, stdin=None, stdout=None, **kwargs):
+        from moik import _background
+
+        self.argv, self.kwargs, self.written = argv, kwargs, b""
+        self.stdin = self
+        self.stdout = io.BytesIO(_background.READY.encode())
+        FakePopen.started.append(self)
+
+    def write(self, data):
+        self.written += data
+
+    def close(self):
+        pass
+
+    def poll(self):
+        return 0
+
+    def wait(self, timeout=None):
+        return 0
+
+
+@pytest.fixture()
+def fake_popen(monkeypatch):
+    """Background compiles start a :class:`FakePopen` (two CPUs, nothing cached, the
+    switch unset): tests see what a child would be given, and no child runs."""
+    from moik import _background, _jit
+
+    FakePopen.started = []
+    monkeypatch.setattr(_background.subprocess, "Popen", FakePopen)
+    monkeypatch.setattr(_background, "cpus", lambda: 2)
+    monkeypatch.setattr(_jit, "is_cached", lambda kernel: False)
+    monkeypatch.delenv(_background.ENV_SWITCH, raising=False)
+    return FakePopen

@@ -11,47 +11,17 @@ import pytest
 from moik import _background, _jit
 
 
-class _Popen:
-    """Stands in for subprocess.Popen: keeps what the child would read."""
-
-    started: list = []
-
-    def __init__(self, argv, stdin=None, stdout=None, **kwargs):
-        self.argv, self.kwargs, self.written = argv, kwargs, b""
-        self.stdin, self.stdout = self, None
-        _Popen.started.append(self)
-
-    def write(self, data):
-        self.written += data
-
-    def close(self):
-        pass
-
-    def poll(self):
-        return 0
-
-
-@pytest.fixture()
-def popen(monkeypatch):
-    _Popen.started = []
-    monkeypatch.setattr(_background.subprocess, "Popen", _Popen)
-    monkeypatch.setattr(_background, "cpus", lambda: 2)
-    monkeypatch.setattr(_jit, "is_cached", lambda kernel: False)
-    monkeypatch.delenv(_background.ENV_SWITCH, raising=False)
-    return _Popen
-
-
-def test_starts_the_module_with_its_arguments_and_no_grandchild(popen):
+def test_starts_the_module_with_its_arguments_and_no_grandchild(fake_popen):
     handle = _background.start("moik.some_module", {"a": (1, 2)}, probes=[object()])
-    assert handle is not None and len(popen.started) == 1
-    child = popen.started[0]
+    assert handle is not None and len(fake_popen.started) == 1
+    child = fake_popen.started[0]
     assert child.argv == [sys.executable, "-m", "moik.some_module"]
     assert child.kwargs["env"][_background.ENV_SWITCH] == "0"
     assert pickle.loads(child.written) == {"a": (1, 2)}
 
 
 @pytest.mark.parametrize("why", ["switched off", "one cpu", "cached", "unpicklable"])
-def test_does_not_start_where_it_cannot_help(popen, monkeypatch, why):
+def test_does_not_start_where_it_cannot_help(fake_popen, monkeypatch, why):
     arguments: object = (1,)
     if why == "switched off":
         monkeypatch.setenv(_background.ENV_SWITCH, "0")
@@ -62,7 +32,7 @@ def test_does_not_start_where_it_cannot_help(popen, monkeypatch, why):
     else:
         arguments = lambda: None  # noqa: E731 - a lambda cannot be pickled
     assert _background.start("moik.some_module", arguments, probes=[object()]) is None
-    assert not popen.started
+    assert not fake_popen.started
 
 
 def test_the_parent_goes_on_when_the_child_is_ready(monkeypatch):

@@ -3,7 +3,6 @@ while the first LM stage compiles (when it starts, what the child is given, its 
 criteria, when the parent goes on, and that a cold first Pareto solve then compiles none
 of them itself and gives the same result)."""
 
-import io
 import json
 import os
 import pickle
@@ -32,46 +31,12 @@ def _problem(objectives=("manipulability", "limit_margin")):
     return ParetoIK(get_robot("iiwa14"), TARGET, objectives=objectives)
 
 
-class _Popen:
-    """Stands in for subprocess.Popen: keeps what the child would read."""
-
-    started: list = []
-
-    def __init__(self, argv, stdin=None, **kwargs):
-        self.argv, self.kwargs, self.written = argv, kwargs, b""
-        self.stdin = self
-        self.stdout = io.BytesIO(_background.READY.encode())
-        _Popen.started.append(self)
-
-    def write(self, data):
-        self.written += data
-
-    def close(self):
-        pass
-
-    def poll(self):
-        return 0
-
-    def wait(self, timeout=None):
-        return 0
-
-
-@pytest.fixture()
-def popen(monkeypatch):
-    _Popen.started = []
-    monkeypatch.setattr(_background.subprocess, "Popen", _Popen)
-    monkeypatch.setattr(_background, "cpus", lambda: 2)
-    monkeypatch.setattr(_jit, "is_cached", lambda kernel: False)
-    monkeypatch.delenv(_background.ENV_SWITCH, raising=False)
-    return _Popen
-
-
-def test_starts_a_child_with_the_problem_and_search(popen):
+def test_starts_a_child_with_the_problem_and_search(fake_popen):
     problem = _problem()
     handle = memetic.precompile(problem, ("manipulability", "limit_margin"),
                                 np.empty((0, 7)), SEARCH)
-    assert handle is not None and len(popen.started) == 1
-    child = popen.started[0]
+    assert handle is not None and len(fake_popen.started) == 1
+    child = fake_popen.started[0]
     assert child.argv[1:] == ["-m", "moik.solver.memetic"]
     assert child.kwargs["env"][_background.ENV_SWITCH] == "0"  # no grandchild
     searched, first, search, kinematic = pickle.loads(child.written)
@@ -85,7 +50,7 @@ def test_starts_a_child_with_the_problem_and_search(popen):
     handle.wait()
 
 
-def test_the_child_never_calls_a_users_criterion(popen):
+def test_the_child_never_calls_a_users_criterion(fake_popen):
     calls = []
 
     def mine(Q):
@@ -94,7 +59,7 @@ def test_the_child_never_calls_a_users_criterion(popen):
 
     objectives = ("manipulability", Criterion("reach", mine, "max"))
     memetic.precompile(_problem(objectives), objectives, np.empty((0, 7)), SEARCH)
-    searched, _, _, kinematic = pickle.loads(popen.started[0].written)
+    searched, _, _, kinematic = pickle.loads(fake_popen.started[0].written)
     for arguments in (searched, kinematic):
         replaced = arguments["objectives"][1]
         assert (replaced.name, replaced.sense) == ("reach", "max")
@@ -102,12 +67,12 @@ def test_the_child_never_calls_a_users_criterion(popen):
     assert kinematic["objectives"][0] == "manipulability" and calls == []
 
 
-def test_does_not_start_when_the_algorithm_kernels_are_cached(popen, monkeypatch):
+def test_does_not_start_when_the_algorithm_kernels_are_cached(fake_popen, monkeypatch):
     probed = []
     monkeypatch.setattr(_jit, "is_cached", lambda kernel: probed.append(kernel) or True)
     assert memetic.precompile(_problem(), ("manipulability", "limit_margin"),
                               np.empty((0, 7)), SEARCH) is None
-    assert not popen.started
+    assert not fake_popen.started
     assert memetic.generation_draws in probed and memetic.front_mask_2d in probed
 
 

@@ -46,7 +46,7 @@ import sys
 import time
 import uuid
 import warnings
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -54,6 +54,7 @@ import numba
 import numpy as np
 from numba.core import event
 from numba.core.caching import FunctionCache, IndexDataCacheFile
+from numba.experimental import structref
 
 from moik.exceptions import CacheWarning
 
@@ -281,6 +282,27 @@ def kernel_array(values: Any) -> np.ndarray:
             and values.flags.c_contiguous and values.flags.writeable):
         return values
     return np.array(values, dtype=np.float64, order="C", copy=True)
+
+
+def define_struct(proxy: type, struct_type: type, fields: Sequence[str]) -> None:
+    """``numba.experimental.structref.define_proxy(proxy, struct_type, fields)``: ``proxy(*values)``
+    builds the StructRef in Python and in compiled code.
+
+    Under ``NUMBA_DISABLE_JIT=1`` (every kernel runs as plain Python, numba's debugging mode)
+    numba's constructor calls itself without end (numba issue #7117); there ``proxy(*values)``
+    is a plain object holding the fields as attributes, which is all Python kernels read.
+    """
+    structref.define_proxy(proxy, struct_type, list(fields))
+    if getattr(numba.config, "DISABLE_JIT", False):
+        names = tuple(fields)
+
+        def plain(cls: type, *values: Any) -> Any:
+            instance: Any = object.__new__(cls)
+            for name, value in zip(names, values, strict=True):
+                setattr(instance, name, value)
+            return instance
+
+        proxy.__new__ = plain  # type: ignore[assignment]
 
 
 def objectives_row(spec, Q, out, i):

@@ -1,6 +1,9 @@
 """moik/_jit.py: input normalisation, one compiled version per kernel, the disk cache
 and the first-compile notice (in fresh interpreters), a read-only installation."""
 
+import contextlib
+import io
+import json
 import os
 import shutil
 import stat
@@ -364,3 +367,39 @@ def test_is_cached_says_which_kernels_the_cache_holds(built_cache, tmp_path):
                          cwd=tmp_path, timeout=600)
     assert out.returncode == 0, out.stderr
     assert out.stdout.split() == ["True", "False"]
+
+
+# Runs in a fresh interpreter: each StructRef of moik (IK context, collision set, generator
+# handle; the IK objectives through the EOSMA run) and the solver's compiled paths.
+_PYTHON_KERNELS = """
+import json, numpy as np, moik
+from pymoo.optimize import minimize
+from moik.algorithms import get_algorithm
+from moik.problems import PositionIK
+robot = moik.get_robot("iiwa14")
+T = robot.fk(np.full(7, 0.3))
+one = moik.solve_ik(robot, T, n_solutions=2, seed=3)
+batch = moik.solve_ik_batch(robot, np.stack([T, robot.fk(np.full(7, -0.4))]), seed=1)
+free = moik.solve_ik(robot, T, self_collision=True, seed=2)
+run = minimize(PositionIK(robot, T[:3, 3]), get_algorithm("eosma"), ("n_gen", 3), seed=1)
+print(json.dumps([one.status, np.asarray(one.q).tolist(), batch.status.tolist(),
+                  batch.q.tolist(), free.status, free.min_distance, run.X.tolist(),
+                  run.F.tolist()]))
+"""
+
+
+def test_kernels_run_as_python_under_numba_disable_jit(tmp_path):
+    """numba's debugging mode runs every kernel as Python. Before: ``RecursionError`` at
+    the first IK context (numba's StructRef constructor calls itself there, numba issue
+    #7117). Now the same answers, bit for bit, as the compiled kernels give."""
+    root = str(Path(moik.__file__).parent.parent)
+    out = subprocess.run([sys.executable, "-c", _PYTHON_KERNELS], capture_output=True,
+                         text=True, env=_env(NUMBA_DISABLE_JIT="1", PYTHONPATH=root),
+                         cwd=tmp_path)
+    assert out.returncode == 0, out.stderr[-3000:]
+    python = json.loads(out.stdout)
+    assert python[0] == "solved" and python[2] == ["solved", "solved"]
+    printed = io.StringIO()
+    with contextlib.redirect_stdout(printed):  # the compiled kernels, in this process
+        exec(_PYTHON_KERNELS, {})
+    assert python == json.loads(printed.getvalue())

@@ -15,7 +15,7 @@ import numpy as np
 from numba.core import types
 from numba.experimental import structref
 
-from moik._jit import jit
+from moik._jit import define_struct, jit
 
 
 @structref.register
@@ -30,7 +30,7 @@ class GeneratorHandle(structref.StructRefProxy):
     """A numba structure holding one ``numpy.random.Generator`` (field ``rng``)."""
 
 
-structref.define_proxy(GeneratorHandle, GeneratorHandleType, ["rng"])
+define_struct(GeneratorHandle, GeneratorHandleType, ["rng"])
 
 
 @jit

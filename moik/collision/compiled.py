@@ -17,7 +17,7 @@ from numba import types as nb_types
 from numba.experimental import structref
 from numba.extending import overload
 
-from moik._jit import jit
+from moik._jit import define_struct, jit
 from moik.collision.kernels import min_distance_of
 
 
@@ -40,7 +40,7 @@ class CollisionSet(structref.StructRefProxy):
 
 FIELDS = ("origins", "link_frames", "base", "joint_types", "body", "local", "kinds", "sizes",
           "pairs")
-structref.define_proxy(CollisionSet, CollisionSetType, list(FIELDS))
+define_struct(CollisionSet, CollisionSetType, FIELDS)
 
 
 @jit

@@ -14,7 +14,7 @@ from numba import types as nb_types
 from numba.core.extending import overload
 from numba.experimental import structref
 
-from moik._jit import jit, objectives_row
+from moik._jit import define_struct, jit, objectives_row
 from moik.kinematics.rotation_metrics import rotation_error
 from moik.robots.fk_kernels import (
     BLOCK,
@@ -91,9 +91,8 @@ class IKObjectives(structref.StructRefProxy):
         _write_row(self, Q, out, i)
 
 
-structref.define_proxy(IKObjectives, IKObjectivesType,
-                       ["origins", "types", "mode", "p_t", "code", "R_t", "angles_t", "weights",
-                        "q_start"])
+define_struct(IKObjectives, IKObjectivesType,
+              ["origins", "types", "mode", "p_t", "code", "R_t", "angles_t", "weights", "q_start"])
 
 
 @jit

@@ -36,7 +36,7 @@ import numpy as np
 from numba import types as nb_types
 from numba.experimental import structref
 
-from moik._jit import jit, kernel_array
+from moik._jit import define_struct, jit, kernel_array
 from moik.collision.compiled import CollisionSet
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
@@ -79,7 +79,7 @@ class IKContext(structref.StructRefProxy):
 FIELDS = ("origins", "joint_types", "lower", "upper", "rotation", "position", "has_rotation",
           "inv_reach", "stop_position", "stop_orientation", "tol_position", "tol_orientation",
           "distinct", "max_iter", "collision", "clearance")
-structref.define_proxy(IKContext, IKContextType, list(FIELDS))
+define_struct(IKContext, IKContextType, FIELDS)
 
 
 @jit

@@ -171,7 +171,8 @@ def streams(root: np.random.SeedSequence, key: int, n: int) -> np.ndarray:
     base = np.array(uint32_words(root.entropy), dtype=np.uint64)
     spawn = np.array(uint32_words(root.spawn_key), dtype=np.uint64)
     states = np.empty((n, 4), dtype=np.uint64)
-    batch_streams(base, spawn, int(root.pool_size), np.uint64(key), n, states)
+    with np.errstate(over="ignore"):  # modulo 2**64, also as Python (NUMBA_DISABLE_JIT)
+        batch_streams(base, spawn, int(root.pool_size), np.uint64(key), n, states)
     return states
 
 
@@ -200,6 +201,7 @@ def draw_rows(states: np.ndarray, rows: np.ndarray, k: int, lower: np.ndarray,
     states advance in ``states``)."""
     out = np.empty((len(rows), k, lower.size))
     sub = np.ascontiguousarray(states[rows])
-    draw_starts(sub, lower, upper, out)
+    with np.errstate(over="ignore"):  # as in streams
+        draw_starts(sub, lower, upper, out)
     states[rows] = sub
     return out

@@ -94,6 +94,8 @@ def _read(source) -> tuple[ET.Element, str]:
         if not isinstance(source, (str, Path)):
             raise URDFError(f"a URDF must be a file path or an XML string, got "
                             f"{type(source).__name__}")
+        if not str(source).strip():
+            raise URDFError("a URDF must be a file path or an XML string, got an empty string")
         path = Path(source)
         label = str(path)
         if path.suffix == ".xacro":

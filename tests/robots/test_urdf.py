@@ -202,6 +202,9 @@ def test_xacro_floating_and_mimic_are_explained(tmp_path):
         load_urdf(mimic)
     with pytest.raises(URDFError, match="file path or an XML string"):
         load_urdf(3)
+    for empty in ("", "  \n"):  # before: "cannot read URDF '.': [Errno 21] Is a directory"
+        with pytest.raises(URDFError, match="got an empty string"):
+            load_urdf(empty)
 
 
 @pytest.mark.parametrize(("name", "dof", "tip"), [

@@ -74,10 +74,21 @@ def crowding_radius(F: np.ndarray, divisor: float) -> np.ndarray:
 
 @jit
 def _radius_2d(F: np.ndarray, divisor: float) -> np.ndarray:
-    """:func:`crowding_radius` of two objectives, compiled."""
+    """:func:`crowding_radius` of two objectives, compiled (loops: numba's ``max``/``min``
+    of a column compile several helpers; a NaN gives NaN, as numpy's do)."""
     dr = np.empty(2)
     for k in range(2):
-        dr[k] = (F[:, k].max() - F[:, k].min()) / divisor
+        lo = hi = F[0, k]
+        for i in range(F.shape[0]):
+            v = F[i, k]
+            if np.isnan(v):
+                lo = hi = v
+                break
+            if v > hi:
+                hi = v
+            if v < lo:
+                lo = v
+        dr[k] = (hi - lo) / divisor
     return dr
 
 
@@ -150,23 +161,43 @@ def _crowding_counts_front_2d(F: np.ndarray, dr: np.ndarray) -> np.ndarray:
     pairwise).
     """
     m = F.shape[0]
-    order = stable_order(F[:, 0].copy(), np.empty(m, np.int64))
-    f1, f2 = F[order, 0], F[order, 1]
+    f1, f2 = np.empty(m), np.empty(m)
+    for k in range(m):
+        f1[k] = F[k, 0]
+    order = stable_order(f1, np.empty(m, np.int64))
+    for k in range(m):  # loops, not F[order, 0] or f1 - dr[0]: less code to compile
+        f1[k], f2[k] = F[order[k], 0], F[order[k], 1]
     for k in range(1, m):
         if not (f1[k] > f1[k - 1] and f2[k] < f2[k - 1]):
             return np.empty(0, dtype=np.int64)
-    lo = np.zeros(m, dtype=np.int64)
-    hi = np.full(m, m, dtype=np.int64)
+    lo, hi = np.empty(m, dtype=np.int64), np.empty(m, dtype=np.int64)
+    for k in range(m):
+        lo[k], hi[k] = 0, m
+    v = np.empty(m)
     if dr[0] > 0:
-        lo = sorted_positions(f1, f1 - dr[0], np.bool_(True))
-        hi = sorted_positions(f1, f1 + dr[0], np.bool_(False))
+        for k in range(m):
+            v[k] = f1[k] - dr[0]
+        lo = sorted_positions(f1, v, np.bool_(True))
+        for k in range(m):
+            v[k] = f1[k] + dr[0]
+        hi = sorted_positions(f1, v, np.bool_(False))
     if dr[1] > 0:
-        g = -f2  # ascending; -(a - b) is exact, so the thresholds match the pairwise test
-        lo = np.maximum(lo, sorted_positions(g, -(f2 + dr[1]), np.bool_(True)))
-        hi = np.minimum(hi, sorted_positions(g, -(f2 - dr[1]), np.bool_(False)))
+        g = np.empty(m)
+        for k in range(m):  # ascending; -(a - b) is exact, so the thresholds match the
+            g[k] = -f2[k]  # pairwise test
+            v[k] = -(f2[k] + dr[1])
+        low = sorted_positions(g, v, np.bool_(True))
+        for k in range(m):
+            v[k] = -(f2[k] - dr[1])
+        high = sorted_positions(g, v, np.bool_(False))
+        for k in range(m):
+            if low[k] > lo[k]:
+                lo[k] = low[k]
+            if high[k] < hi[k]:
+                hi[k] = high[k]
     counts = np.empty(m, dtype=np.int64)
     for k in range(m):  # a loop, not counts[order] = ...: no shape-error code to compile
-        counts[order[k]] = max(hi[k] - lo[k], 1)
+        counts[order[k]] = hi[k] - lo[k] if hi[k] - lo[k] > 1 else 1
     return counts
 
 

@@ -19,8 +19,8 @@ workspace never crosses into Python: :func:`lm_workspace` builds it inside the c
 start loop, once per call instead of once per start. It is a StructRef too, not a
 NamedTuple of its 15 arrays: every kernel that takes a tuple unpacks, increfs and
 decrefs all 15 at each call, code numba types, lowers and LLVM optimises again in each
-of them (measured, a cold ``solve_ik_pareto`` in one process: 1.2-1.5 s less CPU with the
-StructRef, and the same solve times).
+of them (measured: a cold first solve compiles in about a tenth less CPU with the
+StructRef; the solve times are the same).
 
 Collision terms: the context carries the solve's
 :class:`~moik.collision.compiled.CollisionSet` and clearance; the start loop tests an

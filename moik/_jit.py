@@ -25,7 +25,7 @@ full disk, a vanished folder) warns once and the computation goes on uncached.
 
 Kernels compile lazily, at their first call. The first real compilation in a
 process (not a load from the cache) prints one line on stderr,
-``compiling kinematics kernels, first run only``, and a long one a progress line
+``compiling moik kernels, first run only``, and a long one a progress line
 (kernels compiled so far, seconds) every few seconds; they are detected through
 numba's ``numba:compile`` event, which numba fires only when it compiles.
 
@@ -58,7 +58,7 @@ from numba.experimental import structref
 
 from moik.exceptions import CacheWarning
 
-COMPILE_NOTICE = ("compiling kinematics kernels, first run only (`moik compile` compiles "
+COMPILE_NOTICE = ("compiling moik kernels, first run only (`moik compile` compiles "
                   "them all at once)")
 
 _kernels: set[Callable] = set()  # the Python functions compiled by jit

@@ -32,5 +32,5 @@ def test_a_command_that_compiles_says_how_many_kernels_once(tmp_path):
     env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path)}
     out = subprocess.run([sys.executable, "-m", "moik", "fk", "planar2", "0.1", "0.2"],
                          capture_output=True, text=True, env=env, check=True)
-    assert out.stderr.count("compiling kinematics kernels, first run only") == 1
+    assert out.stderr.count("compiling moik kernels, first run only") == 1
     assert out.stderr.count("moik: compiled ") == 1 and "`moik compile`" in out.stderr

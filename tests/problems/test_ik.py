@@ -114,6 +114,37 @@ def _numpy_errors(robot, target, metric, X, R_fk=None):
     return pos, ori
 
 
+ULP_TURN = 16 * np.finfo(float).eps  # rad: a rotation a few ulps of FK rounding make
+
+
+def _rounding_slack(metric, target, R):
+    """Per row, how far ``metric``'s error moves when ``R`` turns by :data:`ULP_TURN` about
+    each axis (either way): the rounding amplification of the metric at that rotation.
+
+    Two correct implementations of one metric (the kernel's and numpy's) may differ by
+    this much. Near gimbal lock an Euler metric amplifies a 1e-14 rad turn to 1.6e-10
+    (anthropomorphic3, ZYX pitch 3e-5 rad from 90 deg, seed 6): there a few ulps of
+    rounding give 3e-12; the geodesic and Frobenius metrics amplify nothing."""
+    target_repr, error = orientation_metric(metric)
+    t = target_repr(target.rotation)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)
+        base = error(R, t)
+        slack = np.zeros(len(R))
+        for turn in np.vstack([np.eye(3), -np.eye(3)]) * ULP_TURN:
+            moved = error(np.einsum("ij,njk->nik", Rotation.from_rotvec(turn).as_matrix(), R), t)
+            slack = np.maximum(slack, np.abs(moved - base))
+    return np.where(slack < 1e-3, slack, 0.0)  # a jump across +-pi is _numpy_errors' case
+
+
+def _assert_close(actual, desired, atol):
+    """``|actual - desired| <= atol`` elementwise (``atol`` per row or one number)."""
+    off = np.abs(actual - desired)
+    bad = off > atol
+    assert not bad.any(), (f"rows {np.flatnonzero(bad)} off by {off[bad]}, more than "
+                           f"{np.broadcast_to(atol, off.shape)[bad]}")
+
+
 @settings(max_examples=40, deadline=None)
 @given(st.sampled_from(available_robots()), st.sampled_from(available_metrics()),
        st.integers(0, 2**32 - 1), st.integers(1, 150), st.sampled_from([0.0, 0.25]))
@@ -126,20 +157,23 @@ def test_fused_objectives_equal_numpy(name, metric, seed, n, w_disp):
     q0 = robot.random_q(1, rng=rng)[0]
     disp = w_disp * np.linalg.norm(X - q0, axis=1)
     common = {"displacement_weight": w_disp, "q_start": q0}
-    pos, ori = _numpy_errors(robot, target, metric, X, robot.fk_parts(X)[0])
+    R_fk = robot.fk_parts(X)[0]
+    pos, ori = _numpy_errors(robot, target, metric, X, R_fk)
     scale = max(1.0, robot.reach)
     tol = 1e-12 * scale
+    tol_ori = 1e-12 + _rounding_slack(metric, target, R_fk)  # the metric's conditioning
 
     F = PositionIK(robot, target.position, **common).evaluate(X)
     np.testing.assert_allclose(F[:, 0], pos + disp, rtol=0, atol=tol)
     F = PoseIK(robot, target, weights=(0.3, 0.7), orientation=metric, **common).evaluate(X)
-    np.testing.assert_allclose(F[:, 0], 0.3 * pos + 0.7 * ori + disp, rtol=0, atol=tol)
+    _assert_close(F[:, 0], 0.3 * pos + 0.7 * ori + disp, tol + 0.7 * tol_ori)
     F = BiObjectiveIK(robot, target, orientation=metric, **common).evaluate(X)
-    np.testing.assert_allclose(F, np.column_stack([pos + disp, ori + disp]), rtol=0, atol=tol)
+    np.testing.assert_allclose(F[:, 0], pos + disp, rtol=0, atol=tol)
+    _assert_close(F[:, 1], ori + disp, tol + tol_ori)
     problem = BiObjectiveIK(robot, target, orientation=metric, **common)
     p_err, o_err = problem.errors(X)
     np.testing.assert_allclose(p_err, pos, rtol=0, atol=tol)
-    np.testing.assert_allclose(o_err, ori, rtol=0, atol=1e-12)
+    _assert_close(o_err, ori, tol_ori)
     np.testing.assert_allclose(problem.position_error(X), pos, rtol=0, atol=tol)
 
 

@@ -1,13 +1,23 @@
-"""Shared pytest configuration: the ``slow`` marker, and the fake child process of the
-background compiles (:func:`fake_popen`).
+"""Shared pytest configuration: the ``slow`` marker, the hypothesis profiles, and the fake
+child process of the background compiles (:func:`fake_popen`).
 
 Tests marked ``slow`` are measurements that take tens of seconds; deselect them
 with ``pytest -m "not slow"``.
+
+The property tests draw the same examples on every run and machine (hypothesis'
+``derandomize``): a clean clone passes or fails as the last run did, and a failure
+seen once is seen again. ``pytest --hypothesis-profile explore`` draws new random
+examples at each run, to look for cases the fixed ones miss.
 """
 
 import io
 
 import pytest
+from hypothesis import settings
+
+settings.register_profile("reproducible", derandomize=True)
+settings.register_profile("explore", derandomize=False)
+settings.load_profile("reproducible")  # --hypothesis-profile loads another after this
 
 
 def pytest_configure(config):

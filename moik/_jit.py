@@ -9,19 +9,10 @@ When it can write none of them (a read-only installation and home), numba refuse
 to build the cache when the function is decorated; :func:`jit` then compiles
 without a cache instead, so importing moik never fails for a cache.
 
-numba keys a cached function by its own source file only, while moik's kernels
-embed helpers from other modules (a fused IK objective holds the FK kernel of
-:mod:`moik.robots.fk_kernels`): after an edit of ``fk_kernels.py`` the cached objective would be
-stale. So the cache key also holds a digest of every moik module that compiles
-kernels (those importing this module); editing one recompiles them all, once.
-
-The cache heals itself. Every index (``.nbi``) and data (``.nbc``) file moik writes
-starts with a SHA-256 digest of the rest, checked before numba unpickles or links a
-byte of it: a truncated, emptied or bit-flipped file (which would make numba raise
-``EOFError``/``UnpicklingError`` or abort the process inside LLVM) is discarded
-with a :class:`~moik.exceptions.CacheWarning` and the kernel recompiled; so is an
-entry that fails to load for any other reason. A cache that cannot be written (a
-full disk, a vanished folder) warns once and the computation goes on uncached.
+The cache (:mod:`moik._kernel_cache`) is keyed also by the source of every kernel
+module, so editing one recompiles the kernels that embed it, and it heals itself: a
+damaged file is discarded with a :class:`~moik.exceptions.CacheWarning` and the kernel
+recompiled; a cache that cannot be written warns once and the computation goes on.
 
 Kernels compile lazily, at their first call. The first real compilation in a
 process (not a load from the cache) prints one line on stderr,
@@ -38,33 +29,23 @@ C-contiguous, writeable ``float64`` keeps each kernel at its one compiled versio
 from __future__ import annotations
 
 import contextlib
-import hashlib
-import io
-import os
-import pickle
 import sys
 import time
-import uuid
-import warnings
 from collections.abc import Callable, Sequence
-from pathlib import Path
 from typing import Any
 
 import numba
 import numpy as np
 from numba.core import event
-from numba.core.caching import FunctionCache, IndexDataCacheFile
 from numba.experimental import structref
 
-from moik.exceptions import CacheWarning
+from moik._kernel_cache import KernelCache, sources_digest
 
 COMPILE_NOTICE = ("compiling moik kernels, first run only (`moik compile` compiles "
                   "them all at once)")
 
 _kernels: set[Callable] = set()  # the Python functions compiled by jit
-_notice: dict[str, Any] = {"printed": False}  # and the sources digest, once computed
-_warned: set[str] = set()  # the kinds of cache warning already issued in this process
-_MAGIC = b"moik-kernel-cache-1\n"  # then the SHA-256 digest of the rest, then numba's bytes
+_notice: dict[str, Any] = {"printed": False}
 
 
 PROGRESS_EVERY = 3.0  # seconds between two progress lines of a long compilation
@@ -114,129 +95,6 @@ def compile_count() -> int:
 event.register("numba:compile", _CompileNotice())
 
 
-def _kernel_sources_digest() -> str:
-    """SHA-256 of the source of every moik module that compiles kernels."""
-    if "digest" not in _notice:
-        h = hashlib.sha256()
-        for path in sorted(Path(__file__).parent.rglob("*.py")):
-            text = path.read_bytes()
-            if b"moik._jit import" in text:
-                h.update(path.relative_to(Path(__file__).parent).as_posix().encode())
-                h.update(text)
-        _notice["digest"] = h.hexdigest()
-    return _notice["digest"]
-
-
-def _warn_once(kind: str, message: str) -> None:
-    if kind not in _warned:
-        _warned.add(kind)
-        warnings.warn(message, CacheWarning, stacklevel=2)
-
-
-def _discard(path: str, why: str) -> None:
-    """Removes a damaged cache file (best effort: the next save overwrites it anyway)."""
-    _warn_once("damaged", f"moik: discarded a damaged kernel cache file {path} ({why}); "
-                          "recompiling")
-    with contextlib.suppress(OSError):
-        os.unlink(path)
-
-
-class _CheckedCacheFile(IndexDataCacheFile):
-    """numba's index and data files, each written with a digest that is checked on load.
-
-    numba unpickles the index and links the data file's object code as it finds
-    them; a damaged file raises there or aborts the process. Here every file is
-    ``_MAGIC + sha256(body) + body``, written to a temporary name and renamed (as
-    numba does), and a file whose digest does not match is discarded unread.
-    """
-
-    def _read_checked(self, path: str) -> bytes | None:
-        try:
-            with open(path, "rb") as f:
-                raw = f.read()
-        except OSError:  # gone (numba's load treats a missing file so), or unreadable
-            return None
-        head = len(_MAGIC) + hashlib.sha256().digest_size
-        body = raw[head:]
-        if raw[:len(_MAGIC)] == _MAGIC and hashlib.sha256(body).digest() == raw[len(_MAGIC):head]:
-            return body
-        if not raw.startswith(b"\x80"):  # a pickle's first byte: numba's plain format
-            _discard(path, "checksum mismatch" if raw else "empty file")
-        # a plain numba file (an older moik) is ignored quietly and overwritten at the save
-        return None
-
-    def _load_index(self) -> dict:
-        body = self._read_checked(self._index_path)
-        if body is None:
-            return {}
-        try:
-            stream = io.BytesIO(body)
-            if pickle.load(stream) != self._version:
-                return {}  # another numba's cache: overwritten at the next save
-            stamp, overloads = pickle.loads(stream.read())
-        except Exception as exc:  # noqa: BLE001 - intact bytes that do not unpickle
-            _discard(self._index_path, f"{type(exc).__name__}: {exc}")
-            return {}
-        return overloads if stamp == self._source_stamp else {}
-
-    def _load_data(self, name: str) -> Any:
-        path = self._data_path(name)
-        body = self._read_checked(path)
-        if body is None:
-            return None  # numba then compiles, and the save overwrites the file
-        try:
-            return pickle.loads(body)
-        except Exception as exc:  # noqa: BLE001
-            _discard(path, f"{type(exc).__name__}: {exc}")
-            return None
-
-    @contextlib.contextmanager
-    def _open_for_write(self, filepath: str):
-        buffer = io.BytesIO()
-        yield buffer
-        body = buffer.getvalue()
-        tmpname = f"{filepath}.tmp.{uuid.uuid4().hex[:16]}"
-        try:
-            with open(tmpname, "wb") as f:
-                f.write(_MAGIC + hashlib.sha256(body).digest() + body)
-            os.replace(tmpname, filepath)
-        except BaseException:
-            with contextlib.suppress(OSError):
-                os.unlink(tmpname)
-            raise
-
-
-class _KernelCache(FunctionCache):
-    """numba's per-function disk cache, keyed also by :func:`_kernel_sources_digest`,
-    with checked files (:class:`_CheckedCacheFile`) and saves that never fail a call."""
-
-    def __init__(self, py_func: Callable):
-        super().__init__(py_func)
-        self._cache_file = _CheckedCacheFile(
-            cache_path=self._cache_path, filename_base=self._impl.filename_base,
-            source_stamp=self._impl.locator.get_source_stamp())
-
-    def _index_key(self, sig, codegen):
-        return (*super()._index_key(sig, codegen), _kernel_sources_digest())
-
-    def _load_overload(self, sig, target_context):
-        try:
-            return super()._load_overload(sig, target_context)
-        except Exception as exc:  # noqa: BLE001 - an intact file numba cannot rebuild
-            _warn_once("damaged", f"moik: discarded a kernel cache entry of {self._name} that "
-                                  f"failed to load ({type(exc).__name__}: {exc}); recompiling")
-            return None
-
-    def save_overload(self, sig, data):
-        try:
-            super().save_overload(sig, data)
-        except OSError as exc:  # a full disk, a vanished or read-only folder
-            self.disable()
-            _warn_once("save", f"moik: cannot write the kernel cache in {self._cache_path} "
-                               f"({exc}); going on without it (kernels compile in every "
-                               "process until it can be written)")
-
-
 def jit(func: Callable | None = None) -> Any:
     """Compile ``func`` with numba (nopython, no fastmath, cached when a cache can be written).
 
@@ -252,7 +110,7 @@ def jit(func: Callable | None = None) -> Any:
     dispatcher = numba.njit(cache=False, fastmath=False)(func)
     try:
         # what cache=True does, with our key (numba's types omit the private _cache)
-        dispatcher._cache = _KernelCache(func)  # type: ignore[attr-defined]
+        dispatcher._cache = KernelCache(func)  # type: ignore[attr-defined]
     except RuntimeError as exc:  # numba found no writable cache location: stay uncached
         if "no locator available" not in str(exc):
             raise
@@ -264,9 +122,9 @@ def is_cached(dispatcher: Any) -> bool:
     compiled from the current sources, for any signature; also True when it has no cache
     (nothing another process compiles could reach it)."""
     cache = getattr(dispatcher, "_cache", None)
-    if not isinstance(cache, _KernelCache):
+    if not isinstance(cache, KernelCache):
         return True
-    digest = _kernel_sources_digest()
+    digest = sources_digest()
     with contextlib.suppress(Exception):  # an unreadable index: as if empty
         return any(key[-1] == digest for key in cache._cache_file._load_index())
     return False

@@ -1,5 +1,6 @@
-"""moik/_jit.py: input normalisation, one compiled version per kernel, the disk cache
-and the first-compile notice (in fresh interpreters), a read-only installation."""
+"""moik/_jit.py and its disk cache (moik/_kernel_cache.py): input normalisation, one
+compiled version per kernel, the disk cache and the first-compile notice (in fresh
+interpreters), a read-only installation."""
 
 import contextlib
 import io
@@ -154,8 +155,8 @@ def test_kernels_are_numba_dispatchers(name):
 # --- the self-healing cache (issue 27, items 1 and 2) ---
 
 def _checked_file(tmp_path: Path):
-    from moik._jit import _CheckedCacheFile
-    return _CheckedCacheFile(cache_path=str(tmp_path), filename_base="kernel-1.py311",
+    from moik._kernel_cache import CheckedCacheFile
+    return CheckedCacheFile(cache_path=str(tmp_path), filename_base="kernel-1.py311",
                              source_stamp=(1.0, 2))
 
 
@@ -164,7 +165,7 @@ def _checked_file(tmp_path: Path):
 def test_a_damaged_cache_file_is_discarded_unread(tmp_path, damage, which):
     """Index and data files carry a digest: a damaged one is warned about, removed and
     reads as absent (numba then compiles); it never reaches pickle or LLVM."""
-    from moik import _jit
+    from moik import _kernel_cache
     cache = _checked_file(tmp_path)
     cache.save(("sig", "arch"), {"payload": list(range(100))})
     assert cache.load(("sig", "arch")) == {"payload": list(range(100))}
@@ -178,9 +179,9 @@ def test_a_damaged_cache_file_is_discarded_unread(tmp_path, damage, which):
         raw[len(raw) - 7] ^= 0x10
     else:  # intact digest over bytes that are no pickle
         body = b"not a pickle at all"
-        raw = bytearray(_jit._MAGIC + __import__("hashlib").sha256(body).digest() + body)
+        raw = bytearray(_kernel_cache.MAGIC + __import__("hashlib").sha256(body).digest() + body)
     path.write_bytes(bytes(raw))
-    _jit._warned.discard("damaged")
+    _kernel_cache.warned.discard("damaged")
     with pytest.warns(moik.exceptions.CacheWarning, match="discarded a damaged kernel cache"):
         assert cache.load(("sig", "arch")) is None
     assert not path.exists()
@@ -238,7 +239,7 @@ def built_cache(tmp_path_factory):
 def test_a_damaged_cache_heals_in_the_next_process(tmp_path, built_cache, name, suffix, damage):
     """Before: EOFError, UnpicklingError or SIGABRT in every later process. Now the
     process that finds the damage warns, recompiles that kernel and rewrites its file."""
-    from moik import _jit
+    from moik import _kernel_cache
     cache = tmp_path / "cache"
     shutil.copytree(built_cache, cache)
     root = Path(moik.__file__).parent
@@ -248,19 +249,20 @@ def test_a_damaged_cache_heals_in_the_next_process(tmp_path, built_cache, name, 
     assert out.returncode == 0, out.stderr
     assert "CacheWarning: moik: discarded a damaged kernel cache file" in out.stderr
     assert "Traceback" not in out.stderr
-    head = len(_jit._MAGIC) + 32
+    head = len(_kernel_cache.MAGIC) + 32
     for path in cache.rglob(f"fk_kernels.{name}-*.nb[ic]"):  # rewritten, intact
         raw = path.read_bytes()
-        assert raw.startswith(_jit._MAGIC)
-        assert __import__("hashlib").sha256(raw[head:]).digest() == raw[len(_jit._MAGIC):head]
+        assert raw.startswith(_kernel_cache.MAGIC)
+        digest = raw[len(_kernel_cache.MAGIC):head]
+        assert __import__("hashlib").sha256(raw[head:]).digest() == digest
 
 
 _FULL_DISK = """
 import errno
-from moik import _jit
+from moik import _kernel_cache
 def full(self, filepath):
     raise OSError(errno.ENOSPC, "No space left on device", filepath)
-_jit._CheckedCacheFile._open_for_write = full
+_kernel_cache.CheckedCacheFile._open_for_write = full
 """ + SCRIPT
 
 
@@ -296,7 +298,7 @@ def test_a_full_tmpfs_cache_does_not_fail_the_computation(tmp_path):
 
 def test_forty_single_bit_flips_of_real_cache_files_are_all_caught(tmp_path, built_cache):
     """Every flipped bit of a real index or data file is caught before numba reads it."""
-    from moik import _jit
+    from moik import _kernel_cache
     rng = np.random.default_rng(40)
     index = next(built_cache.rglob("fk_kernels.fk_poses-*.nbi"))
     data = next(built_cache.rglob("fk_kernels.fk_poses-*.1.nbc"))
@@ -305,14 +307,14 @@ def test_forty_single_bit_flips_of_real_cache_files_are_all_caught(tmp_path, bui
         original = (index if k % 2 else data).read_bytes()
         folder = tmp_path / str(k)
         folder.mkdir()
-        cache = _jit._CheckedCacheFile(cache_path=str(folder), filename_base=base,
+        cache = _kernel_cache.CheckedCacheFile(cache_path=str(folder), filename_base=base,
                                        source_stamp=None)
         raw = bytearray(original)
         bit = int(rng.integers(8 * len(raw)))
         raw[bit // 8] ^= 1 << (bit % 8)
         target = folder / (index if k % 2 else data).name
         target.write_bytes(bytes(raw))
-        _jit._warned.discard("damaged")
+        _kernel_cache.warned.discard("damaged")
         with pytest.warns(moik.exceptions.CacheWarning, match="discarded a damaged"):
             got = cache._load_index() if k % 2 else cache._load_data(data.name)
         assert got in ({}, None) and not target.exists(), (k, bit)

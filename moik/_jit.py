@@ -37,6 +37,7 @@ from typing import Any
 import numba
 import numpy as np
 from numba.core import event
+from numba.core import types as nb_types
 from numba.experimental import structref
 
 from moik._kernel_cache import KernelCache, sources_digest
@@ -140,6 +141,15 @@ def kernel_array(values: Any) -> np.ndarray:
             and values.flags.c_contiguous and values.flags.writeable):
         return values
     return np.array(values, dtype=np.float64, order="C", copy=True)
+
+
+class StructType(nb_types.StructRef):
+    """A numba StructRef type whose literal field types are widened (a field set from the
+    literal ``0`` holds any integer): the base of moik's StructRef types, each registered
+    with ``numba.experimental.structref.register`` and given a proxy by :func:`define_struct`."""
+
+    def preprocess_fields(self, fields):
+        return tuple((name, nb_types.unliteral(typ)) for name, typ in fields)
 
 
 def define_struct(proxy: type, struct_type: type, fields: Sequence[str]) -> None:

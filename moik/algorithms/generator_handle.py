@@ -12,18 +12,14 @@ after: seeds mean the same thing as everywhere else.
 from __future__ import annotations
 
 import numpy as np
-from numba.core import types
 from numba.experimental import structref
 
-from moik._jit import define_struct, jit
+from moik._jit import StructType, define_struct, jit
 
 
 @structref.register
-class GeneratorHandleType(types.StructRef):
+class GeneratorHandleType(StructType):
     """numba type of :class:`GeneratorHandle`."""
-
-    def preprocess_fields(self, fields):
-        return tuple((name, types.unliteral(typ)) for name, typ in fields)
 
 
 class GeneratorHandle(structref.StructRefProxy):

@@ -17,16 +17,13 @@ from numba import types as nb_types
 from numba.experimental import structref
 from numba.extending import overload
 
-from moik._jit import define_struct, jit
+from moik._jit import StructType, define_struct, jit
 from moik.collision.kernels import min_distance_of
 
 
 @structref.register
-class CollisionSetType(nb_types.StructRef):
+class CollisionSetType(StructType):
     """numba type of :class:`CollisionSet` (literal field types widened)."""
-
-    def preprocess_fields(self, fields):
-        return tuple((name, nb_types.unliteral(typ)) for name, typ in fields)
 
 
 class CollisionSet(structref.StructRefProxy):

@@ -10,11 +10,10 @@ from __future__ import annotations
 
 import math
 
-from numba import types as nb_types
 from numba.core.extending import overload
 from numba.experimental import structref
 
-from moik._jit import define_struct, jit, objectives_row
+from moik._jit import StructType, define_struct, jit, objectives_row
 from moik.kinematics.rotation_metrics import rotation_error
 from moik.robots.fk_kernels import (
     BLOCK,
@@ -72,11 +71,8 @@ def ik_objectives(F, types, Q, mode, p_t, code, R_t, angles_t, weights, q_start,
 
 
 @structref.register
-class IKObjectivesType(nb_types.StructRef):
+class IKObjectivesType(StructType):
     """numba type of :class:`IKObjectives` (literal field types widened)."""
-
-    def preprocess_fields(self, fields):
-        return tuple((name, nb_types.unliteral(typ)) for name, typ in fields)
 
 
 class IKObjectives(structref.StructRefProxy):

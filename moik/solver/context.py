@@ -34,10 +34,9 @@ StructRef): objects that pymoo deep-copies build theirs per call, as
 from __future__ import annotations
 
 import numpy as np
-from numba import types as nb_types
 from numba.experimental import structref
 
-from moik._jit import define_struct, jit, kernel_array
+from moik._jit import StructType, define_struct, jit, kernel_array
 from moik.collision.compiled import CollisionSet
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
@@ -46,11 +45,8 @@ NO_STOP = -1.0  # a stopping tolerance that never converges (the front's scalari
 
 
 @structref.register
-class IKContextType(nb_types.StructRef):
+class IKContextType(StructType):
     """numba type of :class:`IKContext` (literal field types widened)."""
-
-    def preprocess_fields(self, fields):
-        return tuple((name, nb_types.unliteral(typ)) for name, typ in fields)
 
 
 class IKContext(structref.StructRefProxy):
@@ -136,11 +132,8 @@ def retarget(ctx, rotation, position):
 
 
 @structref.register
-class LMWorkspaceType(nb_types.StructRef):
+class LMWorkspaceType(StructType):
     """numba type of :class:`LMWorkspace`."""
-
-    def preprocess_fields(self, fields):
-        return tuple((name, nb_types.unliteral(typ)) for name, typ in fields)
 
 
 class LMWorkspace(structref.StructRefProxy):

@@ -39,12 +39,13 @@ _digest: dict[str, str] = {}  # the sources digest, once computed
 
 
 def sources_digest() -> str:
-    """SHA-256 of the source of every moik module that compiles kernels."""
+    """SHA-256 of the source of every moik module that compiles kernels, and of
+    :mod:`moik._jit` (the options they are compiled with)."""
     if "digest" not in _digest:
         h = hashlib.sha256()
         for path in sorted(Path(__file__).parent.rglob("*.py")):
             text = path.read_bytes()
-            if b"moik._jit import" in text:
+            if b"moik._jit import" in text or path.name == "_jit.py":  # or the jit options
                 h.update(path.relative_to(Path(__file__).parent).as_posix().encode())
                 h.update(text)
         _digest["digest"] = h.hexdigest()

@@ -103,19 +103,29 @@ function value, which moik never does, and it was about 6 % of the LLVM IR that 
 first ``--pareto`` solve compiles (80.6k -> 76.0k lines)."""
 
 
-def jit(func: Callable | None = None) -> Any:
+def jit(func: Callable | None = None, *, inline: bool = False) -> Any:
     """Compile ``func`` with numba (nopython, no fastmath, cached when a cache can be written).
 
-    Used as ``@jit``. The result is a numba dispatcher, callable from Python and from
-    other compiled kernels. No helper is inlined at numba's IR level (``inline="always"``):
-    measured, that made the first compile of the solver about 25 % slower (32.5 -> 25.3 s
-    for a cold first solve, empty cache) and no kernel faster (LLVM inlines small
-    callees itself; the same results bit for bit).
+    Used as ``@jit``, or ``@jit(inline=True)`` for a helper that numba inlines at its IR
+    level into the kernel that calls it (``inline="always"``): the helper is then compiled
+    only as part of its caller, never as a module of its own. numba compiles every kernel
+    called by another into a module of its own and links a copy of it into each caller's
+    module, where LLVM optimises it and generates machine code for it again, so a helper
+    with one call site in each kernel that calls it pays for a module that is never run.
+    Inlined are such helpers of the algorithms' and criteria's kernels: on a cold first
+    ``--pareto`` solve the LLVM IR compiled went from 76.0k to 67.1k lines, its compile CPU
+    time down by about 9 % (6 interleaved runs), the results the same bit for bit. Not
+    inlined: helpers with several call sites in one kernel (each site would type and
+    compile its own copy; all helpers inlined made the first compile of the solver
+    slower), and the LM start loop's helpers, where inlining the single-site ones measured
+    no gain (the caller's typing grew by what their modules saved). Called from Python, an
+    inlined helper compiles as a kernel of its own.
     """
     if func is None:
-        return jit
+        return lambda f: jit(f, inline=inline)
     _kernels.add(func)
-    dispatcher = numba.njit(cache=False, **JIT_OPTIONS)(func)
+    options = {**JIT_OPTIONS, "inline": "always"} if inline else JIT_OPTIONS
+    dispatcher = numba.njit(cache=False, **options)(func)
     try:
         # what cache=True does, with our key (numba's types omit the private _cache)
         dispatcher._cache = KernelCache(func)

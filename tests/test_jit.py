@@ -2,6 +2,7 @@
 compiled version per kernel, the disk cache and the first-compile notice (in fresh
 interpreters), a read-only installation."""
 
+import ast
 import contextlib
 import io
 import json
@@ -405,3 +406,48 @@ def test_kernels_run_as_python_under_numba_disable_jit(tmp_path):
     with contextlib.redirect_stdout(printed):  # the compiled kernels, in this process
         exec(_PYTHON_KERNELS, {})
     assert python == json.loads(printed.getvalue())
+
+
+def _jit_decorated(node) -> str | None:
+    """'inline' for ``@jit(inline=True)``, 'jit' for ``@jit``, else None."""
+    for d in node.decorator_list:
+        if isinstance(d, ast.Name) and d.id == "jit":
+            return "jit"
+        if (isinstance(d, ast.Call) and isinstance(d.func, ast.Name) and d.func.id == "jit"
+                and any(k.arg == "inline" and getattr(k.value, "value", False)
+                        for k in d.keywords)):
+            return "inline"
+    return None
+
+
+def test_inlined_helpers_have_one_call_site_in_each_kernel():
+    """``@jit(inline=True)`` (moik._jit.jit) is for helpers called once in each kernel that
+    calls them: at several sites numba would type and compile a copy per site."""
+    sources = Path(moik.__file__).parent.rglob("*.py")
+    trees = [ast.parse(path.read_text()) for path in sources]
+    functions = [f for tree in trees for f in ast.walk(tree) if isinstance(f, ast.FunctionDef)]
+    inlined = {f.name for f in functions if _jit_decorated(f) == "inline"}
+    assert {"weight_arguments", "determinant", "ieee_divide"} <= inlined
+    for kernel in (f for f in functions if _jit_decorated(f)):
+        calls = [c.func.id for c in ast.walk(kernel)
+                 if isinstance(c, ast.Call) and isinstance(c.func, ast.Name)]
+        for name in inlined:
+            assert calls.count(name) <= 1, (kernel.name, name, calls.count(name))
+
+
+def test_an_inlined_helper_compiles_only_inside_its_caller():
+    """Compiling its caller compiles no module of the helper's own (its dispatcher stays
+    empty); called from Python, the helper compiles as a kernel and gives the same value."""
+    from moik.kinematics import criteria_kernels
+    from moik.kinematics.criteria import manipulability
+
+    robot = get_robot("iiwa14")
+    Q = robot.random_q(3, rng=np.random.default_rng(0))
+    helper = criteria_kernels.determinant
+    assert helper.targetoptions.get("inline") == "always"
+    values = manipulability(robot)(Q)
+    assert not helper.overloads  # compiled within manipulabilities only
+    J = jac.parts_and_jacobian(robot, Q)[2]
+    A = np.ascontiguousarray(J[0] @ J[0].T)
+    assert np.sqrt(helper(A)) == pytest.approx(values[0], rel=1e-9)
+    assert helper.overloads  # its own kernel now, called from Python

@@ -36,7 +36,7 @@ def clip_to_bounds(X: np.ndarray, xl: np.ndarray, xu: np.ndarray) -> np.ndarray:
     return np.minimum(np.maximum(X, xl), xu)
 
 
-@jit
+@jit(inline=True)
 def ieee_divide(a: float, b: float) -> float:
     """``a / b`` with IEEE 754's (numpy's) answer for ``b == 0``: +-inf, or nan for 0/0."""
     if b != 0.0:
@@ -46,7 +46,7 @@ def ieee_divide(a: float, b: float) -> float:
     return math.copysign(math.inf, a) * math.copysign(1.0, b)
 
 
-@jit
+@jit(inline=True)
 def midpoint_coordinate(x: float, old: float, lo: float, hi: float) -> float:
     """EOSMA Eq. 17 for one coordinate: halfway from ``old`` to the bound ``x`` violates."""
     if x < lo:
@@ -153,7 +153,7 @@ def ranking_into(F, CV, out):
     return out
 
 
-@jit
+@jit(inline=True)
 def ranks_before(a: float, b: float) -> bool:
     """Whether ``a`` sorts strictly before ``b`` in numpy's order (nan last)."""
     return a < b or (b != b and a == a)

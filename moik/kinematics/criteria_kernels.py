@@ -84,7 +84,7 @@ def joint_motions(Q, q_ref, lo, hi, types, out):
         out[i] = np.sqrt(acc)
 
 
-@jit
+@jit(inline=True)
 def determinant(A):
     """Determinant of a small square matrix by Gaussian elimination with partial pivoting
     (``A`` is overwritten)."""

@@ -24,7 +24,7 @@ import numpy as np
 from moik._jit import jit, kernel_array
 
 
-@jit
+@jit(inline=True)
 def _dominates(FA, cva: float, FB, cvb: float, i: int) -> bool:
     """Row i of ``FA`` (violation ``cva``) constraint-dominates row i of ``FB`` (``cvb``)."""
     a_ok, b_ok = cva <= 0.0, cvb <= 0.0

@@ -159,13 +159,13 @@ def eo_schedule(t: int, T: int, a2: float) -> float:
     return (1.0 - s) ** (a2 * s)
 
 
-@jit
+@jit(inline=True)
 def generation_control(r1: float, r2: float, GP: float) -> float:
     """Eq. 9: ``GCP = 0.5 r1`` if ``r2 >= GP`` else 0."""
     return 0.5 * r1 if r2 >= GP else 0.0
 
 
-@jit
+@jit(inline=True)
 def eo_coordinate(c, ceq, lam, e, r, gcp, a1, V):
     """Eqs. 6, 8, 9 for one coordinate, with ``e = exp(-lam t1)`` computed by numpy."""
     s = r - 0.5

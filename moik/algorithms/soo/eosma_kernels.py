@@ -54,13 +54,13 @@ def eosma_rows(P, g_best, pool, W, lam, E, r, idx, r1, r2, vb, A, B, u, z, a1, G
     return out
 
 
-@jit
+@jit(inline=True)
 def difference_coordinate(p1: float, p2: float, p3: float, sf: float) -> float:
     """Eq. 16 for one coordinate: ``pBest_R1 + SF (pBest_R2 - pBest_R3)``."""
     return p1 + sf * (p2 - p3)
 
 
-@jit
+@jit(inline=True)
 def difference_rows(P, R, SF, out):
     """Eq. 16 on every agent from its drawn indices ``R`` (3, n) and factors ``SF`` (n,)."""
     n, d = out.shape
@@ -181,7 +181,7 @@ def generation_draws(handle, pbest_fcv, n_pool, t1, a, q, cells, rows, picks):
     return mutation_draws(rng, q, rows, picks)
 
 
-@jit
+@jit(inline=True)
 def decay_into(cells, t1):
     """``cells[DECAY] = -lam t1`` (numpy's exp follows in the caller, Eq. 8)."""
     for i in range(cells.shape[1]):
@@ -189,7 +189,7 @@ def decay_into(cells, t1):
             cells[DECAY, i, j] = -cells[LAMBDA, i, j] * t1
 
 
-@jit
+@jit(inline=True)
 def uniform_into(rng, lo, hi, A):
     """``A`` (2-D) filled as ``rng.uniform(lo, hi, A.shape)``."""
     for i in range(A.shape[0]):
@@ -197,7 +197,7 @@ def uniform_into(rng, lo, hi, A):
             A[i, j] = rng.uniform(lo, hi)
 
 
-@jit
+@jit(inline=True)
 def mutation_draws(rng, q, rows, picks):
     """The mutation test (EOSMA line 22, MOEOSMA line 26) and, when it passes, R1..R3
     (one ``integers`` call of 3n) and SF of Eq. 16. Returns whether the mutation runs."""

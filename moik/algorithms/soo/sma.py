@@ -72,7 +72,7 @@ from moik.algorithms.mechanics import (
 EPS = np.finfo(float).eps
 
 
-@jit
+@jit(inline=True)
 def weight_arguments(S, order, arg):
     """Eq. 5 and the argument of Eq. 4's log10, per rank, into ``order`` and ``arg``.
 
@@ -87,13 +87,13 @@ def weight_arguments(S, order, arg):
         arg[i] = ieee_divide(bF - S[order[i]], den) + 1.0
 
 
-@jit
+@jit(inline=True)
 def weight_sign(rank: int, n: int) -> float:
     """Eq. 4's sign: "+" for the better half of the sorted population."""
     return 1.0 if rank + 1 <= n / 2 else -1.0
 
 
-@jit
+@jit(inline=True)
 def weights_into(order, log, R, W):
     """Eq. 4: ``W[order[i]] = 1 +/- log[i] R[i]`` (``R`` drawn per rank), into ``W``."""
     n, d = R.shape
@@ -123,7 +123,7 @@ def sma_schedule(t: int, T: int) -> tuple[float, float]:
     return math.atanh(1.0 - s), 1.0 - s
 
 
-@jit
+@jit(inline=True)
 def sma_coordinate(x_b: float, vb: float, w: float, x_a: float, x_bb: float) -> float:
     """Eq. 1's approach move for one coordinate: ``X_b + vb (W X_A - X_B)``."""
     return x_b + vb * (w * x_a - x_bb)

@@ -5,16 +5,18 @@ Each sample is a new Python process (kernels already cached on disk: run any sol
 before). ``floor`` imports numpy and numba and calls one cached kernel, the least any
 numba-based solver pays (numba's first call loads its registries, which import
 scipy.linalg); ``moik`` imports moik and solves a Puma 560 pose. Samples interleave the
-two; medians are printed. Cold start (no kernel cache): ``--cold`` also times one first
-solve with an empty NUMBA_CACHE_DIR (wall and CPU seconds).
+two; medians are printed. Cold start (no kernel cache): ``--cold`` also times first
+uses with an empty NUMBA_CACHE_DIR (below).
 
 ``moik --help`` and ``moik robots`` (goal <= 0.3 s warm) are timed as fresh processes,
 interleaved with the others. ``--cold`` times, each in a fresh process with its own empty
 NUMBA_CACHE_DIR, a first ``solve`` (goal <= 10 s), a first ``solve --pareto`` (goal
-<= 10 s) and a first unreachable solve (wall and CPU seconds).
+<= 10 s) and a first unreachable solve (wall and CPU seconds): ``--cold-n`` samples of
+each (default 5), interleaved; medians and the range of the wall seconds.
 
-Run: python benchmarks/startup.py [--n 15] [--cold] [--out FILE] (``--out`` also writes the
-printed table to FILE, e.g. docs/results/startup.txt, which docs/performance.md links to).
+Run: python benchmarks/startup.py [--n 15] [--cold] [--cold-n 5] [--out FILE] (``--out``
+also writes the printed table to FILE, e.g. docs/results/startup.txt, which
+docs/performance.md links to).
 """
 
 from __future__ import annotations
@@ -70,15 +72,18 @@ def wall(code: str, env: dict | None = None, args: list[str] | None = None,
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--n", type=int, default=15, help="samples of each")
-    parser.add_argument("--cold", action="store_true", help="also time a cold first solve")
+    parser.add_argument("--cold", action="store_true", help="also time the cold first uses")
+    parser.add_argument("--cold-n", type=int, default=5,
+                        help="samples of each cold first use (interleaved), default 5")
     parser.add_argument("--out", help=OUT_HELP)
     args = parser.parse_args()
     with table_output(args.out):
-        measure(args.n, cold=args.cold)
+        measure(args.n, cold=args.cold, cold_n=args.cold_n)
 
 
-def measure(n: int, *, cold: bool) -> None:
-    """Print the medians of ``n`` interleaved samples, and the cold first solve if asked."""
+def measure(n: int, *, cold: bool, cold_n: int = 5) -> None:
+    """Print the medians of ``n`` interleaved samples, and of ``cold_n`` interleaved
+    samples of each cold first use if asked."""
     wall(MOIK)  # make sure the kernels are cached
     wall(FLOOR)
     floor, moik, helps, robots = [], [], [], []
@@ -94,13 +99,21 @@ def measure(n: int, *, cold: bool) -> None:
     print(f"numba floor (numpy + numba + one cached kernel): median {np.median(floor):.3f} s")
     print(f"moik import + first solve (cached kernels):      median {np.median(moik):.3f} s "
           f"(goal <= 0.5 s); moik above the floor: {np.median(moik) - np.median(floor):.3f} s")
-    if cold:
-        for what, (argv, goal) in COLD.items():
+    if not cold:
+        return
+    samples: dict[str, list[tuple[float, float]]] = {what: [] for what in COLD}
+    for _ in range(cold_n):
+        for what, (argv, _goal) in COLD.items():
             with tempfile.TemporaryDirectory() as cache:
-                seconds, cpu = wall(CLI, env={**os.environ, "NUMBA_CACHE_DIR": cache},
-                                    args=argv, check=False)  # unreachable exits 1
-            print(f"cold {what} (empty kernel cache): {seconds:.1f} s wall, {cpu:.1f} s CPU "
-                  f"(goal <= {goal:g} s)")
+                samples[what].append(wall(CLI, env={**os.environ, "NUMBA_CACHE_DIR": cache},
+                                          args=argv, check=False))  # unreachable exits 1
+    print(f"cold first uses: {cold_n} samples of each, interleaved, each with an empty "
+          f"kernel cache")
+    for what, (_argv, goal) in COLD.items():
+        walls, cpus = np.array(samples[what]).T
+        print(f"cold {what} (empty kernel cache): median {np.median(walls):.1f} s wall "
+              f"({walls.min():.1f}-{walls.max():.1f}), {np.median(cpus):.1f} s CPU "
+              f"(goal <= {goal:g} s)")
 
 
 if __name__ == "__main__":

@@ -13,10 +13,10 @@ the same ``method``, population, generations and numbers of joints and criteria,
 the same kernels and argument types) on stand-ins: an identity projection instead of LM
 and plain-numpy stand-ins of the criteria (:func:`stand_in`), so it compiles no
 kinematic kernel, and no local search. It writes the algorithm's kernels to the cache
-while this process compiles LM's, says so, and then evaluates the built-in criteria and
-the local search's joint distances and Jacobians on a few configurations, in the order
-this process needs them: their kernels (which share the FK kernels this process has
-cached by then) are often cached too when this process gets to them. This process
+while this process compiles LM's, says so, and then evaluates the local search's joint
+distances and Jacobians (which this process needs last) and the built-in criteria on a
+few configurations: their kernels (which share the FK kernels this process has cached
+by then) are often cached too when this process gets to them. This process
 waits for the child's word after its first criteria and before its archive and search,
 which then load the algorithm's kernels (``benchmarks/startup.py`` times the cold first
 ``--pareto`` solve).
@@ -130,17 +130,19 @@ class IdentityProjector(Projector):
 
 def _child() -> None:
     """The child: the memetic search unprojected, on stand-in criteria, without the local
-    search; then (its parent told, :func:`moik._background.ready`) the built-in criteria
-    and the local search's joint distances and Jacobians on a few configurations."""
+    search; then (its parent told, :func:`moik._background.ready`) the local search's
+    joint distances and Jacobians and the built-in criteria on a few configurations."""
     search_problem, first, search, kinematic = _background.child_arguments()
     memetic_search(IdentityProjector(ParetoIK(**search_problem)), first,
                    np.random.default_rng(0), **{**search, "seed": 0})
     _background.ready()
     problem = ParetoIK(**kinematic)
     Q = problem.robot.random_q(4, rng=np.random.default_rng(0))
-    problem.natural(Q)  # in the order the parent needs them: the criteria, then
-    joint_distance(problem.robot, Q[0], Q)  # the local search's starts and Jacobians
+    # first what the parent needs last (the local search's starts and Jacobians): it is
+    # compiling its first criteria when the child gets here, or soon after
+    joint_distance(problem.robot, Q[0], Q)
     parts_and_jacobian(problem.robot, Q)
+    problem.natural(Q)
 
 
 if __name__ == "__main__":

@@ -182,7 +182,7 @@ def damped_step(ctx, ws, lam, q):
     return cholesky_solve(A, gb, step)
 
 
-@jit
+@jit(inline=True)
 def lm_start(ctx, ws, q, scale, stall_ratio):
     """Levenberg-Marquardt from ``q`` (clipped into the limits; updated in place).
 

@@ -51,7 +51,7 @@ from moik.algorithms.soo.eosma import (
     random_difference_mutation,
     update_distinct_pool,
 )
-from moik.algorithms.soo.eosma_kernels import GenerationDraws, generation_draws
+from moik.algorithms.soo.eosma_kernels import GenerationDraws, fill_integers, generation_draws
 from moik.exceptions import ParameterError
 from moik.experiments.protocol import solve_until_success
 from moik.problems import PoseIK, PositionIK, random_reachable_targets
@@ -342,3 +342,16 @@ def test_table9_pose_is_reached_in_metres():
     assert pos[0] < 1e-12 and ori[0] < 1e-12
     q_deg = np.degrees(best.X)
     assert (np.allclose(q_deg[1:3], -90.0, atol=1e-6) or abs(abs(q_deg[0]) - 175) < 10)
+
+
+@pytest.mark.parametrize("high", [1, 2, 7, 1000, 2**32 - 1, 2**32, 2**32 + 1, 2**40 + 3])
+def test_fill_integers_is_the_numpy_stream(high):
+    """fill_integers calls numba's bounded-integer fill below Generator.integers: the
+    same numbers as numpy's ``integers(high, size=shape)``, the stream left where numpy
+    leaves it (32-bit draws buffered across calls included)."""
+    rng, ref = np.random.default_rng(high), np.random.default_rng(high)
+    for shape in [(1, 5), (3, 4), (1, 1), (2, 9)]:
+        A = np.empty(shape, dtype=np.int64)
+        fill_integers(rng, high, A)
+        np.testing.assert_array_equal(A, ref.integers(high, size=shape))
+        assert rng.random() == ref.random()

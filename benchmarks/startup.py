@@ -14,9 +14,16 @@ NUMBA_CACHE_DIR, a first ``solve`` (goal <= 10 s), a first ``solve --pareto`` (g
 <= 10 s) and a first unreachable solve (wall and CPU seconds): ``--cold-n`` samples of
 each (default 5), interleaved; medians and the range of the wall seconds.
 
-Run: python benchmarks/startup.py [--n 15] [--cold] [--cold-n 5] [--out FILE] (``--out``
-also writes the printed table to FILE, e.g. docs/results/startup.txt, which
-docs/performance.md links to).
+This machine's speed can drift by a third within minutes, so a cold time alone says
+little about another machine. ``--baseline REV`` also times each cold first use at
+another commit (``git archive REV``, imported through ``PYTHONPATH``, the same Python
+and libraries), each of its samples right after the current one: the median ratio of
+the pairs carries over to a machine where the baseline's time is known (the issue that
+set the goals measured its start commit there).
+
+Run: python benchmarks/startup.py [--n 15] [--cold] [--cold-n 5] [--baseline REV]
+[--out FILE] (``--out`` also writes the printed table to FILE, e.g.
+docs/results/startup.txt, which docs/performance.md links to).
 """
 
 from __future__ import annotations
@@ -50,6 +57,11 @@ COLD = {  # the command lines of the cold first uses, and their goals (s)
     "first unreachable solve": (["solve", "puma560", "--target", "2", "0", "0"], 10.0),
 }
 
+# the cold times of commit 62ac347 on the machine that set the goals (the issue that set
+# them measured its first --pareto solve there: 20.3 s); with --baseline 62ac347 the ratio
+# of the pairs gives the current time on that machine
+GOAL_MACHINE = ("62ac347", {"first solve --pareto": 20.3})
+
 SCRIPTS = tempfile.mkdtemp(prefix="moik-startup-")
 
 
@@ -63,7 +75,8 @@ def wall(code: str, env: dict | None = None, args: list[str] | None = None,
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
     subprocess.run([sys.executable, path, *(args or [])], check=check, env=env,
-                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                   cwd=SCRIPTS)  # no moik in the working folder (a baseline's children)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     return time.perf_counter() - t0, cpu
@@ -75,15 +88,34 @@ def main() -> None:
     parser.add_argument("--cold", action="store_true", help="also time the cold first uses")
     parser.add_argument("--cold-n", type=int, default=5,
                         help="samples of each cold first use (interleaved), default 5")
+    parser.add_argument("--baseline", metavar="REV",
+                        help="with --cold: also time the cold first uses at commit REV, "
+                             "interleaved, and print the ratios")
     parser.add_argument("--out", help=OUT_HELP)
     args = parser.parse_args()
-    with table_output(args.out):
-        measure(args.n, cold=args.cold, cold_n=args.cold_n)
+    with table_output(args.out), tempfile.TemporaryDirectory() as tree:
+        baseline = None
+        if args.baseline:
+            baseline = (args.baseline, checkout(args.baseline, tree))
+        measure(args.n, cold=args.cold, cold_n=args.cold_n, baseline=baseline)
 
 
-def measure(n: int, *, cold: bool, cold_n: int = 5) -> None:
+def checkout(rev: str, into: str) -> str:
+    """The files of commit ``rev`` of this repository under ``into`` (``git archive``),
+    byte-compiled."""
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    archive = subprocess.run(["git", "-C", root, "archive", rev], check=True,
+                             capture_output=True).stdout
+    subprocess.run(["tar", "-x", "-C", into], input=archive, check=True)
+    subprocess.run([sys.executable, "-m", "compileall", "-q", into], check=True,
+                   stdout=subprocess.DEVNULL)  # its bytecode, as the current tree has
+    return into
+
+
+def measure(n: int, *, cold: bool, cold_n: int = 5,
+            baseline: tuple[str, str] | None = None) -> None:
     """Print the medians of ``n`` interleaved samples, and of ``cold_n`` interleaved
-    samples of each cold first use if asked."""
+    samples of each cold first use if asked (and of ``baseline = (rev, folder)``'s)."""
     wall(MOIK)  # make sure the kernels are cached
     wall(FLOOR)
     floor, moik, helps, robots = [], [], [], []
@@ -101,19 +133,38 @@ def measure(n: int, *, cold: bool, cold_n: int = 5) -> None:
           f"(goal <= 0.5 s); moik above the floor: {np.median(moik) - np.median(floor):.3f} s")
     if not cold:
         return
-    samples: dict[str, list[tuple[float, float]]] = {what: [] for what in COLD}
+    versions: dict[str, dict[str, str]] = {"": {}}
+    if baseline:
+        versions["base"] = {"PYTHONPATH": baseline[1]}
+    samples: dict[tuple[str, str], list[tuple[float, float]]] = {
+        (what, version): [] for what in COLD for version in versions}
     for _ in range(cold_n):
         for what, (argv, _goal) in COLD.items():
-            with tempfile.TemporaryDirectory() as cache:
-                samples[what].append(wall(CLI, env={**os.environ, "NUMBA_CACHE_DIR": cache},
-                                          args=argv, check=False))  # unreachable exits 1
+            for version, extra in versions.items():
+                with tempfile.TemporaryDirectory() as cache:
+                    env = {**os.environ, **extra, "NUMBA_CACHE_DIR": cache}
+                    samples[what, version].append(
+                        wall(CLI, env=env, args=argv, check=False))  # unreachable exits 1
     print(f"cold first uses: {cold_n} samples of each, interleaved, each with an empty "
           f"kernel cache")
     for what, (_argv, goal) in COLD.items():
-        walls, cpus = np.array(samples[what]).T
+        walls, cpus = np.array(samples[what, ""]).T
         print(f"cold {what} (empty kernel cache): median {np.median(walls):.1f} s wall "
               f"({walls.min():.1f}-{walls.max():.1f}), {np.median(cpus):.1f} s CPU "
               f"(goal <= {goal:g} s)")
+        if baseline:
+            base = np.array(samples[what, "base"])[:, 0]
+            ratios = walls / base
+            print(f"  at {baseline[0]}, each run right after: median {np.median(base):.1f} s "
+                  f"wall ({base.min():.1f}-{base.max():.1f}); ratio of the pairs: median "
+                  f"{np.median(ratios):.2f} ({ratios.min():.2f}-{ratios.max():.2f})")
+            there = GOAL_MACHINE[1].get(what)
+            if there is not None and GOAL_MACHINE[0].startswith(baseline[0][:7]) and len(
+                    baseline[0]) >= 7:
+                print(f"  on the machine that set the goal (where {GOAL_MACHINE[0]} takes "
+                      f"{there:g} s): {np.median(ratios) * there:.1f} s "
+                      f"({ratios.min() * there:.1f}-{ratios.max() * there:.1f}) "
+                      f"(goal <= {goal:g} s)")
 
 
 if __name__ == "__main__":

@@ -82,13 +82,16 @@ def start(module: str, arguments: Any, probes: Sequence[Any]) -> Background | No
         payload = pickle.dumps(arguments)
     except Exception:  # noqa: BLE001 - a robot pickle cannot take: compile here
         return None
-    root = str(Path(__file__).resolve().parents[1])  # where this moik is imported from
+    # the child imports this moik: ``-m`` puts its working folder first on sys.path (before
+    # PYTHONPATH), so it runs in the folder this moik is imported from, not in ours (which
+    # may hold another moik, a checkout: it would compile that one's kernels, of no use here)
+    root = str(Path(__file__).resolve().parents[1])
     env = {**os.environ, ENV_SWITCH: "0",
            "PYTHONPATH": os.pathsep.join(p for p in (root, os.environ.get("PYTHONPATH")) if p)}
     try:
         process = subprocess.Popen([sys.executable, "-m", module], stdin=subprocess.PIPE,
                                    stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
-                                   env=env)
+                                   env=env, cwd=root)
         assert process.stdin is not None
         process.stdin.write(payload)
         process.stdin.close()

@@ -20,6 +20,27 @@ def test_starts_the_module_with_its_arguments_and_no_grandchild(fake_popen):
     assert pickle.loads(child.written) == {"a": (1, 2)}
 
 
+def test_the_child_imports_its_parents_moik_from_any_working_folder(tmp_path, monkeypatch):
+    """``python -m`` puts the working folder first on sys.path: a folder holding another
+    moik (a checkout) must not give the child that one (it would compile its kernels)."""
+    other = tmp_path / "moik"
+    other.mkdir()
+    (other / "__init__.py").write_text("")
+    (other / "which.py").write_text("import sys; sys.stdout.write('other')")
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr(_jit, "is_cached", lambda kernel: False)
+    monkeypatch.setattr(_background, "cpus", lambda: 2)
+    monkeypatch.delenv(_background.ENV_SWITCH, raising=False)
+    handle = _background.start("moik._jit", None, probes=[object()])
+    assert handle is not None
+    handle.process.wait(timeout=60)  # moik._jit run as a script: imports and ends
+    assert handle.process.returncode == 0
+    handle = _background.start("moik.which", None, probes=[object()])
+    assert handle is not None
+    handle.process.wait(timeout=60)
+    assert handle.process.returncode != 0  # this moik has no moik.which: not the other one
+
+
 @pytest.mark.parametrize("why", ["switched off", "one cpu", "cached", "unpicklable"])
 def test_does_not_start_where_it_cannot_help(fake_popen, monkeypatch, why):
     arguments: object = (1,)

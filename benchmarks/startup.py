@@ -159,8 +159,7 @@ def measure(n: int, *, cold: bool, cold_n: int = 5,
                   f"wall ({base.min():.1f}-{base.max():.1f}); ratio of the pairs: median "
                   f"{np.median(ratios):.2f} ({ratios.min():.2f}-{ratios.max():.2f})")
             there = GOAL_MACHINE[1].get(what)
-            if there is not None and GOAL_MACHINE[0].startswith(baseline[0][:7]) and len(
-                    baseline[0]) >= 7:
+            if there is not None and baseline[0].startswith(GOAL_MACHINE[0]):
                 print(f"  on the machine that set the goal (where {GOAL_MACHINE[0]} takes "
                       f"{there:g} s): {np.median(ratios) * there:.1f} s "
                       f"({ratios.min() * there:.1f}-{ratios.max() * there:.1f}) "

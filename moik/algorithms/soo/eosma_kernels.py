@@ -151,7 +151,7 @@ def fill_integers(rng, high, A):
     Calls numba's implementation of that method below its argument checks and dtype
     dispatch (``random_bounded_uint64_fill``, numpy's ``_rand_int64`` for the values
     ``0 .. high - 1``): the same draws, and about a second less to compile on a cold
-    start (tests/algorithms/soo/test_eosma_kernels.py compares the stream with numpy's).
+    start (tests/algorithms/soo/test_eosma.py compares the stream with numpy's).
     """
     values = random_bounded_uint64_fill(rng.bit_generator, np.int64(0), np.int64(high - 1),
                                         A.size, np.int64)

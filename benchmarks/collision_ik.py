@@ -204,7 +204,7 @@ def main() -> None:
         model = collision_model(arm)
         robot = model.robot
         for sname, scene in scenes(model, rng=rng).items():
-            checker = CollisionChecker(model=model, scene=scene)
+            checker = CollisionChecker(model=model, scene=scene, self_collision=True)
             Q = robot.random_q(args.n, rng=rng)
             D = checker.distances(Q)
             dmin = checker.min_distance(Q)  # compiled before timing
@@ -227,7 +227,7 @@ def main() -> None:
                           float((dmin >= 0).mean()), t_moik * 1e6, t_coal * 1e6))
             free = Q[dmin >= 0][: args.targets]
             blind = {"solved": 0, "colliding": 0, "self": 0, "scene": 0}
-            self_only = CollisionChecker(model=model)
+            self_only = CollisionChecker(model=model, self_collision=True)
             scene_only = CollisionChecker(model=model, scene=scene, self_collision=False)
             for q in free:
                 res = solve_ik(robot, robot.fk(q), seed=0)

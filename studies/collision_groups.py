@@ -45,7 +45,7 @@ def main() -> None:
     cfg = _config()
     robot = get_robot("panda")
     checker = CollisionChecker(model=collision_model(robot),
-                               scene=load_scene(cfg["problem"]["scene"]))
+                               scene=load_scene(cfg["problem"]["scene"]), self_collision=True)
     points = cfg["targets"]["points"]
     targets = {"above-shelf": robot.fk(np.radians(points[0]["fk_q_deg"])),
                "beyond-reach": (np.array(points[1]["position"]),

@@ -117,11 +117,9 @@ def _foot(o1, z1, o2, z2):
 
 def drawn_model(name: str) -> CollisionModel:
     robot = get_robot(name)
-    chain = robot.kinematic_chain
     q = (robot.lower + robot.upper) / 2
     frames, axes = np.empty((robot.dof + 1, 4, 4)), np.empty((robot.dof, 6))
-    world_frames(chain.origins, chain.link_frames, np.array(robot.base), chain.joint_types, q,
-                 frames, axes)
+    world_frames(robot.chain_model, q, frames, axes)
     radius = 0.05 * robot.reach
     points = [axes[j, :3] for j in range(robot.dof)] + [frames[-1][:3, 3]]
     shapes: dict[str, list[Shape]] = {}
@@ -225,7 +223,8 @@ def main() -> None:
         (OUT / f"{name}.json").write_text(json.dumps(data, indent=1) + "\n")
         n_shapes = sum(len(v) for v in model.shapes.values())
         Q = model.robot.random_q(10_000, rng=np.random.default_rng(0))  # sample_allowed's
-        free = float((CollisionChecker(model=model).min_distance(Q) >= 0.0).mean())
+        checker = CollisionChecker(model=model, self_collision=True)
+        free = float((checker.min_distance(Q) >= 0.0).mean())
         print(f"{name:18s} {n_shapes:3d} shapes, {len(model.checked_body_pairs()):3d} checked "
               f"body pairs, {len(model.allowed):3d} allowed, {100 * free:5.1f} % of the "
               f"samples free of self-collision")

@@ -4,8 +4,8 @@
 
 The scene is a JSON file (:func:`moik.collision.io.load_scene`); the arm's geometry is
 its shipped capsule model (:mod:`moik.collision.catalog`; catalog arms only). The
-checker (self pairs and the scene; the self pairs alone with ``--self-collision`` and
-no scene) and ``--clearance`` go to the solver
+checker (the scene's obstacles, and the self pairs with ``--self-collision``: the
+library's default, off, as for ``solve_ik``) and ``--clearance`` go to the solver
 (``solve_ik(..., collision=checker, clearance=D)``), which returns only collision-free
 solutions, or the status ``collides`` (exit status 1) when every exact one collides;
 with ``--pareto`` to ``solve_ik_pareto`` (members keep the clearance; the criterion
@@ -19,52 +19,70 @@ of ``q`` at the top level.
 from __future__ import annotations
 
 import argparse
+from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import Any
 
 import numpy as np
 
-from moik._validate import number
 from moik.cli.parser import given, library_default
-from moik.collision.catalog import collision_model
 from moik.collision.io import load_scene
-from moik.collision.model import CollisionChecker
-from moik.exceptions import ParameterError
+from moik.exceptions import MoikError
 from moik.robots import Robot
+from moik.solver.collision import CollisionGuard, collision_guard
+
+# the library's keywords in its collision messages, as this command's options
+_OPTION_NAMES = ((" (or collision=a CollisionChecker)", ""),
+                 ("self_collision=True", "--self-collision"),
+                 ("clearance=", "--clearance"), ("scene=", "--scene FILE"),
+                 ("clearance must ", "--clearance must "))
 
 
-def checker(args: argparse.Namespace, robot: Robot) -> tuple[CollisionChecker, float] | None:
-    """The checker and clearance of ``--scene`` / ``--self-collision``, or None without
-    either (built before solving).
+@contextmanager
+def option_names() -> Iterator[None]:
+    """Library errors about the collision check raised again naming this command's options
+    (the rules stay the library's: :func:`moik.solver.collision.collision_guard`,
+    :func:`moik.solver.collision.with_clearance`)."""
+    try:
+        yield
+    except MoikError as exc:
+        if exc.args and isinstance(exc.args[0], str):
+            text = exc.args[0]
+            for keyword, option in _OPTION_NAMES:
+                text = text.replace(keyword, option)
+            exc.args = (text, *exc.args[1:])
+        raise
+
+
+def checker(args: argparse.Namespace, robot: Robot) -> CollisionGuard | None:
+    """The collision check of ``--scene`` / ``--self-collision`` / ``--clearance`` (built
+    before solving, by the library's :func:`~moik.solver.collision.collision_guard`), or
+    None without geometry.
 
     Raises:
-        ParameterError: ``--clearance`` given with neither (nothing would be checked).
+        ParameterError: As ``collision_guard`` (e.g. ``--clearance`` with nothing to
+            check), naming the options.
     """
     scene = getattr(args, "scene", None)
-    clearance = given(args, "clearance").get("clearance")
-    if scene is None and not getattr(args, "self_collision", False):
-        if clearance is not None:
-            raise ParameterError("--clearance needs geometry to keep clear of: give --scene "
-                                 "FILE and/or --self-collision")
-        return None
-    clearance = library_default("clearance") if clearance is None else clearance
-    return (CollisionChecker(model=collision_model(robot),
-                             scene=None if scene is None else load_scene(scene)),
-            number("--clearance", clearance, minimum=0.0))
+    clearance = given(args, "clearance").get("clearance", library_default("clearance"))
+    with option_names():
+        return collision_guard(robot, scene=None if scene is None else load_scene(scene),
+                               self_collision=getattr(args, "self_collision", False),
+                               clearance=clearance)
 
 
-def solver_options(check: tuple[CollisionChecker, float] | None) -> dict[str, Any]:
+def solver_options(check: CollisionGuard | None) -> dict[str, Any]:
     """The keywords of ``solve_ik`` for ``--scene`` / ``--clearance`` (none without)."""
-    return {} if check is None else {"collision": check[0], "clearance": check[1]}
+    return {} if check is None else {"collision": check.checker, "clearance": check.clearance}
 
 
-def distances(check: tuple[CollisionChecker, float], Q: np.ndarray) -> list[dict[str, Any]]:
+def distances(check: CollisionGuard, Q: np.ndarray) -> list[dict[str, Any]]:
     """Per row of ``Q``: its smallest distance, the pair, and whether it collides."""
-    ch, clearance = check
     out = []
     for q in np.atleast_2d(Q):
-        d, pair = ch.closest_pair(q)
+        d, pair = check.checker.closest_pair(q)
         out.append({"min_distance": d, "closest_pair": list(pair) if pair else None,
-                    "collides": bool(d < clearance)})
+                    "collides": not check.keeps(d)})
     return out
 
 

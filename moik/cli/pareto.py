@@ -60,10 +60,7 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
         options["tol"] = tolerance(options["tol"])
     criteria = parse_criteria(args.pareto)
     check = collision.checker(args, robot)
-    if check is None and "clearance" in (c.lower() for c in criteria):
-        raise ParameterError("--pareto criterion clearance needs geometry to measure: give "
-                             "--scene FILE and/or --self-collision")
-    with library_call(PARETO_OPTIONS):
+    with library_call(PARETO_OPTIONS), collision.option_names():
         res = solve_ik_pareto(robot, target, objectives=criteria, q_current=q_current,
                               rotation=rotation, **options, **collision.solver_options(check))
     index = res.compromise_index() if len(res.X) else None
@@ -75,7 +72,7 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
                        target=target.position, compromise=index, save=stem)
         plots = [f"{stem}.png", f"{stem}.pdf"]
     near = None if check is None else collision.distances(check, res.X)
-    clearance = None if check is None else check[1]
+    clearance = None if check is None else check.clearance
     if args.json:
         print(json.dumps(as_json(robot, target, res, index, plots, near, clearance)))
     else:
@@ -86,7 +83,7 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
         print(f"plot written to {plots[0]} and {plots[1]}")
     if html is not None and len(res.X):
         pareto_explorer(res, robot, html, target=target,
-                        scene=None if check is None else check[0].scene)
+                        scene=None if check is None else check.checker.scene)
         if not args.json:
             print(f"explorer written to {html}")
     return 0 if len(res.X) else 1

@@ -29,7 +29,7 @@ DEFAULT_SAMPLES = 10_000
 
 def body_pair_contacts(model: CollisionModel, Q: np.ndarray) -> dict[tuple[int, int], np.ndarray]:
     """For each checked body pair, whether it penetrates at each row of ``Q``."""
-    checker = CollisionChecker(model=model)
+    checker = CollisionChecker(model=model, self_collision=True)
     D = checker.distances(Q)
     out: dict[tuple[int, int], np.ndarray] = {}
     for k, key in enumerate(checker.pair_bodies):

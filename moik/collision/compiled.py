@@ -4,8 +4,8 @@ The solver's start loop (:func:`moik.solver.starts.run_starts`) tests each conve
 end against the collision check in the same compiled call, so a colliding exact
 answer is rejected and the next start tried without a return to Python. A
 :class:`CollisionSet` carries what :func:`moik.collision.kernels.min_distance_of`
-needs (the chain, the base, the shapes and the pairs) and is typed by numba as one
-value, as :class:`~moik.solver.context.IKContext` is (see there for why a StructRef);
+needs (the arm's :class:`~moik.robots.chain_model.ChainModel`, the shapes and the pairs)
+and is typed by numba as one value (see :mod:`moik.robots.chain_model` for why a StructRef);
 a solve without a check carries ``None`` instead, for which :func:`end_distance`
 compiles to ``inf`` (numba specialises the start loop on the field's type).
 """
@@ -18,7 +18,8 @@ from numba.experimental import structref
 from numba.extending import overload
 
 from moik._jit import StructType, define_struct, jit
-from moik.collision.kernels import min_distance_of
+from moik.collision.kernels import distance_scratch, min_distance_of
+from moik.robots.chain_model import ChainModel
 
 
 @structref.register
@@ -29,28 +30,27 @@ class CollisionSetType(StructType):
 class CollisionSet(structref.StructRefProxy):
     """A checker's arrays for compiled code (build it with :func:`collision_set`).
 
-    Fields: ``origins``, ``link_frames``, ``base``, ``joint_types`` (the chain, as
-    :func:`~moik.collision.kernels.world_frames` takes it), ``body``, ``local``,
-    ``kinds``, ``sizes``, ``pairs`` (the shapes and the pairs evaluated).
+    Fields: ``chain`` (the arm's :class:`~moik.robots.chain_model.ChainModel`), ``body``,
+    ``local``, ``kinds``, ``sizes``, ``pairs`` (the shapes and the pairs evaluated, as
+    :mod:`moik.collision.kernels` describes them).
     """
 
 
-FIELDS = ("origins", "link_frames", "base", "joint_types", "body", "local", "kinds", "sizes",
-          "pairs")
+FIELDS = ("chain", "body", "local", "kinds", "sizes", "pairs")
 define_struct(CollisionSet, CollisionSetType, FIELDS)
 
 
 @jit
-def _new_set(chain, shapes):
+def _new_set(chain, body, local, kinds, sizes, pairs):
     """The compiled constructor (cached)."""
-    return CollisionSet(chain[0], chain[1], chain[2], chain[3], shapes[0], shapes[1],
-                        shapes[2], shapes[3], shapes[4])
+    return CollisionSet(chain, body, local, kinds, sizes, pairs)
 
 
-def collision_set(chain: tuple, shapes: tuple) -> CollisionSet:
-    """A :class:`CollisionSet` from ``(origins, link_frames, base, joint_types)`` and
-    ``(body, local, kinds, sizes, pairs)`` (the arrays of a checker)."""
-    return _new_set(chain, shapes)
+def collision_set(*, chain: ChainModel, body: np.ndarray, local: np.ndarray, kinds: np.ndarray,
+                  sizes: np.ndarray, pairs: np.ndarray) -> CollisionSet:
+    """A :class:`CollisionSet` of an arm and its shapes: ``body (m,)`` int64, ``local
+    (m, 4, 4)``, ``kinds (m,)`` int64, ``sizes (m, 3)`` and ``pairs (p, 2)`` int64."""
+    return _new_set(chain, body, local, kinds, sizes, pairs)
 
 
 def end_distance(cs, q, scratch):
@@ -100,9 +100,8 @@ def _checks_pairs(cs):
 
 @jit
 def set_scratch(cs):
-    """Scratch of :func:`set_min_distance` (``frames``, ``axes``, ``W``) for ``cs``."""
-    dof = cs.joint_types.size
-    return (np.empty((dof + 1, 4, 4)), np.empty((dof, 6)), np.empty((cs.body.size, 4, 4)))
+    """Scratch of :func:`set_min_distance` for ``cs``."""
+    return distance_scratch(cs)
 
 
 @jit
@@ -110,14 +109,4 @@ def set_min_distance(cs, q, scratch):
     """Smallest signed distance of ``q`` over the pairs of ``cs`` (``inf``: none)."""
     if cs.pairs.shape[0] == 0:
         return np.inf
-    return min_distance_of(cs.origins, cs.link_frames, cs.base, cs.joint_types, q,
-                           (cs.body, cs.local, cs.kinds, cs.sizes, cs.pairs), scratch)[0]
-
-
-@jit
-def set_min_distances(cs, Q, dmin):
-    """:func:`set_min_distance` of every row of ``Q`` ``(n, dof)`` into ``dmin`` ``(n,)``
-    (three arguments: a call from Python costs a third of the twelve-array kernel's)."""
-    scratch = set_scratch(cs)
-    for i in range(Q.shape[0]):
-        dmin[i] = set_min_distance(cs, Q[i], scratch)
+    return min_distance_of(cs, q, scratch)[0]

@@ -242,11 +242,9 @@ def urdf_mesh_points(source: Any, robot: Robot, mesh_dir: Any, element: str = "c
 def body_axes(robot: Robot) -> list[list[np.ndarray]]:
     """Candidate capsule axes per body, in its frame: the axes of the joints at its two
     ends and the direction between their axis points (the tool point after the last)."""
-    chain = robot.kinematic_chain
     q = (robot.lower + robot.upper) / 2
     frames, axes = np.empty((robot.dof + 1, 4, 4)), np.empty((robot.dof, 6))
-    world_frames(chain.origins, chain.link_frames, np.array(robot.base), chain.joint_types, q,
-                 frames, axes)
+    world_frames(robot.chain_model, q, frames, axes)
     points = [axes[j, :3] for j in range(robot.dof)] + [frames[-1][:3, 3]]
     out = []
     for body in range(robot.dof + 1):

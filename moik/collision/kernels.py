@@ -1,6 +1,8 @@
 """Batched distances of a robot's shapes and a scene's, compiled (the maths of a model).
 
-A compiled collision set is the shapes of a robot and of a scene in one list: kind,
+A compiled collision set (:class:`~moik.collision.compiled.CollisionSet`, every kernel's
+first argument ``cs``) is the arm's :class:`~moik.robots.chain_model.ChainModel` (``cs.chain``)
+and the shapes of a robot and of a scene in one list: kind,
 ``body`` (0 the base frame, ``j`` the frame of joint ``j`` as :meth:`Robot.frames`
 numbers them, ``-1`` the world), local pose ``(4, 4)`` in that frame, sizes ``(3,)``;
 and the pairs ``(p, 2)`` of shape indices to evaluate. For each joint vector the chain
@@ -28,12 +30,14 @@ from moik.robots.transforms import PRISMATIC
 
 
 @jit
-def world_frames(F, P, base, types, q, frames, axes):
-    """Frames ``(dof + 1, 4, 4)`` (frame 0 = ``base``) and joint axes ``(dof, 6)``.
+def world_frames(chain, q, frames, axes):
+    """Frames ``(dof + 1, 4, 4)`` (frame 0 = the base) and joint axes ``(dof, 6)`` of ``q``
+    (``chain``: a :class:`~moik.robots.chain_model.ChainModel`).
 
     ``axes[j] = (o_j, z_j)``: the point and direction of joint ``j + 1``'s axis.
     """
-    frames[0] = base
+    F, P, types = chain.origins, chain.link_frames, chain.joint_types
+    frames[0] = chain.base
     t = pose_state(F[0])
     for j in range(types.size):
         axes[j, 0], axes[j, 1], axes[j, 2] = t[9], t[10], t[11]
@@ -59,44 +63,52 @@ def place_shapes(frames, body, local, W):
 
 
 @jit
-def pair_distances(F, P, base, types, Q, body, local, kinds, sizes, pairs, out):
+def distance_scratch(cs):
+    """Scratch of :func:`min_distance_of` for ``cs``: ``(frames (dof + 1, 4, 4), axes
+    (dof, 6), W (m, 4, 4))``."""
+    dof = cs.chain.joint_types.size
+    return (np.empty((dof + 1, 4, 4)), np.empty((dof, 6)), np.empty((cs.body.size, 4, 4)))
+
+
+@jit
+def place_all(cs, q, scratch):
+    """Every shape of ``cs`` placed in the world at ``q`` (into ``scratch``'s ``W``)."""
+    frames, axes, W = scratch
+    world_frames(cs.chain, q, frames, axes)
+    place_shapes(frames, cs.body, cs.local, W)
+
+
+@jit
+def pair_distances(cs, Q, out):
     """Signed distance of every pair for every row of ``Q (n, dof)``, into ``out (n, p)``."""
-    dof = types.size
-    frames = np.empty((dof + 1, 4, 4))
-    axes = np.empty((dof, 6))
-    W = np.empty((body.size, 4, 4))
+    scratch = distance_scratch(cs)
+    W = scratch[2]
+    kinds, sizes, pairs = cs.kinds, cs.sizes, cs.pairs
     for i in range(Q.shape[0]):
-        world_frames(F, P, base, types, Q[i], frames, axes)
-        place_shapes(frames, body, local, W)
+        place_all(cs, Q[i], scratch)
         for k in range(pairs.shape[0]):
             a, b = pairs[k, 0], pairs[k, 1]
             out[i, k] = pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])[0]
 
 
 @jit
-def min_distances(F, P, base, types, Q, body, local, kinds, sizes, pairs, dmin, which):
+def min_distances(cs, Q, dmin, which):
     """Smallest pair distance ``dmin (n,)`` and the pair ``which (n,)`` that attains it.
 
     With no pairs, ``dmin`` is ``inf`` and ``which`` is -1.
     """
-    dof = types.size
-    frames = np.empty((dof + 1, 4, 4))
-    axes = np.empty((dof, 6))
-    W = np.empty((body.size, 4, 4))
+    scratch = distance_scratch(cs)
     for i in range(Q.shape[0]):
-        dmin[i], which[i] = min_distance_of(F, P, base, types, Q[i], (body, local, kinds, sizes,
-                                                                        pairs), (frames, axes, W))
+        dmin[i], which[i] = min_distance_of(cs, Q[i], scratch)
 
 
 @jit
-def min_distance_of(F, P, base, types, q, shapes, scratch):
+def min_distance_of(cs, q, scratch):
     """Smallest pair distance of one joint vector and the pair attaining it (``inf``, -1:
-    no pair). ``shapes = (body, local, kinds, sizes, pairs)``; ``scratch = (frames
-    (dof + 1, 4, 4), axes (dof, 6), W (m, 4, 4))``."""
-    body, local, kinds, sizes, pairs = shapes
-    frames, axes, W = scratch
-    world_frames(F, P, base, types, q, frames, axes)
-    place_shapes(frames, body, local, W)
+    no pair); ``scratch`` from :func:`distance_scratch`."""
+    place_all(cs, q, scratch)
+    W = scratch[2]
+    kinds, sizes, pairs = cs.kinds, cs.sizes, cs.pairs
     first, low = -1, np.inf  # the pair of the smallest bound is evaluated first
     for k in range(pairs.shape[0]):
         a, b = pairs[k, 0], pairs[k, 1]
@@ -131,19 +143,19 @@ def _point_velocity(axes, types, j, x, y, z):
 
 
 @jit
-def min_distance_gradients(F, P, base, types, Q, body, local, kinds, sizes, pairs, dmin, grad):
+def min_distance_gradients(cs, Q, dmin, grad):
     """Smallest pair distance ``dmin (n,)`` and its gradient ``grad (n, dof)`` w.r.t. ``q``.
 
     The gradient is that of the pair attaining the minimum (the module doc); with no
     pairs ``dmin`` is ``inf`` and the gradient 0.
     """
+    types = cs.chain.joint_types
     dof = types.size
-    frames = np.empty((dof + 1, 4, 4))
-    axes = np.empty((dof, 6))
-    W = np.empty((body.size, 4, 4))
+    scratch = distance_scratch(cs)
+    axes, W = scratch[1], scratch[2]
+    body, kinds, sizes, pairs = cs.body, cs.kinds, cs.sizes, cs.pairs
     for i in range(Q.shape[0]):
-        world_frames(F, P, base, types, Q[i], frames, axes)
-        place_shapes(frames, body, local, W)
+        place_all(cs, Q[i], scratch)
         best, arg = np.inf, -1
         res = (np.inf, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
         for k in range(pairs.shape[0]):

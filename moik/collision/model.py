@@ -25,9 +25,9 @@ import numpy as np
 
 from moik._validate import flag
 from moik.collision import kernels
-from moik.collision.compiled import CollisionSet, collision_set, set_min_distances
+from moik.collision.compiled import CollisionSet, collision_set
 from moik.collision.shapes import HalfSpace, Shape, shape_arrays
-from moik.exceptions import GeometryError, UnknownNameError
+from moik.exceptions import GeometryError, ParameterError, UnknownNameError
 from moik.robots.chain import Robot
 
 
@@ -149,26 +149,37 @@ class Scene:
                 raise UnknownNameError("obstacle", name, self.obstacles)
 
 
+def keeps_clearance(distances, clearance: float):
+    """Whether signed distances keep ``clearance`` (``distance >= clearance``; NaN never
+    does): the one place moik writes this rule (a bool, or a bool array for an array)."""
+    ok = np.greater_equal(distances, clearance)
+    return bool(ok) if np.ndim(ok) == 0 else ok
+
+
 class CollisionChecker:
     """A model (self-collision) and a scene, compiled for batched distance queries.
 
     Args:
         model: The robot's :class:`CollisionModel`.
         scene: Obstacles (or ``None``).
-        self_collision: Whether the model's checked body pairs are evaluated.
+        self_collision: Whether the model's checked body pairs are evaluated (off by
+            default, as in :func:`~moik.solver.solve_ik`).
 
     The pairs are the robot's checked self pairs (if ``self_collision``) and every robot
     shape against every obstacle; :attr:`pair_names` names them.
     """
 
     def __init__(self, *, model: CollisionModel, scene: Scene | None = None,
-                 self_collision: bool = True) -> None:
+                 self_collision: bool = False) -> None:
         if not isinstance(model, CollisionModel):
             raise GeometryError(f"model must be a CollisionModel, got {type(model).__name__}")
         if scene is not None and not isinstance(scene, Scene):
             raise GeometryError(f"scene must be a Scene, got {type(scene).__name__}")
         self.model, self.scene = model, scene
         self.self_collision = flag("self_collision", self_collision)
+        if scene is None and not self.self_collision:
+            raise ParameterError("a CollisionChecker with nothing to check: pass scene= and/or "
+                                 "self_collision=True")
         robot = model.robot
         items = model.items
         names = [f"{model.links[b]}[{k}]" for k, (b, _) in enumerate(items)]
@@ -192,14 +203,17 @@ class CollisionChecker:
         pairs += [(a, len(items) + o) for a in range(len(items))
                   for o, obstacle in enumerate(obstacles)
                   if (obstacle, model.links[bodies[a]]) not in skip]
-        chain = robot.kinematic_chain
-        self._args = (chain.origins, chain.link_frames, np.array(robot.base, dtype=float),
-                      chain.joint_types)
-        self._shape_args = (np.array(bodies, dtype=np.int64), local, kinds, sizes,
-                            np.array(pairs, dtype=np.int64).reshape(-1, 2))
+        self._shapes = {"body": np.array(bodies, dtype=np.int64), "local": local,
+                        "kinds": kinds, "sizes": sizes,
+                        "pairs": np.array(pairs, dtype=np.int64).reshape(-1, 2)}
         self.shape_names = tuple(names)
         self.pair_names = tuple((names[a], names[b]) for a, b in pairs)
         self.pair_bodies = tuple((bodies[a], bodies[b]) for a, b in pairs)  # -1: the world
+
+    def __getstate__(self) -> dict:
+        """The checker but its :attr:`compiled` value (a numba StructRef does not pickle; it
+        is built again where the checker is unpickled)."""
+        return {k: v for k, v in self.__dict__.items() if k != "compiled"}
 
     @property
     def robot(self) -> Robot:
@@ -216,7 +230,7 @@ class CollisionChecker:
         Q = self.robot.check_q(q)
         Q2 = Q[None] if Q.ndim == 1 else Q
         out = np.empty((Q2.shape[0], self.n_pairs))
-        kernels.pair_distances(*self._args, Q2, *self._shape_args, out)
+        kernels.pair_distances(self.compiled, Q2, out)
         return out[0] if Q.ndim == 1 else out
 
     def min_distance(self, q) -> np.ndarray:
@@ -225,16 +239,14 @@ class CollisionChecker:
         ``inf`` when there is no pair to check.
         """
         Q = self.robot.check_q(q)
-        Q2 = Q[None] if Q.ndim == 1 else Q
-        d, which = np.empty(Q2.shape[0]), np.empty(Q2.shape[0], dtype=np.int64)
-        kernels.min_distances(*self._args, Q2, *self._shape_args, d, which)
+        d = self.min_distance_batch(Q[None] if Q.ndim == 1 else Q)
         return d[0] if Q.ndim == 1 else d
 
     def min_distance_batch(self, Q: np.ndarray) -> np.ndarray:
         """:meth:`min_distance` of a 2-D batch without the finiteness check (hot path)."""
         Q2 = self.robot.kernel_batch(Q)
-        d = np.empty(Q2.shape[0])
-        set_min_distances(self.compiled, Q2, d)
+        d, which = np.empty(Q2.shape[0]), np.empty(Q2.shape[0], dtype=np.int64)
+        kernels.min_distances(self.compiled, Q2, d, which)
         return d
 
     def closest_pair(self, q) -> tuple[float, tuple[str, str] | None]:
@@ -243,7 +255,7 @@ class CollisionChecker:
         if Q.ndim != 1:
             raise GeometryError(f"closest_pair takes one joint vector, got shape {Q.shape}")
         d, which = np.empty(1), np.empty(1, dtype=np.int64)
-        kernels.min_distances(*self._args, Q[None], *self._shape_args, d, which)
+        kernels.min_distances(self.compiled, Q[None], d, which)
         return float(d[0]), (self.pair_names[which[0]] if which[0] >= 0 else None)
 
     def min_distance_and_gradient(self, q) -> tuple[np.ndarray, np.ndarray]:
@@ -251,20 +263,14 @@ class CollisionChecker:
         Q = self.robot.check_q(q)
         Q2 = Q[None] if Q.ndim == 1 else Q
         d, g = np.empty(Q2.shape[0]), np.empty((Q2.shape[0], self.robot.dof))
-        kernels.min_distance_gradients(*self._args, Q2, *self._shape_args, d, g)
+        kernels.min_distance_gradients(self.compiled, Q2, d, g)
         return (d[0], g[0]) if Q.ndim == 1 else (d, g)
 
     @cached_property
     def compiled(self) -> CollisionSet:
         """The checker as one compiled value (:class:`~moik.collision.compiled.CollisionSet`),
         for the solver's start loop."""
-        return collision_set(self._args, self._shape_args)
-
-    @cached_property
-    def arrays(self) -> dict[str, np.ndarray]:
-        """The compiled arrays (for code that calls :mod:`moik.collision.kernels` itself)."""
-        body, local, kinds, sizes, pairs = self._shape_args
-        return {"body": body, "local": local, "kinds": kinds, "sizes": sizes, "pairs": pairs}
+        return collision_set(chain=self.robot.chain_model, **self._shapes)
 
     def world_shapes(self, q) -> list[tuple[str, Shape]]:
         """Every shape placed in the world at one joint vector (for plots and oracles)."""

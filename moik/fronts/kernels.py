@@ -30,46 +30,52 @@ from moik.robots.fk_kernels import chain_pose
 
 
 @jit
-def pose_errors(F, types, q, p_t, code, R_t, angles_t):
-    """``(f1, f2)``: position error and orientation error (metric ``code``) of ``q``."""
-    t = chain_pose(F, types, q)
+def pose_errors(chain, target, q):
+    """``(f1, f2)``: position error and orientation error (the metric of ``target``, a
+    :class:`~moik.kinematics.target_spec.TargetSpec`) of ``q`` on ``chain`` (a
+    :class:`~moik.robots.chain_model.ChainModel`)."""
+    t = chain_pose(chain.origins, chain.joint_types, q)
+    p_t = target.position
     dx, dy, dz = t[9] - p_t[0], t[10] - p_t[1], t[11] - p_t[2]
     rot = (t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8])
-    return math.sqrt(dx * dx + dy * dy + dz * dz), rotation_error(code, rot, R_t, angles_t)
+    return (math.sqrt(dx * dx + dy * dy + dz * dz),
+            rotation_error(target.code, rot, target.rotation, target.angles))
 
 
 @jit
-def batch_pose_errors(F, types, Q, p_t, code, R_t, angles_t, out):
+def batch_pose_errors(chain, target, Q, out):
     """:func:`pose_errors` of every row of ``Q (n, dof)`` into ``out (n, 2)``."""
     for i in range(Q.shape[0]):
-        out[i, 0], out[i, 1] = pose_errors(F, types, Q[i], p_t, code, R_t, angles_t)
+        out[i, 0], out[i, 1] = pose_errors(chain, target, Q[i])
 
 
 @jit
-def squared_errors_and_gradients(F, types, q, p_t, code, R_t, angles_t, h, value, grad):
+def squared_errors_and_gradients(chain, target, q, h, value, grad):
     """``s1 = f1^2``, ``s2 = f2^2`` into ``value (2,)``, their gradients into ``grad (2, dof)``.
 
     Central differences with step ``h`` (radians or the robot's length unit per joint).
     ``q`` is not modified (a copy is perturbed).
     """
     x = q.copy()
-    f1, f2 = pose_errors(F, types, x, p_t, code, R_t, angles_t)
+    f1, f2 = pose_errors(chain, target, x)
     value[0], value[1] = f1 * f1, f2 * f2
     for j in range(x.size):
         x[j] = q[j] + h
-        a1, a2 = pose_errors(F, types, x, p_t, code, R_t, angles_t)
+        a1, a2 = pose_errors(chain, target, x)
         x[j] = q[j] - h
-        b1, b2 = pose_errors(F, types, x, p_t, code, R_t, angles_t)
+        b1, b2 = pose_errors(chain, target, x)
         x[j] = q[j]
         grad[0, j] = (a1 * a1 - b1 * b1) / (2.0 * h)
         grad[1, j] = (a2 * a2 - b2 * b2) / (2.0 * h)
 
 
 @jit
-def pose_equations(F, types, q, p_t, code, R_t, angles_t, m, scale, out):
+def pose_equations(chain, target, q, m, scale, out):
     """The equations of ``f_m = 0`` at ``q`` into ``out (3,)`` (see
-    :meth:`moik.fronts.scalarised.ErrorModel.residual`)."""
-    t = chain_pose(F, types, q)
+    :meth:`moik.fronts.scalarised.ErrorModel.residual`): ``m = 0`` the position
+    (divided by ``scale``), ``m = 1`` the orientation."""
+    t = chain_pose(chain.origins, chain.joint_types, q)
+    p_t, code, R_t, angles_t = target.position, target.code, target.rotation, target.angles
     if m == 0:
         out[0], out[1], out[2] = ((t[9] - p_t[0]) / scale, (t[10] - p_t[1]) / scale,
                                   (t[11] - p_t[2]) / scale)
@@ -94,18 +100,18 @@ def pose_equations(F, types, q, p_t, code, R_t, angles_t, m, scale, out):
 
 
 @jit
-def pose_equations_and_jacobian(F, types, q, p_t, code, R_t, angles_t, m, scale, h, value,
-                                jac):
-    """:func:`pose_equations` into ``value (3,)``, their central-difference Jacobian
-    (step ``h``) into ``jac (3, dof)``."""
+def pose_equations_and_jacobian(chain, target, q, equation, value, jac):
+    """:func:`pose_equations` into ``value (3,)``, their central-difference Jacobian into
+    ``jac (3, dof)``; ``equation = (m, scale, h)`` (``h``: the difference step)."""
+    m, scale, h = equation
     x = q.copy()
     a, b = np.empty(3), np.empty(3)
-    pose_equations(F, types, x, p_t, code, R_t, angles_t, m, scale, value)
+    pose_equations(chain, target, x, m, scale, value)
     for j in range(x.size):
         x[j] = q[j] + h
-        pose_equations(F, types, x, p_t, code, R_t, angles_t, m, scale, a)
+        pose_equations(chain, target, x, m, scale, a)
         x[j] = q[j] - h
-        pose_equations(F, types, x, p_t, code, R_t, angles_t, m, scale, b)
+        pose_equations(chain, target, x, m, scale, b)
         x[j] = q[j]
         for r in range(3):
             jac[r, j] = (a[r] - b[r]) / (2.0 * h)

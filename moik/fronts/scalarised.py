@@ -26,11 +26,8 @@ from moik.fronts.kernels import (
     pose_equations_and_jacobian,
     squared_errors_and_gradients,
 )
-from moik.kinematics.rotation_metrics import (
-    ZYX_EULER_FREE_GAMMA,
-    metric_code,
-    metric_target,
-)
+from moik.kinematics.rotation_metrics import ZYX_EULER_FREE_GAMMA, metric_code
+from moik.kinematics.target_spec import target_spec
 from moik.robots.chain import Robot
 
 
@@ -69,13 +66,11 @@ class ErrorModel:
     """
 
     def __init__(self, robot: Robot, position: np.ndarray, rotation: np.ndarray, metric: str):
-        chain = robot.kinematic_chain
         self.robot = robot
-        self.F, self.types = chain.origins, chain.joint_types
         self.code = metric_code(metric)
-        self.p_t = kernel_array(np.asarray(position, dtype=float))
-        self.R_t = kernel_array(np.asarray(rotation, dtype=float))
-        self.angles_t = metric_target(metric, self.R_t)
+        self.chain = robot.chain_model
+        self.target = target_spec(np.asarray(position, dtype=float),
+                                  np.asarray(rotation, dtype=float), metric=metric)
         self.lower, self.upper = robot.lower.astype(float), robot.upper.astype(float)
         self.scale = np.array([robot.reach ** 2, 1.0])
         self._last: tuple[bytes, np.ndarray, np.ndarray] | None = None
@@ -90,9 +85,8 @@ class ErrorModel:
         ``f_m = pi`` and are told apart by ``f_m``). Central differences, one batched FK call.
         """
         value, jac = np.empty(3), np.empty((3, q.size))
-        pose_equations_and_jacobian(self.F, self.types, kernel_array(q), self.p_t, self.code,
-                                    self.R_t, self.angles_t, m, np.sqrt(self.scale[0]),
-                                    FD_STEP, value, jac)
+        pose_equations_and_jacobian(self.chain, self.target, kernel_array(q),
+                                    (m, np.sqrt(self.scale[0]), FD_STEP), value, jac)
         n = 2 if m == 1 and self.code == ZYX_EULER_FREE_GAMMA else 3
         return value[:n], jac[:n]
 
@@ -100,8 +94,7 @@ class ErrorModel:
         """``(n, 2)``: position and orientation errors of every row of ``Q``."""
         Q = kernel_array(np.atleast_2d(Q))
         out = np.empty((Q.shape[0], 2))
-        batch_pose_errors(self.F, self.types, Q, self.p_t, self.code, self.R_t, self.angles_t,
-                          out)
+        batch_pose_errors(self.chain, self.target, Q, out)
         return out
 
     def squared(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -109,9 +102,8 @@ class ErrorModel:
         key = q.tobytes()
         if self._last is None or self._last[0] != key:
             value, grad = np.empty(2), np.empty((2, q.size))
-            squared_errors_and_gradients(self.F, self.types, kernel_array(q), self.p_t,
-                                         self.code, self.R_t, self.angles_t, FD_STEP, value,
-                                         grad)
+            squared_errors_and_gradients(self.chain, self.target, kernel_array(q), FD_STEP,
+                                         value, grad)
             self._last = (key, value / self.scale, grad / self.scale[:, None])
         return self._last[1], self._last[2]
 

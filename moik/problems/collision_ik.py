@@ -21,7 +21,7 @@ import numpy as np
 from pymoo.core.problem import Problem
 
 from moik._validate import choice, number
-from moik.collision.model import CollisionChecker
+from moik.collision.model import CollisionChecker, keeps_clearance
 from moik.exceptions import GeometryError, ParameterError
 from moik.problems.ik import _IKProblem
 
@@ -65,6 +65,11 @@ class CollisionIK(Problem):
         super().__init__(n_var=problem.n_var, n_obj=problem.n_obj,
                          n_ieq_constr=len(self.group_names), xl=problem.xl.copy(),
                          xu=problem.xu.copy(), vtype=float)
+
+    def keeps(self, distances):
+        """Whether distances keep :attr:`clearance`
+        (:func:`~moik.collision.model.keeps_clearance`)."""
+        return keeps_clearance(distances, self.clearance)
 
     def __getattr__(self, name: str) -> Any:
         # errors(), position_error(), q_start ... of the wrapped problem

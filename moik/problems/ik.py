@@ -25,11 +25,11 @@ from typing import TYPE_CHECKING
 import numpy as np
 from pymoo.core.problem import Problem
 
-from moik._jit import kernel_array
 from moik._lazy import lazy_module
 from moik._validate import positive, real_array
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetError
-from moik.kinematics.rotation_metrics import metric_code, metric_target
+from moik.kinematics.rotation_metrics import metric_code
+from moik.kinematics.target_spec import TargetSpec, target_spec
 from moik.problems.ik_kernels import (
     BI_OBJECTIVE,
     POSITION,
@@ -87,10 +87,25 @@ class _IKProblem(Problem):
         stored: a numba StructRef does not pickle."""
         if not self._evaluates_as_defined():
             return None
-        chain = self.robot.kinematic_chain
-        return new_objectives(chain.origins, chain.joint_types, self._mode, self._p_t,
-                               self._code, self._R_t, self._angles_t, self._weights,
-                               self._q_start)
+        return new_objectives(chain=self.robot.chain_model, target=self.target_spec,
+                              mode=self._mode, weights=self._weights, q_start=self._q_start)
+
+    @property
+    def target_spec(self) -> TargetSpec:
+        """The target and its orientation metric as kernels take them
+        (:class:`~moik.kinematics.target_spec.TargetSpec`; built once, not pickled)."""
+        spec = self.__dict__.get("_target_spec")
+        if spec is None:
+            spec = self.__dict__["_target_spec"] = target_spec(
+                self.target.position, self.target.rotation if self._metric else None,
+                metric=self._metric)
+        return spec
+
+    def __getstate__(self) -> dict:
+        """pymoo's state without the compiled target (a numba StructRef does not pickle)."""
+        state = dict(super().__getstate__())
+        state.pop("_target_spec", None)
+        return state
 
     def _evaluates_as_defined(self) -> bool:
         """Whether ``evaluate`` is this class's own (no subclass overrides it or ``_evaluate``)."""
@@ -120,9 +135,8 @@ class _IKProblem(Problem):
             raise ParameterError("displacement_weight > 0 needs q_start (Eq. 31)")
         super().__init__(n_var=robot.dof, n_obj=self.n_obj_ik, xl=robot.lower.copy(),
                          xu=robot.upper.copy(), vtype=float)
-        self._p_t = kernel_array(np.array(self.target.position))
         self._q_start = np.zeros(robot.dof) if self.q_start is None else self.q_start.copy()
-        self._code, self._R_t, self._angles_t = -1, np.eye(3), np.zeros(3)
+        self._metric: str | None = None  # the orientation metric (None: position only)
         self._weights = np.array([1.0, 0.0, self.displacement_weight])
 
     def _objectives(self, X, mode: int, weights: np.ndarray) -> np.ndarray:
@@ -131,9 +145,8 @@ class _IKProblem(Problem):
         if not all_finite(Q.reshape(-1)):
             raise NonFiniteError(f"{type(self).__name__}: joint values contain NaN or inf")
         out = np.empty((Q.shape[0], 2 if mode == BI_OBJECTIVE else 1))
-        chain = self.robot.kinematic_chain
-        ik_objectives(chain.origins, chain.joint_types, Q, mode, self._p_t, self._code,
-                      self._R_t, self._angles_t, weights, self._q_start, out)
+        ik_objectives(self.robot.chain_model, self.target_spec, Q,
+                      (mode, weights, self._q_start), out)
         return out
 
     def position_error(self, X: np.ndarray) -> np.ndarray:
@@ -163,13 +176,11 @@ class PositionIK(_IKProblem):
 
 class _OrientedIK(_IKProblem):
     def __init__(self, robot, target, *, orientation: str, displacement_weight, q_start):
-        code = metric_code(orientation)
+        metric_code(orientation)  # an unknown name raises before anything else
         self.orientation = orientation
         super().__init__(robot, target, displacement_weight=displacement_weight,
                          q_start=q_start, needs_orientation=True)
-        self._code = code
-        self._R_t = kernel_array(np.array(self.target.rotation))
-        self._angles_t = metric_target(orientation, self._R_t)
+        self._metric = orientation
 
     def errors(self, X: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Position and orientation errors of a batch, each ``(n,)``."""

@@ -27,22 +27,25 @@ POSITION, WEIGHTED_POSE, BI_OBJECTIVE = 0, 1, 2  # what ik_objectives computes
 
 
 @jit
-def ik_objectives(F, types, Q, mode, p_t, code, R_t, angles_t, weights, q_start, out):
-    """The IK objectives of every row of ``Q (n, dof)``, into ``out``.
+def ik_objectives(chain, target, Q, terms, out):
+    """The IK objectives of every row of ``Q``, into ``out``.
 
     Args:
-        F, types: ``KinematicChain.origins`` and ``.joint_types``.
+        chain: The arm (:class:`~moik.robots.chain_model.ChainModel`).
+        target: The target and its orientation metric
+            (:class:`~moik.kinematics.target_spec.TargetSpec`).
         Q: Joint vectors ``(n, dof)``.
-        mode: :data:`POSITION` (``out (n, 1)``: position error), :data:`WEIGHTED_POSE`
-            (``out (n, 1)``: ``w_pos * position + w_ori * orientation``) or
-            :data:`BI_OBJECTIVE` (``out (n, 2)``: position, orientation).
-        p_t: Target position ``(3,)``.
-        code, R_t, angles_t: Orientation metric, as :func:`rotation_error` takes them.
-        weights: ``(w_pos, w_ori, w_disp)``; the displacement term
-            ``w_disp * ||q - q_start||`` (EOSMA Eq. 31) is added to every objective.
-        q_start: ``(dof,)``, read only when ``w_disp != 0``.
+        terms: ``(mode, weights, q_start)``: ``mode`` :data:`POSITION` (``out (n, 1)``:
+            position error), :data:`WEIGHTED_POSE` (``out (n, 1)``:
+            ``w_pos * position + w_ori * orientation``) or :data:`BI_OBJECTIVE`
+            (``out (n, 2)``: position, orientation); ``weights`` ``(w_pos, w_ori, w_disp)``,
+            the displacement term ``w_disp * ||q - q_start||`` (EOSMA Eq. 31) added to every
+            objective; ``q_start`` ``(dof,)``, read only when ``w_disp != 0``.
         out: ``(n, 1)`` or ``(n, 2)``.
     """
+    F, types = chain.origins, chain.joint_types
+    p_t, code, R_t, angles_t = target.position, target.code, target.rotation, target.angles
+    mode, weights, q_start = terms
     W = block_workspace(types.size)
     for start in range(0, Q.shape[0], BLOCK):
         m = min(BLOCK, Q.shape[0] - start)
@@ -78,8 +81,8 @@ class IKObjectivesType(StructType):
 class IKObjectives(structref.StructRefProxy):
     """An IK problem's objectives for compiled code (numba StructRef; made by
     :func:`new_objectives`, e.g. through ``compiled_objectives()`` of the problems in
-    :mod:`moik.problems.ik`): the arguments of :func:`ik_objectives` but the rows, which
-    :func:`moik._jit.objectives_row` takes."""
+    :mod:`moik.problems.ik`): the arm, the target and the terms of :func:`ik_objectives`,
+    whose rows :func:`moik._jit.objectives_row` takes."""
 
     def write_row(self, Q, out, i: int) -> None:
         """The objectives of row ``i`` of ``Q`` into ``out[i]`` (from Python: what
@@ -87,14 +90,19 @@ class IKObjectives(structref.StructRefProxy):
         _write_row(self, Q, out, i)
 
 
-define_struct(IKObjectives, IKObjectivesType,
-              ["origins", "types", "mode", "p_t", "code", "R_t", "angles_t", "weights", "q_start"])
+define_struct(IKObjectives, IKObjectivesType, ["chain", "target", "mode", "weights", "q_start"])
 
 
 @jit
-def new_objectives(origins, types, mode, p_t, code, R_t, angles_t, weights, q_start):
+def _new_objectives(chain, target, mode, weights, q_start):
     """The compiled constructor (cached; the proxy's own would compile in every process)."""
-    return IKObjectives(origins, types, mode, p_t, code, R_t, angles_t, weights, q_start)
+    return IKObjectives(chain, target, mode, weights, q_start)
+
+
+def new_objectives(*, chain, target, mode: int, weights, q_start) -> IKObjectives:
+    """The :class:`IKObjectives` of an arm (``ChainModel``), a target (``TargetSpec``) and
+    the terms of :func:`ik_objectives`."""
+    return _new_objectives(chain, target, mode, weights, q_start)
 
 
 @overload(objectives_row)
@@ -103,8 +111,8 @@ def _objectives_row(spec, Q, out, i):
     row ``i``."""
     if isinstance(spec, IKObjectivesType):
         def impl(spec, Q, out, i):
-            ik_objectives(spec.origins, spec.types, Q[i:i + 1], spec.mode, spec.p_t, spec.code,
-                          spec.R_t, spec.angles_t, spec.weights, spec.q_start, out[i:i + 1])
+            ik_objectives(spec.chain, spec.target, Q[i:i + 1],
+                          (spec.mode, spec.weights, spec.q_start), out[i:i + 1])
         return impl
     return None
 

@@ -19,27 +19,13 @@ from __future__ import annotations
 import numpy as np
 from pymoo.core.problem import Problem
 
-from moik._validate import finite_array, positive
 from moik.exceptions import ParameterError
 from moik.kinematics.criteria import Criterion, build_criteria
 from moik.kinematics.orientation import check_rotation
+from moik.kinematics.tolerance import Tolerance
 from moik.problems.ik import BiObjectiveIK, PositionIK
 from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.chain import Robot
-
-
-def tolerance_pair(tol, robot: Robot) -> tuple[float, float]:
-    """``(position, orientation)`` tolerances: a number ``t`` means ``t * reach`` and ``t`` rad.
-
-    Raises:
-        ParameterError: Not a positive number nor a pair of them.
-    """
-    if np.ndim(tol) == 0:
-        t = positive("tol", tol)
-        return t * robot.reach, t
-    pair = finite_array("tol", tol, shape=(2,), error=ParameterError)
-    return (positive("tol[0] (position tolerance)", pair[0]),
-            positive("tol[1] (orientation tolerance)", pair[1]))
 
 
 class ParetoIK(Problem):
@@ -55,7 +41,8 @@ class ParetoIK(Problem):
         rotation: The preferred rotation ``orientation`` measures against
             (position targets).
         tol: A number ``t`` (position <= ``t * reach``, orientation <= ``t`` rad)
-            or a pair (position in the robot's unit, rad).
+            or a pair (position in the robot's unit, rad), as ``solve_ik`` takes it
+            (:meth:`~moik.kinematics.tolerance.Tolerance.of`: the same values refused).
 
     Attributes:
         criteria: The :class:`Criterion` objects, in objective order.
@@ -85,7 +72,8 @@ class ParetoIK(Problem):
         self.criteria: tuple[Criterion, ...] = build_criteria(
             objectives, robot, q_current=q_current, rotation=self.rotation,
             position_only=position_only)
-        self.tol_position, self.tol_orientation = tolerance_pair(tol, robot)
+        self.tol = Tolerance.of(tol, robot.reach)
+        self.tol_position, self.tol_orientation = self.tol
         self._signs = np.array([c.sign for c in self.criteria])
         self._errors = PositionIK(robot, self.target) if position_only else BiObjectiveIK(
             robot, self.target)

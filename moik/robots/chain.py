@@ -46,9 +46,11 @@ UNITS = checks.UNITS
 JOINT_TYPES = checks.JOINT_TYPES
 if TYPE_CHECKING:
     import moik._jit as _jit
+    from moik.robots import chain_model as chain_models
     from moik.robots import fk_kernels
 else:  # loaded at the first FK: describing a robot needs no numba (moik._lazy)
     _jit = lazy_module("moik._jit")
+    chain_models = lazy_module("moik.robots.chain_model")
     fk_kernels = lazy_module("moik.robots.fk_kernels")
 _IDENTITY = np.eye(4)
 _IDENTITY.setflags(write=False)
@@ -151,6 +153,11 @@ class Robot:
         checks.warn_if_degrees(self.name, cols, np.array([t == "prismatic" for t in types]),
                                stacklevel=3)
 
+    def __getstate__(self) -> dict:
+        """The fields and cached values but :attr:`chain_model` (a numba StructRef does not
+        pickle; it is built again where the robot is unpickled)."""
+        return {k: v for k, v in self.__dict__.items() if k != "chain_model"}
+
     def __setstate__(self, state: dict) -> None:
         """Unpickled, the arrays are read-only again, as the constructor leaves them (and
         so of the numba types kernels were compiled for in the pickling process)."""
@@ -222,6 +229,14 @@ class Robot:
         types = np.where(self.is_prismatic, PRISMATIC, REVOLUTE)
         return KinematicChain(origins=self.chain_origins(), joint_types=types,
                               link_frames=links)
+
+    @cached_property
+    def chain_model(self) -> chain_models.ChainModel:
+        """The arm as the one compiled record every kernel outside :mod:`moik.algorithms`
+        takes (:class:`~moik.robots.chain_model.ChainModel`: the chain, base, limits and
+        ``1 / reach``; built once)."""
+        return chain_models.chain_model(self.kinematic_chain, self.base, self.lower,
+                                        self.upper, self.reach)
 
     def with_locked_joints(self, locked: dict[int, float]) -> Robot:
         """The robot with joints ``{index: value}`` fixed (0-based indices).

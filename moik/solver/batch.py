@@ -23,18 +23,14 @@ from moik._validate import finite_array
 from moik.exceptions import ParameterError, ShapeError, TargetError
 from moik.kinematics.criteria import nearest_copies
 from moik.kinematics.orientation import check_rotation
+from moik.kinematics.tolerance import Tolerance
 from moik.problems.targets import Target
 from moik.robots.catalog import as_robot
 from moik.solver.collision import collision_guard
 from moik.solver.context import ik_context
 from moik.solver.lm_precompile import precompile as precompile_starts
 from moik.solver.options import STARTS_KEY, search_options, seed_sequence
-from moik.solver.session import (
-    LM_ITERATIONS,
-    STOP_FRACTION,
-    pose_errors,
-    tolerances,
-)
+from moik.solver.session import pose_errors
 from moik.solver.solve_ik import FIRST_STARTS, solve_ik
 from moik.solver.start_streams import draw_rows, start_streams
 from moik.solver.starts import PATIENT, run_batch
@@ -133,7 +129,7 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=No
                             clearance=clearance, collision=collision)
     check: dict[str, Any] = ({} if guard is None else
                              {"collision": guard.checker, "clearance": guard.clearance})
-    tol_pos, tol_ori = tolerances(tol, robot)
+    tolerance = Tolerance.of(tol, robot.reach)
     positions, rotations = _targets(targets)
     n = len(positions)
     qc = None
@@ -148,7 +144,7 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=No
     out_Q, solved = np.empty((n, robot.dof)), np.zeros(n, dtype=np.bool_)
     n_evals = np.zeros(n, dtype=np.int64)
     if opts.polish and (qc is not None or opts.starts):
-        _first_stage(robot, positions, rotations, qc, opts, (tol_pos, tol_ori), root,
+        _first_stage(robot, positions, rotations, qc, opts, tolerance, root,
                      guard, (out_Q, solved, n_evals))
     if qc is not None:
         out_Q[solved] = nearest_copies(robot, out_Q[solved], qc[solved])
@@ -158,10 +154,10 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=No
         k = np.flatnonzero(solved)
         p_k, o_k = pose_errors(robot, (positions[k], None if rotations is None
                                        else rotations[k]), out_Q[k])
-        ok = (p_k <= tol_pos) & (o_k <= tol_ori)
+        ok = tolerance.certifies(p_k, o_k)
         if guard is not None:
             dist[k] = guard.distances(out_Q[k])
-            ok &= dist[k] >= guard.clearance
+            ok &= guard.keeps(dist[k])
         pos[k], ori[k], solved[k] = p_k, o_k, ok
         status[k[ok]] = "solved"
     for i in np.flatnonzero(~solved):  # the hard tail: the whole of solve_ik
@@ -188,8 +184,7 @@ def _first_stage(robot, positions, rotations, qc, opts, tol, root, guard, out):
     out_Q, solved, n_evals = out
     n, dof = len(positions), robot.dof
     first = Target(positions[0], None if rotations is None else rotations[0])
-    ctx = ik_context(robot, first, stop=(STOP_FRACTION * tol[0], STOP_FRACTION * tol[1]),
-                     distinct=opts.distinct, max_iter=LM_ITERATIONS,
+    ctx = ik_context(robot, first, stop=tol.stop, distinct=opts.distinct,
                      collision=None if guard is None else guard.checker.compiled,
                      clearance=0.0 if guard is None else guard.clearance)
     targets = (kernel_array(np.tile(np.eye(3), (n, 1, 1)) if rotations is None else rotations),

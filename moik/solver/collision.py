@@ -67,9 +67,14 @@ class CollisionGuard:
         """Smallest signed distance of each row of ``Q`` (``(n,)``; ``inf``: no pair)."""
         return self.checker.min_distance_batch(np.atleast_2d(np.asarray(Q, dtype=float)))
 
+    def keeps(self, distances):
+        """Whether signed distances keep the clearance
+        (:func:`~moik.collision.model.keeps_clearance`)."""
+        return collision_models.keeps_clearance(distances, self.clearance)
+
     def free(self, Q: np.ndarray) -> np.ndarray:
         """Whether each row of ``Q`` keeps the clearance (``(n,)`` bool)."""
-        return self.distances(Q) >= self.clearance
+        return self.keeps(self.distances(Q))
 
 
 def same_arm(a: Robot, b: Robot) -> bool:

@@ -1,34 +1,20 @@
 """The constants of one solve (:class:`IKContext`), the scratch of LM (:class:`LMWorkspace`).
 
 Pinocchio's Model/Data split: the context is what a solve knows and never changes
-(the chain, its joint types and limits, the target, ``1 / reach``, the stopping and
-acceptance tolerances, the distinct-solution threshold), built in exactly one place,
-:func:`ik_context`, from a :class:`~moik.robots.chain.Robot` and a
-:class:`~moik.problems.targets.Target`; the workspace is the scratch the
-Levenberg-Marquardt kernels (:mod:`moik.solver.lm`) write into. Every solver kernel
-takes ``(ctx, ws, ...)`` instead of a dozen positional arrays, so a swapped
-``stop_position`` / ``stop_orientation`` cannot compile silently.
-
-Why these numba types (measured on this machine, one call from Python, median):
-a ``NamedTuple`` passed from Python costs 7-16 us of numba's ``typeof`` per call (its
-fields are typed one by one in Python), against 4-5 us for the 20 positional arrays it
-replaces, and a jitclass cannot be cached on disk. A numba ``StructRef`` is typed by
-one attribute (dispatch as cheap as the positional call), is cacheable, and is built by
-a cached compiled constructor (about 2 us); so the context is a StructRef. The
-workspace never crosses into Python: :func:`lm_workspace` builds it inside the compiled
-start loop, once per call instead of once per start. It is a StructRef too, not a
-NamedTuple of its 15 arrays: every kernel that takes a tuple unpacks, increfs and
-decrefs all 15 at each call, code numba types, lowers and LLVM optimises again in each
-of them (measured: a cold first solve compiles in about a tenth less CPU with the
-StructRef; the solve times are the same).
+(the arm's :class:`~moik.robots.chain_model.ChainModel`, the target's
+:class:`~moik.kinematics.target_spec.TargetSpec`, the stopping and acceptance
+tolerances, the distinct-solution threshold, the collision check), built in exactly
+one place, :func:`ik_context`; the workspace is the scratch the Levenberg-Marquardt
+kernels (:mod:`moik.solver.lm`) write into. Every solver kernel takes ``(ctx, ws, ...)``
+instead of a dozen positional arrays. Both are numba StructRefs (typed by one attribute,
+cached on disk; see :mod:`moik.robots.chain_model`); the workspace never crosses into
+Python: :func:`lm_workspace` builds it inside the compiled start loop.
 
 Collision terms: the context carries the solve's
 :class:`~moik.collision.compiled.CollisionSet` and clearance; the start loop tests an
-accepted end against them (:func:`moik.solver.starts.run_starts`). Hinge residual rows on
-distance would go in :func:`moik.solver.lm.residual` (after the 6 pose rows, with ``r``
-and ``Jr`` sized for them in the workspace). A context is not picklable or copyable (numba
-StructRef): objects that pymoo deep-copies build theirs per call, as
-:class:`~moik.solver.pareto_search.Projector` does.
+accepted end against them (:func:`moik.solver.starts.run_starts`). A context is not
+picklable or copyable (numba StructRef): objects that pymoo deep-copies build theirs per
+call, as :class:`~moik.solver.pareto_search.Projector` does.
 """
 
 from __future__ import annotations
@@ -36,12 +22,14 @@ from __future__ import annotations
 import numpy as np
 from numba.experimental import structref
 
-from moik._jit import StructType, define_struct, jit, kernel_array
+from moik._jit import StructType, define_struct, jit
 from moik.collision.compiled import CollisionSet
+from moik.kinematics.target_spec import TargetSpec, target_spec
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
 
 NO_STOP = -1.0  # a stopping tolerance that never converges (the front's scalarisations)
+LM_ITERATIONS = 30  # Levenberg-Marquardt iterations per start (first stage, projections)
 
 
 @structref.register
@@ -54,11 +42,9 @@ class IKContext(structref.StructRefProxy):
 
     Fields (read in compiled code; reading one from Python compiles a getter, so
     Python code keeps its own copies):
-        origins, joint_types: The chain (``KinematicChain.origins``, ``.joint_types``).
-        lower, upper: Joint limits.
-        rotation, position: The target (identity rotation for a position target).
-        has_rotation: Whether the target has a rotation.
-        inv_reach: ``1 / robot.reach`` (the residual's position scale ``1 / L``).
+        chain: The arm (:class:`~moik.robots.chain_model.ChainModel`).
+        target: The target (:class:`~moik.kinematics.target_spec.TargetSpec`; the solver
+            compares rotations by its own residual and the geodesic angle).
         stop_position, stop_orientation: A start has converged when its errors (robot
             unit, rad) are at most these (:data:`NO_STOP`: never).
         tol_position, tol_orientation: A re-checked end is a solution when its errors
@@ -73,9 +59,8 @@ class IKContext(structref.StructRefProxy):
     """
 
 
-FIELDS = ("origins", "joint_types", "lower", "upper", "rotation", "position", "has_rotation",
-          "inv_reach", "stop_position", "stop_orientation", "tol_position", "tol_orientation",
-          "distinct", "max_iter", "collision", "clearance")
+FIELDS = ("chain", "target", "stop_position", "stop_orientation", "tol_position",
+          "tol_orientation", "distinct", "max_iter", "collision", "clearance")
 define_struct(IKContext, IKContextType, FIELDS)
 
 
@@ -83,31 +68,30 @@ define_struct(IKContext, IKContextType, FIELDS)
 def _new_context(chain, target, stops, accept, collision, sizes):
     """The compiled constructor (cached; the proxy's own would compile in every process).
     ``collision`` is an argument of its own: numba types a StructRef inside a tuple
-    argument in Python (about 50 us a call, measured), one on its own in C (about 2 us)."""
-    return IKContext(chain[0], chain[1], chain[2], chain[3], target[0], target[1], target[2],
-                     stops[0], stops[1], stops[2], accept[0], accept[1], sizes[0], sizes[1],
-                     collision, accept[2])
+    argument in Python, one on its own in C (much cheaper)."""
+    return IKContext(chain, target, stops[0], stops[1], accept[0], accept[1], sizes[0],
+                     sizes[1], collision, accept[2])
 
 
-def target_arrays(target: Target) -> tuple[np.ndarray, np.ndarray, bool]:
-    """``(rotation, position, has_rotation)`` of a target as kernel arrays (the one
-    conversion; the identity rotation for a position target)."""
-    has_rot = target.rotation is not None
-    return (kernel_array(target.rotation if has_rot else np.eye(3)),
-            kernel_array(target.position), has_rot)
+def solver_target(target: Target) -> TargetSpec:
+    """The :class:`~moik.kinematics.target_spec.TargetSpec` of a target as the solver's
+    kernels take it (no metric: the solver compares rotations itself)."""
+    return target_spec(target.position, target.rotation)
 
 
 def ik_context(robot: Robot, target: Target, *, stop: tuple[float, float],
                tol: tuple[float, float] = (0.0, 0.0), distinct: float = 0.1,
-               max_iter: int = 30, collision: CollisionSet | None = None,
+               max_iter: int = LM_ITERATIONS, collision: CollisionSet | None = None,
                clearance: float = 0.0) -> IKContext:
     """The :class:`IKContext` of ``robot`` and ``target`` (the one place it is built).
 
     Args:
         robot, target: The problem.
         stop: ``(position, orientation)`` at which a start has converged (robot unit,
-            rad; :data:`NO_STOP` for never).
-        tol: ``(position, orientation)`` within which a re-checked end is a solution.
+            rad; :data:`NO_STOP` for never); a :class:`~moik.kinematics.tolerance.Tolerance`'s
+            :attr:`~moik.kinematics.tolerance.Tolerance.stop`.
+        tol: ``(position, orientation)`` within which a re-checked end is a solution (a
+            :class:`~moik.kinematics.tolerance.Tolerance`).
         distinct: Joint-space distance above which two solutions are distinct.
         max_iter: Levenberg-Marquardt iterations per start.
         collision, clearance: An end is accepted only if its smallest distance over the
@@ -115,10 +99,8 @@ def ik_context(robot: Robot, target: Target, *, stop: tuple[float, float],
             :attr:`~moik.collision.CollisionChecker.compiled`) is at least ``clearance``;
             ``None``: no check.
     """
-    chain = robot.kinematic_chain
-    return _new_context((chain.origins, chain.joint_types, robot.lower, robot.upper),
-                        target_arrays(target),
-                        (1.0 / robot.reach, float(stop[0]), float(stop[1])),
+    return _new_context(robot.chain_model, solver_target(target),
+                        (float(stop[0]), float(stop[1])),
                         (float(tol[0]), float(tol[1]), float(clearance)),
                         collision,
                         (float(distinct), int(max_iter)))
@@ -127,8 +109,8 @@ def ik_context(robot: Robot, target: Target, *, stop: tuple[float, float],
 @jit
 def retarget(ctx, rotation, position):
     """Point ``ctx`` at another target of the same kind (a batch: one context, many targets)."""
-    ctx.rotation = rotation
-    ctx.position = position
+    ctx.target.rotation = rotation
+    ctx.target.position = position
 
 
 @structref.register

@@ -63,15 +63,15 @@ def residual(ctx, ws, q, scale, r, Jr):
     ``ws.J`` and ``ws.M`` are scratch.
     """
     s_pos, s_rot = scale
-    T, J, M, pt, Rt = ws.T, ws.J, ws.M, ctx.position, ctx.rotation
-    pose_jacobian_into(ctx.origins, ctx.joint_types, q, T, J)
+    T, J, M, pt, Rt = ws.T, ws.J, ws.M, ctx.target.position, ctx.target.rotation
+    pose_jacobian_into(ctx.chain.origins, ctx.chain.joint_types, q, T, J)
     dof = q.shape[0]
     for a in range(3):
         r[a] = (T[a, 3] - pt[a]) * s_pos
         for j in range(dof):
             Jr[a, j] = J[a, j] * s_pos
     cost = r[0] * r[0] + r[1] * r[1] + r[2] * r[2]
-    if not ctx.has_rotation:
+    if not ctx.target.has_rotation:
         for a in range(3, 6):
             r[a] = 0.0
             for j in range(dof):
@@ -155,7 +155,7 @@ def damped_step(ctx, ws, lam, q):
     limit that would leave it held fixed (a revolute joint whose range spans a full turn
     is never held: it wraps round). Returns False when the system is not solvable."""
     JtJ, g, A, gb, blocked, step = ws.JtJ, ws.g, ws.A, ws.gb, ws.blocked, ws.step
-    lo, hi, types = ctx.lower, ctx.upper, ctx.joint_types
+    lo, hi, types = ctx.chain.lower, ctx.chain.upper, ctx.chain.joint_types
     dof = q.shape[0]
     mean_diag = 0.0
     for i in range(dof):
@@ -194,7 +194,7 @@ def lm_start(ctx, ws, q, scale, stall_ratio):
     (1: never abandoned for slow progress). Returns ``(converged, cost, n_eval)``.
     """
     dof = q.shape[0]
-    lo, hi, types = ctx.lower, ctx.upper, ctx.joint_types
+    lo, hi, types = ctx.chain.lower, ctx.chain.upper, ctx.chain.joint_types
     r, Jr, rt, Jrt, trial = ws.r, ws.Jr, ws.rt, ws.Jrt, ws.trial
     JtJ, g, step = ws.JtJ, ws.g, ws.step
     stop_pos, stop_ori, max_iter = ctx.stop_position, ctx.stop_orientation, ctx.max_iter

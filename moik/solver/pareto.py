@@ -229,7 +229,7 @@ def _result(problem: ParetoIK, projector: Projector, n_solutions: int, redundant
         X_all, F_all = X_all[keep], F_all[keep]
     X = X_all[spread_subset(F_all, n_solutions)]
     pos, ori = pose_errors(problem.robot, problem.target, X, reference=True)
-    exact = (pos <= problem.tol_position) & (ori <= problem.tol_orientation)
+    exact = problem.tol.certifies(pos, ori)
     X, pos, ori = X[exact], pos[exact], ori[exact]
     F = problem.natural(X)
     order = np.argsort(problem.minimization_form(F)[:, 0], kind="stable")

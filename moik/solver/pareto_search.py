@@ -26,11 +26,9 @@ from moik.kinematics.criteria import nearest_copies
 from moik.problems.pareto_ik import ParetoIK
 from moik.problems.targets import Target
 from moik.solver.collision import CollisionGuard
-from moik.solver.context import ik_context
-from moik.solver.session import STOP_FRACTION
+from moik.solver.context import LM_ITERATIONS, ik_context
 from moik.solver.starts import PATIENT, UNLIMITED, multistart, run_starts
 
-LM_ITERATIONS = 30  # per projection (the first stage of solve_ik uses as many)
 BRANCH_STARTS = 256  # random starts that enumerate a non-redundant arm's branches
 MAX_BRANCHES = 16  # a general 6R arm has at most 16 solutions per pose
 BRANCH_DISTINCT = 0.1  # joint-space distance (modulo 2 pi) between distinct branches
@@ -57,8 +55,7 @@ class Projector:
     def __init__(self, problem: ParetoIK, guard: CollisionGuard | None = None):
         self.problem, self.robot, self.guard = problem, problem.robot, guard
         self._has_rot = problem.target.rotation is not None
-        self._stops = (STOP_FRACTION * problem.tol_position,
-                       STOP_FRACTION * problem.tol_orientation)
+        self._stops = problem.tol.stop
         self.n_eval = self.n_exact = 0
         self.X = np.empty((0, self.robot.dof))
         self.F = np.empty((0, problem.n_obj))
@@ -121,8 +118,9 @@ class Projector:
             self.worst = np.maximum(self.worst, F.max(axis=0))
             self.n_exact += len(P)
         if len(P) and self.guard is not None:  # the constraint form: infeasible rows
-            depth = self.guard.clearance - self.guard.distances(P)
-            bad = ~(depth <= 0.0)
+            d = self.guard.distances(P)
+            depth = self.guard.clearance - d
+            bad = ~self.guard.keeps(d)
             F[bad] = self.worst + (1.0 + np.abs(self.worst)) * (1.0 + depth[bad, None])
             P, F_free = P[~bad], F[~bad]
         else:
@@ -218,8 +216,7 @@ def enumerate_branches(projector: Projector, starts: np.ndarray) -> None:
     """The distinct solutions (modulo 2 pi) reached by LM from ``starts`` enter the archive."""
     problem = projector.problem
     res = multistart(projector.robot, problem.target, starts,
-                     stop_position=STOP_FRACTION * problem.tol_position,
-                     stop_orientation=STOP_FRACTION * problem.tol_orientation,
+                     stop_position=problem.tol.stop[0], stop_orientation=problem.tol.stop[1],
                      want=MAX_BRANCHES, distinct=BRANCH_DISTINCT, max_iter=LM_ITERATIONS)
     projector.n_eval += res.n_eval
     projector.objectives(projector.copies(res.solutions))

@@ -21,12 +21,13 @@ import numpy as np
 
 from moik._validate import integer, keywords, positive
 from moik.exceptions import ParameterError, TargetError
+from moik.kinematics.tolerance import Tolerance
 from moik.problems.targets import as_target, check_unit_range
 from moik.robots.chain import Robot
 from moik.solver.collision import CollisionGuard, collision_guard
 from moik.solver.options import SEARCH_DEFAULTS, SearchOptions, seed_sequence
 from moik.solver.polish import polish
-from moik.solver.session import pose_errors, tolerances
+from moik.solver.session import pose_errors
 from moik.solver.solve_ik import solve_ik
 
 PASSED_OPTIONS = tuple(name for name in SEARCH_DEFAULTS if name != "n_solutions")
@@ -112,7 +113,7 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
     SearchOptions(**{**SEARCH_DEFAULTS, **solve_options})  # validated before any solve
     max_step = None if max_step is None else positive("max_step", max_step)
     first_branches = integer("first_branches", first_branches, minimum=1)
-    tol_pos, tol_ori = tolerances(tol, robot)
+    tolerance = Tolerance.of(tol, robot.reach)
     guard = collision_guard(robot, scene=scene, self_collision=self_collision,
                             clearance=clearance, collision=collision)
     if guard is not None:
@@ -124,7 +125,7 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
     statuses: list[str] = []
     warm_flags: list[bool] = []
     n_eval = 0
-    warm = _WarmStart(robot, tol_pos, tol_ori, max_step, guard)
+    warm = _WarmStart(robot, tolerance, max_step, guard)
     tracked: list[np.ndarray] = []  # warm-start solutions already found by the branch choice
     for i, target in enumerate(targets):
         q, status, used_warm = None, None, False
@@ -153,9 +154,9 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
     steps = (np.max(np.abs(np.diff(Q_path, axis=0)), axis=1) if len(Q_path) > 1
              else np.zeros(0))
     dists = None if guard is None else guard.distances(Q_path)
-    success = (pos_err <= tol_pos) & (ori_err <= tol_ori)
+    success = tolerance.certifies(pos_err, ori_err)
     if dists is not None:
-        success &= dists >= guard.clearance  # type: ignore[union-attr]
+        success &= guard.keeps(dists)  # type: ignore[union-attr]
     return PathResult(Q=Q_path, position_errors=pos_err, orientation_errors=ori_err,
                       success=success, min_distances=dists,
                       statuses=tuple(statuses), warm_started=np.array(warm_flags),
@@ -166,9 +167,9 @@ def solve_path(robot: Robot, targets, *, q_start=None, max_step: float | None = 
 class _WarmStart:
     """Warm-started refinement from a neighbour's solution, with its FK count."""
 
-    def __init__(self, robot: Robot, tol_pos: float, tol_ori: float, max_step: float | None,
+    def __init__(self, robot: Robot, tol: Tolerance, max_step: float | None,
                  guard: CollisionGuard | None = None):
-        self.robot, self.tol_pos, self.tol_ori, self.max_step = robot, tol_pos, tol_ori, max_step
+        self.robot, self.tol, self.max_step = robot, tol, max_step
         self.guard = guard
         self.n_eval = 0
 
@@ -176,11 +177,12 @@ class _WarmStart:
         """The refined solution of ``target`` from ``prev``, or None if it misses
         the tolerance or moves a joint by more than ``max_step``."""
         out = polish(self.robot, target, prev, length=self.robot.reach,
-                     stop_position=1e-3 * self.tol_pos, stop_orientation=1e-3 * self.tol_ori)
+                     stop_position=self.tol.polish_stop[0],
+                     stop_orientation=self.tol.polish_stop[1])
         self.n_eval += out.n_eval
         pos, ori = (float(v[0]) for v in pose_errors(self.robot, target, out.q))
         step = float(np.max(np.abs(out.q - prev)))
-        ok = pos <= self.tol_pos and ori <= self.tol_ori
+        ok = self.tol.certifies(pos, ori)
         if ok and self.guard is not None:
             ok = bool(self.guard.free(out.q)[0])
         return out.q if ok and (self.max_step is None or step <= self.max_step) else None

@@ -76,27 +76,60 @@ class IKResult:
         return self.success and len(self.solutions) < self.n_requested
 
 
-def ik_result(session: SolveSession, q_current, t0: float, searched_out: bool, front, front_q,
-              proven: bool = False) -> IKResult:
-    """The :class:`IKResult` of a finished solve (``t0``: its start, ``perf_counter``)."""
-    robot, target, guard = session.robot, session.target, session.guard
-    errors: tuple[float, float] | None = None
+@dataclass(frozen=True)
+class Verdict:
+    """What a finished solve concluded (:func:`verdict`), before its result is assembled.
+
+    Attributes:
+        status: As :attr:`IKResult.status`.
+        q: The answer (a solution, the farthest-from-contact exact answer, or the best
+            candidate).
+        solutions: The distinct solutions kept ``(k, dof)`` (ordered as returned).
+        errors: ``(position, orientation)`` of ``q``, recomputed by FK.
+        distances: With a collision check, the smallest distance of each solution
+            (``None`` without one).
+        min_distance: With a collision check, that of ``q`` (``None`` without one).
+        front, front_q: The front of an unsolved pose (``None`` otherwise).
+    """
+
+    status: str
+    q: np.ndarray
+    solutions: np.ndarray
+    errors: tuple[float, float]
+    distances: np.ndarray | None
+    min_distance: float | None
+    front: np.ndarray | None
+    front_q: np.ndarray | None
+
+
+def verdict(session: SolveSession, q_current, searched_out: bool, front, front_q,
+            proven: bool = False) -> Verdict:
+    """The verdict of a finished solve; the session is not changed.
+
+    Solutions closer than the clearance (recomputed at the end, as the errors are) are
+    dropped; with none left, exact answers in collision make ``"collides"``, else the
+    status is "unreachable" only for a proof or a full search that ended far from the
+    target (its errors re-checked by the independent reference FK), else "not-converged".
+    """
+    robot, target, guard, tol = session.robot, session.target, session.guard, session.tol
+    found, found_errors = session.found, session.found_errors
     dists = None  # the solutions' distances, recomputed at the end as the errors are
-    if session.found and guard is not None:
-        dists = guard.distances(np.array(session.found))
-        keep = dists >= guard.clearance
-        session.found = [q for q, k in zip(session.found, keep, strict=True) if k]
-        session.found_errors = [e for e, k in zip(session.found_errors, keep, strict=True) if k]
+    if found and guard is not None:
+        dists = guard.distances(np.array(found))
+        keep = guard.keeps(dists)
+        found = [q for q, k in zip(found, keep, strict=True) if k]
+        found_errors = [e for e, k in zip(found_errors, keep, strict=True) if k]
         dists = dists[keep]
-    if session.found:
-        sols = np.array(session.found)
+    errors: tuple[float, float] | None = None
+    if found:
+        sols = np.array(found)
         if q_current is not None:  # 2 pi copies nearest to the current configuration first
             sols = nearest_copies(robot, sols, q_current)
             order = np.argsort(np.linalg.norm(sols - q_current, axis=1), kind="stable")
             sols = sols[order]
             dists = None if dists is None else dists[order]
         else:
-            errors = session.found_errors[0]
+            errors = found_errors[0]
         q, status, front, front_q = sols[0], "solved", None, None
     elif session.colliding is not None:  # exact answers, all in collision
         sols, status, front, front_q = np.empty((0, robot.dof)), "collides", None, None
@@ -104,8 +137,7 @@ def ik_result(session: SolveSession, q_current, t0: float, searched_out: bool, f
     else:
         assert session.best is not None  # every stage considers at least one candidate
         sols = np.empty((0, robot.dof))
-        tol = session.tol_pos / robot.reach + session.tol_ori
-        far = session.best[0] > UNREACHABLE_FACTOR * tol
+        far = session.best[0] > UNREACHABLE_FACTOR * tol.scaled(robot.reach)
         status = "unreachable" if proven or (searched_out and far) else "not-converged"
         q = session.best[1]
         if status == "unreachable" and front is not None:
@@ -113,26 +145,37 @@ def ik_result(session: SolveSession, q_current, t0: float, searched_out: bool, f
     if errors is None:  # unsolved: the independent reference FK has the last word
         pos_v, ori_v = pose_errors(robot, target, q, reference=status != "solved")
         errors = (float(pos_v[0]), float(ori_v[0]))
-    pos, ori = errors
     d_q = (None if guard is None else float(dists[0]) if dists is not None and len(dists)
            else float(guard.distances(q)[0]))
-    if status != "solved" and pos <= session.tol_pos and ori <= session.tol_ori:
-        if d_q is not None and d_q < guard.clearance:  # type: ignore[union-attr]
+    if status != "solved" and tol.certifies(*errors):
+        if guard is not None and d_q is not None and not guard.keeps(d_q):
             status = "collides"  # exact, but in collision: never a solution
         else:
             status, sols = "solved", q[None]  # an answer within tolerance is a solution
             dists = None if d_q is None else np.array([d_q])
+    return Verdict(status=status, q=q, solutions=sols, errors=errors, distances=dists,
+                   min_distance=d_q, front=front, front_q=front_q)
+
+
+def ik_result(session: SolveSession, q_current, t0: float, searched_out: bool, front, front_q,
+              proven: bool = False) -> IKResult:
+    """The :class:`IKResult` of a finished solve (``t0``: its start, ``perf_counter``):
+    its :func:`verdict` and why it delivered less than was asked."""
+    v = verdict(session, q_current, searched_out, front, front_q, proven)
+    robot, guard = session.robot, session.guard
     detail = ""
-    if status == "solved" and len(sols) < session.wanted:
+    if v.status == "solved" and len(v.solutions) < session.wanted:
         why = ("the evaluation budget was spent" if session.n_eval >= session.max_evals
                else "the search stopped finding new ones")
-        detail = f"found {len(sols)} of the {session.wanted} distinct solutions requested ({why})"
-    elif status == "collides":
+        detail = (f"found {len(v.solutions)} of the {session.wanted} distinct solutions "
+                  f"requested ({why})")
+    elif v.status == "collides" and guard is not None:
         detail = (f"{max(session.n_rejected, 1)} exact answer(s) rejected for collision; the "
-                  f"farthest from contact is at {d_q:.4g} {robot.unit}, below the clearance "
-                  f"{guard.clearance:g}")  # type: ignore[union-attr]
-    return IKResult(q=q, position_error=pos, orientation_error=ori, success=status == "solved",
-                    status=status, n_eval=session.n_eval, time=time.perf_counter() - t0,
-                    solutions=sols, front=front, front_q=front_q, n_requested=session.wanted,
-                    detail=detail, min_distance=d_q,
-                    distances=None if guard is None else dists if len(sols) else np.zeros(0))
+                  f"farthest from contact is at {v.min_distance:.4g} {robot.unit}, below the "
+                  f"clearance {guard.clearance:g}")
+    distances = None if guard is None else v.distances if len(v.solutions) else np.zeros(0)
+    return IKResult(q=v.q, position_error=v.errors[0], orientation_error=v.errors[1],
+                    success=v.status == "solved", status=v.status, n_eval=session.n_eval,
+                    time=time.perf_counter() - t0, solutions=v.solutions, front=v.front,
+                    front_q=v.front_q, n_requested=session.wanted, detail=detail,
+                    min_distance=v.min_distance, distances=distances)

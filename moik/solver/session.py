@@ -12,57 +12,14 @@ from __future__ import annotations
 import numpy as np
 
 from moik._jit import jit, kernel_array
-from moik._validate import positive
-from moik.exceptions import ParameterError
 from moik.kinematics.rotation_metrics import geodesic_angle
+from moik.kinematics.tolerance import Tolerance
 from moik.problems.targets import Target
 from moik.robots.chain import Robot, fk_reference
 from moik.solver.collision import CollisionGuard
 from moik.solver.context import ik_context
 from moik.solver.polish import polish as polish_q
 from moik.solver.starts import CHECK, PATIENT, found_table, is_distinct, run_starts
-
-LM_ITERATIONS = 30  # Levenberg-Marquardt iterations per start of the first attempt
-STOP_FRACTION = 0.1  # a start stops at this fraction of the tolerances (margin for the re-check)
-MIN_TOL = 1e-14  # smallest tolerance (relative to reach; rad): ~45 eps, above FK's rounding
-
-
-def tolerances(tol, robot: Robot) -> tuple[float, float]:
-    """``(position, orientation)`` tolerances from ``solve_ik``'s ``tol``.
-
-    A number ``t`` means ``t * robot.reach`` and ``t`` rad; a pair is taken as is.
-    Each must be a finite number, at least :data:`MIN_TOL` (times ``robot.reach`` for a
-    position): float64 FK computes a pose to a few ``eps * reach`` (``eps`` = 2.2e-16,
-    times the number of joints), so a smaller tolerance could not be certified by the
-    re-check, and a reachable pose would be called unreachable.
-
-    Raises:
-        ParameterError: Anything else, naming what was given and the smallest accepted value.
-    """
-    if type(tol) is float and MIN_TOL <= tol < np.inf:  # the usual case, checked as below
-        return tol * robot.reach, tol
-    if isinstance(tol, np.ndarray) and tol.ndim == 0:
-        tol = tol.item()
-    try:
-        shape = np.shape(tol)
-    except ValueError:  # ragged sequences
-        shape = None
-    if shape == ():
-        t = _at_least("tol", tol, MIN_TOL, "")
-        return t * robot.reach, t
-    if shape == (2,):
-        return (_at_least("tol[0] (position tolerance)", tol[0], MIN_TOL * robot.reach,
-                          f" ({MIN_TOL:g} x reach {robot.reach:g})"),
-                _at_least("tol[1] (orientation tolerance)", tol[1], MIN_TOL, " rad"))
-    raise ParameterError(f"tol must be a number or (position, orientation), got {tol!r}")
-
-
-def _at_least(name: str, value, smallest: float, unit: str) -> float:
-    value = positive(name, value)
-    if value < smallest:
-        raise ParameterError(f"{name} must be at least {smallest:g}{unit}, the smallest "
-                             f"tolerance float64 forward kinematics can certify, got {value!r}")
-    return value
 
 
 def pose_errors(robot: Robot, target, Q: np.ndarray, *, reference: bool = False
@@ -118,7 +75,7 @@ class SolveSession:
 
     Args:
         robot, target: The problem.
-        tol_pos, tol_ori: Tolerances (robot unit, rad).
+        tol: The :class:`~moik.kinematics.tolerance.Tolerance` an answer must meet.
         distinct: Joint-space distance above which two solutions are distinct.
         wanted: Number of solutions asked for; no more are kept.
         max_evals: FK evaluation budget (the first stage starts no start past it).
@@ -127,10 +84,10 @@ class SolveSession:
             is kept as :attr:`colliding`.
     """
 
-    def __init__(self, robot, target, tol_pos, tol_ori, distinct, wanted,
+    def __init__(self, robot, target, tol: Tolerance, distinct, wanted,
                  max_evals: int = 2**62, guard: CollisionGuard | None = None):
         self.robot, self.target = robot, target
-        self.tol_pos, self.tol_ori, self.distinct = tol_pos, tol_ori, distinct
+        self.tol, self.distinct = tol, distinct
         self.wanted = wanted  # solutions asked for: no more are kept
         self.max_evals = max_evals  # FK budget: the first stage starts no start beyond it
         self.n_eval = 0
@@ -141,20 +98,17 @@ class SolveSession:
         # the exact answer rejected for collision with the largest distance: (distance, q)
         self.colliding: tuple[float, np.ndarray] | None = None
         self.n_rejected = 0  # exact answers rejected for collision
-        self.ctx = ik_context(robot, target, stop=(STOP_FRACTION * tol_pos,
-                                                   STOP_FRACTION * tol_ori),
-                              tol=(tol_pos, tol_ori), distinct=distinct,
-                              max_iter=LM_ITERATIONS,
+        self.ctx = ik_context(robot, target, stop=tol.stop, tol=tol, distinct=distinct,
                               collision=None if guard is None else guard.checker.compiled,
                               clearance=0.0 if guard is None else guard.clearance)
 
     def refine(self, q0: np.ndarray, do_polish: bool, max_nfev: int = 60) -> None:
         """Least-squares polish of ``q0`` (or only clipping), then :meth:`consider`."""
         if do_polish:
+            stop_position, stop_orientation = self.tol.polish_stop
             out = polish_q(self.robot, self.target, q0, length=self.robot.reach,
-                           max_nfev=max_nfev,
-                           stop_position=1e-3 * self.tol_pos,
-                           stop_orientation=1e-3 * self.tol_ori)
+                           max_nfev=max_nfev, stop_position=stop_position,
+                           stop_orientation=stop_orientation)
             self.n_eval += out.n_eval
             q = out.q
         else:
@@ -186,8 +140,8 @@ class SolveSession:
         if self.best is None or best[0] < self.best[0]:
             self.best = (float(best[0]), best[1:])
         if self.guard is not None:  # exact ends the start loop rejected for collision
-            d = ends[:used, 2]
-            rejected = np.flatnonzero(d < self.guard.clearance)
+            d = ends[:used, 2]  # NaN: an end that was not tested (it failed the pose test)
+            rejected = np.flatnonzero(~np.isnan(d) & ~self.guard.keeps(d))
             self.n_rejected += len(rejected)
             if len(rejected):
                 k = rejected[np.argmax(d[rejected])]
@@ -200,7 +154,7 @@ class SolveSession:
         from contact kept as :attr:`colliding`."""
         assert self.guard is not None
         d = self.guard.distances(Q)
-        ok = d >= self.guard.clearance
+        ok = self.guard.keeps(d)
         for k in np.flatnonzero(~ok):
             self.n_rejected += 1
             if self.colliding is None or d[k] > self.colliding[0]:
@@ -214,7 +168,7 @@ class SolveSession:
             err = float(p) / self.robot.reach + float(o)
             if self.best is None or err < self.best[0]:
                 self.best = (err, q)
-            if (len(self.found) < self.wanted and p <= self.tol_pos and o <= self.tol_ori
+            if (len(self.found) < self.wanted and self.tol.certifies(p, o)
                     and is_distinct(self.robot, q, self.found, self.distinct)
                     and (self.guard is None or self._collision_free(q[None])[0])):
                 self.found.append(q)

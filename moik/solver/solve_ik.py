@@ -34,6 +34,7 @@ from pymoo.optimize import minimize
 
 from moik._validate import seed as check_seed
 from moik.exceptions import ShapeError
+from moik.kinematics.tolerance import Tolerance
 from moik.problems.ik import BiObjectiveIK, PoseIK, PositionIK
 from moik.problems.targets import Target, as_target, check_unit_range
 from moik.robots.catalog import as_robot
@@ -50,7 +51,7 @@ from moik.solver.options import (
     starts_sequence,
 )
 from moik.solver.result import IKResult, ik_result
-from moik.solver.session import SolveSession, tolerances
+from moik.solver.session import SolveSession
 from moik.solver.starts import front as lm_front
 from moik.solver.starts import is_distinct
 
@@ -145,7 +146,7 @@ def solve_ik(robot: Robot, target, *, method: str = _D["method"],
     robot = as_robot(robot)
     target = as_target(target)
     check_unit_range(target, robot)
-    tol_pos, tol_ori = tolerances(tol, robot)
+    tolerance = Tolerance.of(tol, robot.reach)
     opts = SearchOptions.of(method=method, orientation=orientation, polish=polish,
                             n_solutions=n_solutions, max_evals=max_evals, starts=starts,
                             pop_size=pop_size, generations=generations,
@@ -163,7 +164,7 @@ def solve_ik(robot: Robot, target, *, method: str = _D["method"],
              and clearance == 0.0 and type(clearance) is float
              else collision_guard(robot, scene=scene, self_collision=self_collision,
                                   clearance=clearance, collision=collision))
-    session = SolveSession(robot, target, tol_pos, tol_ori, opts.distinct, opts.n_solutions,
+    session = SolveSession(robot, target, tolerance, opts.distinct, opts.n_solutions,
                            opts.max_evals, guard=guard)
     if seeds is None:  # the first stage's generator; later stages spawn from the seed
         with start_generator(seed) as starts_rng:

@@ -37,7 +37,7 @@ UNLIMITED = 2**62  # a budget that never stops the loop
 def is_new(ctx, found, n_found, q):
     """Whether ``q`` is farther than ``ctx.distinct`` from each of ``found[:n_found]``."""
     for k in range(n_found):
-        if wrapped_distance(found[k], q, ctx.joint_types) <= ctx.distinct:
+        if wrapped_distance(found[k], q, ctx.chain.joint_types) <= ctx.distinct:
             return False
     return True
 
@@ -53,14 +53,14 @@ def recheck(ctx, ws, q):
     """Position error (robot unit) and geodesic orientation error (rad) of ``q`` into
     ``ws.err``, by an FK pass of their own (not the optimizer's residual); whether both
     are within ``ctx``'s tolerances."""
-    T, err, pt = ws.T, ws.err, ctx.position
-    fk_pose_into(ctx.origins, ctx.joint_types, q, T)
+    T, err, pt = ws.T, ws.err, ctx.target.position
+    fk_pose_into(ctx.chain.origins, ctx.chain.joint_types, q, T)
     d0, d1, d2 = T[0, 3] - pt[0], T[1, 3] - pt[1], T[2, 3] - pt[2]
     err[0] = np.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
     err[1] = 0.0
-    if ctx.has_rotation:
+    if ctx.target.has_rotation:
         rot = (T[0, 0], T[0, 1], T[0, 2], T[1, 0], T[1, 1], T[1, 2], T[2, 0], T[2, 1], T[2, 2])
-        err[1] = geodesic_angle(rot, ctx.rotation)
+        err[1] = geodesic_angle(rot, ctx.target.rotation)
     return err[0] <= ctx.tol_position and err[1] <= ctx.tol_orientation
 
 
@@ -79,7 +79,7 @@ def _keep(ctx, ws, found, n_found, q):
 def _improve(ctx, ws, best, q):
     """``best = [scaled error, q]`` replaced by ``q`` when its re-checked (``ws.err``)
     error ``pos / L + ori`` is smaller."""
-    scaled = ws.err[0] * ctx.inv_reach + ws.err[1]
+    scaled = ws.err[0] * ctx.chain.inv_reach + ws.err[1]
     if scaled < best[0]:
         best[0] = scaled
         copy_into(q, best[1:])
@@ -119,7 +119,7 @@ def run_starts(ctx, starts, policy, found, best, ends):
     flags, budget = policy
     n, dof = starts.shape
     stall_ratio = 1.0 if flags & PATIENT else STALL_RATIO
-    scale = (ctx.inv_reach, 1.0)
+    scale = (ctx.chain.inv_reach, 1.0)
     ws = lm_workspace(dof)
     if found is None:  # a projection (the branch numba keeps for found=None, and only it)
         n_eval = 0
@@ -129,7 +129,7 @@ def run_starts(ctx, starts, policy, found, best, ends):
             ends[s, 0], ends[s, 1], ends[s, 2] = conv, cost, np.nan
         return 0, n_eval, n
     want, check = found.shape[0], flags & CHECK != 0
-    tp, to = ctx.tol_position * ctx.inv_reach, ctx.tol_orientation
+    tp, to = ctx.tol_position * ctx.chain.inv_reach, ctx.tol_orientation
     tol_cost = 0.5 * (tp * tp + to * to)  # an end within both tolerances costs at most this
     collide = checks_pairs(ctx.collision)
     scratch = end_scratch(ctx.collision)
@@ -207,7 +207,7 @@ def lm_front(ctx, Q0, weights, budget, out_Q):
     ws = lm_workspace(dof)
     n_eval = 0
     for i in range(weights.shape[0]):
-        scale = (ctx.inv_reach * np.sqrt(weights[i]), np.sqrt(1.0 - weights[i]))
+        scale = (ctx.chain.inv_reach * np.sqrt(weights[i]), np.sqrt(1.0 - weights[i]))
         best = np.inf
         if i > 0 and n_eval >= budget:
             copy_into(out_Q[i - 1], out_Q[i])

@@ -29,6 +29,7 @@ def test_json_reports_the_recomputed_distance(scene_file, capsys):
                  "--clearance", "0.01", "--n-solutions", "2", "--json"])
     doc = json.loads(capsys.readouterr().out)
     assert code == 0
+    # the scene's pairs only: --self-collision is off unless given, as in solve_ik
     checker = CollisionChecker(model=collision_model("panda"), scene=load_scene(SCENE))
     for sol in doc["solutions"]:
         d = float(checker.min_distance(np.array(sol["q"])))
@@ -82,6 +83,7 @@ def test_pareto_members_keep_the_clearance_of_the_scene(scene_file, capsys):
                  "--clearance", "0.01", "--json"])
     doc = json.loads(capsys.readouterr().out)
     assert code == 0 and doc["solutions"]
+    # the scene's pairs only: --self-collision is off unless given, as in solve_ik
     checker = CollisionChecker(model=collision_model("panda"), scene=load_scene(SCENE))
     for sol, f in zip(doc["solutions"], doc["F"], strict=True):
         d = float(checker.min_distance(np.array(sol["q"])))
@@ -112,10 +114,21 @@ def test_self_collision_alone_checks_the_self_pairs(capsys):
                  "--clearance", "0.01", "--json"])
     doc = json.loads(capsys.readouterr().out)
     assert code == 0 and doc["status"] == "solved"
-    checker = CollisionChecker(model=collision_model("panda"))  # self pairs, no scene
+    checker = CollisionChecker(model=collision_model("panda"), self_collision=True)  # no scene
     assert doc["min_distance"] == pytest.approx(float(checker.min_distance(np.array(doc["q"]))),
                                                 abs=1e-12)
     assert doc["min_distance"] >= 0.01
+
+
+def test_scene_and_self_collision_check_both(scene_file, capsys):
+    code = main(["solve", "panda", "--target", "0.5", "0.1", "0.45", "--scene", str(scene_file),
+                 "--self-collision", "--json"])
+    doc = json.loads(capsys.readouterr().out)
+    assert code == 0
+    both = CollisionChecker(model=collision_model("panda"), scene=load_scene(SCENE),
+                            self_collision=True)
+    assert doc["min_distance"] == pytest.approx(float(both.min_distance(np.array(doc["q"]))),
+                                                abs=1e-12)
 
 
 def test_pareto_explorer_draws_the_scene(scene_file, tmp_path, capsys):

@@ -25,7 +25,7 @@ def _scene():
 
 @pytest.mark.parametrize("name", ["panda", "ur5", "iiwa14"])
 def test_distances_match_coal_on_random_configurations(name):
-    checker = CollisionChecker(model=collision_model(name), scene=_scene())
+    checker = CollisionChecker(model=collision_model(name), scene=_scene(), self_collision=True)
     Q = checker.robot.random_q(30, rng=np.random.default_rng(3))
     D = checker.distances(Q)
     for q, d in zip(Q, D, strict=True):
@@ -37,7 +37,7 @@ def test_distances_match_coal_on_random_configurations(name):
 def test_pruned_minimum_is_the_minimum_over_every_pair(name):
     """The broad phase skips pairs, never the minimum: min_distance and closest_pair
     equal the minimum (and first pair attaining it) of every pair's distance."""
-    checker = CollisionChecker(model=collision_model(name), scene=_scene())
+    checker = CollisionChecker(model=collision_model(name), scene=_scene(), self_collision=True)
     Q = checker.robot.random_q(500, rng=np.random.default_rng(11))
     D = checker.distances(Q)
     np.testing.assert_array_equal(checker.min_distance(Q), D.min(axis=1))
@@ -46,7 +46,8 @@ def test_pruned_minimum_is_the_minimum_over_every_pair(name):
 
 
 def test_gradient_matches_finite_differences():
-    checker = CollisionChecker(model=collision_model("panda"), scene=_scene())
+    checker = CollisionChecker(model=collision_model("panda"), scene=_scene(),
+                               self_collision=True)
     rng = np.random.default_rng(5)
     checked = 0
     for q in checker.robot.random_q(20, rng=rng):
@@ -81,12 +82,13 @@ def test_self_collision_switch_and_adjacency():
                                                 "link1": Sphere(radius=0.05),
                                                 "link2": Sphere(radius=0.05)})
     assert model.checked_body_pairs() == [(0, 2)]
-    assert CollisionChecker(model=model).n_pairs == 1
+    assert CollisionChecker(model=model, self_collision=True).n_pairs == 1
     assert CollisionChecker(model=model, self_collision=False).n_pairs == 0
     assert CollisionChecker(model=model, self_collision=False).min_distance(
         np.zeros(2)) == np.inf
     # folded back, the tool sphere meets the base sphere: a2 = 0.30 < a1 = 0.35
-    d, pair = CollisionChecker(model=model).closest_pair(np.array([0.0, np.pi]))
+    checker = CollisionChecker(model=model, self_collision=True)
+    d, pair = checker.closest_pair(np.array([0.0, np.pi]))
     assert pair == ("link0[0]", "link2[2]") and d == pytest.approx(0.05 - 0.1)
 
 
@@ -95,7 +97,8 @@ def test_end_distance_from_python_equals_the_checker():
     checker's minimum distance, and inf / no pairs without a collision set."""
     from moik.collision.compiled import checks_pairs, end_distance, end_scratch
 
-    checker = CollisionChecker(model=collision_model("panda"), scene=_scene())
+    checker = CollisionChecker(model=collision_model("panda"), scene=_scene(),
+                               self_collision=True)
     q = checker.robot.random_q(1, rng=np.random.default_rng(2))[0]
     cs = checker.compiled
     assert checks_pairs(cs) and not checks_pairs(None)

@@ -32,7 +32,7 @@ def test_primitives_on_the_bodies():
     assert isinstance(model.shapes["base"][0], Box)
     assert isinstance(model.shapes["upper"][0], Capsule)  # the cylinder's enclosing capsule
     assert isinstance(model.shapes["fore"][0], Sphere)
-    checker = CollisionChecker(model=model)
+    checker = CollisionChecker(model=model, self_collision=True)
     for q in ([0.0, 0.0], [0.7, -1.1]):
         placed = dict(checker.world_shapes(np.array(q)))
         # by hand: base -> j1 at z 0.1 rotating about y; j2 0.5 above, pitched by pi/2

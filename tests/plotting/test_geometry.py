@@ -20,7 +20,7 @@ def test_shapes_and_obstacles_drawn():
     robot = get_robot("ur5")
     scene = Scene({"table": HalfSpace(), "box": Box(size=(0.2, 0.2, 0.2),
                                                     pose=rpy_pose([0.4, 0, 0.3]))})
-    checker = CollisionChecker(model=collision_model(robot), scene=scene)
+    checker = CollisionChecker(model=collision_model(robot), scene=scene, self_collision=True)
     plain = plot_robot(robot, np.zeros(6), side_view=False)
     n_plain = len(plain.collections)
     ax = plot_robot(robot, np.zeros(6), side_view=False, collision=checker)

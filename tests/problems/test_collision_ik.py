@@ -17,7 +17,7 @@ from moik.problems.collision_ik import CollisionIK
 def _checker():
     scene = Scene({"table": HalfSpace.plane([0, 0, 1], -0.07),
                    "shelf": Box(size=(0.3, 0.6, 0.02), pose=rpy_pose([0.5, 0, 0.3]))})
-    return CollisionChecker(model=collision_model("panda"), scene=scene)
+    return CollisionChecker(model=collision_model("panda"), scene=scene, self_collision=True)
 
 
 def test_objectives_unchanged_and_constraints_are_distances():

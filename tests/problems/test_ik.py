@@ -17,7 +17,8 @@ from moik.kinematics.orientation import (
     orientation_error,
     orientation_metric,
 )
-from moik.kinematics.rotation_metrics import metric_code, metric_target
+from moik.kinematics.rotation_metrics import metric_target
+from moik.kinematics.target_spec import target_spec
 from moik.problems import BiObjectiveIK, PoseIK, PositionIK, Target, random_reachable_targets
 from moik.problems.ik_kernels import WEIGHTED_POSE, ik_objectives
 from moik.robots import available_robots, fk_reference, get_robot
@@ -182,12 +183,10 @@ def test_fused_kernel_is_one_call_per_population():
     robot = get_robot("eosma7")
     target = random_reachable_targets(robot, 1, seed=2)[0]
     X = robot.random_q(100, rng=np.random.default_rng(0))
-    chain = robot.kinematic_chain
-    R_t = np.array(target.rotation, order="C")
     out = np.empty((100, 1))
-    ik_objectives(chain.origins, chain.joint_types, X, WEIGHTED_POSE, target.position.copy(),
-                  metric_code("geodesic"), R_t, metric_target("geodesic", R_t),
-                  np.array([0.5, 0.5, 0.0]), np.zeros(7), out)
+    spec = target_spec(target.position, target.rotation, metric="geodesic")
+    ik_objectives(robot.chain_model, spec, X, (WEIGHTED_POSE, np.array([0.5, 0.5, 0.0]),
+                                               np.zeros(7)), out)
     np.testing.assert_array_equal(out, PoseIK(robot, target).evaluate(X))
 
 

@@ -8,7 +8,6 @@ from pymoo.optimize import minimize
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError
 from moik.kinematics.criteria import Criterion
 from moik.problems import ParetoIK, random_reachable_targets
-from moik.problems.pareto_ik import tolerance_pair
 from moik.robots import get_robot
 
 ROBOT = get_robot("iiwa14")
@@ -52,14 +51,16 @@ def test_any_pymoo_algorithm_runs_on_it():
         assert np.all(out["G"] <= 0)
 
 
-def test_tolerances():
-    assert tolerance_pair(1e-6, ROBOT) == (1e-6 * ROBOT.reach, 1e-6)
-    assert tolerance_pair((1e-3, 2e-3), ROBOT) == (1e-3, 2e-3)
-    for bad in (0.0, -1.0, True, "1e-9", (1e-3, 0.0)):
+def test_tolerances_are_solve_iks():
+    """ParetoIK reads tol as solve_ik does (moik.kinematics.tolerance.Tolerance.of)."""
+    target = ROBOT.fk(np.zeros(ROBOT.dof))
+    assert ParetoIK(ROBOT, target, q_current=Q_CURRENT, tol=1e-6).tol == (1e-6 * ROBOT.reach, 1e-6)
+    assert ParetoIK(ROBOT, target, q_current=Q_CURRENT, tol=(1e-3, 2e-3)).tol == (1e-3, 2e-3)
+    for bad in (0.0, -1.0, True, "1e-9", (1e-3, 0.0), 1e-15, (1e-3, 1e-16)):
         with pytest.raises(ParameterError, match="tol"):
-            tolerance_pair(bad, ROBOT)
-    with pytest.raises(ParameterError, match=r"shape \(2,\)"):
-        tolerance_pair((1.0, 2.0, 3.0), ROBOT)
+            ParetoIK(ROBOT, target, q_current=Q_CURRENT, tol=bad)
+    with pytest.raises(ParameterError, match="tol must be a number or"):
+        ParetoIK(ROBOT, target, q_current=Q_CURRENT, tol=(1.0, 2.0, 3.0))
 
 
 def test_bad_input():

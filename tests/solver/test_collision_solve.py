@@ -32,7 +32,7 @@ def world():
                    "box": Box(size=(0.2, 0.2, 0.2), pose=rpy_pose([0.5, 0.0, 0.4])),
                    "ball": Sphere(radius=0.1, pose=rpy_pose([0.0, 0.5, 0.5]))},
                   allowed=frozenset({("table", model.links[0]), ("table", model.links[1])}))
-    checker = CollisionChecker(model=model, scene=scene)
+    checker = CollisionChecker(model=model, scene=scene, self_collision=True)
     Q = model.robot.random_q(400, rng=np.random.default_rng(7))
     free = Q[checker.min_distance(Q) >= 0.0][:12]
     return model, scene, checker, model.robot.fk(free)

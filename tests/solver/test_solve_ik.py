@@ -5,6 +5,7 @@ import pytest
 
 from moik.exceptions import DegreesWarning, ParameterError, UnknownNameError
 from moik.kinematics.criteria import joint_distance
+from moik.kinematics.tolerance import Tolerance
 from moik.problems import Target, random_reachable_targets
 from moik.robots import get_robot
 from moik.solver import solve_ik
@@ -267,7 +268,7 @@ def _issue27_case():
 def test_a_start_that_stalls_within_tolerance_is_a_solution():
     """The first stage re-checks an end whose cost could be within the tolerances."""
     robot, target, starts = _issue27_case()
-    session = SolveSession(robot, target, 1e-9 * robot.reach, 1e-9, 0.1, 1, 50_000)
+    session = SolveSession(robot, target, Tolerance.of(1e-9, robot.reach), 0.1, 1, 50_000)
     for Q0 in starts:
         if not session.found:
             session.local_starts(Q0)
@@ -280,7 +281,7 @@ def test_an_answer_within_tolerance_is_never_not_converged():
     """The verdict: a best candidate within tolerance is ``solved``, whatever found it."""
     robot, target, _ = _issue27_case()
     q_source = robot.random_q(25000, rng=np.random.default_rng(2024))[10705]  # the pose's own
-    session = SolveSession(robot, target, 1e-9 * robot.reach, 1e-9, 0.1, 1, 50_000)
+    session = SolveSession(robot, target, Tolerance.of(1e-9, robot.reach), 0.1, 1, 50_000)
     session.best = (0.0, q_source)  # a candidate no stage counted as found
     out = ik_result(session, None, 0.0, True, None, None)
     assert out.status == "solved" and out.success and len(out.solutions) == 1

@@ -3,7 +3,7 @@
 - ``scene``: the obstacles, as :func:`moik.collision.io.load_scene` reads them
   (``{"obstacles": [...]}``);
 - ``clearance``: required distance (robot unit, default 0);
-- ``self_collision``: check the arm against itself (default true);
+- ``self_collision``: check the arm against itself (default false, as in ``solve_ik``);
 - ``collision_groups``: ``"min"`` (one aggregate constraint) or ``"links"`` (one per body).
 
 With a ``scene`` (or ``self_collision`` true and no scene) the problem is wrapped in
@@ -33,7 +33,7 @@ def with_collision(ik, problem: Mapping):
         return ik
     scene = load_scene(problem["scene"]) if "scene" in problem else None
     checker = CollisionChecker(model=collision_model(ik.robot), scene=scene,
-                               self_collision=problem.get("self_collision", True))
+                               self_collision=problem.get("self_collision", False))
     return CollisionIK(ik, checker=checker, clearance=problem.get("clearance", 0.0),
                        groups=problem.get("collision_groups", "min"))
 
@@ -43,6 +43,6 @@ def feasibility(problem, X: np.ndarray, record: dict) -> np.ndarray:
     if not isinstance(problem, CollisionIK):
         return np.ones(len(X), dtype=bool)
     d = problem.min_distance(X)
-    ok = d >= problem.clearance
+    ok = problem.keeps(d)
     record.update(n_feasible=int(ok.sum()), min_distance=float(d.min()))
     return ok

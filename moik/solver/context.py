@@ -22,9 +22,9 @@ from __future__ import annotations
 import numpy as np
 from numba.experimental import structref
 
-from moik._jit import StructType, define_struct, jit
+from moik._jit import StructType, define_struct, jit, kernel_array
 from moik.collision.compiled import CollisionSet
-from moik.kinematics.target_spec import TargetSpec, target_spec
+from moik.kinematics.target_spec import NO_METRIC, TargetSpec
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
 
@@ -67,16 +67,22 @@ define_struct(IKContext, IKContextType, FIELDS)
 @jit
 def _new_context(chain, target, stops, accept, collision, sizes):
     """The compiled constructor (cached; the proxy's own would compile in every process).
-    ``collision`` is an argument of its own: numba types a StructRef inside a tuple
-    argument in Python, one on its own in C (much cheaper)."""
-    return IKContext(chain, target, stops[0], stops[1], accept[0], accept[1], sizes[0],
+    ``target = (position, rotation, has_rotation)`` becomes the context's
+    :class:`~moik.kinematics.target_spec.TargetSpec` here, in the same call (the solver
+    compares rotations by its own residual: no metric). ``collision`` is an argument of its
+    own: numba types a StructRef inside a tuple argument in Python, one on its own in C."""
+    spec = TargetSpec(target[0], target[1], target[2], NO_METRIC, np.zeros(3))
+    return IKContext(chain, spec, stops[0], stops[1], accept[0], accept[1], sizes[0],
                      sizes[1], collision, accept[2])
 
 
-def solver_target(target: Target) -> TargetSpec:
-    """The :class:`~moik.kinematics.target_spec.TargetSpec` of a target as the solver's
-    kernels take it (no metric: the solver compares rotations itself)."""
-    return target_spec(target.position, target.rotation)
+def solver_target(target: Target) -> tuple[np.ndarray, np.ndarray, bool]:
+    """``(position, rotation, has_rotation)`` of a target as the context's
+    :class:`~moik.kinematics.target_spec.TargetSpec` takes them (the identity rotation for
+    a position target)."""
+    has_rot = target.rotation is not None
+    return (kernel_array(target.position),
+            kernel_array(target.rotation if has_rot else np.eye(3)), has_rot)
 
 
 def ik_context(robot: Robot, target: Target, *, stop: tuple[float, float],

@@ -15,7 +15,7 @@ if TYPE_CHECKING:
     from moik.collision.catalog import collision_model, shipped_models
     from moik.collision.io import load_model, load_scene
     from moik.collision.model import CollisionChecker, CollisionModel, Scene, default_links
-    from moik.collision.shapes import Box, Capsule, HalfSpace, Shape, Sphere, cylinder
+    from moik.collision.shapes import Box, Capsule, ConvexHull, HalfSpace, Shape, Sphere, cylinder
     from moik.collision.urdf import model_from_urdf
 
 _LAZY: dict[str, tuple[str, str | None]] = {
@@ -29,6 +29,7 @@ _LAZY: dict[str, tuple[str, str | None]] = {
     "default_links": ("moik.collision.model", "default_links"),
     "Box": ("moik.collision.shapes", "Box"),
     "Capsule": ("moik.collision.shapes", "Capsule"),
+    "ConvexHull": ("moik.collision.shapes", "ConvexHull"),
     "HalfSpace": ("moik.collision.shapes", "HalfSpace"),
     "Shape": ("moik.collision.shapes", "Shape"),
     "Sphere": ("moik.collision.shapes", "Sphere"),
@@ -39,8 +40,8 @@ _LAZY: dict[str, tuple[str, str | None]] = {
 imports :mod:`moik.collision.compiled` for every solve, which need not load the models,
 files and URDF readers (start-up time)."""
 
-__all__ = ["Box", "Capsule", "CollisionChecker", "CollisionModel", "HalfSpace", "Scene", "Shape",
-           "Sphere", "collision_model", "cylinder", "default_links", "load_model", "load_scene",
-           "model_from_urdf", "shipped_models"]
+__all__ = ["Box", "Capsule", "CollisionChecker", "CollisionModel", "ConvexHull", "HalfSpace",
+           "Scene", "Shape", "Sphere", "collision_model", "cylinder", "default_links",
+           "load_model", "load_scene", "model_from_urdf", "shipped_models"]
 
 __getattr__, __dir__ = lazy_names("moik.collision", _LAZY, globals(), __all__)

@@ -32,25 +32,30 @@ class CollisionSet(structref.StructRefProxy):
 
     Fields: ``chain`` (the arm's :class:`~moik.robots.chain_model.ChainModel`), ``body``,
     ``local``, ``kinds``, ``sizes``, ``pairs`` (the shapes and the pairs evaluated, as
-    :mod:`moik.collision.kernels` describes them).
+    :mod:`moik.collision.kernels` describes them), ``hull_points``, ``hull_ranges`` (the
+    vertices of the hull shapes, as :mod:`moik.collision.gjk` describes them).
     """
 
 
-FIELDS = ("chain", "body", "local", "kinds", "sizes", "pairs")
+FIELDS = ("chain", "body", "local", "kinds", "sizes", "pairs", "hull_points", "hull_ranges")
 define_struct(CollisionSet, CollisionSetType, FIELDS)
 
 
 @jit
-def _new_set(chain, body, local, kinds, sizes, pairs):
+def _new_set(chain, shapes, pairs, hulls):
     """The compiled constructor (cached)."""
-    return CollisionSet(chain, body, local, kinds, sizes, pairs)
+    return CollisionSet(chain, shapes[0], shapes[1], shapes[2], shapes[3], pairs, hulls[0],
+                        hulls[1])
 
 
 def collision_set(*, chain: ChainModel, body: np.ndarray, local: np.ndarray, kinds: np.ndarray,
-                  sizes: np.ndarray, pairs: np.ndarray) -> CollisionSet:
+                  sizes: np.ndarray, pairs: np.ndarray, hull_points: np.ndarray,
+                  hull_ranges: np.ndarray) -> CollisionSet:
     """A :class:`CollisionSet` of an arm and its shapes: ``body (m,)`` int64, ``local
-    (m, 4, 4)``, ``kinds (m,)`` int64, ``sizes (m, 3)`` and ``pairs (p, 2)`` int64."""
-    return _new_set(chain, body, local, kinds, sizes, pairs)
+    (m, 4, 4)``, ``kinds (m,)`` int64, ``sizes (m, 3)``, ``pairs (p, 2)`` int64, and the
+    vertices of its hulls (:mod:`moik.collision.gjk`): ``hull_points (v, 3)`` and
+    ``hull_ranges (h, 2)`` int64."""
+    return _new_set(chain, (body, local, kinds, sizes), pairs, (hull_points, hull_ranges))
 
 
 def end_distance(cs, q, scratch):

@@ -49,6 +49,7 @@ from moik._jit import jit
 
 _PARALLEL = 1e-12  # |u x v|^2 below this: the two directions give no separating axis
 SPHERE, CAPSULE, BOX, HALFSPACE = 0, 1, 2, 3  # shape kinds, in the order the pairs take them
+HULL = 4  # a convex hull of points (moik.collision.gjk)
 
 
 @jit

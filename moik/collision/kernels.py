@@ -24,6 +24,8 @@ from __future__ import annotations
 import numpy as np
 
 from moik._jit import jit
+from moik.collision.distance import HULL
+from moik.collision.gjk import convex_pair
 from moik.collision.pairs import pair_bound, pair_distance
 from moik.robots.fk_kernels import compose, move_joint, pose_state, store_pose
 from moik.robots.transforms import PRISMATIC
@@ -63,6 +65,17 @@ def place_shapes(frames, body, local, W):
 
 
 @jit
+def shape_pair(cs, W, a, b):
+    """Signed distance, normal and witnesses of shapes ``a`` and ``b`` placed at ``W``: the
+    primitives' exact kernels (:func:`~moik.collision.pairs.pair_distance`), GJK for a
+    pair with a hull (:func:`~moik.collision.gjk.convex_pair`)."""
+    kinds, sizes = cs.kinds, cs.sizes
+    if kinds[a] == HULL or kinds[b] == HULL:
+        return convex_pair(cs, W, a, b)
+    return pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])
+
+
+@jit
 def distance_scratch(cs):
     """Scratch of :func:`min_distance_of` for ``cs``: ``(frames (dof + 1, 4, 4), axes
     (dof, 6), W (m, 4, 4))``."""
@@ -83,12 +96,12 @@ def pair_distances(cs, Q, out):
     """Signed distance of every pair for every row of ``Q (n, dof)``, into ``out (n, p)``."""
     scratch = distance_scratch(cs)
     W = scratch[2]
-    kinds, sizes, pairs = cs.kinds, cs.sizes, cs.pairs
+    pairs = cs.pairs
     for i in range(Q.shape[0]):
         place_all(cs, Q[i], scratch)
         for k in range(pairs.shape[0]):
             a, b = pairs[k, 0], pairs[k, 1]
-            out[i, k] = pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])[0]
+            out[i, k] = shape_pair(cs, W, a, b)[0]
 
 
 @jit
@@ -118,7 +131,7 @@ def min_distance_of(cs, q, scratch):
     best, arg = np.inf, -1
     if first >= 0:
         a, b = pairs[first, 0], pairs[first, 1]
-        best = pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])[0]
+        best = shape_pair(cs, W, a, b)[0]
         arg = first
     for k in range(pairs.shape[0]):
         if k == first:
@@ -126,7 +139,7 @@ def min_distance_of(cs, q, scratch):
         a, b = pairs[k, 0], pairs[k, 1]
         if pair_bound(kinds, W, sizes, a, b) > best:
             continue  # its distance is at least its bound: not below the minimum
-        d = pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])[0]
+        d = shape_pair(cs, W, a, b)[0]
         if d < best or (d == best and k < arg):  # the first pair attaining it, as in order
             best, arg = d, k
     return best, arg
@@ -153,14 +166,14 @@ def min_distance_gradients(cs, Q, dmin, grad):
     dof = types.size
     scratch = distance_scratch(cs)
     axes, W = scratch[1], scratch[2]
-    body, kinds, sizes, pairs = cs.body, cs.kinds, cs.sizes, cs.pairs
+    body, pairs = cs.body, cs.pairs
     for i in range(Q.shape[0]):
         place_all(cs, Q[i], scratch)
         best, arg = np.inf, -1
         res = (np.inf, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
         for k in range(pairs.shape[0]):
             a, b = pairs[k, 0], pairs[k, 1]
-            r = pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])
+            r = shape_pair(cs, W, a, b)
             if r[0] < best:
                 best, arg, res = r[0], k, r
         dmin[i] = best

@@ -26,7 +26,7 @@ import numpy as np
 from moik._validate import flag
 from moik.collision import kernels
 from moik.collision.compiled import CollisionSet, collision_set
-from moik.collision.shapes import HalfSpace, Shape, shape_arrays
+from moik.collision.shapes import HalfSpace, Shape, hull_arrays, shape_arrays
 from moik.exceptions import GeometryError, ParameterError, UnknownNameError
 from moik.robots.chain import Robot
 
@@ -152,6 +152,8 @@ class Scene:
 def keeps_clearance(distances, clearance: float):
     """Whether signed distances keep ``clearance`` (``distance >= clearance``; NaN never
     does): the one place moik writes this rule (a bool, or a bool array for an array)."""
+    if isinstance(distances, float):
+        return bool(distances >= clearance)  # NaN >= x is False too
     ok = np.greater_equal(distances, clearance)
     return bool(ok) if np.ndim(ok) == 0 else ok
 
@@ -191,6 +193,7 @@ class CollisionChecker:
             bodies.append(-1)
             shapes.append(s)
         kinds, local, sizes = shape_arrays(shapes)
+        hull_points, hull_ranges = hull_arrays(shapes, sizes)
         pairs = []
         if self.self_collision:
             checked = set(model.checked_body_pairs())
@@ -205,7 +208,8 @@ class CollisionChecker:
                   if (obstacle, model.links[bodies[a]]) not in skip]
         self._shapes = {"body": np.array(bodies, dtype=np.int64), "local": local,
                         "kinds": kinds, "sizes": sizes,
-                        "pairs": np.array(pairs, dtype=np.int64).reshape(-1, 2)}
+                        "pairs": np.array(pairs, dtype=np.int64).reshape(-1, 2),
+                        "hull_points": hull_points, "hull_ranges": hull_ranges}
         self.shape_names = tuple(names)
         self.pair_names = tuple((names[a], names[b]) for a, b in pairs)
         self.pair_bodies = tuple((bodies[a], bodies[b]) for a, b in pairs)  # -1: the world

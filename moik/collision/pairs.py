@@ -11,6 +11,7 @@ from moik.collision.distance import (
     BOX,
     CAPSULE,
     HALFSPACE,
+    HULL,
     SPHERE,
     capsule_capsule,
     capsule_halfspace,
@@ -24,6 +25,8 @@ def _bounding_radius(kinds, sizes, k):
         return sizes[k, 0]
     if kinds[k] == CAPSULE:
         return sizes[k, 0] + sizes[k, 1]
+    if kinds[k] == HULL:
+        return sizes[k, 1]  # (hull index, bounding radius, 0)
     return math.sqrt(sizes[k, 0] ** 2 + sizes[k, 1] ** 2 + sizes[k, 2] ** 2)
 
 

@@ -10,7 +10,9 @@ the world for a scene's obstacle) and sizes in the robot's length unit:
   (:meth:`Capsule.between` builds one from two end points);
 * :class:`Box` ``(size)``: full side lengths along the pose's x, y, z axes;
 * :class:`HalfSpace`: the solid ``z <= 0`` of its pose, a table top or floor whose
-  outward normal is the pose's z axis (:meth:`HalfSpace.plane` from normal and offset).
+  outward normal is the pose's z axis (:meth:`HalfSpace.plane` from normal and offset);
+* :class:`ConvexHull` ``(points)``: the convex hull of points in its frame, a collision
+  mesh's hull (:mod:`moik.collision.gjk` computes its distances).
 
 A URDF ``<cylinder>`` is modelled by :func:`cylinder`: the capsule of the same radius
 whose segment is the cylinder's axis (it contains the cylinder and extends ``radius``
@@ -30,11 +32,12 @@ from typing import Any
 import numpy as np
 
 from moik._validate import finite_array, number
-from moik.collision.distance import BOX, CAPSULE, HALFSPACE, SPHERE
+from moik.collision.distance import BOX, CAPSULE, HALFSPACE, HULL, SPHERE
 from moik.exceptions import NonFiniteError, ParameterError
 from moik.robots.checks import rigid_transform
 
-__all__ = ["Box", "Capsule", "HalfSpace", "Shape", "Sphere", "cylinder", "shape_arrays"]
+__all__ = ["Box", "Capsule", "ConvexHull", "HalfSpace", "Shape", "Sphere", "cylinder",
+           "shape_arrays"]
 
 
 def _pose(owner: str, pose: Any) -> np.ndarray:
@@ -200,6 +203,58 @@ class HalfSpace(Shape):
         return {}
 
 
+@dataclass(frozen=True, eq=False, kw_only=True)
+class ConvexHull(Shape):
+    """The convex hull of ``points`` ``(n, 3)`` in the pose's frame: a collision mesh's hull
+    (it holds the mesh: distances to it never exceed the mesh's; :mod:`moik.collision.gjk`).
+
+    Only the hull's vertices are kept, centred on the middle of their bounding box (the
+    pose takes the offset), so the bounding sphere the broad phase uses is small.
+    """
+
+    points: np.ndarray
+    kind = HULL
+
+    def __post_init__(self) -> None:
+        super().__post_init__()
+        P = finite_array("convex hull points", self.points)
+        if P.ndim != 2 or P.shape[1] != 3 or len(P) == 0:
+            raise ParameterError(f"convex hull points must have shape (n, 3) with n >= 1, "
+                                 f"got {P.shape}")
+        P = hull_vertices(P)
+        centre = (P.min(axis=0) + P.max(axis=0)) / 2
+        shift = np.eye(4)
+        shift[:3, 3] = centre
+        P = np.ascontiguousarray(P - centre)
+        P.setflags(write=False)
+        object.__setattr__(self, "points", P)
+        object.__setattr__(self, "pose", self.pose @ shift)
+
+    @property
+    def sizes(self) -> tuple[float, float, float]:
+        """``(hull index, bounding radius, 0)``: the index is set when a checker gathers its
+        hulls (:class:`~moik.collision.CollisionChecker`)."""
+        return 0.0, float(np.sqrt((self.points ** 2).sum(axis=1).max())), 0.0
+
+    def _sizes_dict(self) -> dict[str, Any]:
+        return {"points": self.points.tolist()}
+
+
+def hull_vertices(points: np.ndarray) -> np.ndarray:
+    """The vertices of the convex hull of ``points`` ``(n, 3)`` (qhull through scipy); the
+    distinct points themselves when they span no volume (flat or fewer than four)."""
+    from scipy.spatial import ConvexHull as Qhull  # qhull loads at the first hull (start-up)
+    from scipy.spatial import QhullError
+
+    unique = np.unique(points, axis=0)
+    if len(unique) < 4:
+        return unique
+    try:
+        return unique[np.sort(Qhull(unique).vertices)]
+    except QhullError:  # flat or degenerate: every distinct point (GJK takes any point set)
+        return unique
+
+
 def cylinder(*, radius: float, length: float, pose: Any = None) -> Capsule:
     """A URDF cylinder (axis z, centred) as its enclosing capsule (see the module doc)."""
     return Capsule(radius=radius, length=length, pose=pose)
@@ -220,3 +275,18 @@ def shape_arrays(shapes: Sequence[Shape], poses: np.ndarray | None = None
     P = np.array([s.pose for s in shapes], dtype=float).reshape(len(shapes), 4, 4)
     sizes = np.array([s.sizes for s in shapes], dtype=float).reshape(len(shapes), 3)
     return kinds, np.ascontiguousarray(P if poses is None else poses), sizes
+
+
+def hull_arrays(shapes: Sequence[Shape], sizes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The vertices of the hulls among ``shapes``, gathered for the kernels: ``hull_points
+    (v, 3)`` and ``hull_ranges (h, 2)`` (rows ``start:end`` of each hull); each hull's
+    index is written into ``sizes[k, 0]`` (``sizes`` of :func:`shape_arrays`)."""
+    hulls = [(k, s) for k, s in enumerate(shapes) if isinstance(s, ConvexHull)]
+    for h, (k, _) in enumerate(hulls):
+        sizes[k, 0] = h
+    counts = np.array([len(s.points) for _, s in hulls], dtype=np.int64)
+    ends = np.cumsum(counts)
+    ranges = np.ascontiguousarray(np.column_stack([ends - counts, ends]).reshape(-1, 2),
+                                  dtype=np.int64)
+    points = np.concatenate([s.points for _, s in hulls]) if hulls else np.zeros((0, 3))
+    return np.ascontiguousarray(points, dtype=np.float64), ranges

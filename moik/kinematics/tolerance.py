@@ -75,6 +75,9 @@ class Tolerance(NamedTuple):
     def certifies(self, position_error, orientation_error):
         """Whether recomputed errors are within the tolerance (a bool, or a bool array
         for arrays)."""
+        if isinstance(position_error, float) and isinstance(orientation_error, float):
+            return bool(position_error <= self.position
+                        and orientation_error <= self.orientation)  # the hot path: scalars
         ok = (np.less_equal(position_error, self.position)
               & np.less_equal(orientation_error, self.orientation))
         return bool(ok) if np.ndim(ok) == 0 else ok

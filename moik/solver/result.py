@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass, field
+from typing import NamedTuple
 
 import numpy as np
 
@@ -76,8 +77,7 @@ class IKResult:
         return self.success and len(self.solutions) < self.n_requested
 
 
-@dataclass(frozen=True)
-class Verdict:
+class Verdict(NamedTuple):
     """What a finished solve concluded (:func:`verdict`), before its result is assembled.
 
     Attributes:

@@ -1,10 +1,7 @@
 """The constants of one solve (IKContext, built only by ik_context), retarget, solver_target
 and the Levenberg-Marquardt workspace: each field holds what was passed, read in compiled
-code as the kernels read it.
-
-The arm is ``planar2`` (I-BES Table 2: ``T(q) = Rz(q1) Tx(0.35) Rz(q2) Tx(0.30)``), whose
-tool position ``(0.35 cos q1 + 0.30 cos(q1 + q2), 0.35 sin q1 + 0.30 sin(q1 + q2), 0)``
-and heading ``q1 + q2`` are written by hand below.
+code as the kernels read it. The arm is ``planar2``, its poses written by hand
+(tests/solver/planar2_cases.py).
 """
 
 import numpy as np
@@ -15,7 +12,6 @@ from moik.collision import CollisionChecker, CollisionModel, Sphere
 from moik.collision.compiled import checks_pairs
 from moik.kinematics.target_spec import NO_METRIC
 from moik.problems.targets import Target
-from moik.robots import get_robot
 from moik.solver.context import (
     LM_ITERATIONS,
     NO_STOP,
@@ -25,19 +21,7 @@ from moik.solver.context import (
     solver_target,
 )
 from moik.solver.starts import recheck, run_starts
-
-ARM = get_robot("planar2")
-
-
-def _rz(a):
-    c, s = np.cos(a), np.sin(a)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
-
-
-def _tool(q1, q2):
-    """planar2's tool position and rotation, by hand (module doc)."""
-    return (np.array([0.35 * np.cos(q1) + 0.30 * np.cos(q1 + q2),
-                      0.35 * np.sin(q1) + 0.30 * np.sin(q1 + q2), 0.0]), _rz(q1 + q2))
+from tests.solver.planar2_cases import ARM, rz, tool
 
 
 @jit
@@ -71,7 +55,7 @@ def test_every_field_holds_what_was_passed():
 
 
 def test_defaults_and_a_pose_target():
-    position, rotation = _tool(0.3, -0.7)
+    position, rotation = tool((0.3, -0.7))
     ctx = ik_context(ARM, Target(position, rotation), stop=(NO_STOP, NO_STOP))
     p, R, has_rot, _, numbers, max_iter, collides = _fields(ctx)
     np.testing.assert_array_equal(p, position)
@@ -82,7 +66,7 @@ def test_defaults_and_a_pose_target():
 
 
 def test_solver_target_is_what_the_target_spec_takes():
-    R = _rz(0.4)
+    R = rz(0.4)
     p, rot, has_rot = solver_target(Target([1, 2, 3], R))
     assert has_rot and p.dtype == rot.dtype == np.float64
     assert p.flags.c_contiguous and rot.flags.c_contiguous and rot.flags.writeable
@@ -97,12 +81,12 @@ def test_retarget_points_the_solve_at_another_pose():
     """After retarget the FK re-check accepts the new pose's solution and refuses the
     old one's; the other constants are untouched."""
     q_a, q_b = np.array([0.3, -0.7]), np.array([-1.1, 0.9])
-    ctx = ik_context(ARM, Target(*_tool(*q_a)), stop=(1e-12, 1e-12), tol=(1e-9, 1e-9),
+    ctx = ik_context(ARM, Target(*tool(q_a)), stop=(1e-12, 1e-12), tol=(1e-9, 1e-9),
                      distinct=0.2, max_iter=11)
     ws = lm_workspace(2)
     assert recheck(ctx, ws, q_a.copy()) and not recheck(ctx, ws, q_b.copy())
     before = _fields(ctx)
-    p_b, R_b = _tool(*q_b)
+    p_b, R_b = tool(q_b)
     retarget(ctx, R_b, p_b)
     after = _fields(ctx)
     np.testing.assert_array_equal(after[0], p_b)
@@ -115,7 +99,7 @@ def test_no_stop_never_converges():
     """From an exact solution a start with a stop converges at once (one evaluation); with
     NO_STOP (the front's scalarisations) it runs on and never reports convergence."""
     q = np.array([0.3, -0.7])
-    target = Target(*_tool(*q))
+    target = Target(*tool(q))
     for stop, converged in (((1e-9, 1e-9), True), ((NO_STOP, NO_STOP), False)):
         ctx = ik_context(ARM, target, stop=stop)
         ends = np.empty((1, 3))

@@ -1,14 +1,10 @@
 """The start loop (run_starts), its batch (run_batch), the weighted-sum front (lm_front)
 and their helpers, on cases solved by hand.
 
-The arm is ``planar2`` (I-BES Table 2: ``T(q) = Rz(q1) Tx(a1) Rz(q2) Tx(a2)``, ``a1 =
-0.35``, ``a2 = 0.30``, reach 0.65, limits ``[-pi, pi]``). A position target ``(x, y, 0)``
-with ``a1 - a2 < r = |(x, y)| < a1 + a2`` has exactly two solutions modulo 2 pi (law of
-cosines): ``q2 = +-acos((r^2 - a1^2 - a2^2) / (2 a1 a2))``,
-``q1 = atan2(y, x) - atan2(a2 sin q2, a1 + a2 cos q2)``. A position target at distance
-``D > reach`` is missed by at least ``D - reach``, attained by the stretched arm pointing
-at it, so the lowest cost ``0.5 |r|^2`` (position rows scaled by ``1 / reach``) is
-``0.5 ((D - reach) / reach)^2``.
+The arm is ``planar2`` (tests/solver/planar2_cases.py: two solutions of a position target
+by the law of cosines). A position target at distance ``D > reach`` is missed by at least
+``D - reach``, attained by the stretched arm pointing at it, so the lowest cost
+``0.5 |r|^2`` (position rows scaled by ``1 / reach``) is ``0.5 ((D - reach) / reach)^2``.
 """
 
 import numpy as np
@@ -32,23 +28,9 @@ from moik.solver.starts import (
     run_batch,
     run_starts,
 )
+from tests.solver.planar2_cases import ARM, REACH, branches, wrapped
 
-ARM = get_robot("planar2")
-A1, A2, REACH = 0.35, 0.30, 0.65
 TOL = (1e-9 * REACH, 1e-9)
-
-
-def _branches(x, y):
-    """The two solutions of the position target (x, y, 0) (module doc)."""
-    c2 = (x * x + y * y - A1 * A1 - A2 * A2) / (2 * A1 * A2)
-    out = []
-    for q2 in (np.arccos(c2), -np.arccos(c2)):
-        out.append([np.arctan2(y, x) - np.arctan2(A2 * np.sin(q2), A1 + A2 * np.cos(q2)), q2])
-    return np.array(out)
-
-
-def _wrapped(a, b):
-    return np.abs((a - b + np.pi) % (2 * np.pi) - np.pi)
 
 
 def _context(target, **kwargs):
@@ -78,11 +60,11 @@ def test_finds_exactly_the_two_branches_of_a_planar_target():
                                        ends)
     assert n_found == 2 and used == len(STARTS) and n_eval >= used  # no third solution
     assert np.isnan(found[2:]).all()
-    expected = _branches(x, y)
+    expected = branches(x, y)
     for row in found[:2]:
-        assert min(_wrapped(row[:2], e).max() for e in expected) < 1e-6
+        assert min(wrapped(row[:2], e).max() for e in expected) < 1e-6
         assert np.all(ARM.within_limits(row[:2]))
-    assert _wrapped(found[0, :2], found[1, :2]).max() > 0.1
+    assert wrapped(found[0, :2], found[1, :2]).max() > 0.1
     # the errors stored are the FK re-check's (the reference FK agrees), within tolerance
     pos, ori = pose_errors(ARM, Target([x, y, 0.0]), found[:2, :2], reference=True)
     np.testing.assert_allclose(found[:2, 2], pos, rtol=0, atol=1e-15)
@@ -92,7 +74,7 @@ def test_finds_exactly_the_two_branches_of_a_planar_target():
 
 def test_a_full_table_or_a_spent_budget_starts_nothing_more():
     ctx = _context(Target([0.3, 0.25, 0.0]))
-    known = found_table(1, 2, _branches(0.3, 0.25)[:1])
+    known = found_table(1, 2, branches(0.3, 0.25)[:1])
     best, ends = np.full(3, np.inf), np.full((len(STARTS), 3), -7.0)
     assert run_starts(ctx, STARTS.copy(), (CHECK, UNLIMITED), known, best, ends) == (1, 0, 0)
     assert np.all(ends == -7.0) and best[0] == np.inf
@@ -102,7 +84,7 @@ def test_a_full_table_or_a_spent_budget_starts_nothing_more():
 
 
 def test_a_known_solution_is_not_found_again():
-    sols = _branches(0.3, 0.25)
+    sols = branches(0.3, 0.25)
     ctx = _context(Target([0.3, 0.25, 0.0]))
     found = found_table(4, 2, sols[:1])
     starts = np.vstack([sols[0] + 1e-4, sols[0] - 1e-4])  # both converge to it

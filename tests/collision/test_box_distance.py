@@ -34,9 +34,9 @@ def _rot(axis, a):
 
 
 def _f(p, d, e, t):
-    """``|p + t d - box|^2`` for the box ``|x_i| <= e_i``, in numpy."""
-    x = np.asarray(p) + t * np.asarray(d)
-    return float(np.sum(np.maximum(np.abs(x) - e, 0.0) ** 2))
+    """``|p + t d - box|^2`` for the box ``|x_i| <= e_i``, in numpy (``t`` scalar or 1-D)."""
+    x = np.asarray(p) + np.multiply.outer(t, np.asarray(d))
+    return np.sum(np.maximum(np.abs(x) - e, 0.0) ** 2, axis=-1)
 
 
 coord = st.floats(-3.0, 3.0)
@@ -52,8 +52,8 @@ def test_segment_box_minimum_is_the_minimum(p, d, e):
     f_min, t = segment_box_sq(p, d, e)
     assert 0.0 <= t <= 1.0
     assert f_min == pytest.approx(_f(p, d, e, t), rel=1e-12, abs=1e-15)
-    grid = min(_f(p, d, e, s) for s in np.linspace(0.0, 1.0, 2001))
-    brent = minimize_scalar(lambda s: _f(p, d, e, s), bounds=(0.0, 1.0), method="bounded",
+    grid = _f(p, d, e, np.linspace(0.0, 1.0, 2001)).min()
+    brent = minimize_scalar(lambda s: float(_f(p, d, e, s)), bounds=(0.0, 1.0), method="bounded",
                             options={"xatol": 1e-12}).fun
     assert f_min <= min(grid, brent) + 1e-12
 

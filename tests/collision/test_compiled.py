@@ -1,0 +1,102 @@
+"""A checker's arrays as one compiled value (CollisionSet) and the start loop's collision
+test (end_distance, end_scratch, checks_pairs), in compiled code and from Python.
+
+Hand case: planar2 (tool at ``0.35 u(q1) + 0.30 u(q1 + q2)``, ``u(a) = (cos a, sin a, 0)``,
+frame 2 = the tool) with a sphere of radius 0.05 on the tool and world spheres of radius
+0.1 at ``c``: the signed distance is ``|tool(q) - c| - 0.15``.
+"""
+
+import numpy as np
+import pytest
+
+from moik._jit import jit
+from moik.collision import CollisionChecker, CollisionModel, Scene, Sphere
+from moik.collision.compiled import (
+    checks_pairs,
+    collision_set,
+    end_distance,
+    end_scratch,
+    n_pairs,
+    set_min_distance,
+    set_scratch,
+)
+from moik.collision.distance import SPHERE
+from moik.robots import get_robot
+
+ARM = get_robot("planar2")
+CENTRES = np.array([[0.0, 0.7, 0.0], [0.7, 0.0, 0.0]])
+
+
+def _tool(q):
+    return np.array([0.35 * np.cos(q[0]) + 0.30 * np.cos(q[0] + q[1]),
+                     0.35 * np.sin(q[0]) + 0.30 * np.sin(q[0] + q[1]), 0.0])
+
+
+def _set(pairs):
+    local = np.tile(np.eye(4), (3, 1, 1))
+    local[1:, :3, 3] = CENTRES
+    return collision_set(chain=ARM.chain_model, body=np.array([2, -1, -1]), local=local,
+                         kinds=np.full(3, SPHERE), sizes=np.array([[0.05, 0, 0], [0.1, 0, 0],
+                                                                   [0.1, 0, 0]]),
+                         pairs=np.array(pairs, dtype=np.int64).reshape(-1, 2))
+
+
+@jit
+def _in_compiled_code(cs, q):
+    """The start loop's calls, compiled for the type of ``cs`` (a set or None)."""
+    return checks_pairs(cs), end_distance(cs, q, end_scratch(cs))
+
+
+Q = ARM.random_q(6, rng=np.random.default_rng(0))
+
+
+def test_the_smallest_distance_over_the_pairs_by_hand():
+    cs = _set([[0, 1], [0, 2]])
+    assert n_pairs(cs) == 2
+    scratch = set_scratch(cs)
+    for q in Q:
+        expected = min(np.linalg.norm(_tool(q) - c) for c in CENTRES) - 0.15
+        assert set_min_distance(cs, q, scratch) == pytest.approx(expected, abs=1e-14)
+    one = _set([[0, 2]])  # only the second obstacle
+    for q in Q:
+        expected = np.linalg.norm(_tool(q) - CENTRES[1]) - 0.15
+        assert set_min_distance(one, q, set_scratch(one)) == pytest.approx(expected, abs=1e-14)
+
+
+def test_a_set_without_pairs_checks_nothing():
+    cs = _set([])
+    assert n_pairs(cs) == 0 and not checks_pairs(cs)
+    assert set_min_distance(cs, Q[0], set_scratch(cs)) == np.inf
+    assert _in_compiled_code(cs, Q[0]) == (False, np.inf)
+
+
+def test_the_start_loops_test_compiled_for_a_set_and_for_none():
+    cs = _set([[0, 1], [0, 2]])
+    for q in Q[:3]:
+        checks, d = _in_compiled_code(cs, q)
+        assert checks and d == set_min_distance(cs, q, set_scratch(cs))
+        assert end_distance(cs, q, end_scratch(cs)) == d  # the Python path agrees
+    assert _in_compiled_code(None, Q[0]) == (False, np.inf)
+    assert end_scratch(None) == 0
+
+
+def test_a_checkers_compiled_value_is_the_same_set():
+    """The checker builds its set from the same shapes: the same distances."""
+    model = CollisionModel(robot=ARM, shapes={"link2": Sphere(radius=0.05)})
+    poses = [np.eye(4), np.eye(4)]
+    poses[0][:3, 3], poses[1][:3, 3] = CENTRES
+    scene = Scene({"a": Sphere(radius=0.1, pose=poses[0]),
+                   "b": Sphere(radius=0.1, pose=poses[1])})
+    compiled = CollisionChecker(model=model, scene=scene).compiled
+    cs = _set([[0, 1], [0, 2]])
+    assert n_pairs(compiled) == 2
+    for q in Q:
+        assert set_min_distance(compiled, q, set_scratch(compiled)) == pytest.approx(
+            set_min_distance(cs, q, set_scratch(cs)), abs=1e-15)
+
+
+def test_collision_set_takes_keywords_only():
+    with pytest.raises(TypeError):
+        collision_set(ARM.chain_model, np.zeros(1, dtype=np.int64), np.eye(4)[None],
+                      np.zeros(1, dtype=np.int64), np.zeros((1, 3)),
+                      np.zeros((0, 2), dtype=np.int64))

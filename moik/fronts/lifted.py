@@ -72,10 +72,14 @@ def solve_lifted(model: ErrorModel, q0: np.ndarray, k: int, eps: float, *,
 
         def jac(x):
             return grad_t
-        if eps <= ZERO_EPS:
-            constraints.append({"type": "eq", "fun": lambda x: model.residual(x[:dof], 0)[0],
-                                "jac": lambda x: np.hstack([model.residual(x[:dof], 0)[1],
-                                                            np.zeros((3, n))])})
+        if eps <= ZERO_EPS:  # the position equations, less those that vanish identically
+            r0, j0 = model.residual(q0, 0)  # (a planar arm's z), as solve_constrained does
+            rows = (np.abs(r0) > 1e-14) | (np.abs(j0).max(axis=1) > 1e-12)
+            zero = np.zeros((int(rows.sum()), n))
+            constraints.append({"type": "eq",
+                                "fun": lambda x: model.residual(x[:dof], 0)[0][rows],
+                                "jac": lambda x: np.hstack([model.residual(x[:dof], 0)[1][rows],
+                                                            zero])})
         elif np.isfinite(eps):
             level = eps * eps / model.scale[0]
             constraints.append({"type": "ineq",

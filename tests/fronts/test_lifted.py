@@ -76,14 +76,9 @@ def test_least_position_error_within_an_orientation_level(eps):
     assert math.isnan(out.kkt)
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "solve_lifted(k=1, eps <= ZERO_EPS) passes all three position equations to SLSQP; on "
-    "a planar arm the z equation is identically 0 with a zero Jacobian row, SLSQP stops at "
-    "its first iteration ('Singular matrix C in LSQ subproblem', status 6) and the start "
-    "is returned (q = (1.4, -1.7), f1 = 0.047, success False); solve_constrained leaves "
-    "such rows out"))
 def test_least_orientation_error_on_the_exact_position():
-    """A reachable position (0.3, 0.25): exact on either branch, whose headings are
+    """A reachable position (0.3, 0.25) of a planar arm (its z equation vanishes identically:
+    left out, as solve_constrained does): exact on either branch, whose headings are
     ``q1 + q2`` (law of cosines); the lifted problem finds the branch nearer ``phi``
     from a start near it."""
     p = np.array([0.3, 0.25, 0.0])

@@ -18,7 +18,8 @@ from numba.experimental import structref
 from numba.extending import overload
 
 from moik._jit import StructType, define_struct, jit
-from moik.collision.kernels import distance_scratch, min_distance_of
+from moik.collision.kernels import distance_below, distance_scratch
+from moik.collision.shapes import hull_capsule
 from moik.robots.chain_model import ChainModel
 
 
@@ -33,35 +34,52 @@ class CollisionSet(structref.StructRefProxy):
     Fields: ``chain`` (the arm's :class:`~moik.robots.chain_model.ChainModel`), ``body``,
     ``local``, ``kinds``, ``sizes``, ``pairs`` (the shapes and the pairs evaluated, as
     :mod:`moik.collision.kernels` describes them), ``hull_points``, ``hull_ranges`` (the
-    vertices of the hull shapes, as :mod:`moik.collision.gjk` describes them).
+    vertices of the hull shapes, as :mod:`moik.collision.gjk` describes them), ``refine``,
+    ``sub_pairs`` (the pairs of a compound's parts that refine each pair).
     """
 
 
-FIELDS = ("chain", "body", "local", "kinds", "sizes", "pairs", "hull_points", "hull_ranges")
+FIELDS = ("chain", "body", "local", "kinds", "sizes", "pairs", "refine", "sub_pairs",
+          "hull_points", "hull_ranges", "hull_caps")
 define_struct(CollisionSet, CollisionSetType, FIELDS)
 
 
 @jit
 def _new_set(chain, shapes, pairs, hulls):
     """The compiled constructor (cached)."""
-    return CollisionSet(chain, shapes[0], shapes[1], shapes[2], shapes[3], pairs, hulls[0],
-                        hulls[1])
+    return CollisionSet(chain, shapes[0], shapes[1], shapes[2], shapes[3], pairs[0], pairs[1],
+                        pairs[2], hulls[0], hulls[1], hulls[2])
 
 
 def collision_set(*, chain: ChainModel, body: np.ndarray, local: np.ndarray, kinds: np.ndarray,
                   sizes: np.ndarray, pairs: np.ndarray, hull_points: np.ndarray,
-                  hull_ranges: np.ndarray) -> CollisionSet:
+                  hull_ranges: np.ndarray, hull_caps: np.ndarray | None = None,
+                  refine: np.ndarray | None = None,
+                  sub_pairs: np.ndarray | None = None) -> CollisionSet:
     """A :class:`CollisionSet` of an arm and its shapes: ``body (m,)`` int64, ``local
-    (m, 4, 4)``, ``kinds (m,)`` int64, ``sizes (m, 3)``, ``pairs (p, 2)`` int64, and the
+    (m, 4, 4)``, ``kinds (m,)`` int64, ``sizes (m, 3)``, ``pairs (p, 2)`` int64, the
     vertices of its hulls (:mod:`moik.collision.gjk`): ``hull_points (v, 3)`` and
-    ``hull_ranges (h, 2)`` int64."""
-    return _new_set(chain, (body, local, kinds, sizes), pairs, (hull_points, hull_ranges))
+    ``hull_ranges (h, 2)`` int64, a capsule holding each (``hull_caps (h, 8)``, from
+    :func:`~moik.collision.shapes.hull_capsules`; computed when not given), and the
+    refinement of each pair (a compound's parts,
+    :mod:`moik.collision.kernels`): ``refine (p, 2)`` ranges of ``sub_pairs (s, 2)`` (none
+    by default)."""
+    if refine is None or sub_pairs is None:
+        refine = np.zeros((len(pairs), 2), dtype=np.int64)
+        sub_pairs = np.zeros((0, 2), dtype=np.int64)
+    if hull_caps is None:
+        hull_caps = np.ascontiguousarray(np.array(
+            [hull_capsule(hull_points[s:e]) for s, e in hull_ranges]).reshape(-1, 8))
+    return _new_set(chain, (body, local, kinds, sizes), (pairs, refine, sub_pairs),
+                    (hull_points, hull_ranges, hull_caps))
 
 
-def end_distance(cs, q, scratch):
-    """Smallest signed distance of ``q`` over the pairs of ``cs`` (``inf``: ``cs`` is
-    ``None``, no check). In compiled code the overload below specialises it on ``cs``."""
-    return np.inf if cs is None else set_min_distance(cs, q, scratch)
+def end_distance(cs, q, scratch, clearance):
+    """Smallest signed distance of ``q`` over the pairs of ``cs`` when it is below
+    ``clearance``, else a number at least ``clearance``
+    (:func:`~moik.collision.kernels.distance_below`; ``inf``: ``cs`` is ``None``, no check).
+    In compiled code the overload below specialises it on ``cs``."""
+    return np.inf if cs is None else set_distance_below(cs, q, scratch, clearance)
 
 
 def end_scratch(cs):
@@ -81,12 +99,12 @@ def n_pairs(cs):
 
 
 @overload(end_distance)
-def _end_distance(cs, q, scratch):
+def _end_distance(cs, q, scratch, clearance):
     """``None`` (a solve without a check) compiles to ``inf``: the start loop of a
     collision-blind solve holds no distance code (smaller, quicker to load)."""
     if isinstance(cs, nb_types.NoneType):
-        return lambda cs, q, scratch: np.inf
-    return lambda cs, q, scratch: set_min_distance(cs, q, scratch)
+        return lambda cs, q, scratch, clearance: np.inf
+    return lambda cs, q, scratch, clearance: set_distance_below(cs, q, scratch, clearance)
 
 
 @overload(end_scratch)
@@ -105,13 +123,14 @@ def _checks_pairs(cs):
 
 @jit
 def set_scratch(cs):
-    """Scratch of :func:`set_min_distance` for ``cs``."""
+    """Scratch of :func:`set_distance_below` for ``cs``."""
     return distance_scratch(cs)
 
 
 @jit
-def set_min_distance(cs, q, scratch):
-    """Smallest signed distance of ``q`` over the pairs of ``cs`` (``inf``: none)."""
+def set_distance_below(cs, q, scratch, limit):
+    """:func:`~moik.collision.kernels.distance_below` of ``q``: the distance (``inf``: no
+    pair)."""
     if cs.pairs.shape[0] == 0:
         return np.inf
-    return min_distance_of(cs, q, scratch)[0]
+    return distance_below(cs, q, scratch, limit)[0]

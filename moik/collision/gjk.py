@@ -35,7 +35,7 @@ import math
 import numpy as np
 
 from moik._jit import jit
-from moik.collision.distance import BOX, CAPSULE, HALFSPACE, HULL
+from moik.collision.distance import BOX, CAPSULE, HALFSPACE, HULL, segment_points
 
 MAX_ITER = 64  # GJK iterations (a polytope pair converges in far fewer)
 REL_TOL = 1e-12  # stop when the lower and upper bounds of |v|^2 agree to this fraction
@@ -183,7 +183,9 @@ def _point(S, lam, n):
 @jit
 def _closest(S, n, lam):
     """Weights of the closest point to the origin of the simplex ``S[:n]`` (the zero ones
-    mark the vertices to drop); whether the origin is inside a tetrahedron."""
+    mark the vertices to drop); whether the origin is inside a tetrahedron (then the
+    weights are those of its closest face, for a caller that knows better: a tetrahedron
+    flat to rounding error can seem to hold the origin)."""
     for i in range(4):
         lam[i] = 0.0
     if n == 1:
@@ -193,12 +195,17 @@ def _closest(S, n, lam):
     elif n == 3:
         _triangle(S, 0, 1, 2, lam)
     else:
-        best = np.inf
         faces = ((0, 1, 2, 3), (0, 1, 3, 2), (0, 2, 3, 1), (1, 2, 3, 0))
         trial = np.zeros(4)
+        inside = True
         for f in range(4):
             i, j, k, m = faces[f]
-            if not _side(S, i, j, k, m):
+            if _side(S, i, j, k, m):
+                inside = False
+        best = np.inf
+        for f in range(4):
+            i, j, k, m = faces[f]
+            if not inside and not _side(S, i, j, k, m):
                 continue
             for t in range(4):
                 trial[t] = 0.0
@@ -209,15 +216,15 @@ def _closest(S, n, lam):
                 best = d
                 for t in range(4):
                     lam[t] = trial[t]
-        if best == np.inf:
-            return True  # on the inner side of every face: the origin is inside
+        return inside
     return False
 
 
 @jit
-def gjk(cs, W, a, b):
+def gjk(cs, W, a, b, limit):
     """Distance bounds of the cores of shapes ``a`` and ``b`` and their closest points:
-    ``(lower, upper, pa (3,), pb (3,), touching)``."""
+    ``(lower, upper, pa (3,), pb (3,), touching)``. Stops as soon as ``lower`` reaches
+    ``limit`` (the cores are then known to be at least that far apart)."""
     S, A, B = np.empty((4, 3)), np.empty((4, 3)), np.empty((4, 3))
     lam = np.zeros(4)
     dx = W[a, 0, 3] - W[b, 0, 3]
@@ -233,7 +240,7 @@ def gjk(cs, W, a, b):
     S[0, 0], S[0, 1], S[0, 2] = ax - bx, ay - by, az - bz
     n, lam[0] = 1, 1.0
     vx, vy, vz = S[0, 0], S[0, 1], S[0, 2]
-    lower, touching = 0.0, False
+    lower, touching = -np.inf, False  # no bound yet
     for _ in range(MAX_ITER):
         vv = vx * vx + vy * vy + vz * vz
         if vv < _TINY:
@@ -244,7 +251,7 @@ def gjk(cs, W, a, b):
         wx, wy, wz = ax - bx, ay - by, az - bz
         vw = vx * wx + vy * wy + vz * wz
         lower = max(lower, vw / math.sqrt(vv))
-        if vv - vw <= REL_TOL * vv or n == 4:
+        if vv - vw <= REL_TOL * vv or n == 4 or 0.0 < limit <= lower:
             break
         duplicate = False
         for i in range(n):
@@ -256,10 +263,10 @@ def gjk(cs, W, a, b):
         A[n, 0], A[n, 1], A[n, 2] = ax, ay, az
         B[n, 0], B[n, 1], B[n, 2] = bx, by, bz
         n += 1
-        if _closest(S, n, lam):
+        if _closest(S, n, lam) and lower <= 0.0:  # the origin inside: the cores overlap
             touching = True
             break
-        n = _keep(S, A, B, lam, n)
+        n = _keep(S, A, B, lam, n)  # (a seeming inside with a positive lower bound: flat)
         vx, vy, vz = _point(S, lam, n)
     pa, pb = np.empty(3), np.empty(3)
     pa[0], pa[1], pa[2] = _point(A, lam, n)
@@ -286,6 +293,33 @@ def _overlap(cs, W, a, b):
 
 
 @jit
+def _capsule_in_world(cs, W, k):
+    """Centre, unit axis, half length and radius of hull ``k``'s capsule, in the world."""
+    c = cs.hull_caps[int(cs.sizes[k, 0])]
+    P = W[k]
+    px = P[0, 0] * c[0] + P[0, 1] * c[1] + P[0, 2] * c[2] + P[0, 3]
+    py = P[1, 0] * c[0] + P[1, 1] * c[1] + P[1, 2] * c[2] + P[1, 3]
+    pz = P[2, 0] * c[0] + P[2, 1] * c[1] + P[2, 2] * c[2] + P[2, 3]
+    ux = P[0, 0] * c[3] + P[0, 1] * c[4] + P[0, 2] * c[5]
+    uy = P[1, 0] * c[3] + P[1, 1] * c[4] + P[1, 2] * c[5]
+    uz = P[2, 0] * c[3] + P[2, 1] * c[4] + P[2, 2] * c[5]
+    return (px, py, pz), (ux, uy, uz), c[6], c[7]
+
+
+@jit
+def hulls_bound(cs, W, a, b):
+    """A lower bound of the distance of hulls ``a`` and ``b``: their capsules' distance
+    (:func:`~moik.collision.shapes.hull_capsules`)."""
+    p, u, h, ra = _capsule_in_world(cs, W, a)
+    q, v, k, rb = _capsule_in_world(cs, W, b)
+    t, w = segment_points(p, u, h, q, v, k)
+    dx = q[0] + w * v[0] - p[0] - t * u[0]
+    dy = q[1] + w * v[1] - p[1] - t * u[1]
+    dz = q[2] + w * v[2] - p[2] - t * u[2]
+    return math.sqrt(dx * dx + dy * dy + dz * dz) - ra - rb
+
+
+@jit
 def hull_halfspace(cs, W, a, h):
     """Signed distance of shape ``a`` (a hull) to half-space ``h``: its deepest vertex's."""
     P = W[h]
@@ -296,16 +330,17 @@ def hull_halfspace(cs, W, a, h):
 
 
 @jit
-def convex_pair(cs, W, a, b):
+def convex_pair(cs, W, a, b, limit):
     """Signed distance, normal (A to B) and witnesses of shapes ``a`` and ``b``, one of them
-    a hull (the module doc)."""
+    a hull (the module doc). A distance of at least ``limit`` may be returned as a lower
+    bound of the distance, not the distance (GJK stops there)."""
     if cs.kinds[b] == HALFSPACE:
         return hull_halfspace(cs, W, a, b)
     if cs.kinds[a] == HALFSPACE:
         d, nx, ny, nz, ax, ay, az, bx, by, bz = hull_halfspace(cs, W, b, a)
         return d, -nx, -ny, -nz, bx, by, bz, ax, ay, az
     ra, rb = _radius(cs, a), _radius(cs, b)
-    lower, upper, pa, pb, touching = gjk(cs, W, a, b)
+    lower, upper, pa, pb, touching = gjk(cs, W, a, b, limit + ra + rb)
     if touching:
         depth, nx, ny, nz, ax, ay, az = _overlap(cs, W, a, b)
         d = -depth - ra - rb

@@ -25,7 +25,7 @@ import numpy as np
 
 from moik._jit import jit
 from moik.collision.distance import HULL
-from moik.collision.gjk import convex_pair
+from moik.collision.gjk import convex_pair, hulls_bound
 from moik.collision.pairs import pair_bound, pair_distance
 from moik.robots.fk_kernels import compose, move_joint, pose_state, store_pose
 from moik.robots.transforms import PRISMATIC
@@ -65,13 +65,14 @@ def place_shapes(frames, body, local, W):
 
 
 @jit
-def shape_pair(cs, W, a, b):
+def shape_pair(cs, W, a, b, limit):
     """Signed distance, normal and witnesses of shapes ``a`` and ``b`` placed at ``W``: the
     primitives' exact kernels (:func:`~moik.collision.pairs.pair_distance`), GJK for a
-    pair with a hull (:func:`~moik.collision.gjk.convex_pair`)."""
+    pair with a hull (:func:`~moik.collision.gjk.convex_pair`, which may return a lower
+    bound of the distance once it reaches ``limit``)."""
     kinds, sizes = cs.kinds, cs.sizes
     if kinds[a] == HULL or kinds[b] == HULL:
-        return convex_pair(cs, W, a, b)
+        return convex_pair(cs, W, a, b, limit)
     return pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])
 
 
@@ -92,16 +93,37 @@ def place_all(cs, q, scratch):
 
 
 @jit
+def pair_value(cs, W, k, limit):
+    """The distance result of pair ``k`` (shapes placed at ``W``): its shapes' own; for a
+    pair refined by compound parts (``cs.refine[k]`` not empty), the smallest over its parts'
+    pairs, unless the bounds' distance is already at least ``limit`` (then the bounds': a
+    lower bound, enough to know the pair is not below ``limit``)."""
+    res = shape_pair(cs, W, cs.pairs[k, 0], cs.pairs[k, 1], limit)
+    start, end = cs.refine[k, 0], cs.refine[k, 1]
+    if start == end or res[0] >= limit:
+        return res
+    best = (np.inf, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    for s in range(start, end):
+        a, b = cs.sub_pairs[s, 0], cs.sub_pairs[s, 1]
+        cap = min(best[0], limit)
+        if pair_bound(cs.kinds, W, cs.sizes, a, b) >= cap or (
+                cs.kinds[a] == HULL and cs.kinds[b] == HULL and hulls_bound(cs, W, a, b) >= cap):
+            continue  # its distance is at least its bound: not below the smallest
+        r = shape_pair(cs, W, a, b, cap)
+        if r[0] < best[0]:
+            best = r
+    return best
+
+
+@jit
 def pair_distances(cs, Q, out):
     """Signed distance of every pair for every row of ``Q (n, dof)``, into ``out (n, p)``."""
     scratch = distance_scratch(cs)
     W = scratch[2]
-    pairs = cs.pairs
     for i in range(Q.shape[0]):
         place_all(cs, Q[i], scratch)
-        for k in range(pairs.shape[0]):
-            a, b = pairs[k, 0], pairs[k, 1]
-            out[i, k] = shape_pair(cs, W, a, b)[0]
+        for k in range(cs.pairs.shape[0]):
+            out[i, k] = pair_value(cs, W, k, np.inf)[0]
 
 
 @jit
@@ -119,30 +141,37 @@ def min_distances(cs, Q, dmin, which):
 def min_distance_of(cs, q, scratch):
     """Smallest pair distance of one joint vector and the pair attaining it (``inf``, -1:
     no pair); ``scratch`` from :func:`distance_scratch`."""
+    return distance_below(cs, q, scratch, np.inf)
+
+
+@jit
+def distance_below(cs, q, scratch, limit):
+    """Smallest pair distance of ``q`` and the pair attaining it when it is below ``limit``;
+    else a number at least ``limit`` (``inf`` when no pair comes near it) and -1. The
+    pairs whose bounds keep ``limit`` are not measured: the start loop's test of an end
+    (``limit`` = the clearance) measures only the pairs that come close."""
     place_all(cs, q, scratch)
     W = scratch[2]
     kinds, sizes, pairs = cs.kinds, cs.sizes, cs.pairs
     first, low = -1, np.inf  # the pair of the smallest bound is evaluated first
     for k in range(pairs.shape[0]):
-        a, b = pairs[k, 0], pairs[k, 1]
-        lb = pair_bound(kinds, W, sizes, a, b)
+        lb = pair_bound(kinds, W, sizes, pairs[k, 0], pairs[k, 1])
         if first < 0 or lb < low:
             first, low = k, lb
     best, arg = np.inf, -1
-    if first >= 0:
-        a, b = pairs[first, 0], pairs[first, 1]
-        best = shape_pair(cs, W, a, b)[0]
-        arg = first
+    if first >= 0 and low < limit:
+        best = pair_value(cs, W, first, limit)[0]
+        arg = first if best < limit else -1
     for k in range(pairs.shape[0]):
         if k == first:
             continue
-        a, b = pairs[k, 0], pairs[k, 1]
-        if pair_bound(kinds, W, sizes, a, b) > best:
+        cap = min(best, limit)
+        if pair_bound(kinds, W, sizes, pairs[k, 0], pairs[k, 1]) > cap:
             continue  # its distance is at least its bound: not below the minimum
-        d = shape_pair(cs, W, a, b)[0]
+        d = pair_value(cs, W, k, cap)[0]
         if d < best or (d == best and k < arg):  # the first pair attaining it, as in order
             best, arg = d, k
-    return best, arg
+    return best, (arg if best < limit else -1)
 
 
 @jit
@@ -172,8 +201,7 @@ def min_distance_gradients(cs, Q, dmin, grad):
         best, arg = np.inf, -1
         res = (np.inf, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
         for k in range(pairs.shape[0]):
-            a, b = pairs[k, 0], pairs[k, 1]
-            r = shape_pair(cs, W, a, b)
+            r = pair_value(cs, W, k, best)
             if r[0] < best:
                 best, arg, res = r[0], k, r
         dmin[i] = best

@@ -26,7 +26,15 @@ import numpy as np
 from moik._validate import flag
 from moik.collision import kernels
 from moik.collision.compiled import CollisionSet, collision_set
-from moik.collision.shapes import HalfSpace, Shape, hull_arrays, shape_arrays
+from moik.collision.shapes import (
+    HalfSpace,
+    Shape,
+    expand_compounds,
+    hull_arrays,
+    hull_capsules,
+    refinements,
+    shape_arrays,
+)
 from moik.exceptions import GeometryError, ParameterError, UnknownNameError
 from moik.robots.chain import Robot
 
@@ -184,32 +192,36 @@ class CollisionChecker:
                                  "self_collision=True")
         robot = model.robot
         items = model.items
+        tops = [s for _, s in items] + list(() if scene is None else scene.obstacles.values())
+        top_bodies = [b for b, _ in items] + [-1] * (len(tops) - len(items))
         names = [f"{model.links[b]}[{k}]" for k, (b, _) in enumerate(items)]
-        bodies = [b for b, _ in items]
-        shapes = [s for _, s in items]
-        obstacles = {} if scene is None else scene.obstacles
-        for name, s in obstacles.items():
-            names.append(name)
-            bodies.append(-1)
-            shapes.append(s)
+        names += list(() if scene is None else scene.obstacles)
+        shapes, bodies, parts = expand_compounds(tops, top_bodies)
         kinds, local, sizes = shape_arrays(shapes)
         hull_points, hull_ranges = hull_arrays(shapes, sizes)
         pairs = []
         if self.self_collision:
             checked = set(model.checked_body_pairs())
             pairs += [(a, b) for a in range(len(items)) for b in range(a + 1, len(items))
-                      if (bodies[a], bodies[b]) in checked]
+                      if tuple(sorted((top_bodies[a], top_bodies[b]))) in checked]
         for _, link in (() if scene is None else scene.allowed):
             if link not in model.links:
                 raise UnknownNameError(f"link of robot {robot.name!r}", link, model.links)
         skip = frozenset() if scene is None else scene.allowed
+        obstacles = {} if scene is None else scene.obstacles
         pairs += [(a, len(items) + o) for a in range(len(items))
                   for o, obstacle in enumerate(obstacles)
-                  if (obstacle, model.links[bodies[a]]) not in skip]
+                  if (obstacle, model.links[top_bodies[a]]) not in skip]
+        refine, sub_pairs = refinements(pairs, parts)
         self._shapes = {"body": np.array(bodies, dtype=np.int64), "local": local,
                         "kinds": kinds, "sizes": sizes,
                         "pairs": np.array(pairs, dtype=np.int64).reshape(-1, 2),
-                        "hull_points": hull_points, "hull_ranges": hull_ranges}
+                        "refine": refine, "sub_pairs": sub_pairs,
+                        "hull_points": hull_points, "hull_ranges": hull_ranges,
+                        "hull_caps": hull_capsules(shapes)}
+        names = names + [f"{names[t]}.{i}" for t, ks in enumerate(parts) for i in range(len(ks))
+                         if ks != [t]]
+        bodies = top_bodies
         self.shape_names = tuple(names)
         self.pair_names = tuple((names[a], names[b]) for a, b in pairs)
         self.pair_bodies = tuple((bodies[a], bodies[b]) for a, b in pairs)  # -1: the world

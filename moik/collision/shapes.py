@@ -12,7 +12,9 @@ the world for a scene's obstacle) and sizes in the robot's length unit:
 * :class:`HalfSpace`: the solid ``z <= 0`` of its pose, a table top or floor whose
   outward normal is the pose's z axis (:meth:`HalfSpace.plane` from normal and offset);
 * :class:`ConvexHull` ``(points)``: the convex hull of points in its frame, a collision
-  mesh's hull (:mod:`moik.collision.gjk` computes its distances).
+  mesh's hull (:mod:`moik.collision.gjk` computes its distances);
+* :class:`Compound` ``(bound, parts)``: convex hulls inside a bounding primitive, measured
+  on the parts only where the bounds come close (a collision mesh cut in convex pieces).
 
 A URDF ``<cylinder>`` is modelled by :func:`cylinder`: the capsule of the same radius
 whose segment is the cylinder's axis (it contains the cylinder and extends ``radius``
@@ -33,11 +35,11 @@ import numpy as np
 
 from moik._validate import finite_array, number
 from moik.collision.distance import BOX, CAPSULE, HALFSPACE, HULL, SPHERE
-from moik.exceptions import NonFiniteError, ParameterError
+from moik.exceptions import GeometryError, NonFiniteError, ParameterError
 from moik.robots.checks import rigid_transform
 
-__all__ = ["Box", "Capsule", "ConvexHull", "HalfSpace", "Shape", "Sphere", "cylinder",
-           "shape_arrays"]
+__all__ = ["Box", "Capsule", "Compound", "ConvexHull", "HalfSpace", "Shape", "Sphere",
+           "cylinder", "shape_arrays"]
 
 
 def _pose(owner: str, pose: Any) -> np.ndarray:
@@ -236,8 +238,57 @@ class ConvexHull(Shape):
         hulls (:class:`~moik.collision.CollisionChecker`)."""
         return 0.0, float(np.sqrt((self.points ** 2).sum(axis=1).max())), 0.0
 
+    def moved(self, transform: Any) -> Shape:
+        """The same hull with pose ``transform @ pose`` (its vertices as they are)."""
+        T = rigid_transform("transform", finite_array("transform", transform, shape=(4, 4)))
+        out = object.__new__(ConvexHull)
+        object.__setattr__(out, "points", self.points)
+        object.__setattr__(out, "pose", T @ self.pose)
+        return out
+
     def _sizes_dict(self) -> dict[str, Any]:
         return {"points": self.points.tolist()}
+
+
+@dataclass(frozen=True, eq=False, kw_only=True)
+class Compound(Shape):
+    """A body's geometry as a ``bound`` (a sphere, capsule or box holding it) and convex
+    ``parts`` inside the bound (the hulls of a collision mesh's pieces): a pair is measured on
+    the bounds first and refined on the parts only when the bounds come close (the parts'
+    smallest distance; never below the bounds', and never above the geometry's).
+
+    The pose is the bound's; ``moved`` moves the parts with it.
+    """
+
+    bound: Shape
+    parts: tuple[ConvexHull, ...]
+    kind = -1  # the kernels see the bound and the parts, never a compound
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.bound, (Sphere, Capsule, Box)):
+            raise GeometryError(f"a compound's bound must be a Sphere, Capsule or Box, got "
+                                f"{type(self.bound).__name__}")
+        parts = tuple(self.parts)
+        if not parts or not all(isinstance(p, ConvexHull) for p in parts):
+            raise GeometryError("a compound's parts must be one or more ConvexHull shapes")
+        object.__setattr__(self, "parts", parts)
+        object.__setattr__(self, "pose", self.bound.pose)
+
+    @property
+    def sizes(self) -> tuple[float, float, float]:
+        return self.bound.sizes
+
+    def moved(self, transform: Any) -> Shape:
+        """The compound with its bound and parts moved by ``transform``."""
+        return Compound(bound=self.bound.moved(transform),
+                        parts=tuple(p.moved(transform) for p in self.parts))  # type: ignore[misc]
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"type": "compound", "bound": self.bound.to_dict(),
+                "parts": [p.to_dict() for p in self.parts]}
+
+    def _sizes_dict(self) -> dict[str, Any]:
+        return {}
 
 
 def hull_vertices(points: np.ndarray) -> np.ndarray:
@@ -290,3 +341,63 @@ def hull_arrays(shapes: Sequence[Shape], sizes: np.ndarray) -> tuple[np.ndarray,
                                   dtype=np.int64)
     points = np.concatenate([s.points for _, s in hulls]) if hulls else np.zeros((0, 3))
     return np.ascontiguousarray(points, dtype=np.float64), ranges
+
+
+def hull_capsules(shapes: Sequence[Shape]) -> np.ndarray:
+    """A capsule holding each hull among ``shapes`` (in its frame), ``(h, 8)``: centre,
+    unit axis, half length, radius. The axis is the points' principal axis, the radius
+    their largest distance from it, the segment as short as the radius allows (every point
+    within the radius of it): the kernels' cheap lower bound of a pair of hulls."""
+    out = [hull_capsule(s.points) for s in shapes if isinstance(s, ConvexHull)]
+    return np.ascontiguousarray(np.array(out, dtype=np.float64).reshape(-1, 8))
+
+
+def hull_capsule(points: np.ndarray) -> np.ndarray:
+    """``(centre (3), axis (3), half length, radius)`` of a capsule holding ``points``."""
+    mean = points.mean(axis=0)
+    centred = points - mean
+    axis = np.linalg.eigh(centred.T @ centred)[1][:, 2]
+    t = centred @ axis
+    perp = np.sqrt(np.maximum((centred ** 2).sum(axis=1) - t ** 2, 0.0))
+    radius = float(perp.max()) * (1 + 1e-12) + 1e-12  # rounding: never a point outside
+    slack = np.sqrt(np.maximum(radius ** 2 - perp ** 2, 0.0))
+    # a point is within the radius of the segment [t0, t1] iff t_i - slack_i <= t1 and
+    # t0 <= t_i + slack_i: the shortest one runs from lo to hi (a point when hi <= lo)
+    lo, hi = float((t + slack).min()), float((t - slack).max())
+    t0, t1 = ((hi + lo) / 2, (hi + lo) / 2) if hi <= lo else (lo, hi)
+    centre, half = mean + axis * (t0 + t1) / 2, (t1 - t0) / 2
+    w = np.clip((points - centre) @ axis, -half, half)  # the points' distances, measured
+    reach = float(np.linalg.norm(points - (centre + w[:, None] * axis), axis=1).max())
+    return np.array([*centre, *axis, half, max(radius, reach * (1 + 1e-12) + 1e-12)])
+
+
+def expand_compounds(tops: Sequence[Shape], bodies: Sequence[int]
+                     ) -> tuple[list[Shape], list[int], list[list[int]]]:
+    """The shapes the kernels see: ``tops`` (each :class:`Compound` by its bound) followed by
+    the compounds' parts; their bodies; and for each top, the kernel indices of its parts
+    (``[t]`` itself when it is not a compound)."""
+    shapes = [s.bound if isinstance(s, Compound) else s for s in tops]
+    out_bodies = list(bodies)
+    parts: list[list[int]] = []
+    for t, s in enumerate(tops):
+        if isinstance(s, Compound):
+            parts.append(list(range(len(shapes), len(shapes) + len(s.parts))))
+            shapes += list(s.parts)
+            out_bodies += [bodies[t]] * len(s.parts)
+        else:
+            parts.append([t])
+    return shapes, out_bodies, parts
+
+
+def refinements(pairs: Sequence[tuple[int, int]], parts: Sequence[Sequence[int]]
+                ) -> tuple[np.ndarray, np.ndarray]:
+    """For each pair of tops, the range ``refine (p, 2)`` of its parts' pairs in ``sub_pairs
+    (s, 2)`` (empty when neither top is a compound: the pair is measured as it is)."""
+    refine = np.zeros((len(pairs), 2), dtype=np.int64)
+    sub: list[tuple[int, int]] = []
+    for k, (a, b) in enumerate(pairs):
+        refine[k, 0] = len(sub)
+        if parts[a] != [a] or parts[b] != [b]:
+            sub += [(i, j) for i in parts[a] for j in parts[b]]
+        refine[k, 1] = len(sub)
+    return refine, np.array(sub, dtype=np.int64).reshape(-1, 2)

@@ -152,7 +152,7 @@ def run_starts(ctx, starts, policy, found, best, ends):
         if check and not recheck(ctx, ws, q):
             continue
         if collide:
-            ends[s, 2] = end_distance(ctx.collision, q, scratch)
+            ends[s, 2] = end_distance(ctx.collision, q, scratch, ctx.clearance)
             if not ends[s, 2] >= ctx.clearance:  # in collision (or NaN): not a solution
                 continue
         if not check:

@@ -17,7 +17,7 @@ from moik.collision.compiled import (
     end_distance,
     end_scratch,
     n_pairs,
-    set_min_distance,
+    set_distance_below,
     set_scratch,
 )
 from moik.collision.distance import SPHERE
@@ -38,13 +38,14 @@ def _set(pairs):
     return collision_set(chain=ARM.chain_model, body=np.array([2, -1, -1]), local=local,
                          kinds=np.full(3, SPHERE), sizes=np.array([[0.05, 0, 0], [0.1, 0, 0],
                                                                    [0.1, 0, 0]]),
-                         pairs=np.array(pairs, dtype=np.int64).reshape(-1, 2))
+                         pairs=np.array(pairs, dtype=np.int64).reshape(-1, 2),
+                         hull_points=np.zeros((0, 3)), hull_ranges=np.zeros((0, 2), dtype=np.int64))
 
 
 @jit
 def _in_compiled_code(cs, q):
     """The start loop's calls, compiled for the type of ``cs`` (a set or None)."""
-    return checks_pairs(cs), end_distance(cs, q, end_scratch(cs))
+    return checks_pairs(cs), end_distance(cs, q, end_scratch(cs), np.inf)
 
 
 Q = ARM.random_q(6, rng=np.random.default_rng(0))
@@ -56,17 +57,18 @@ def test_the_smallest_distance_over_the_pairs_by_hand():
     scratch = set_scratch(cs)
     for q in Q:
         expected = min(np.linalg.norm(_tool(q) - c) for c in CENTRES) - 0.15
-        assert set_min_distance(cs, q, scratch) == pytest.approx(expected, abs=1e-14)
+        assert set_distance_below(cs, q, scratch, np.inf) == pytest.approx(expected, abs=1e-14)
     one = _set([[0, 2]])  # only the second obstacle
     for q in Q:
         expected = np.linalg.norm(_tool(q) - CENTRES[1]) - 0.15
-        assert set_min_distance(one, q, set_scratch(one)) == pytest.approx(expected, abs=1e-14)
+        d = set_distance_below(one, q, set_scratch(one), np.inf)
+        assert d == pytest.approx(expected, abs=1e-14)
 
 
 def test_a_set_without_pairs_checks_nothing():
     cs = _set([])
     assert n_pairs(cs) == 0 and not checks_pairs(cs)
-    assert set_min_distance(cs, Q[0], set_scratch(cs)) == np.inf
+    assert set_distance_below(cs, Q[0], set_scratch(cs), np.inf) == np.inf
     assert _in_compiled_code(cs, Q[0]) == (False, np.inf)
 
 
@@ -74,8 +76,8 @@ def test_the_start_loops_test_compiled_for_a_set_and_for_none():
     cs = _set([[0, 1], [0, 2]])
     for q in Q[:3]:
         checks, d = _in_compiled_code(cs, q)
-        assert checks and d == set_min_distance(cs, q, set_scratch(cs))
-        assert end_distance(cs, q, end_scratch(cs)) == d  # the Python path agrees
+        assert checks and d == set_distance_below(cs, q, set_scratch(cs), np.inf)
+        assert end_distance(cs, q, end_scratch(cs), np.inf) == d  # the Python path agrees
     assert _in_compiled_code(None, Q[0]) == (False, np.inf)
     assert end_scratch(None) == 0
 
@@ -91,8 +93,8 @@ def test_a_checkers_compiled_value_is_the_same_set():
     cs = _set([[0, 1], [0, 2]])
     assert n_pairs(compiled) == 2
     for q in Q:
-        assert set_min_distance(compiled, q, set_scratch(compiled)) == pytest.approx(
-            set_min_distance(cs, q, set_scratch(cs)), abs=1e-15)
+        assert set_distance_below(compiled, q, set_scratch(compiled), np.inf) == pytest.approx(
+            set_distance_below(cs, q, set_scratch(cs), np.inf), abs=1e-15)
 
 
 def test_collision_set_takes_keywords_only():

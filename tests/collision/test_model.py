@@ -8,7 +8,7 @@ from moik import get_robot
 from moik.collision import Box, Capsule, CollisionChecker, CollisionModel, HalfSpace, Scene, Sphere
 from moik.collision.catalog import collision_model
 from moik.collision.io import rpy_pose
-from moik.exceptions import GeometryError, UnknownNameError
+from moik.exceptions import GeometryError, ParameterError, UnknownNameError
 
 coal = pytest.importorskip("coal")
 
@@ -83,9 +83,8 @@ def test_self_collision_switch_and_adjacency():
                                                 "link2": Sphere(radius=0.05)})
     assert model.checked_body_pairs() == [(0, 2)]
     assert CollisionChecker(model=model, self_collision=True).n_pairs == 1
-    assert CollisionChecker(model=model, self_collision=False).n_pairs == 0
-    assert CollisionChecker(model=model, self_collision=False).min_distance(
-        np.zeros(2)) == np.inf
+    with pytest.raises(ParameterError, match="nothing to check"):  # never a silent inf
+        CollisionChecker(model=model, self_collision=False)
     # folded back, the tool sphere meets the base sphere: a2 = 0.30 < a1 = 0.35
     checker = CollisionChecker(model=model, self_collision=True)
     d, pair = checker.closest_pair(np.array([0.0, np.pi]))
@@ -102,9 +101,12 @@ def test_end_distance_from_python_equals_the_checker():
     q = checker.robot.random_q(1, rng=np.random.default_rng(2))[0]
     cs = checker.compiled
     assert checks_pairs(cs) and not checks_pairs(None)
-    assert end_distance(cs, q, end_scratch(cs)) == checker.min_distance(q)
-    assert end_distance(None, q, end_scratch(None)) == np.inf
+    d = checker.min_distance(q)
+    assert end_distance(cs, q, end_scratch(cs), np.inf) == d
+    assert end_distance(cs, q, end_scratch(cs), d + 1e-3) == d  # below the clearance: exact
+    assert end_distance(cs, q, end_scratch(cs), d - 1e-3) >= d - 1e-3  # above: a bound
+    assert end_distance(None, q, end_scratch(None), 0.0) == np.inf
     Q = checker.robot.random_q(50, rng=np.random.default_rng(3))
     np.testing.assert_array_equal(checker.min_distance_batch(Q), checker.min_distance(Q))
-    empty = CollisionChecker(model=collision_model("panda"), self_collision=False)
-    assert np.all(empty.min_distance_batch(Q[:3]) == np.inf)
+    with pytest.raises(ParameterError, match="nothing to check"):
+        CollisionChecker(model=collision_model("panda"), self_collision=False)

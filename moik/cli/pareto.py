@@ -30,6 +30,7 @@ from moik.plotting.pareto import plot_pareto_ik
 from moik.problems.targets import Target
 from moik.robots import get_robot
 from moik.solver.pareto import ParetoIKResult, solve_ik_pareto
+from moik.warmup.beside import beside_pareto
 
 
 def parse_criteria(text: str) -> tuple[str, ...]:
@@ -63,9 +64,10 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
     if check is None and "clearance" in (c.lower() for c in criteria):
         raise ParameterError("--pareto criterion clearance needs geometry to measure: give "
                              "--scene FILE and/or --self-collision")
+    search = {"objectives": criteria, "q_current": q_current, "rotation": rotation, **options}
+    beside_pareto(robot, target, **search)  # a cold first search: its algorithm's kernels
     with library_call(PARETO_OPTIONS):
-        res = solve_ik_pareto(robot, target, objectives=criteria, q_current=q_current,
-                              rotation=rotation, **options, **collision.solver_options(check))
+        res = solve_ik_pareto(robot, target, **search, **collision.solver_options(check))
     index = res.compromise_index() if len(res.X) else None
     plots = []
     if args.plot and len(res.X):

@@ -60,14 +60,15 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
     if "tol" in options:
         options["tol"] = tolerance(options["tol"])
     criteria = parse_criteria(args.pareto)
+    beside_pareto(robot, target, objectives=criteria, q_current=q_current, rotation=rotation,
+                  **options)  # on a cold first run: the search algorithm's kernels
     check = collision.checker(args, robot)
     if check is None and "clearance" in (c.lower() for c in criteria):
         raise ParameterError("--pareto criterion clearance needs geometry to measure: give "
                              "--scene FILE and/or --self-collision")
-    search = {"objectives": criteria, "q_current": q_current, "rotation": rotation, **options}
-    beside_pareto(robot, target, **search)  # a cold first search: its algorithm's kernels
     with library_call(PARETO_OPTIONS):
-        res = solve_ik_pareto(robot, target, **search, **collision.solver_options(check))
+        res = solve_ik_pareto(robot, target, objectives=criteria, q_current=q_current,
+                              rotation=rotation, **options, **collision.solver_options(check))
     index = res.compromise_index() if len(res.X) else None
     plots = []
     if args.plot and len(res.X):

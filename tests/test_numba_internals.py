@@ -18,7 +18,6 @@ import numba
 import pytest
 
 from moik.algorithms.archive.fronts import front_mask_2d
-from moik.solver import lm  # noqa: F401 - the kernels whose StructRefs are registered
 
 PYPROJECT = Path(__file__).resolve().parents[1] / "pyproject.toml"
 

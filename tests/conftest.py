@@ -49,7 +49,7 @@ class FakePopen:
 
 @pytest.fixture()
 def fake_popen(monkeypatch):
-    """Background compiles start a :class:`FakePopen` (two CPUs, nothing cached, the
+    """Background compiles start a :class:`FakePopen` (two idle CPUs, nothing cached, the
     switch unset): tests see what a child would be given, and no child runs."""
     from moik import _jit
     from moik.warmup import background as _background
@@ -57,6 +57,7 @@ def fake_popen(monkeypatch):
     FakePopen.started = []
     monkeypatch.setattr(_background.subprocess, "Popen", FakePopen)
     monkeypatch.setattr(_background, "cpus", lambda: 2)
+    monkeypatch.setattr(_background, "idle_cpus", lambda: 2.0)
     monkeypatch.setattr(_jit, "is_cached", lambda kernel: False)
     monkeypatch.delenv(_background.ENV_SWITCH, raising=False)
     return FakePopen

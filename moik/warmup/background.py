@@ -9,9 +9,12 @@ what the child has written by the time it needs it and compiles the rest itself,
 child changes nothing but time: a child that fails, is slow or is stopped only leaves
 more for this process to compile.
 
-A child starts only where it can help: this process may use more than one CPU,
-``MOIK_BACKGROUND_COMPILE`` is not ``0`` (a child runs with it ``0``: no grandchild; so do
-``moik compile``'s workers), and a probe kernel of the family is not cached yet.
+A child starts only where it can help: this process may use more than one CPU and at
+least one of them was idle over the last minute (:func:`idle_cpus`: on a busy machine the
+child only takes CPU time from its parent, ``benchmarks/startup.py --without-background``
+measured it so), ``MOIK_BACKGROUND_COMPILE`` is not ``0`` (a child runs with it ``0``: no
+grandchild; so do ``moik compile``'s workers), and a probe kernel of the family is not
+cached yet.
 """
 
 from __future__ import annotations
@@ -39,6 +42,15 @@ def cpus() -> int:
         return os.cpu_count() or 1
 
 
+def idle_cpus() -> float:
+    """CPUs this process may run on less the load average of the last minute (all CPUs
+    where the platform has no load average)."""
+    try:
+        return cpus() - os.getloadavg()[0]
+    except (AttributeError, OSError):  # not on every platform
+        return float(cpus())
+
+
 class Background:
     """A running child process compiling kernels (from :func:`start`); stopped at exit."""
 
@@ -58,7 +70,7 @@ def start(family: str, arguments: Any, probes: Sequence[Any]) -> Background | No
     back by :func:`child_arguments`), or return None where it cannot help (module
     docstring): ``probes`` (kernels of the family) are all cached already, or
     ``arguments`` cannot be pickled."""
-    if (os.environ.get(ENV_SWITCH) == "0" or cpus() < 2
+    if (os.environ.get(ENV_SWITCH) == "0" or cpus() < 2 or idle_cpus() < 1.0
             or all(_jit.is_cached(kernel) for kernel in probes)):
         return None
     try:

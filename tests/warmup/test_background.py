@@ -31,6 +31,7 @@ def test_the_child_imports_its_parents_moik_from_any_working_folder(tmp_path, mo
     monkeypatch.chdir(tmp_path)
     monkeypatch.setattr(_jit, "is_cached", lambda kernel: False)
     monkeypatch.setattr(background, "cpus", lambda: 2)
+    monkeypatch.setattr(background, "idle_cpus", lambda: 2.0)
     monkeypatch.delenv(background.ENV_SWITCH, raising=False)
     handle = background.start("no-such-family", None, probes=[object()])
     assert handle is not None
@@ -39,19 +40,27 @@ def test_the_child_imports_its_parents_moik_from_any_working_folder(tmp_path, mo
     assert handle.process.returncode == 1
 
 
-@pytest.mark.parametrize("why", ["switched off", "one cpu", "cached", "unpicklable"])
+@pytest.mark.parametrize("why", ["switched off", "one cpu", "busy", "cached", "unpicklable"])
 def test_does_not_start_where_it_cannot_help(fake_popen, monkeypatch, why):
     arguments: object = (1,)
     if why == "switched off":
         monkeypatch.setenv(background.ENV_SWITCH, "0")
     elif why == "one cpu":
         monkeypatch.setattr(background, "cpus", lambda: 1)
+    elif why == "busy":  # every CPU ran something else over the last minute
+        monkeypatch.setattr(background, "idle_cpus", lambda: 0.6)
     elif why == "cached":
         monkeypatch.setattr(_jit, "is_cached", lambda kernel: True)
     else:
         arguments = lambda: None  # noqa: E731 - a lambda cannot be pickled
     assert background.start("some-family", arguments, probes=[object()]) is None
     assert not fake_popen.started
+
+
+def test_idle_cpus_are_the_cpus_less_the_load(monkeypatch):
+    monkeypatch.setattr(background, "cpus", lambda: 2)
+    monkeypatch.setattr(background.os, "getloadavg", lambda: (1.5, 0.0, 0.0))
+    assert background.idle_cpus() == 0.5
 
 
 def test_a_child_still_running_at_stop_is_ended():

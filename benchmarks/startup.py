@@ -19,10 +19,11 @@ little about another machine. ``--baseline REV`` also times each cold first use 
 another commit (``git archive REV``, imported through ``PYTHONPATH``, the same Python
 and libraries), each of its samples right after the current one: the median ratio of
 the pairs carries over to a machine where the baseline's time is known (the issue that
-set the goals measured its start commit there). ``--without-background`` also times each
-cold first use with ``MOIK_BACKGROUND_COMPILE=0`` (no background compile: the process
-compiles every kernel itself), each of its samples right after the current one, and
-prints the ratios of the pairs: what the background compiles save.
+set the goals measured its start commit there). ``--without-background`` times each cold
+first use with ``MOIK_BACKGROUND_COMPILE=1`` (a background compile wherever one applies,
+even on a busy machine) and, each right after, with ``MOIK_BACKGROUND_COMPILE=0`` (none:
+the process compiles every kernel itself), and prints the ratios of the pairs: what the
+background compiles save.
 
 Run: python benchmarks/startup.py [--n 15] [--cold] [--cold-n 5] [--baseline REV]
 [--without-background] [--out FILE] (``--out`` also writes the printed table to FILE, e.g.
@@ -142,22 +143,28 @@ def measure(n: int, *, cold: bool, cold_n: int = 5,
           f"(goal <= 0.5 s); moik above the floor: {np.median(moik) - np.median(floor):.3f} s")
     if not cold:
         return
-    versions: dict[str, dict[str, str]] = {"": {}}
+    versions: dict[str, dict[str, str]] = {
+        "": {"MOIK_BACKGROUND_COMPILE": "1"} if without_background else {}}
     if baseline:
         versions["base"] = {"PYTHONPATH": baseline[1]}
     if without_background:
         versions["alone"] = {"MOIK_BACKGROUND_COMPILE": "0"}
     samples: dict[tuple[str, str], list[tuple[float, float]]] = {
         (what, version): [] for what in COLD for version in versions}
+    loads = []
     for _ in range(cold_n):
         for what, (argv, _goal) in COLD.items():
+            loads.append(os.getloadavg()[0])
             for version, extra in versions.items():
                 with tempfile.TemporaryDirectory() as cache:
                     env = {**os.environ, **extra, "NUMBA_CACHE_DIR": cache}
                     samples[what, version].append(
                         wall(CLI, env=env, args=argv, check=False))  # unreachable exits 1
     print(f"cold first uses: {cold_n} samples of each, interleaved, each with an empty "
-          f"kernel cache")
+          f"kernel cache; load average before them: median {np.median(loads):.1f} "
+          f"({min(loads):.1f}-{max(loads):.1f})"
+          + ("; first with background compiles forced (MOIK_BACKGROUND_COMPILE=1)"
+             if without_background else ""))
     for what, (_argv, goal) in COLD.items():
         walls, cpus = np.array(samples[what, ""]).T
         print(f"cold {what} (empty kernel cache): median {np.median(walls):.1f} s wall "

@@ -14,7 +14,7 @@ least one of them was idle over the last minute (:func:`idle_cpus`: on a busy ma
 child only takes CPU time from its parent, ``benchmarks/startup.py --without-background``
 measured it so), ``MOIK_BACKGROUND_COMPILE`` is not ``0`` (a child runs with it ``0``: no
 grandchild; so do ``moik compile``'s workers), and a probe kernel of the family is not
-cached yet.
+cached yet. ``MOIK_BACKGROUND_COMPILE=1`` starts it on a busy machine too (to measure it).
 """
 
 from __future__ import annotations
@@ -70,7 +70,8 @@ def start(family: str, arguments: Any, probes: Sequence[Any]) -> Background | No
     back by :func:`child_arguments`), or return None where it cannot help (module
     docstring): ``probes`` (kernels of the family) are all cached already, or
     ``arguments`` cannot be pickled."""
-    if (os.environ.get(ENV_SWITCH) == "0" or cpus() < 2 or idle_cpus() < 1.0
+    switch = os.environ.get(ENV_SWITCH)
+    if (switch == "0" or cpus() < 2 or (switch != "1" and idle_cpus() < 1.0)
             or all(_jit.is_cached(kernel) for kernel in probes)):
         return None
     try:

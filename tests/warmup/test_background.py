@@ -57,6 +57,12 @@ def test_does_not_start_where_it_cannot_help(fake_popen, monkeypatch, why):
     assert not fake_popen.started
 
 
+def test_the_switch_at_1_starts_a_child_on_a_busy_machine_too(fake_popen, monkeypatch):
+    monkeypatch.setattr(background, "idle_cpus", lambda: 0.0)
+    monkeypatch.setenv(background.ENV_SWITCH, "1")
+    assert background.start("some-family", (1,), probes=[object()]) is not None
+
+
 def test_idle_cpus_are_the_cpus_less_the_load(monkeypatch):
     monkeypatch.setattr(background, "cpus", lambda: 2)
     monkeypatch.setattr(background.os, "getloadavg", lambda: (1.5, 0.0, 0.0))

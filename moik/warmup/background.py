@@ -9,12 +9,14 @@ what the child has written by the time it needs it and compiles the rest itself,
 child changes nothing but time: a child that fails, is slow or is stopped only leaves
 more for this process to compile.
 
-A child starts only where it can help: this process may use more than one CPU and at
-least one of them was idle over the last minute (:func:`idle_cpus`: on a busy machine the
-child only takes CPU time from its parent, ``benchmarks/startup.py --without-background``
-measured it so), ``MOIK_BACKGROUND_COMPILE`` is not ``0`` (a child runs with it ``0``: no
-grandchild; so do ``moik compile``'s workers), and a probe kernel of the family is not
-cached yet. ``MOIK_BACKGROUND_COMPILE=1`` starts it on a busy machine too (to measure it).
+A child starts only where it can help: this process may use more than one CPU and the
+load average of the last minute left at least half of one idle (:func:`idle_cpus`; a
+process timing cold starts one after another keeps about one busy): on a busy machine
+the child only takes CPU time from its parent (``benchmarks/startup.py
+--without-background`` measured it so); ``MOIK_BACKGROUND_COMPILE`` is not ``0`` (a child
+runs with it ``0``: no grandchild; so do ``moik compile``'s workers); and a probe kernel
+of the family is not cached yet. ``MOIK_BACKGROUND_COMPILE=1`` starts it on a busy
+machine too (to measure it).
 """
 
 from __future__ import annotations
@@ -32,6 +34,7 @@ from moik import _jit
 
 ENV_SWITCH = "MOIK_BACKGROUND_COMPILE"
 CHILD_MODULE = "moik.warmup"  # what the child runs (``python -m``)
+MIN_IDLE = 0.5  # CPUs the last minute's load average must leave idle for a child to start
 
 
 def cpus() -> int:
@@ -71,7 +74,7 @@ def start(family: str, arguments: Any, probes: Sequence[Any]) -> Background | No
     docstring): ``probes`` (kernels of the family) are all cached already, or
     ``arguments`` cannot be pickled."""
     switch = os.environ.get(ENV_SWITCH)
-    if (switch == "0" or cpus() < 2 or (switch != "1" and idle_cpus() < 1.0)
+    if (switch == "0" or cpus() < 2 or (switch != "1" and idle_cpus() < MIN_IDLE)
             or all(_jit.is_cached(kernel) for kernel in probes)):
         return None
     try:

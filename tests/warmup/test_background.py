@@ -48,7 +48,7 @@ def test_does_not_start_where_it_cannot_help(fake_popen, monkeypatch, why):
     elif why == "one cpu":
         monkeypatch.setattr(background, "cpus", lambda: 1)
     elif why == "busy":  # every CPU ran something else over the last minute
-        monkeypatch.setattr(background, "idle_cpus", lambda: 0.6)
+        monkeypatch.setattr(background, "idle_cpus", lambda: 0.3)
     elif why == "cached":
         monkeypatch.setattr(_jit, "is_cached", lambda kernel: True)
     else:

@@ -19,10 +19,14 @@ little about another machine. ``--baseline REV`` also times each cold first use 
 another commit (``git archive REV``, imported through ``PYTHONPATH``, the same Python
 and libraries), each of its samples right after the current one: the median ratio of
 the pairs carries over to a machine where the baseline's time is known (the issue that
-set the goals measured its start commit there).
+set the goals measured its start commit there). ``--without-background`` times each cold
+first use with ``MOIK_BACKGROUND_COMPILE=1`` (a background compile wherever one applies,
+even on a busy machine) and, each right after, with ``MOIK_BACKGROUND_COMPILE=0`` (none:
+the process compiles every kernel itself), and prints the ratios of the pairs: what the
+background compiles save.
 
 Run: python benchmarks/startup.py [--n 15] [--cold] [--cold-n 5] [--baseline REV]
-[--out FILE] (``--out`` also writes the printed table to FILE, e.g.
+[--without-background] [--out FILE] (``--out`` also writes the printed table to FILE, e.g.
 docs/results/startup.txt, which docs/performance.md links to).
 """
 
@@ -91,13 +95,18 @@ def main() -> None:
     parser.add_argument("--baseline", metavar="REV",
                         help="with --cold: also time the cold first uses at commit REV, "
                              "interleaved, and print the ratios")
+    parser.add_argument("--without-background", action="store_true",
+                        help="with --cold: also time the cold first uses without background "
+                             "compiles (MOIK_BACKGROUND_COMPILE=0), interleaved, and print "
+                             "the ratios")
     parser.add_argument("--out", help=OUT_HELP)
     args = parser.parse_args()
     with table_output(args.out), tempfile.TemporaryDirectory() as tree:
         baseline = None
         if args.baseline:
             baseline = (args.baseline, checkout(args.baseline, tree))
-        measure(args.n, cold=args.cold, cold_n=args.cold_n, baseline=baseline)
+        measure(args.n, cold=args.cold, cold_n=args.cold_n, baseline=baseline,
+                without_background=args.without_background)
 
 
 def checkout(rev: str, into: str) -> str:
@@ -113,9 +122,10 @@ def checkout(rev: str, into: str) -> str:
 
 
 def measure(n: int, *, cold: bool, cold_n: int = 5,
-            baseline: tuple[str, str] | None = None) -> None:
+            baseline: tuple[str, str] | None = None, without_background: bool = False) -> None:
     """Print the medians of ``n`` interleaved samples, and of ``cold_n`` interleaved
-    samples of each cold first use if asked (and of ``baseline = (rev, folder)``'s)."""
+    samples of each cold first use if asked (and of ``baseline = (rev, folder)``'s, and
+    without background compiles if ``without_background``)."""
     wall(MOIK)  # make sure the kernels are cached
     wall(FLOOR)
     floor, moik, helps, robots = [], [], [], []
@@ -133,20 +143,28 @@ def measure(n: int, *, cold: bool, cold_n: int = 5,
           f"(goal <= 0.5 s); moik above the floor: {np.median(moik) - np.median(floor):.3f} s")
     if not cold:
         return
-    versions: dict[str, dict[str, str]] = {"": {}}
+    versions: dict[str, dict[str, str]] = {
+        "": {"MOIK_BACKGROUND_COMPILE": "1"} if without_background else {}}
     if baseline:
         versions["base"] = {"PYTHONPATH": baseline[1]}
+    if without_background:
+        versions["alone"] = {"MOIK_BACKGROUND_COMPILE": "0"}
     samples: dict[tuple[str, str], list[tuple[float, float]]] = {
         (what, version): [] for what in COLD for version in versions}
+    loads = []
     for _ in range(cold_n):
         for what, (argv, _goal) in COLD.items():
+            loads.append(os.getloadavg()[0])
             for version, extra in versions.items():
                 with tempfile.TemporaryDirectory() as cache:
                     env = {**os.environ, **extra, "NUMBA_CACHE_DIR": cache}
                     samples[what, version].append(
                         wall(CLI, env=env, args=argv, check=False))  # unreachable exits 1
     print(f"cold first uses: {cold_n} samples of each, interleaved, each with an empty "
-          f"kernel cache")
+          f"kernel cache; load average before them: median {np.median(loads):.1f} "
+          f"({min(loads):.1f}-{max(loads):.1f})"
+          + ("; first with background compiles forced (MOIK_BACKGROUND_COMPILE=1)"
+             if without_background else ""))
     for what, (_argv, goal) in COLD.items():
         walls, cpus = np.array(samples[what, ""]).T
         print(f"cold {what} (empty kernel cache): median {np.median(walls):.1f} s wall "
@@ -164,6 +182,14 @@ def measure(n: int, *, cold: bool, cold_n: int = 5,
                       f"{there:g} s): {np.median(ratios) * there:.1f} s "
                       f"({ratios.min() * there:.1f}-{ratios.max() * there:.1f}) "
                       f"(goal <= {goal:g} s)")
+        if without_background:
+            alone = np.array(samples[what, "alone"])
+            ratios = walls / alone[:, 0]
+            print(f"  without background compiles, each run right after: median "
+                  f"{np.median(alone[:, 0]):.1f} s wall ({alone[:, 0].min():.1f}-"
+                  f"{alone[:, 0].max():.1f}), {np.median(alone[:, 1]):.1f} s CPU; ratio of "
+                  f"the pairs (with / without): median {np.median(ratios):.2f} "
+                  f"({ratios.min():.2f}-{ratios.max():.2f})")
 
 
 if __name__ == "__main__":

@@ -99,8 +99,8 @@ event.register("numba:compile", _CompileNotice())
 JIT_OPTIONS: dict[str, Any] = {"fastmath": False, "no_cfunc_wrapper": True}
 """numba's options of every kernel (the kernel cache's digest covers this file). No C
 wrapper (``no_cfunc_wrapper``): it is only needed to pass a kernel as a first-class
-function value, which moik never does, and it was about 6 % of the LLVM IR that a cold
-first ``--pareto`` solve compiles (80.6k -> 76.0k lines)."""
+function value, which moik never does, and it is compiled for every kernel
+(docs/performance.md, "Compilation and start-up")."""
 
 
 def jit(func: Callable | None = None, *, inline: bool = False) -> Any:
@@ -112,18 +112,12 @@ def jit(func: Callable | None = None, *, inline: bool = False) -> Any:
     called by another into a module of its own and links a copy of it into each caller's
     module, where LLVM optimises it and generates machine code for it again, so a helper
     with one call site in each kernel that calls it pays for a module that is never run.
-    Inlined are such helpers of the algorithms' and criteria's kernels: on a cold first
-    ``--pareto`` solve the LLVM IR compiled went from 76.0k to 67.1k lines, its compile CPU
-    time down by about 9 % (6 interleaved runs), the results the same bit for bit. Not
-    inlined: helpers with several call sites in one kernel (each site would type and
-    compile its own copy; all helpers inlined made the first compile of the solver
-    slower), and the LM iteration's helpers, where inlining the single-site ones measured
-    no gain (the caller's typing grew by what their modules saved). The LM iteration
-    itself (:func:`moik.solver.lm.lm_start`) is inlined into its loops: its module carried
-    a linked copy of the residual, the damped step and their FK kernels (9.0k of the 67.1k
-    lines of a cold ``--pareto`` solve, 9.0k of 42.8k of a cold first solve), optimised and
-    compiled once more in the start loop's module. Called from Python, an inlined helper
-    compiles as a kernel of its own.
+    Inlined are such helpers of the algorithms' and criteria's kernels, and the LM
+    iteration (:func:`moik.solver.lm.lm_start`) into its loops. Not inlined: helpers with
+    several call sites in one kernel (each site would type and compile its own copy), and
+    the LM iteration's own helpers (their caller's typing grows by what their modules
+    save). docs/performance.md gives the measurements behind each choice. Called from
+    Python, an inlined helper compiles as a kernel of its own.
     """
     if func is None:
         return lambda f: jit(f, inline=inline)

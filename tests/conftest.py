@@ -10,8 +10,6 @@ seen once is seen again. ``pytest --hypothesis-profile explore`` draws new rando
 examples at each run, to look for cases the fixed ones miss.
 """
 
-import io
-
 import pytest
 from hypothesis import settings
 
@@ -26,17 +24,14 @@ def pytest_configure(config):
 
 
 class FakePopen:
-    """Stands in for subprocess.Popen in :mod:`moik._background`: keeps what the child
-    would read on its stdin, and says READY at once."""
+    """Stands in for subprocess.Popen in :mod:`moik.warmup.background`: keeps what the
+    child would read on its stdin."""
 
     started: list = []
 
     def __init__(self, argv, stdin=None, stdout=None, **kwargs):
-        from moik import _background
-
         self.argv, self.kwargs, self.written = argv, kwargs, b""
         self.stdin = self
-        self.stdout = io.BytesIO(_background.READY.encode())
         FakePopen.started.append(self)
 
     def write(self, data):
@@ -54,13 +49,15 @@ class FakePopen:
 
 @pytest.fixture()
 def fake_popen(monkeypatch):
-    """Background compiles start a :class:`FakePopen` (two CPUs, nothing cached, the
+    """Background compiles start a :class:`FakePopen` (two idle CPUs, nothing cached, the
     switch unset): tests see what a child would be given, and no child runs."""
-    from moik import _background, _jit
+    from moik import _jit
+    from moik.warmup import background as _background
 
     FakePopen.started = []
     monkeypatch.setattr(_background.subprocess, "Popen", FakePopen)
     monkeypatch.setattr(_background, "cpus", lambda: 2)
+    monkeypatch.setattr(_background, "idle_cpus", lambda: 2.0)
     monkeypatch.setattr(_jit, "is_cached", lambda kernel: False)
     monkeypatch.delenv(_background.ENV_SWITCH, raising=False)
     return FakePopen

@@ -6,8 +6,8 @@ import ast
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1] / "moik"
-ORDER = ("exceptions", "_validate", "_kernel_cache", "_jit", "_version", "_lazy", "_background",
-         "robots", "kinematics", "collision", "fronts", "problems")
+ORDER = ("exceptions", "_validate", "_kernel_cache", "_jit", "_version", "_lazy", "robots",
+         "kinematics", "collision", "fronts", "problems")
 INDEPENDENT = {"algorithms": {"algorithms", "exceptions", "_validate", "_jit"},
                "metrics": {"metrics", "exceptions", "_validate", "_jit", "_lazy"}}
 LAZY = {("cli", "moik.plotting"),  # matplotlib only when a plot is asked for
@@ -71,6 +71,16 @@ def test_dependency_direction():
             if a in ORDER and b not in ORDER:
                 wrong.append((mod, t))
     assert not wrong
+
+
+def test_only_the_command_line_imports_the_warmup():
+    """moik.warmup (what compiles ahead of a first use) sits above the solver, the problems
+    and the algorithms, whose public functions it calls; of moik, only the command line
+    (``moik compile``, ``moik solve --pareto``) imports it."""
+    edges, _ = _graph()
+    users = {mod for mod, targets in edges.items()
+             if _area(mod) != "warmup" and any(_area(t) == "warmup" for t in targets)}
+    assert users and {_area(mod) for mod in users} == {"cli"}, users
 
 
 def test_no_import_cycle_and_no_hidden_local_import():

@@ -3,9 +3,9 @@
 Every class registered in :mod:`moik.algorithms.registry` (the one list of
 algorithms, with each one's kind and source) is importable from here, with the
 registry functions and the two array-state bases. They load at first use
-(PEP 562): importing every algorithm and pymoo's own takes about 0.2 s, which
-code that needs one module of this package (an archive, a kernel) or the solver's
-first stage need not pay.
+(PEP 562): importing every algorithm and pymoo's own is a large part of a process's
+start-up, which code that needs one module of this package (an archive, a kernel) or
+the solver's first stage need not pay (docs/performance.md, "Compilation and start-up").
 """
 
 from __future__ import annotations

@@ -30,6 +30,7 @@ from moik.plotting.pareto import plot_pareto_ik
 from moik.problems.targets import Target
 from moik.robots import get_robot
 from moik.solver.pareto import ParetoIKResult, solve_ik_pareto
+from moik.warmup.beside import beside_pareto
 
 
 def parse_criteria(text: str) -> tuple[str, ...]:
@@ -59,6 +60,8 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
     if "tol" in options:
         options["tol"] = tolerance(options["tol"])
     criteria = parse_criteria(args.pareto)
+    beside_pareto(robot, target, objectives=criteria, q_current=q_current, rotation=rotation,
+                  **options)  # on a cold first run: the search algorithm's kernels
     check = collision.checker(args, robot)
     with library_call(PARETO_OPTIONS), collision.option_names():
         res = solve_ik_pareto(robot, target, objectives=criteria, q_current=q_current,

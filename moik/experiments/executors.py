@@ -47,7 +47,7 @@ def warm_trial(spec: TrialSpec) -> tuple[dict, dict]:
     trial's algorithm and problem: the same trial with one iteration (and no evaluation
     budget), so that the trial's ``time`` excludes the one-off load (or compilation) of
     the compiled kernels, which a worker process would otherwise charge to its first
-    trial (2.8 s instead of 0.014 s per trial of ``mpso-single --quick`` on 2 workers)."""
+    trial (for a quick trial, two orders of magnitude more than the trial itself)."""
     key = json.dumps([spec.kind, spec.algorithm, spec.robot, spec.problem], sort_keys=True,
                      default=str)
     if key not in _WARMED:

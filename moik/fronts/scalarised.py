@@ -33,7 +33,7 @@ from moik.robots.chain import Robot
 
 def _minimize(*args: Any, **kwargs: Any) -> Any:
     """scipy's ``optimize.minimize``, imported at the first front computed: importing
-    :mod:`moik.problems` (and a first-stage solve) need not load scipy.optimize (0.3 s);
+    :mod:`moik.problems` (and a first-stage solve) need not load scipy.optimize;
     typed ``Any``: scipy-stubs' overloads do not cover SLSQP's dict constraints."""
     from scipy import optimize
 

@@ -40,8 +40,8 @@ from moik.kinematics.so3 import rotation_angle
 
 
 def _rotation():
-    """scipy's Rotation, imported on first use: scipy.spatial takes ~0.13 s to import,
-    which ``import moik`` and a solve need not pay (start-up time, not an import cycle)."""
+    """scipy's Rotation, imported on first use: ``import moik`` and a solve need not pay
+    scipy.spatial's import (start-up time, not an import cycle)."""
     from scipy.spatial.transform import Rotation
 
     return Rotation

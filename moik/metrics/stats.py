@@ -34,8 +34,8 @@ from moik.exceptions import NonFiniteError, ParameterError, ShapeError
 def _scipy_stats():
     """``scipy.stats``, imported at the first test that needs it.
 
-    Importing it takes about 0.45 s, which would be most of moik's start-up time, and
-    only the rank tests below use it: deferred for start-up time (not for an import cycle).
+    Its import would be most of moik's start-up time, and only the rank tests below use
+    it: deferred for start-up time (not for an import cycle).
     """
     return importlib.import_module("scipy.stats")
 

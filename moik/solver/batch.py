@@ -28,7 +28,6 @@ from moik.problems.targets import Target
 from moik.robots.catalog import as_robot
 from moik.solver.collision import collision_guard
 from moik.solver.context import ik_context
-from moik.solver.lm_precompile import precompile as precompile_starts
 from moik.solver.options import STARTS_KEY, search_options, seed_sequence
 from moik.solver.session import pose_errors
 from moik.solver.solve_ik import FIRST_STARTS, solve_ik
@@ -190,8 +189,6 @@ def _first_stage(robot, positions, rotations, qc, opts, tol, root, guard, out):
     targets = (kernel_array(np.tile(np.eye(3), (n, 1, 1)) if rotations is None else rotations),
                kernel_array(positions))
     found = np.full((n, 1, dof + 2), np.nan)
-    if guard is None:  # a cold first batch: the start loop's leaves compile beside it
-        precompile_starts(robot)
     if qc is not None:
         current = np.array(qc[:, None], dtype=np.float64, copy=True)  # run_batch moves it
         run_batch(ctx, current, targets, (PATIENT, opts.max_evals), found, n_evals)

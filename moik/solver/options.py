@@ -76,8 +76,7 @@ class SearchOptions:
         """``SearchOptions(**values)``; when every value is its field's default object
         (``solve_ik``'s signature passes them through: an identity test, so ``True`` for
         ``1`` is still validated), the one validated :data:`DEFAULT_OPTIONS` instead
-        (solve_ik's hot path: validating costs about 30 us, a first-stage solve about
-        100 us)."""
+        (solve_ik's hot path: validating costs about a third of a first-stage solve)."""
         if all(v is SEARCH_DEFAULTS[k] for k, v in values.items()):
             return DEFAULT_OPTIONS
         return cls(**values)
@@ -90,9 +89,9 @@ SEARCH_DEFAULTS: dict[str, Any] = {f.name: f.default for f in fields(SearchOptio
 def algorithm_registry() -> Any:
     """:mod:`moik.algorithms.registry`, loaded when a search or a non-default method needs it.
 
-    Importing every algorithm (and pymoo's) takes about 0.2 s, most of a process's first
-    solve, while the first stage solves nearly every pose without one: deferred for
-    start-up time, not for an import cycle.
+    Importing every algorithm (and pymoo's) is most of a process's first solve, while the
+    first stage solves nearly every pose without one: deferred for start-up time, not for
+    an import cycle.
     """
     return importlib.import_module("moik.algorithms.registry")
 
@@ -102,7 +101,8 @@ def _check_algorithms(method: str, front_method: str, pop_size: int) -> None:
 
     The defaults (``"eosma"``, ``"moeosma"`` with the default population sizes) are
     known to pass (a test checks them against the registry) and are not looked up:
-    the registry loads in about 0.2 s, and the first stage solves most poses without it.
+    loading the registry is most of a first solve, and the first stage solves most poses
+    without it.
     """
     if (method, front_method) == ("eosma", "moeosma") and pop_size in DEFAULT_POP_SIZES:
         return

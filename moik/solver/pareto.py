@@ -53,7 +53,7 @@ from moik.metrics.compromise import closest_to_utopia
 from moik.problems.pareto_ik import ParetoIK
 from moik.robots.catalog import as_robot
 from moik.solver.collision import CollisionGuard, collision_guard, with_clearance
-from moik.solver.memetic import memetic_search, precompile
+from moik.solver.memetic import memetic_search
 from moik.solver.options import seed_sequence
 from moik.solver.pareto_search import BRANCH_STARTS, Projector, enumerate_branches, spread_subset
 from moik.solver.session import pose_errors
@@ -213,9 +213,7 @@ def solve_ik_pareto(robot, target, *, objectives=DEFAULT_OBJECTIVES, q_current=N
             "starts": starts, "method": method, "pop_size": pop_size,
             "generations": generations, "local_iterations": local_iterations,
             "local_step": local_step, "seed": int(seeds.spawn(1)[0].generate_state(1)[0])}
-        compiling = precompile(problem, objectives, first, search)
-        memetic_search(projector, first, rng, **search,
-                       ready=None if compiling is None else compiling.wait)
+        memetic_search(projector, first, rng, **search)
     return _result(problem, projector, n_solutions, redundant, t0, guard)
 
 

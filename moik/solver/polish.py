@@ -29,8 +29,8 @@ from moik.robots.chain import Robot
 
 def least_squares(*args: Any, **kwargs: Any) -> Any:
     """``scipy.optimize.least_squares``, imported at the first polish: scipy.optimize
-    (with scipy.spatial and scipy.linalg) takes about 0.2 s to import, and the first
-    stage solves nearly every pose without it (start-up time, not an import cycle)."""
+    (with scipy.spatial and scipy.linalg) is slow to import, and the first stage solves
+    nearly every pose without it (start-up time, not an import cycle)."""
     return importlib.import_module("scipy.optimize").least_squares(*args, **kwargs)
 
 

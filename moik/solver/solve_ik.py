@@ -41,7 +41,6 @@ from moik.robots.catalog import as_robot
 from moik.robots.chain import Robot
 from moik.solver.collision import collision_guard
 from moik.solver.front import FRONT_STARTS, polished_front, reach_excess
-from moik.solver.lm_precompile import precompile as precompile_starts
 from moik.solver.options import (
     SEARCH_DEFAULTS,
     SearchOptions,
@@ -179,8 +178,6 @@ def _solve(session: SolveSession, opts: SearchOptions, starts_rng: np.random.Gen
     robot, target = session.robot, session.target
     n_solutions, polish = opts.n_solutions, opts.polish
     out_of_reach = reach_excess(robot, target) > 0
-    if session.guard is None and polish:  # a cold first solve (LM runs only with polish):
-        precompile_starts(robot, reachable=not out_of_reach)  # LM's leaves compile beside it
     if out_of_reach:  # proven out of reach: no start or search can help
         return _out_of_reach(session, opts, starts_rng, q_current, t0)
     if polish and (q_current is not None or opts.starts):

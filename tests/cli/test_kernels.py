@@ -4,9 +4,9 @@ import os
 import subprocess
 import sys
 
-from moik._background import ENV_SWITCH
 from moik.cli import main
 from moik.cli.kernels import FAMILIES, compile_family, worker_setup
+from moik.warmup.background import ENV_SWITCH
 
 
 def test_processes_must_be_positive(capsys):

@@ -36,8 +36,7 @@ Deviations and readings:
 - ``I = 1 + 10^w t / T`` as in MALO.m (ALO's paper prints ``I = 10^w t / T``).
 - Walks are generated in full (T steps per coordinate, two per ant) as in the
   code, since the min and max of the whole walk set the scale: O(N d T) work
-  per iteration, vectorized (about 12 ms per iteration for N = 100, d = 7,
-  T = 1000 here).
+  per iteration, vectorized.
 - Random streams differ from MATLAB's; only the distributions match.
 """
 

@@ -35,9 +35,8 @@ Defaults (EOSMA Table 4): P=0.5, FADs=0.2. Evaluations: 3N per iteration (the
 code re-evaluates the previous population too, 4N).
 
 Deviations and readings:
-- An earlier version of this module was an archive-guided MPA (Elite drawn from a
-  crowding archive, marine memory by Pareto dominance); the authors' code has no
-  archive in the search and selects the population as above.
+- No archive guides the search (as in the authors' code): the Elite is drawn from the
+  population, which the selection above keeps.
 - The previous population is not re-evaluated (its objectives are known).
 - Phase boundaries and the FADs branch are moik's MPA readings (``t = T/3`` is
   phase 2 here; the code sends it to phase 3).

@@ -38,8 +38,7 @@ Deviations and readings:
 - Eq. 17 moves a coordinate halfway to the bound from the agent's location
   before the update, which is its personal best (the paper's IK section:
   "the location of the search agents ... i.e. pBest_i"; the authors' code
-  repairs against the greedy memory ``Xold``). An earlier version of this
-  module used the last evaluated position instead.
+  repairs against the greedy memory ``Xold``), not the last evaluated position.
 - ``pBest_A``/``pBest_B`` and ``R1..R3`` are drawn per agent (whole vectors, as
   the text says); SF is drawn per agent.
 - W uses ``log10`` and ``eps`` as the SMA code (Eq. 4 prints ``log``).

@@ -34,13 +34,13 @@ class CollisionSet(structref.StructRefProxy):
     Fields: ``chain`` (the arm's :class:`~moik.robots.chain_model.ChainModel`), ``body``,
     ``local``, ``kinds``, ``sizes``, ``pairs`` (the shapes and the pairs evaluated, as
     :mod:`moik.collision.kernels` describes them), ``hull_points``, ``hull_ranges`` (the
-    vertices of the hull shapes, as :mod:`moik.collision.gjk` describes them), ``refine``,
-    ``sub_pairs`` (the pairs of a compound's parts that refine each pair).
+    vertices of the hull shapes, as :mod:`moik.collision.gjk` describes them), ``refine``
+    (the compound parts that refine each pair).
     """
 
 
-FIELDS = ("chain", "body", "local", "kinds", "sizes", "pairs", "refine", "sub_pairs",
-          "hull_points", "hull_ranges", "hull_caps")
+FIELDS = ("chain", "body", "local", "kinds", "sizes", "pairs", "refine", "hull_points",
+          "hull_ranges", "hull_caps")
 define_struct(CollisionSet, CollisionSetType, FIELDS)
 
 
@@ -48,29 +48,26 @@ define_struct(CollisionSet, CollisionSetType, FIELDS)
 def _new_set(chain, shapes, pairs, hulls):
     """The compiled constructor (cached)."""
     return CollisionSet(chain, shapes[0], shapes[1], shapes[2], shapes[3], pairs[0], pairs[1],
-                        pairs[2], hulls[0], hulls[1], hulls[2])
+                        hulls[0], hulls[1], hulls[2])
 
 
 def collision_set(*, chain: ChainModel, body: np.ndarray, local: np.ndarray, kinds: np.ndarray,
                   sizes: np.ndarray, pairs: np.ndarray, hull_points: np.ndarray,
                   hull_ranges: np.ndarray, hull_caps: np.ndarray | None = None,
-                  refine: np.ndarray | None = None,
-                  sub_pairs: np.ndarray | None = None) -> CollisionSet:
+                  refine: np.ndarray | None = None) -> CollisionSet:
     """A :class:`CollisionSet` of an arm and its shapes: ``body (m,)`` int64, ``local
     (m, 4, 4)``, ``kinds (m,)`` int64, ``sizes (m, 3)``, ``pairs (p, 2)`` int64, the
     vertices of its hulls (:mod:`moik.collision.gjk`): ``hull_points (v, 3)`` and
     ``hull_ranges (h, 2)`` int64, a capsule holding each (``hull_caps (h, 8)``, from
     :func:`~moik.collision.shapes.hull_capsules`; computed when not given), and the
-    refinement of each pair (a compound's parts,
-    :mod:`moik.collision.kernels`): ``refine (p, 2)`` ranges of ``sub_pairs (s, 2)`` (none
-    by default)."""
-    if refine is None or sub_pairs is None:
-        refine = np.zeros((len(pairs), 2), dtype=np.int64)
-        sub_pairs = np.zeros((0, 2), dtype=np.int64)
+    refinement of each pair (a compound's parts, :func:`~moik.collision.shapes.refinements`:
+    ``refine (p, 4)``; none by default)."""
+    if refine is None:
+        refine = np.zeros((len(pairs), 4), dtype=np.int64)
     if hull_caps is None:
         hull_caps = np.ascontiguousarray(np.array(
             [hull_capsule(hull_points[s:e]) for s, e in hull_ranges]).reshape(-1, 8))
-    return _new_set(chain, (body, local, kinds, sizes), (pairs, refine, sub_pairs),
+    return _new_set(chain, (body, local, kinds, sizes), (pairs, refine),
                     (hull_points, hull_ranges, hull_caps))
 
 

@@ -38,7 +38,7 @@ from moik._jit import jit
 from moik.collision.distance import BOX, CAPSULE, HALFSPACE, HULL, segment_points
 
 MAX_ITER = 64  # GJK iterations (a polytope pair converges in far fewer)
-REL_TOL = 1e-12  # stop when the lower and upper bounds of |v|^2 agree to this fraction
+REL_TOL = 1e-9  # stop when the lower and upper bounds of |v|^2 agree to this fraction
 _TINY = 1e-30  # |v|^2 below this: the cores touch
 
 
@@ -251,7 +251,7 @@ def gjk(cs, W, a, b, limit):
         wx, wy, wz = ax - bx, ay - by, az - bz
         vw = vx * wx + vy * wy + vz * wz
         lower = max(lower, vw / math.sqrt(vv))
-        if vv - vw <= REL_TOL * vv or n == 4 or 0.0 < limit <= lower:
+        if vv - vw <= REL_TOL * vv or n == 4 or (lower >= limit and lower > 0.0):
             break
         duplicate = False
         for i in range(n):
@@ -317,6 +317,20 @@ def hulls_bound(cs, W, a, b):
     dy = q[1] + w * v[1] - p[1] - t * u[1]
     dz = q[2] + w * v[2] - p[2] - t * u[2]
     return math.sqrt(dx * dx + dy * dy + dz * dz) - ra - rb
+
+
+@jit
+def hull_capsule_bound(cs, W, a, b):
+    """A lower bound of the distance of hull ``a`` to sphere or capsule ``b``: its capsule's."""
+    p, u, h, ra = _capsule_in_world(cs, W, a)
+    P = W[b]
+    q, v = (P[0, 3], P[1, 3], P[2, 3]), (P[0, 2], P[1, 2], P[2, 2])
+    k = cs.sizes[b, 1] if cs.kinds[b] == CAPSULE else 0.0
+    t, w = segment_points(p, u, h, q, v, k)
+    dx = q[0] + w * v[0] - p[0] - t * u[0]
+    dy = q[1] + w * v[1] - p[1] - t * u[1]
+    dz = q[2] + w * v[2] - p[2] - t * u[2]
+    return math.sqrt(dx * dx + dy * dy + dz * dz) - ra - cs.sizes[b, 0]
 
 
 @jit

@@ -24,8 +24,8 @@ from __future__ import annotations
 import numpy as np
 
 from moik._jit import jit
-from moik.collision.distance import HULL
-from moik.collision.gjk import convex_pair, hulls_bound
+from moik.collision.distance import CAPSULE, HULL
+from moik.collision.gjk import convex_pair, hull_capsule_bound, hulls_bound
 from moik.collision.pairs import pair_bound, pair_distance
 from moik.robots.fk_kernels import compose, move_joint, pose_state, store_pose
 from moik.robots.transforms import PRISMATIC
@@ -93,25 +93,77 @@ def place_all(cs, q, scratch):
 
 
 @jit
+def _part_bound(cs, W, part, other):
+    """A lower bound of the distance of a compound's part (a hull) to shape ``other`` (the
+    other side's bound, or its own single shape): capsule to capsule or to hull, else the
+    bounding spheres."""
+    kind = cs.kinds[other]
+    if kind == HULL:
+        return hulls_bound(cs, W, part, other)
+    if kind <= CAPSULE:
+        return hull_capsule_bound(cs, W, part, other)
+    return pair_bound(cs.kinds, W, cs.sizes, part, other)
+
+
+@jit
+def _parts_bound(cs, W, a, b):
+    """A lower bound of the distance of shapes ``a`` and ``b`` (parts): their hulls'
+    capsules when both are hulls, else their bounding spheres."""
+    if cs.kinds[a] == HULL and cs.kinds[b] == HULL:
+        return hulls_bound(cs, W, a, b)
+    return pair_bound(cs.kinds, W, cs.sizes, a, b)
+
+
+@jit
+def _live_parts(cs, W, first, count, other, cap):
+    """The parts ``first .. first + count`` that may come below ``cap`` of shape ``other``,
+    as the bits of an int64."""
+    mask = 0
+    for i in range(count):
+        if count == 1 or _part_bound(cs, W, first + i, other) < cap:
+            mask |= 1 << i
+    return mask
+
+
+@jit
 def pair_value(cs, W, k, limit):
     """The distance result of pair ``k`` (shapes placed at ``W``): its shapes' own; for a
-    pair refined by compound parts (``cs.refine[k]`` not empty), the smallest over its parts'
-    pairs, unless the bounds' distance is already at least ``limit`` (then the bounds': a
-    lower bound, enough to know the pair is not below ``limit``)."""
-    res = shape_pair(cs, W, cs.pairs[k, 0], cs.pairs[k, 1], limit)
-    start, end = cs.refine[k, 0], cs.refine[k, 1]
-    if start == end or res[0] >= limit:
+    pair refined by compound parts (``cs.refine[k]``, :func:`moik.collision.shapes.refinements`),
+    the smallest over its parts' pairs, unless the bounds' distance is already at least
+    ``limit`` (then the bounds': a lower bound, enough to know the pair is not below
+    ``limit``). Parts whose bound to the other side keeps ``limit`` are not measured (and
+    when none comes below it the result is ``inf``: at least ``limit``)."""
+    a, b = cs.pairs[k, 0], cs.pairs[k, 1]
+    res = shape_pair(cs, W, a, b, limit)
+    a0, na, b0, nb = cs.refine[k, 0], cs.refine[k, 1], cs.refine[k, 2], cs.refine[k, 3]
+    if na == 0 or res[0] >= limit:
         return res
+    live_a = _live_parts(cs, W, a0, na, b, limit)
+    live_b = _live_parts(cs, W, b0, nb, a, limit)
+    low, fi, fj = np.inf, -1, -1  # the parts' pair of the smallest bound is measured first
+    for i in range(na):
+        if live_a >> i & 1:
+            for j in range(nb):
+                if live_b >> j & 1:
+                    lb = _parts_bound(cs, W, a0 + i, b0 + j)
+                    if lb < low:
+                        low, fi, fj = lb, i, j
     best = (np.inf, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
-    for s in range(start, end):
-        a, b = cs.sub_pairs[s, 0], cs.sub_pairs[s, 1]
-        cap = min(best[0], limit)
-        if pair_bound(cs.kinds, W, cs.sizes, a, b) >= cap or (
-                cs.kinds[a] == HULL and cs.kinds[b] == HULL and hulls_bound(cs, W, a, b) >= cap):
-            continue  # its distance is at least its bound: not below the smallest
-        r = shape_pair(cs, W, a, b, cap)
-        if r[0] < best[0]:
-            best = r
+    if fi < 0 or low >= limit:
+        return best
+    best = shape_pair(cs, W, a0 + fi, b0 + fj, limit)
+    for i in range(na):
+        if not live_a >> i & 1:
+            continue
+        for j in range(nb):
+            if not live_b >> j & 1 or (i == fi and j == fj):
+                continue
+            cap = min(best[0], limit)
+            if _parts_bound(cs, W, a0 + i, b0 + j) >= cap:
+                continue  # its distance is at least its bound: not below the smallest
+            r = shape_pair(cs, W, a0 + i, b0 + j, cap)
+            if r[0] < best[0]:
+                best = r
     return best
 
 

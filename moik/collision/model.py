@@ -212,11 +212,11 @@ class CollisionChecker:
         pairs += [(a, len(items) + o) for a in range(len(items))
                   for o, obstacle in enumerate(obstacles)
                   if (obstacle, model.links[top_bodies[a]]) not in skip]
-        refine, sub_pairs = refinements(pairs, parts)
+        refine = refinements(pairs, parts)
         self._shapes = {"body": np.array(bodies, dtype=np.int64), "local": local,
                         "kinds": kinds, "sizes": sizes,
                         "pairs": np.array(pairs, dtype=np.int64).reshape(-1, 2),
-                        "refine": refine, "sub_pairs": sub_pairs,
+                        "refine": refine,
                         "hull_points": hull_points, "hull_ranges": hull_ranges,
                         "hull_caps": hull_capsules(shapes)}
         names = names + [f"{names[t]}.{i}" for t, ks in enumerate(parts) for i in range(len(ks))

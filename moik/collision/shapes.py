@@ -250,6 +250,9 @@ class ConvexHull(Shape):
         return {"points": self.points.tolist()}
 
 
+MAX_PARTS = 62  # the kernels keep a compound's parts still in play as the bits of an int64
+
+
 @dataclass(frozen=True, eq=False, kw_only=True)
 class Compound(Shape):
     """A body's geometry as a ``bound`` (a sphere, capsule or box holding it) and convex
@@ -271,6 +274,8 @@ class Compound(Shape):
         parts = tuple(self.parts)
         if not parts or not all(isinstance(p, ConvexHull) for p in parts):
             raise GeometryError("a compound's parts must be one or more ConvexHull shapes")
+        if len(parts) > MAX_PARTS:
+            raise GeometryError(f"a compound has at most {MAX_PARTS} parts, got {len(parts)}")
         object.__setattr__(self, "parts", parts)
         object.__setattr__(self, "pose", self.bound.pose)
 
@@ -390,14 +395,12 @@ def expand_compounds(tops: Sequence[Shape], bodies: Sequence[int]
 
 
 def refinements(pairs: Sequence[tuple[int, int]], parts: Sequence[Sequence[int]]
-                ) -> tuple[np.ndarray, np.ndarray]:
-    """For each pair of tops, the range ``refine (p, 2)`` of its parts' pairs in ``sub_pairs
-    (s, 2)`` (empty when neither top is a compound: the pair is measured as it is)."""
-    refine = np.zeros((len(pairs), 2), dtype=np.int64)
-    sub: list[tuple[int, int]] = []
+                ) -> np.ndarray:
+    """For each pair of tops, the parts that refine it, ``(p, 4)``: the first kernel index
+    and the number of each side's parts (a compound's are consecutive; a plain shape is its
+    own one part), or zeros when neither top is a compound (the pair is measured as it is)."""
+    refine = np.zeros((len(pairs), 4), dtype=np.int64)
     for k, (a, b) in enumerate(pairs):
-        refine[k, 0] = len(sub)
         if parts[a] != [a] or parts[b] != [b]:
-            sub += [(i, j) for i in parts[a] for j in parts[b]]
-        refine[k, 1] = len(sub)
-    return refine, np.array(sub, dtype=np.int64).reshape(-1, 2)
+            refine[k] = parts[a][0], len(parts[a]), parts[b][0], len(parts[b])
+    return refine

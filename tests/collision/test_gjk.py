@@ -8,7 +8,7 @@ from hypothesis import strategies as st
 from moik.collision import Box, Capsule, ConvexHull, HalfSpace, Sphere
 from moik.collision.compiled import collision_set
 from moik.collision.kernels import pair_distances
-from moik.collision.shapes import hull_arrays, shape_arrays
+from moik.collision.shapes import Compound, expand_compounds, hull_arrays, refinements, shape_arrays
 from moik.exceptions import MoikError
 from moik.robots import get_robot
 
@@ -31,12 +31,12 @@ def _pose(rng, spread=0.3):
 
 def _moik_pair(A, B) -> tuple:
     """Every output of the kernels for the pair (A, B), both placed in the world."""
-    shapes = [A, B]
+    shapes, bodies, parts = expand_compounds([A, B], [-1, -1])
     kinds, local, sizes = shape_arrays(shapes)
     points, ranges = hull_arrays(shapes, sizes)
-    cs = collision_set(chain=ROBOT.chain_model, body=np.array([-1, -1]), local=local,
+    cs = collision_set(chain=ROBOT.chain_model, body=np.array(bodies), local=local,
                        kinds=kinds, sizes=sizes, pairs=np.array([[0, 1]]), hull_points=points,
-                       hull_ranges=ranges)
+                       hull_ranges=ranges, refine=refinements([(0, 1)], parts))
     out = np.empty((1, 1))
     pair_distances(cs, np.zeros((1, ROBOT.dof)), out)
     return out[0, 0], cs
@@ -138,3 +138,43 @@ def test_the_hull_of_a_box_is_the_box():
 def test_bad_points(bad):
     with pytest.raises(MoikError, match="points"):
         ConvexHull(points=bad)
+
+
+def _compound(rng, pose):
+    """Convex pieces of a random blob, bounded by a capsule that holds them all."""
+    parts = [ConvexHull(points=rng.normal(size=(12, 3)) * 0.03 + [0, 0, z])
+             for z in (-0.08, 0.0, 0.08)]
+    bound = Capsule(radius=0.2, length=0.2)
+    return Compound(bound=bound, parts=tuple(parts)).moved(pose)
+
+
+@settings(max_examples=60, derandomize=True, deadline=None)
+@given(st.integers(0, 2**31 - 1))
+def test_a_compound_pair_is_its_parts_closest_pair(seed):
+    """Compound pairs measure the parts (the bounds only cull): the distance equals the
+    smallest over the parts' pairs, and the limited measure agrees below its limit."""
+    from moik.collision.kernels import distance_below, distance_scratch
+
+    rng = np.random.default_rng(seed)
+    A = _compound(rng, _pose(rng, 0.25))
+    B = _compound(rng, _pose(rng, 0.25))
+    d, cs = _moik_pair(A, B)
+    parts = min(_moik_pair(a, b)[0] for a in A.parts for b in B.parts)
+    assert d == pytest.approx(parts, abs=1e-9)
+    ref = min(_coal_distance(a, b) for a in A.parts for b in B.parts)
+    if ref > 1e-9:
+        assert d == pytest.approx(ref, abs=1e-9)
+    scratch = distance_scratch(cs)
+    for limit in (0.0, d + 1e-3, d - 1e-3, 0.05):
+        below, _ = distance_below(cs, np.zeros(ROBOT.dof), scratch, limit)
+        if d < limit:
+            assert below == pytest.approx(d, abs=1e-12)
+        else:
+            assert below >= limit
+
+
+def test_compound_needs_hull_parts_inside_a_primitive_bound():
+    with pytest.raises(MoikError, match="bound"):
+        Compound(bound=HalfSpace(), parts=(ConvexHull(points=np.eye(3)),))
+    with pytest.raises(MoikError, match="parts"):
+        Compound(bound=Sphere(radius=1.0), parts=())

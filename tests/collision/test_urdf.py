@@ -7,7 +7,7 @@ import pytest
 from moik import load_urdf
 from moik.collision import Box, Capsule, CollisionChecker, Sphere
 from moik.collision.urdf import model_from_urdf
-from moik.exceptions import URDFError
+from moik.exceptions import GeometryError, URDFError
 
 URDF = """<robot name="two">
   <link name="base"><collision><origin xyz="0 0 0.05"/><geometry><box size="0.2 0.2 0.1"/>
@@ -25,10 +25,14 @@ URDF = """<robot name="two">
 </robot>"""
 
 
+PRIMITIVES = URDF.replace(
+    '<collision><geometry><mesh filename="package://x/fore.stl"/></geometry></collision>', "")
+
+
 def test_primitives_on_the_bodies():
-    robot = load_urdf(URDF)
-    model, skipped = model_from_urdf(URDF, robot)
-    assert model.links == ("base", "upper", "fore") and skipped == ["fore"]
+    robot = load_urdf(PRIMITIVES)
+    model = model_from_urdf(PRIMITIVES, robot, samples=0)
+    assert model.links == ("base", "upper", "fore")
     assert isinstance(model.shapes["base"][0], Box)
     assert isinstance(model.shapes["upper"][0], Capsule)  # the cylinder's enclosing capsule
     assert isinstance(model.shapes["fore"][0], Sphere)
@@ -51,3 +55,23 @@ def test_not_this_robots_urdf():
     other = load_urdf(URDF.replace('"j1"', '"k1"').replace('"j2"', '"k2"'))
     with pytest.raises(URDFError, match="has no joints"):
         model_from_urdf(URDF, other)
+
+
+def test_an_unresolvable_mesh_names_link_file_and_folders(tmp_path):
+    path = tmp_path / "two.urdf"
+    path.write_text(URDF)
+    robot = load_urdf(path, package_dirs=[tmp_path / "pkgs"])
+    with pytest.raises(GeometryError, match=r"link 'fore'.*package://x/fore\.stl.*not found.*"
+                       r"pkgs/x/fore\.stl"):
+        model_from_urdf(path, robot, package_dirs=[tmp_path / "pkgs"])
+
+
+def test_a_body_without_geometry_is_an_error_or_an_explicit_choice():
+    bare = PRIMITIVES.replace('<collision><origin xyz="0.2 0 0"/><geometry><sphere radius="0.05"/>'
+                              '\n    </geometry></collision>', "")
+    robot = load_urdf(bare)
+    with pytest.raises(GeometryError, match=r"bodies \['fore'\] have no <collision>.*"
+                       "missing='ignore'"):
+        model_from_urdf(bare, robot, samples=0)
+    model = model_from_urdf(bare, robot, samples=0, missing="ignore")
+    assert "fore" not in model.shapes and "NOT checked: fore" in model.source

@@ -3,7 +3,9 @@
 (The options are declared in :mod:`moik.cli.parser`, which imports nothing heavy.)
 
 The scene is a JSON file (:func:`moik.collision.io.load_scene`); the arm's geometry is
-its shipped capsule model (:mod:`moik.collision.catalog`; catalog arms only). The
+its shipped capsule model (:mod:`moik.collision.catalog`) for a catalog arm, else the
+``<collision>`` geometry of its URDF file (meshes found through ``--package-dir`` and
+``ROS_PACKAGE_PATH``; :func:`moik.collision.urdf.robot_model`). The
 checker (self pairs and the scene; the self pairs alone with ``--self-collision`` and
 no scene) and ``--clearance`` go to the solver
 (``solve_ik(..., collision=checker, clearance=D)``), which returns only collision-free
@@ -25,10 +27,11 @@ import numpy as np
 
 from moik._validate import number
 from moik.cli.parser import given, library_default
-from moik.collision.catalog import collision_model
+from moik.collision.catalog import collision_model, shipped_models
 from moik.collision.io import load_scene
 from moik.collision.model import CollisionChecker
-from moik.exceptions import ParameterError
+from moik.collision.urdf import robot_model
+from moik.exceptions import GeometryError, ParameterError
 from moik.robots import Robot
 
 
@@ -47,9 +50,20 @@ def checker(args: argparse.Namespace, robot: Robot) -> tuple[CollisionChecker, f
                                  "FILE and/or --self-collision")
         return None
     clearance = library_default("clearance") if clearance is None else clearance
-    return (CollisionChecker(model=collision_model(robot),
-                             scene=None if scene is None else load_scene(scene)),
-            number("--clearance", clearance, minimum=0.0))
+    if robot.name in shipped_models():
+        model = collision_model(robot)
+    else:
+        try:
+            model = robot_model(robot)
+        except GeometryError as exc:  # the library's keywords, in the command's words
+            raise GeometryError(str(exc).replace("pass package_dirs=[a folder holding",
+                                                 "give --package-dir [a folder holding").replace(
+                "pass missing='ignore' to leave them unchecked",
+                "use the library's missing='ignore' to leave them unchecked")) from None
+    check = CollisionChecker(model=model, scene=None if scene is None else load_scene(scene))
+    if check.n_pairs == 0:
+        raise GeometryError(f"nothing to check: {model.source} gives no pair to evaluate")
+    return check, number("--clearance", clearance, minimum=0.0)
 
 
 def solver_options(check: tuple[CollisionChecker, float] | None) -> dict[str, Any]:

@@ -173,8 +173,8 @@ def read_mesh(path: Path, *, link: str, scale: Any = (1.0, 1.0, 1.0)) -> Mesh:
     except OSError as exc:
         raise GeometryError(f"{what} cannot be read: {exc}") from None
     except Exception as exc:  # trimesh raises many kinds on a damaged or foreign file
-        hint = " (COLLADA needs pycollada: pip install pycollada)" if path.suffix.lower() == ".dae" \
-            else ""
+        dae = path.suffix.lower() == ".dae"
+        hint = " (COLLADA needs pycollada: pip install pycollada)" if dae else ""
         raise GeometryError(f"{what} cannot be read as a mesh{hint}: "
                             f"{type(exc).__name__}: {exc}") from None
     if not isinstance(loaded, trimesh.Trimesh) or len(loaded.faces) == 0:

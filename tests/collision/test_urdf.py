@@ -11,8 +11,8 @@ from moik import load_urdf, solve_ik
 from moik.collision import Box, Capsule, CollisionChecker, Scene, Sphere
 from moik.collision.meshes import read_mesh, resolve_mesh
 from moik.collision.urdf import model_from_urdf, robot_model
-from moik.robots.urdf_geometry import mesh_geometry
 from moik.exceptions import GeometryError, URDFError
+from moik.robots.urdf_geometry import mesh_geometry
 
 URDF = """<robot name="two">
   <link name="base"><collision><origin xyz="0 0 0.05"/><geometry><box size="0.2 0.2 0.1"/>

@@ -125,7 +125,7 @@ def _along(P: np.ndarray, u: np.ndarray, H: np.ndarray | None = None
     return foot + t0 * u, foot + t1 * u, r
 
 
-def _hull_vertices(P: np.ndarray) -> np.ndarray:
+def hull_vertices(P: np.ndarray) -> np.ndarray:
     """The convex-hull vertices of ``P`` (all of ``P`` when it is flat or too small)."""
     from scipy.spatial import ConvexHull, QhullError
 
@@ -179,7 +179,7 @@ def enclosing_capsule(points: Any, axes: Sequence[Any] = (), refine: bool = True
         n = float(np.linalg.norm(v))
         if n > 0.0:
             candidates.append(v / n)
-    H = _hull_vertices(P)
+    H = hull_vertices(P)
     best: tuple[np.ndarray, np.ndarray, float] | None = None
     best_volume = np.inf
     for u in candidates:

@@ -184,7 +184,7 @@ class CollisionChecker:
         if self.self_collision:
             checked = set(model.checked_body_pairs())
             pairs += [(a, b) for a in range(len(items)) for b in range(a + 1, len(items))
-                      if (bodies[a], bodies[b]) in checked]
+                      if (min(bodies[a], bodies[b]), max(bodies[a], bodies[b])) in checked]
         for _, link in (() if scene is None else scene.allowed):
             if link not in model.links:
                 raise UnknownNameError(f"link of robot {robot.name!r}", link, model.links)

@@ -29,6 +29,7 @@ import numpy as np
 
 from moik._validate import choice, integer
 from moik.collision.acm import DEFAULT_SAMPLES, sample_allowed
+from moik.collision.exact import HULLS, hull_pieces
 from moik.collision.fit import body_axes
 from moik.collision.mesh_fit import cached_link_fit, digest, load_cached, store_cached
 from moik.collision.meshes import read_mesh, resolve_mesh
@@ -43,6 +44,7 @@ DEFAULT_CAPSULES = 1  # per link with meshes: the largest number of fitted capsu
 # splitting a link's triangles in two gave halves whose capsules stick out beyond the one
 # capsule around the whole link, and rejected more mesh-free configurations, not fewer)
 ACM_SEED = 0
+HULL_PIECES = 8  # convex hulls per link for the exact stage (slabs of its triangles)
 
 
 def _shape(item: dict[str, Any]) -> Shape:
@@ -94,7 +96,10 @@ def mesh_capsules(source: Any, robot: Robot, *, package_dirs: Any = None,
         fits = cached_link_fit(np.vstack(vertices), np.vstack(faces), identity=identity,
                                axes=candidates[body], capsules=capsules, split_gain=0.85,
                                use_cache=use_cache)
+        hulls = hull_pieces(np.vstack(vertices), np.vstack(faces), HULL_PIECES)
         out[link] = [Capsule.between(a, b, r) for a, b, r in fits]
+        for capsule in out[link]:
+            HULLS[capsule] = hulls  # the exact stage's geometry (moik.collision.exact)
     return out
 
 
@@ -153,6 +158,7 @@ def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
     body_of = {item["link"]: item["body"] for item in items}
     for link, caps in fitted.items():
         shapes.setdefault(names[body_of[link]], []).extend(caps)
+    shapes = {name: shapes[name] for name in names if name in shapes}  # in body order
     bare = [name for name in names if name not in shapes]
     label = robot.source or robot.name
     if bare and missing == "error":

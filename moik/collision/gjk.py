@@ -45,7 +45,6 @@ def _closest_on_simplex(S: np.ndarray, k: int, out: np.ndarray) -> int:
     """The point of the simplex ``S[:k]`` nearest the origin into ``out``; its face's
     vertices are moved to the front of ``S``; returns their number."""
     best, best_mask = np.inf, 0
-    lam_best = np.zeros(4)
     E = np.zeros((3, 3))
     for mask in range(1, 1 << k):
         idx = np.zeros(4, dtype=np.int64)
@@ -79,11 +78,10 @@ def _closest_on_simplex(S: np.ndarray, k: int, out: np.ndarray) -> int:
         x = np.zeros(3)
         for a in range(m):
             x += lam[a] * S[idx[a]]
-        n2 = x @ x
+        n2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2]
         if n2 < best:
             best, best_mask = n2, mask
             out[:] = x
-            lam_best[:] = lam
     if best_mask == 0:  # numerically degenerate: keep the nearest vertex
         j = 0
         for i in range(k):

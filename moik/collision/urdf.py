@@ -97,7 +97,7 @@ def mesh_capsules(source: Any, robot: Robot, *, package_dirs: Any = None,
                                axes=candidates[body], capsules=capsules, split_gain=0.85,
                                use_cache=use_cache)
         hulls = hull_pieces(np.vstack(vertices), np.vstack(faces), HULL_PIECES)
-        out[link] = [Capsule.between(a, b, r) for a, b, r in fits]
+        out[link] = [Capsule.between(a.tolist(), b.tolist(), r) for a, b, r in fits]
         for capsule in out[link]:
             HULLS[capsule] = hulls  # the exact stage's geometry (moik.collision.exact)
     return out

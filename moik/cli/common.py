@@ -29,8 +29,8 @@ def robot(args: argparse.Namespace) -> Robot:
     packages = getattr(args, "package_dirs", None)
     if spec in available_robots():
         if base is not None or tip is not None or packages:
-            raise ParameterError(f"--base/--tip/--package-dir belong to a URDF file; {spec!r} is "
-                                 "a catalog robot")
+            raise ParameterError(f"--base/--tip select links of a URDF file (--package-dir its "
+                                 f"meshes' packages); {spec!r} is a catalog robot")
         return get_robot(spec)
     if Path(spec).suffix.lower() in (".urdf", ".xml") or Path(spec).is_file():
         try:

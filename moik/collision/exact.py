@@ -84,6 +84,9 @@ class ExactStage:
             else:
                 points, radius = _points(shape)
                 self._robot.append((body, [np.ascontiguousarray(points, dtype=float)], radius))
+        self._centres = [np.array([P.mean(axis=0) for P in hulls]) for _, hulls, _ in self._robot]
+        self._reach = [np.array([np.linalg.norm(P - P.mean(axis=0), axis=1).max() for P in hulls])
+                       for _, hulls, _ in self._robot]
         self._obstacles: list[Any] = []
         for shape in ([] if checker.scene is None else checker.scene.obstacles.values()):
             if isinstance(shape, HalfSpace):
@@ -96,10 +99,32 @@ class ExactStage:
         index = {name: k for k, name in enumerate(names)}
         self._pairs = [(index[a], index[b]) for a, b in checker.pair_names]
 
-    def _placed(self, k: int, frames: np.ndarray) -> tuple[list[np.ndarray], float]:
+    def _placed(self, k: int, frames: np.ndarray) -> tuple[list[np.ndarray], np.ndarray,
+                                                            np.ndarray, float]:
+        """Shape ``k``'s hull pieces placed at ``frames``, their bounding spheres' centres
+        and radii, and the sweeping radius."""
         body, hulls, r = self._robot[k]
         F = frames[body]
-        return [np.ascontiguousarray(P @ F[:3, :3].T + F[:3, 3]) for P in hulls], r
+        placed = [np.ascontiguousarray(P @ F[:3, :3].T + F[:3, 3]) for P in hulls]
+        return placed, self._centres[k] @ F[:3, :3].T + F[:3, 3], self._reach[k], r
+
+    def _pair_bound(self, a: tuple, b: tuple) -> float:
+        """The smallest GJK bound over the piece pairs; piece pairs whose bounding
+        spheres are farther apart than the smallest bound found are skipped (their
+        distance cannot be smaller)."""
+        As, ca, qa, ra = a
+        Bs, cb, qb, rb = b
+        spheres = (np.linalg.norm(ca[:, None] - cb[None], axis=2) - qa[:, None] - qb[None]
+                   - ra - rb)
+        best = np.inf
+        for flat in np.argsort(spheres, axis=None):
+            i, j = divmod(int(flat), len(Bs))
+            if spheres[i, j] >= best:
+                break
+            best = min(best, hull_distance_bound(As[i], ra, Bs[j], rb))
+            if best == -np.inf:
+                break
+        return best
 
     def distances(self, Q: Any, below: float = 0.0) -> np.ndarray:
         """Per pair, the larger of the bounding-shape distance and the hull bound (the
@@ -111,14 +136,13 @@ class ExactStage:
         n_robot = len(self._robot)
         for i, j in zip(*np.nonzero(np.less(D, below)), strict=True):
             a, b = self._pairs[j]
-            As, ra = self._placed(a, frames[i])
+            A = self._placed(a, frames[i])
             if b < n_robot:
-                Bs, rb = self._placed(b, frames[i])
-                bound = min(hull_distance_bound(A, ra, B, rb) for A in As for B in Bs)
+                bound = self._pair_bound(A, self._placed(b, frames[i]))
             else:
                 kind, x, y = self._obstacles[b - n_robot]
-                bound = min(halfspace_distance(A, ra, x, y) if kind == "plane"
-                            else hull_distance_bound(A, ra, x, y) for A in As)
+                bound = min(halfspace_distance(P, A[3], x, y) if kind == "plane"
+                            else hull_distance_bound(P, A[3], x, y) for P in A[0])
             D[i, j] = max(D[i, j], bound)
         return D
 

@@ -41,43 +41,87 @@ def _support(P: np.ndarray, d0: float, d1: float, d2: float) -> int:
 
 
 @jit
+def _solve_small(G: np.ndarray, rhs: np.ndarray, n: int, mu: np.ndarray) -> bool:
+    """``G[:n, :n] mu = rhs[:n]`` for ``n <= 3`` by Cramer's rule; False when singular."""
+    if n == 1:
+        if G[0, 0] <= 1e-300:
+            return False
+        mu[0] = rhs[0] / G[0, 0]
+        return True
+    if n == 2:
+        det = G[0, 0] * G[1, 1] - G[0, 1] * G[1, 0]
+        if abs(det) <= 1e-300:
+            return False
+        mu[0] = (rhs[0] * G[1, 1] - G[0, 1] * rhs[1]) / det
+        mu[1] = (G[0, 0] * rhs[1] - rhs[0] * G[1, 0]) / det
+        return True
+    c0 = G[1, 1] * G[2, 2] - G[1, 2] * G[2, 1]
+    c1 = G[1, 0] * G[2, 2] - G[1, 2] * G[2, 0]
+    c2 = G[1, 0] * G[2, 1] - G[1, 1] * G[2, 0]
+    det = G[0, 0] * c0 - G[0, 1] * c1 + G[0, 2] * c2
+    if abs(det) <= 1e-300:
+        return False
+    for col in range(3):
+        d = 0.0
+        for row in range(3):
+            # the determinant with column ``col`` replaced by rhs, expanded along that column
+            r1, r2 = (row + 1) % 3, (row + 2) % 3
+            a1, a2 = (col + 1) % 3, (col + 2) % 3
+            minor = G[r1, a1] * G[r2, a2] - G[r1, a2] * G[r2, a1]
+            d += rhs[row] * minor
+        mu[col] = d / det
+    return True
+
+
+@jit
 def _closest_on_simplex(S: np.ndarray, k: int, out: np.ndarray) -> int:
     """The point of the simplex ``S[:k]`` nearest the origin into ``out``; its face's
-    vertices are moved to the front of ``S``; returns their number."""
+    vertices are moved to the front of ``S``; returns their number.
+
+    Every face is tried (the affine projection of the origin with positive barycentric
+    weights and the smallest norm wins). A point chosen wrongly (near-singular faces) is
+    still a point of the simplex: GJK converges more slowly, its bound stays valid."""
     best, best_mask = np.inf, 0
-    E = np.zeros((3, 3))
+    E = np.empty((3, 3))
+    G = np.empty((3, 3))
+    rhs = np.empty(3)
+    mu = np.empty(3)
+    lam = np.empty(4)
+    idx = np.empty(4, dtype=np.int64)
+    x = np.empty(3)
     for mask in range(1, 1 << k):
-        idx = np.zeros(4, dtype=np.int64)
         m = 0
         for i in range(k):
             if mask & (1 << i):
                 idx[m] = i
                 m += 1
-        lam = np.zeros(4)
         if m == 1:
             lam[0] = 1.0
         else:
-            p0 = S[idx[0]]
             for a in range(m - 1):
                 for c in range(3):
-                    E[a, c] = S[idx[a + 1], c] - p0[c]
-            G = np.zeros((m - 1, m - 1))
-            rhs = np.zeros(m - 1)
+                    E[a, c] = S[idx[a + 1], c] - S[idx[0], c]
             for a in range(m - 1):
-                rhs[a] = -(E[a, 0] * p0[0] + E[a, 1] * p0[1] + E[a, 2] * p0[2])
+                rhs[a] = -(E[a, 0] * S[idx[0], 0] + E[a, 1] * S[idx[0], 1]
+                           + E[a, 2] * S[idx[0], 2])
                 for b in range(m - 1):
                     G[a, b] = E[a, 0] * E[b, 0] + E[a, 1] * E[b, 1] + E[a, 2] * E[b, 2]
-            if abs(np.linalg.det(G)) <= 1e-300:
+            if not _solve_small(G, rhs, m - 1, mu):
                 continue
-            mu = np.linalg.solve(G, rhs)
-            lam[0] = 1.0 - mu.sum()
+            lam[0] = 1.0
             for a in range(m - 1):
                 lam[a + 1] = mu[a]
-        if lam[:m].min() <= 0.0:
-            continue
-        x = np.zeros(3)
+                lam[0] -= mu[a]
+        positive = True
         for a in range(m):
-            x += lam[a] * S[idx[a]]
+            if lam[a] <= 0.0:
+                positive = False
+        if not positive:
+            continue
+        for c in range(3):
+            x[c] = 0.0
+            for a in range(m):
+                x[c] += lam[a] * S[idx[a], c]
         n2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2]
         if n2 < best:
             best, best_mask = n2, mask
@@ -91,7 +135,7 @@ def _closest_on_simplex(S: np.ndarray, k: int, out: np.ndarray) -> int:
         S[0] = S[j].copy()
         return 1
     m = 0
-    keep = np.zeros((4, 3))
+    keep = np.empty((4, 3))
     for i in range(k):
         if best_mask & (1 << i):
             keep[m] = S[i]

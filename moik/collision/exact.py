@@ -15,8 +15,9 @@ clearance for the meshes. Tight: the hull is far closer to a link's shape than o
 capsule (UR5's, iiwa's and panda's links: the capsules reject 29 to 100 % of the
 mesh-free configurations, ``studies/mesh_collision_check.py``).
 
-This module calls the checker's public methods from Python (per configuration and pair);
-the solver's compiled start loop does not use it yet.
+The kernels (:mod:`moik.collision.exact_kernels`) take the arrays of
+:attr:`ExactStage.arrays` and the body frames; the solver's compiled start loop does not
+call them yet.
 """
 
 from __future__ import annotations
@@ -26,8 +27,8 @@ from weakref import WeakKeyDictionary
 
 import numpy as np
 
+from moik.collision.exact_kernels import refine_distances
 from moik.collision.fit import hull_vertices
-from moik.collision.gjk import halfspace_distance, hull_distance_bound
 from moik.collision.model import CollisionChecker
 from moik.collision.shapes import Box, Capsule, HalfSpace, Shape, Sphere
 
@@ -75,75 +76,61 @@ class ExactStage:
 
     def __init__(self, checker: CollisionChecker) -> None:
         self.checker = checker
-        model = checker.model
-        self._robot: list[tuple[int, list[np.ndarray], float]] = []
-        for body, shape in model.items:
+        pieces: list[list[np.ndarray]] = []
+        body, radius, plane, normal, offset = [], [], [], [], []
+        for b, shape in checker.model.items:
             hulls = HULLS.get(shape)
-            if hulls is not None:
-                self._robot.append((body, hulls, 0.0))
+            if hulls is None:
+                points, r = _points(shape)
+                hulls = [points]
             else:
-                points, radius = _points(shape)
-                self._robot.append((body, [np.ascontiguousarray(points, dtype=float)], radius))
-        self._centres = [np.array([P.mean(axis=0) for P in hulls]) for _, hulls, _ in self._robot]
-        self._reach = [np.array([np.linalg.norm(P - P.mean(axis=0), axis=1).max() for P in hulls])
-                       for _, hulls, _ in self._robot]
-        self._obstacles: list[Any] = []
-        for shape in ([] if checker.scene is None else checker.scene.obstacles.values()):
+                r = 0.0
+            pieces.append(hulls)
+            body.append(b)
+            radius.append(r)
+        obstacles = {} if checker.scene is None else checker.scene.obstacles
+        for shape in obstacles.values():
+            body.append(-1)
             if isinstance(shape, HalfSpace):
-                self._obstacles.append(("plane", shape.pose[:3, 2].copy(),
-                                        float(shape.pose[:3, 2] @ shape.pose[:3, 3])))
+                pieces.append([])
+                radius.append(0.0)
             else:
-                points, radius = _points(shape)
-                self._obstacles.append(("hull", np.ascontiguousarray(points), radius))
-        names = checker.shape_names
-        index = {name: k for k, name in enumerate(names)}
-        self._pairs = [(index[a], index[b]) for a, b in checker.pair_names]
-
-    def _placed(self, k: int, frames: np.ndarray) -> tuple[list[np.ndarray], np.ndarray,
-                                                            np.ndarray, float]:
-        """Shape ``k``'s hull pieces placed at ``frames``, their bounding spheres' centres
-        and radii, and the sweeping radius."""
-        body, hulls, r = self._robot[k]
-        F = frames[body]
-        placed = [np.ascontiguousarray(P @ F[:3, :3].T + F[:3, 3]) for P in hulls]
-        return placed, self._centres[k] @ F[:3, :3].T + F[:3, 3], self._reach[k], r
-
-    def _pair_bound(self, a: tuple, b: tuple) -> float:
-        """The smallest GJK bound over the piece pairs; piece pairs whose bounding
-        spheres are farther apart than the smallest bound found are skipped (their
-        distance cannot be smaller)."""
-        As, ca, qa, ra = a
-        Bs, cb, qb, rb = b
-        spheres = (np.linalg.norm(ca[:, None] - cb[None], axis=2) - qa[:, None] - qb[None]
-                   - ra - rb)
-        best = np.inf
-        for flat in np.argsort(spheres, axis=None):
-            i, j = divmod(int(flat), len(Bs))
-            if spheres[i, j] >= best:
-                break
-            best = min(best, hull_distance_bound(As[i], ra, Bs[j], rb))
-            if best == -np.inf:
-                break
-        return best
+                points, r = _points(shape)
+                pieces.append([points])
+                radius.append(r)
+        for shape in [s for _, s in checker.model.items] + list(obstacles.values()):
+            flat = isinstance(shape, HalfSpace)
+            n = shape.pose[:3, 2] if flat else np.zeros(3)
+            plane.append(1 if flat else 0)
+            normal.append(n)
+            offset.append(float(n @ shape.pose[:3, 3]) if flat else 0.0)
+        flat_pieces = [P for group in pieces for P in group]
+        piece_start = np.cumsum([0] + [len(group) for group in pieces])
+        point_start = np.cumsum([0] + [len(P) for P in flat_pieces])
+        centres = np.array([P.mean(axis=0) for P in flat_pieces]).reshape(-1, 3)
+        reach = np.array([np.linalg.norm(P - c, axis=1).max()
+                          for P, c in zip(flat_pieces, centres, strict=True)])
+        points = np.vstack(flat_pieces) if flat_pieces else np.zeros((0, 3))
+        self.arrays = (np.array(body, dtype=np.int64), np.array(radius, dtype=float),
+                       np.array(plane, dtype=np.int64),
+                       np.array(normal, dtype=float).reshape(-1, 3),
+                       np.array(offset, dtype=float), piece_start.astype(np.int64),
+                       point_start.astype(np.int64), np.ascontiguousarray(points, dtype=float),
+                       np.ascontiguousarray(centres, dtype=float), reach.astype(float))
+        """The kernels' arrays (:mod:`moik.collision.exact_kernels` documents them)."""
+        self.pairs = np.ascontiguousarray(checker.arrays["pairs"], dtype=np.int64)
 
     def distances(self, Q: Any, below: float = 0.0) -> np.ndarray:
         """Per pair, the larger of the bounding-shape distance and the hull bound (the
-        hull bound computed only where the former is below ``below``): ``(n, n_pairs)``."""
+        hull bound computed only where the former is below ``below``): ``(n, n_pairs)``.
+        Every entry is a lower bound of the meshes' distance, and it is ``>= below``
+        exactly when the pair's hulls keep ``below``; the hull bounds are not converged
+        further than that decision needs."""
         Q2 = np.atleast_2d(self.checker.robot.check_q(Q))
-        D = np.atleast_2d(self.checker.distances(Q2)).copy()
-        frames = self.checker.robot.frames(Q2)
-        frames = frames[None] if frames.ndim == 3 else frames
-        n_robot = len(self._robot)
-        for i, j in zip(*np.nonzero(np.less(D, below)), strict=True):
-            a, b = self._pairs[j]
-            A = self._placed(a, frames[i])
-            if b < n_robot:
-                bound = self._pair_bound(A, self._placed(b, frames[i]))
-            else:
-                kind, x, y = self._obstacles[b - n_robot]
-                bound = min(halfspace_distance(P, A[3], x, y) if kind == "plane"
-                            else hull_distance_bound(P, A[3], x, y) for P in A[0])
-            D[i, j] = max(D[i, j], bound)
+        D = np.ascontiguousarray(np.atleast_2d(self.checker.distances(Q2)), dtype=float)
+        frames = np.ascontiguousarray(self.checker.robot.frames(Q2).reshape(
+            len(Q2), -1, 4, 4))
+        refine_distances(self.arrays, frames, D, self.pairs, float(below))
         return D
 
     def min_distance(self, Q: Any, below: float = 0.0) -> np.ndarray:

@@ -145,9 +145,11 @@ def _closest_on_simplex(S: np.ndarray, k: int, out: np.ndarray) -> int:
 
 
 @jit
-def hull_distance_bound(A: np.ndarray, ra: float, B: np.ndarray, rb: float) -> float:
+def hull_distance_bound(A: np.ndarray, ra: float, B: np.ndarray, rb: float,
+                        enough: float = np.inf) -> float:
     """A lower bound on the distance between ``hull(A) + ra`` and ``hull(B) + rb``
-    (``(n, 3)`` points, same frame); ``-inf`` when the hulls are not separated."""
+    (``(n, 3)`` points, same frame); ``-inf`` when the hulls are not separated. It
+    returns as soon as the bound reaches ``enough`` (default: converged)."""
     S = np.zeros((4, 3))
     v = A[0] - B[0]
     S[0] = v
@@ -163,6 +165,8 @@ def hull_distance_bound(A: np.ndarray, ra: float, B: np.ndarray, rb: float) -> f
             bound = vw / np.sqrt(vv)
             if bound > lower:
                 lower = bound
+                if lower - ra - rb - MARGIN >= enough:
+                    break
         if vv - vw <= REL_TOL * vv:
             break
         if k == 4:

@@ -84,3 +84,23 @@ def _at(x, y, z):
     T = np.zeros((4, 4))
     T[:3, 3] = [x, y, z]
     return T
+
+
+def test_every_entry_is_a_lower_bound_of_the_mesh_distance():
+    urdf = DATA / "ur10_robot.urdf"
+    robot = load_urdf(urdf, tip_link="tool0", package_dirs=[DATA / "packages"])
+    checker = CollisionChecker(model=robot_model(robot))
+    meshes = _meshes(urdf, robot)
+    Q = robot.random_q(30, rng=np.random.default_rng(11))
+    for below in (0.0, 0.05, np.inf):
+        D = ExactStage(checker).distances(Q, below=below)
+        for i, q in enumerate(Q):
+            F = robot.frames(q)
+            tf = {b: coal.Transform3s(F[b][:3, :3], F[b][:3, 3]) for b in meshes}
+            for a, b in set(checker.pair_bodies):  # the smallest over the body pair's shapes
+                # (ur10's wrist_3 also has a primitive box, ee_link's, not among the meshes)
+                ours = min(D[i, k] for k, p in enumerate(checker.pair_bodies) if p == (a, b))
+                d = min(coal.distance(x, tf[a], y, tf[b], coal.DistanceRequest(),
+                                      coal.DistanceResult())
+                        for x in meshes[a] for y in meshes[b])
+                assert ours <= max(d, 0.0) + 1e-9

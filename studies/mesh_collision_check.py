@@ -34,7 +34,7 @@ from pathlib import Path
 import coal
 import numpy as np
 
-from moik import get_robot, load_urdf
+from moik import get_robot, load_urdf, solve_ik
 from moik.collision import CollisionChecker, collision_model
 from moik.collision.exact import ExactStage
 from moik.collision.meshes import read_mesh, resolve_mesh
@@ -106,15 +106,20 @@ def row(name: str, model, Q: np.ndarray, touch: np.ndarray, exact: bool = False)
 def main(argv: list[str] | None = None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--n", type=int, default=10_000, help="random configurations per arm")
+    parser.add_argument("--solves", type=int, default=50,
+                        help="targets per arm for solve_ik (0: none)")
     parser.add_argument("--out", type=Path, help="also write the printed tables to this file")
     args = parser.parse_args(argv)
     text = io.StringIO()
     with contextlib.redirect_stdout(text):
         report(args.n)
+        if args.solves:
+            solves(args.solves)
     sys.stdout.write(text.getvalue())
     if args.out is not None:
         args.out.write_text("```\n$ python -m studies.mesh_collision_check"
-                            f"{'' if args.n == 10_000 else f' --n {args.n}'}\n"
+                            f"{'' if args.n == 10_000 else f' --n {args.n}'}"
+                            f"{'' if args.solves == 50 else f' --solves {args.solves}'}\n"
                             f"{text.getvalue()}```\n")
 
 
@@ -139,6 +144,32 @@ def report(n: int) -> None:
             print(row(f"{name}: shipped capsule model", shipped, Q, touch))
         print(f"| {name}: meshes touch in {100 * touch.mean():.1f} % of the configurations; "
               f"model built in {built:.1f} s | | | | | | |")
+
+
+def solves(n: int) -> None:
+    """``solve_ik(robot, T, self_collision=True)`` on ``n`` targets per arm, each the FK of
+    a configuration whose meshes are free (seed 1): how many are solved, and how many
+    answers coal finds touching."""
+    print(f"\nsolve_ik(robot, T, self_collision=True), {n} targets per arm from mesh-free "
+          "configurations (seed 1); the URDF model (the solver's start loop tests the "
+          "capsules)\n")
+    print("| arm | solved | collides | other | answers whose meshes touch (coal) |")
+    print("|---|---|---|---|---|")
+    for name, (urdf, tip, _) in ARMS.items():
+        robot = load_urdf(urdf, tip_link=tip, package_dirs=PACKAGES)
+        meshes = body_meshes(urdf, robot)
+        Q = robot.random_q(4 * n, rng=np.random.default_rng(1))
+        Q = Q[~meshes_touch(robot, meshes, Q)][:n]
+        status: dict[str, int] = {}
+        answers = []
+        for q in Q:
+            res = solve_ik(robot, robot.fk(q), self_collision=True, seed=0)
+            status[res.status] = status.get(res.status, 0) + 1
+            answers += list(res.solutions)
+        touching = int(meshes_touch(robot, meshes, np.array(answers)).sum()) if answers else 0
+        other = len(Q) - status.get("solved", 0) - status.get("collides", 0)
+        print(f"| {name} | {status.get('solved', 0)} of {len(Q)} | {status.get('collides', 0)} "
+              f"| {other} | {touching} of {len(answers)} |")
 
 
 if __name__ == "__main__":

@@ -4,7 +4,9 @@
 ``Scene`` (obstacles in the world), ``CollisionChecker`` (both compiled: batched
 distances, their minimum and its gradient). ``collision_model(name)``: the shipped
 capsule model of a catalog arm; ``load_scene``/``load_model``: JSON files;
-``model_from_urdf``: a URDF's ``<collision>`` primitives.
+``model_from_urdf``: a URDF's ``<collision>`` geometry (primitives, and meshes in fitted
+enclosing capsules; :mod:`moik.collision.exact` measures the pairs they cannot separate
+on the meshes' convex hulls).
 """
 
 from typing import TYPE_CHECKING

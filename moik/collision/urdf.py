@@ -44,7 +44,7 @@ DEFAULT_CAPSULES = 1  # per link with meshes: the largest number of fitted capsu
 # splitting a link's triangles in two gave halves whose capsules stick out beyond the one
 # capsule around the whole link, and rejected more mesh-free configurations, not fewer)
 ACM_SEED = 0
-HULL_PIECES = 8  # convex hulls per link for the exact stage (slabs of its triangles)
+HULL_PIECES = 12  # convex hulls per link for the exact stage (slabs of its triangles)
 
 
 def _shape(item: dict[str, Any]) -> Shape:

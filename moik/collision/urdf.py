@@ -8,9 +8,10 @@ configuration the capsules call free is free for the meshes), cached on disk. Bo
 are named by their URDF links.
 
 The allowed-collision matrix is sampled as MoveIt's setup assistant does
-(:func:`moik.collision.acm.sample_allowed`: adjacent links and the pairs in collision in
-none of ``samples`` random configurations are not checked) on the fitted capsules, and
-cached on disk by the capsules, the chain and the settings. MoveIt's third rule, pairs
+(:mod:`moik.collision.acm`: adjacent links and the pairs in collision in none of
+``samples`` random configurations are not checked), judged on the meshes' convex hulls
+(:func:`sample_never`: the capsules, and the exact stage where they overlap), and cached
+on disk by the chain, the shapes, their hulls and the settings. MoveIt's third rule, pairs
 in collision (nearly) always, is not applied: capsules that always overlap say nothing
 of the meshes inside them, which may touch only sometimes (measured: UR5's base and
 upper arm), and a pair never checked must never touch.
@@ -28,12 +29,12 @@ from typing import Any
 import numpy as np
 
 from moik._validate import choice, integer
-from moik.collision.acm import DEFAULT_SAMPLES, sample_allowed
-from moik.collision.exact import HULLS, hull_pieces
+from moik.collision.acm import DEFAULT_SAMPLES
+from moik.collision.exact import HULLS, ExactStage, hull_pieces
 from moik.collision.fit import body_axes
 from moik.collision.mesh_fit import cached_link_fit, digest, load_cached, store_cached
 from moik.collision.meshes import read_mesh, resolve_mesh
-from moik.collision.model import CollisionModel
+from moik.collision.model import CollisionChecker, CollisionModel
 from moik.collision.shapes import Box, Capsule, Shape, Sphere, cylinder
 from moik.exceptions import GeometryError
 from moik.robots.chain import Robot
@@ -103,25 +104,41 @@ def mesh_capsules(source: Any, robot: Robot, *, package_dirs: Any = None,
     return out
 
 
+def sample_never(model: CollisionModel, samples: int) -> list[tuple[str, str]]:
+    """The body pairs in collision in none of ``samples`` random configurations (seed
+    :data:`ACM_SEED`), judged on the meshes' hulls: the capsules first, the exact stage
+    (:class:`~moik.collision.exact.ExactStage`) where they overlap."""
+    checker = CollisionChecker(model=model)
+    if checker.n_pairs == 0:
+        return []
+    Q = model.robot.random_q(samples, rng=np.random.default_rng(ACM_SEED))
+    D = ExactStage(checker).distances(Q, below=0.0)
+    hit: dict[tuple[int, int], bool] = {}
+    for k, pair in enumerate(checker.pair_bodies):
+        hit[pair] = hit.get(pair, False) or bool(np.any(D[:, k] < 0.0))
+    return [(model.links[i], model.links[j]) for (i, j), h in hit.items() if not h]
+
+
 def _cached_allowed(model: CollisionModel, samples: int, use_cache: bool) -> CollisionModel:
-    """:func:`sample_allowed` (seed :data:`ACM_SEED`), read from the disk cache when there."""
+    """The model with :func:`sample_never`'s pairs allowed, read from the disk cache
+    when there (keyed by the chain, the shapes, their hulls and the settings)."""
     robot = model.robot
     chain = robot.kinematic_chain
     parts: list[Any] = [{"samples": samples, "seed": ACM_SEED, "links": list(model.links),
-                         "always": None},
+                         "rule": "never, on the hulls"},
                         chain.origins, chain.joint_types.astype(float), robot.lower, robot.upper]
     for body, shape in model.items:
-        parts += [body, type(shape).__name__, shape.pose, np.array(shape.sizes)]
+        parts += [body, type(shape).__name__, shape.pose, np.array(shape.sizes),
+                  *HULLS.get(shape, [])]
     key = digest(parts)
     cached = load_cached("acm", key) if use_cache else None
     if isinstance(cached, list) and all(isinstance(p, list) and len(p) == 2
                                         and all(n in model.links for n in p) for p in cached):
         return model.with_allowed(cached)
-    sampled = sample_allowed(model, rng=np.random.default_rng(ACM_SEED), samples=samples,
-                             always=None)
+    never = sample_never(model, samples)
     if use_cache:
-        store_cached("acm", key, sorted(sorted(p) for p in sampled.allowed - model.allowed))
-    return sampled
+        store_cached("acm", key, sorted(sorted(p) for p in never))
+    return model.with_allowed(never)
 
 
 def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,

@@ -14,11 +14,13 @@ capsules' volumes add up to less than ``split_gain`` times the one they replace.
 The capsules are padded by :data:`PAD` (1 nm) against the rounding of placing them.
 
 Fits are cached in ``$XDG_CACHE_HOME/moik/collision`` (``~/.cache/moik/collision``
-when unset) as small JSON files named by the digest of everything they depend on: the
-mesh files' bytes (sha256), their scale and pose on the body, the candidate axes, the
-settings and :data:`FIT_VERSION`. A file whose stored digest differs, that cannot be
-parsed, or whose capsules do not enclose the triangles (checked at every read,
-:func:`encloses`) is recomputed and rewritten; an unwritable cache is not an error.
+when unset; those of the shipped arms also ship in ``moik/collision/data/urdf``, read
+first, ``python -m studies.ship_urdf_fits`` writes them) as small JSON files named by
+the digest of everything they depend on: the mesh files' bytes (sha256), their scale
+and pose on the body, the candidate axes, the settings and :data:`FIT_VERSION`. A file
+whose stored digest differs, that cannot be parsed, or whose capsules do not enclose
+the triangles (checked at every read, :func:`encloses`) is recomputed and rewritten; an
+unwritable cache is not an error.
 """
 
 from __future__ import annotations
@@ -37,7 +39,8 @@ from moik.collision.fit import capsule_volume, enclosing_capsule
 
 FIT_VERSION = 1  # bump when the fit changes: old cache files are then not read
 PAD = 1e-9  # m added to every fitted radius (rounding of placing the capsule)
-KEY_DECIMALS = 12
+KEY_DECIMALS = 9  # of the numbers in a key: computed poses differ in their last bits
+SHIPPED = Path(__file__).with_name("data") / "urdf"  # fits of the shipped arms, by key
 
 
 def cache_dir() -> Path:
@@ -60,15 +63,16 @@ def digest(parts: Sequence[Any]) -> str:
 
 
 def load_cached(kind: str, key: str) -> Any | None:
-    """The payload stored under ``key``, or None (absent, damaged, or another key's)."""
-    path = cache_dir() / f"{kind}-{key}.json"
-    try:
-        data = json.loads(path.read_text())
-        if not isinstance(data, dict) or data.get("key") != key or "payload" not in data:
-            return None
-        return data["payload"]
-    except (OSError, ValueError):
-        return None
+    """The payload stored under ``key`` in the shipped data or the cache, or None
+    (absent, damaged, or another key's)."""
+    for folder in (SHIPPED, cache_dir()):
+        try:
+            data = json.loads((folder / f"{kind}-{key}.json").read_text())
+        except (OSError, ValueError):
+            continue
+        if isinstance(data, dict) and data.get("key") == key and "payload" in data:
+            return data["payload"]
+    return None
 
 
 def store_cached(kind: str, key: str, payload: Any) -> bool:

@@ -148,3 +148,13 @@ def test_nothing_to_check_is_an_error():
     assert robot_model(robot).checked_body_pairs() == []
     with pytest.raises(GeometryError, match="nothing to check.*every pair allowed"):
         solve_ik(robot, robot.fk(np.zeros(2)), self_collision=True)
+
+
+def test_the_shipped_arms_fits_ship(tmp_path, monkeypatch):
+    """The fits and matrices of the catalog's URDF arms are found in moik's data (an empty
+    cache stays empty); when this fails, run `python -m studies.ship_urdf_fits`."""
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    for name in ("panda", "ur5", "iiwa14"):
+        model = robot_model(moik.get_robot(name))
+        assert model.allowed and set(model.shapes) <= set(model.links)
+    assert not list(tmp_path.rglob("*.json"))

@@ -3,9 +3,12 @@
 (The options are declared in :mod:`moik.cli.parser`, which imports nothing heavy.)
 
 The scene is a JSON file (:func:`moik.collision.io.load_scene`); the arm's geometry is
-its shipped capsule model (:mod:`moik.collision.catalog`; catalog arms only). The
-checker (the scene's obstacles, and the self pairs with ``--self-collision``: the
-library's default, off, as for ``solve_ik``) and ``--clearance`` go to the solver
+its shipped model (:mod:`moik.collision.catalog`) for a catalog arm, else the
+``<collision>`` geometry of its URDF file (meshes found through ``--package-dir`` and
+``ROS_PACKAGE_PATH``; :func:`moik.collision.urdf.robot_model`), as the library picks it
+(:func:`moik.solver.collision.collision_guard`). The checker (the scene's obstacles,
+and the self pairs with ``--self-collision``: the library's default, off, as for
+``solve_ik``) and ``--clearance`` go to the solver
 (``solve_ik(..., collision=checker, clearance=D)``), which returns only collision-free
 solutions, or the status ``collides`` (exit status 1) when every exact one collides;
 with ``--pareto`` to ``solve_ik_pareto`` (members keep the clearance; the criterion
@@ -35,7 +38,10 @@ from moik.solver.collision import CollisionGuard, collision_guard
 _OPTION_NAMES = ((" (or collision=a CollisionChecker)", ""),
                  ("self_collision=True", "--self-collision"),
                  ("clearance=", "--clearance"), ("scene=", "--scene FILE"),
-                 ("clearance must ", "--clearance must "))
+                 ("clearance must ", "--clearance must "),
+                 ("pass package_dirs=[a folder holding", "give --package-dir [a folder holding"),
+                 ("pass missing='ignore' to leave them unchecked",
+                  "use the library's missing='ignore' to leave them unchecked"))
 
 
 @contextmanager

@@ -26,14 +26,15 @@ from moik.robots.urdf import load_urdf
 def robot(args: argparse.Namespace) -> Robot:
     """The catalog robot or the URDF chain named by ``args.robot`` (``--base``/``--tip``)."""
     spec, base, tip = args.robot, args.base, args.tip
+    packages = getattr(args, "package_dirs", None)
     if spec in available_robots():
-        if base is not None or tip is not None:
-            raise ParameterError(f"--base/--tip select links of a URDF file; {spec!r} is a "
-                                 "catalog robot")
+        if base is not None or tip is not None or packages:
+            raise ParameterError(f"--base/--tip select links of a URDF file (--package-dir its "
+                                 f"meshes' packages); {spec!r} is a catalog robot")
         return get_robot(spec)
     if Path(spec).suffix.lower() in (".urdf", ".xml") or Path(spec).is_file():
         try:
-            return load_urdf(spec, base_link=base, tip_link=tip)
+            return load_urdf(spec, base_link=base, tip_link=tip, package_dirs=packages)
         except URDFError as exc:  # the library's keywords, in the command's words
             text = str(exc).replace("pass tip_link=", "give --tip").replace(
                 "pass base_link=", "give --base")

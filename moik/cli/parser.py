@@ -77,6 +77,9 @@ def _robot_arguments(p: argparse.ArgumentParser, optional: bool = False) -> None
                    help="catalog name (see `moik robots`) or URDF file")
     p.add_argument("--base", metavar="LINK", help="URDF: first link of the chain")
     p.add_argument("--tip", metavar="LINK", help="URDF: last link of the chain")
+    p.add_argument("--package-dir", action="append", metavar="DIR", dest="package_dirs",
+                   help="URDF: a folder holding the packages its package:// meshes name "
+                        "(repeatable; ROS_PACKAGE_PATH is searched too)")
     p.add_argument("--json", action="store_true", help="print JSON (see `pydoc moik.cli`)")
 
 
@@ -95,11 +98,13 @@ def _solve_arguments(p: argparse.ArgumentParser) -> None:
                         "solutions nearest to it first; needed by --pareto joint_motion")
     p.add_argument("--scene", metavar="FILE",
                    help="JSON scene of obstacles: solve for collision-free solutions (scene and "
-                        "self pairs, shipped capsule models of the catalog arms) and report "
-                        "each one's distance; status collides (exit 1) if all exact ones collide")
+                        "self pairs; shipped capsule models of the catalog arms, a URDF's "
+                        "<collision> geometry) and report each one's distance; status collides "
+                        "(exit 1) if all exact ones collide")
     p.add_argument("--self-collision", action="store_true",
                    help="without --scene: solve for solutions free of self-collision only "
-                        "(the arm's shipped capsule model; --scene checks its self pairs too)")
+                        "(the arm's shipped capsule model or its URDF's <collision> geometry; "
+                        "--scene checks its self pairs too)")
     p.add_argument("--clearance", type=float, metavar="D",
                    help="with --scene or --self-collision: the smallest accepted distance "
                         "(robot unit, >= 0; default {default})")

@@ -4,7 +4,9 @@
 ``Scene`` (obstacles in the world), ``CollisionChecker`` (both compiled: batched
 distances, their minimum and its gradient). ``collision_model(name)``: the shipped
 capsule model of a catalog arm; ``load_scene``/``load_model``: JSON files;
-``model_from_urdf``: a URDF's ``<collision>`` primitives.
+``model_from_urdf``: a URDF's ``<collision>`` geometry (primitives, and each link's meshes
+a ``Compound``: a fitted enclosing capsule holding the convex hulls of pieces of the meshes,
+measured by :mod:`moik.collision.gjk` where the capsules come close).
 """
 
 from typing import TYPE_CHECKING

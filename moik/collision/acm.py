@@ -12,6 +12,10 @@ it penetrates in none. MoveIt also disables pairs in collision at the robot's de
 pose; moik has no default pose (the middle of the limits need not be a valid one), so
 that rule is not applied.
 
+On bounding shapes (capsules fitted around meshes) the "always" rule is unsound: bounds
+that overlap in every sample say nothing of the meshes inside them, which may touch only
+sometimes; pass ``always=None`` to allow no pair for being always in collision.
+
 "Never" pairs are a speed-up with a risk (a collision rarer than 1 in ``samples`` is
 missed): pass ``never=False`` to keep them checked.
 """
@@ -39,7 +43,7 @@ def body_pair_contacts(model: CollisionModel, Q: np.ndarray) -> dict[tuple[int, 
 
 
 def sample_allowed(model: CollisionModel, *, rng: np.random.Generator,
-                   samples: int = DEFAULT_SAMPLES, always: float = 0.95,
+                   samples: int = DEFAULT_SAMPLES, always: float | None = 0.95,
                    never: bool = True) -> CollisionModel:
     """``model`` with the pairs that are in collision always or never allowed.
 
@@ -47,19 +51,20 @@ def sample_allowed(model: CollisionModel, *, rng: np.random.Generator,
         model: The model (its ``allowed`` pairs stay allowed).
         rng: The random configurations' generator.
         samples: Number of random configurations (MoveIt's default 10,000).
-        always: Fraction of samples from which a pair counts as always in collision.
+        always: Fraction of samples from which a pair counts as always in collision
+            (``None``: no pair is allowed for that).
         never: Whether pairs never in collision are allowed too.
     """
     if not isinstance(rng, np.random.Generator):
         raise ParameterError(f"rng must be a numpy.random.Generator, got {type(rng).__name__}")
     samples = integer("samples", samples, minimum=1)
-    always = interval("always", always, 0.0, 1.0, lo_open=True)
+    limit = np.inf if always is None else interval("always", always, 0.0, 1.0, lo_open=True)
     never = flag("never", never)
     robot = model.robot
     Q = robot.random_q(samples, rng=rng)
     allowed = []
     for (i, j), hit in body_pair_contacts(model, Q).items():
         rate = hit.mean()
-        if rate >= always or (never and not hit.any()):
+        if rate >= limit or (never and not hit.any()):
             allowed.append((model.links[i], model.links[j]))
     return model.with_allowed(allowed)

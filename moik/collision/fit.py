@@ -1,9 +1,9 @@
 """Enclosing capsules fitted to point clouds (mesh vertices), for building capsule models.
 
-Build-time code (``studies/fit_capsules.py`` uses it to make the shipped models; moik
-never reads a mesh when it loads or checks a model). :func:`enclosing_capsule` is pure
-numpy: the capsule it returns contains every point given. :func:`mesh_vertices` reads a
-mesh file with trimesh, the optional extra ``moik[fit]``, imported only when called;
+Used at build time (``studies/fit_capsules.py`` makes the shipped models with it) and
+when a URDF's meshes are loaded (:mod:`moik.collision.mesh_fit`).
+:func:`enclosing_capsule` is pure numpy: the capsule it returns contains every point
+given. :func:`mesh_vertices` reads a mesh file with trimesh, imported only when called;
 :func:`urdf_mesh_points` and :func:`fit_urdf` put a URDF's mesh vertices on a robot's
 bodies (:func:`moik.robots.urdf_geometry.mesh_geometry`) and fit one capsule per link.
 
@@ -125,7 +125,7 @@ def _along(P: np.ndarray, u: np.ndarray, H: np.ndarray | None = None
     return foot + t0 * u, foot + t1 * u, r
 
 
-def _hull_vertices(P: np.ndarray) -> np.ndarray:
+def hull_vertices(P: np.ndarray) -> np.ndarray:
     """The convex-hull vertices of ``P`` (all of ``P`` when it is flat or too small)."""
     from scipy.spatial import ConvexHull, QhullError
 
@@ -179,7 +179,7 @@ def enclosing_capsule(points: Any, axes: Sequence[Any] = (), refine: bool = True
         n = float(np.linalg.norm(v))
         if n > 0.0:
             candidates.append(v / n)
-    H = _hull_vertices(P)
+    H = hull_vertices(P)
     best: tuple[np.ndarray, np.ndarray, float] | None = None
     best_volume = np.inf
     for u in candidates:

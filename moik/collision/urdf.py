@@ -1,20 +1,51 @@
-"""A :class:`CollisionModel` from a URDF's ``<collision>`` primitives.
+"""A :class:`CollisionModel` from a URDF's ``<collision>`` geometry: primitives and meshes.
 
 Boxes, spheres and capsules are taken as they are; cylinders become their enclosing
-capsules (:func:`moik.collision.shapes.cylinder`); meshes are skipped (no mesh is read
-here: use a shipped capsule model, :mod:`moik.collision.catalog`, your own capsules in
-JSON, :func:`moik.collision.io.load_model`, or capsules fitted to the meshes at build
-time, :mod:`moik.collision.fit`). Bodies are named by their URDF links.
+capsules (:func:`moik.collision.shapes.cylinder`); meshes (``package://``, ``file://`` or
+file paths, :mod:`moik.collision.meshes`) are read and each link's become one
+:class:`~moik.collision.shapes.Compound`: a capsule fitted to their triangles
+(:mod:`moik.collision.mesh_fit`: every triangle inside), cached on disk, holding the
+convex hulls of :data:`HULL_PIECES` slabs of the triangles (every triangle in one slab).
+The kernels measure a pair on the capsules and, where they come close, on the hulls
+(:mod:`moik.collision.gjk`): the hulls hold the meshes, so a configuration called free
+is free for the meshes, and they follow a link far closer than one capsule. Bodies are
+named by their URDF links.
+
+The allowed-collision matrix is sampled as MoveIt's setup assistant does
+(:mod:`moik.collision.acm`: adjacent links and the pairs in collision in none of
+``samples`` random configurations are not checked), judged on the meshes' convex hulls
+(:func:`sample_never`: the capsules, and the hulls where they overlap), and cached
+on disk by the chain, the shapes, their hulls and the settings. MoveIt's third rule, pairs
+in collision (nearly) always, is not applied: capsules that always overlap say nothing
+of the meshes inside them, which may touch only sometimes (measured: UR5's base and
+upper arm), and a pair never checked must never touch.
+
+A body of the chain with no collision geometry at all is an error (a check that
+silently skips a link is no check): pass ``missing="ignore"`` to accept it; the
+model's ``source`` then names the bodies left unchecked.
 """
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
-from moik.collision.model import CollisionModel
-from moik.collision.shapes import Box, Capsule, Shape, Sphere, cylinder
+import numpy as np
+
+from moik._validate import choice, integer
+from moik.collision.acm import DEFAULT_SAMPLES
+from moik.collision.fit import body_axes
+from moik.collision.mesh_fit import cached_link_fit, digest, load_cached, store_cached
+from moik.collision.meshes import read_mesh, resolve_mesh
+from moik.collision.model import CollisionChecker, CollisionModel
+from moik.collision.shapes import Box, Capsule, Compound, ConvexHull, Shape, Sphere, cylinder
+from moik.exceptions import GeometryError
 from moik.robots.chain import Robot
-from moik.robots.urdf_geometry import collision_geometry
+from moik.robots.urdf_geometry import collision_geometry, mesh_geometry
+
+MISSING = ("error", "ignore")
+ACM_SEED = 0
+HULL_PIECES = 12  # convex hulls per link (slabs of its triangles) inside its capsule
 
 
 def _shape(item: dict[str, Any]) -> Shape:
@@ -27,21 +58,153 @@ def _shape(item: dict[str, Any]) -> Shape:
     return build(radius=item["radius"], length=item["length"], pose=pose)
 
 
-def model_from_urdf(source: Any, robot: Robot) -> tuple[CollisionModel, list[str]]:
-    """The URDF's primitive collision geometry on ``robot``, and the links whose meshes
-    were skipped.
+def _urdf_dir(source: Any) -> Path | None:
+    if isinstance(source, str) and source.lstrip().startswith("<"):
+        return None
+    return Path(source).resolve().parent
+
+
+def hull_pieces(vertices: np.ndarray, faces: np.ndarray, pieces: int) -> list[np.ndarray]:
+    """The vertices of ``pieces`` slabs of a mesh's triangles: the triangles sorted by their
+    centroids along the mesh's principal axis and cut into groups of equal count (each
+    triangle in one group, so the groups' hulls hold the mesh; a concave link, e.g. an upper
+    arm with its joint housings, is followed far closer by several hulls than by one)."""
+    centroids = vertices[faces].mean(axis=1)
+    centred = centroids - centroids.mean(axis=0)
+    _, vectors = np.linalg.eigh(centred.T @ centred)
+    order = np.argsort(centroids @ vectors[:, 2], kind="stable")
+    return [np.ascontiguousarray(vertices[np.unique(faces[group])])
+            for group in np.array_split(order, min(pieces, len(faces)))]
+
+
+def mesh_shapes(source: Any, robot: Robot, *, package_dirs: Any = None,
+                use_cache: bool = True) -> dict[str, Compound]:
+    """Every URDF link with ``<collision>`` meshes as a :class:`Compound` in the frame of the
+    body the link is on: a capsule fitted to its triangles holding the hulls of
+    :data:`HULL_PIECES` slabs of them, ``{link: Compound}``.
 
     Raises:
-        URDFError: the URDF is not ``robot``'s. GeometryError, NonFiniteError: a bad size.
+        GeometryError: A mesh not found (the message says where it was looked for),
+            unreadable, empty, non-finite, or of an absurd size.
     """
+    _, items = mesh_geometry(source, robot, "collision")
+    folder = _urdf_dir(source)
+    by_link: dict[str, list[dict[str, Any]]] = {}
+    for item in items:
+        by_link.setdefault(item["link"], []).append(item)
+    candidates = body_axes(robot) if by_link else []
+    out: dict[str, Compound] = {}
+    for link, group in by_link.items():
+        body = group[0]["body"]
+        vertices, faces, identity = [], [], []
+        offset = 0
+        for item in group:
+            path = resolve_mesh(item["filename"], link=link, urdf_dir=folder,
+                                package_dirs=package_dirs)
+            mesh = read_mesh(path, link=link, scale=item["scale"])
+            pose = np.asarray(item["pose"], dtype=float)
+            vertices.append(mesh.vertices @ pose[:3, :3].T + pose[:3, 3])
+            faces.append(mesh.faces + offset)
+            offset += len(mesh.vertices)
+            identity += [mesh.digest, np.asarray(item["scale"], dtype=float), pose]
+        V, F = np.vstack(vertices), np.vstack(faces)
+        (a, b, r), = cached_link_fit(V, F, identity=identity, axes=candidates[body], capsules=1,
+                                     split_gain=0.85, use_cache=use_cache)
+        parts = tuple(ConvexHull(points=P) for P in hull_pieces(V, F, HULL_PIECES))
+        out[link] = Compound(bound=Capsule.between(a.tolist(), b.tolist(), r), parts=parts)
+    return out
+
+
+def sample_never(model: CollisionModel, samples: int) -> list[tuple[str, str]]:
+    """The body pairs in collision in none of ``samples`` random configurations (seed
+    :data:`ACM_SEED`), judged on the meshes' hulls (the compounds' parts)."""
+    checker = CollisionChecker(model=model, self_collision=True)
+    if checker.n_pairs == 0:
+        return []
+    Q = model.robot.random_q(samples, rng=np.random.default_rng(ACM_SEED))
+    D = checker.distances(Q)
+    hit: dict[tuple[int, int], bool] = {}
+    for k, pair in enumerate(checker.pair_bodies):
+        hit[pair] = hit.get(pair, False) or bool(np.any(D[:, k] < 0.0))
+    return [(model.links[i], model.links[j]) for (i, j), h in hit.items() if not h]
+
+
+def _cached_allowed(model: CollisionModel, samples: int, use_cache: bool) -> CollisionModel:
+    """The model with :func:`sample_never`'s pairs allowed, read from the disk cache
+    when there (keyed by the chain, the shapes, their hulls and the settings)."""
+    robot = model.robot
+    chain = robot.kinematic_chain
+    parts: list[Any] = [{"samples": samples, "seed": ACM_SEED, "links": list(model.links),
+                         "rule": "never, on the hulls"},
+                        chain.origins, chain.joint_types.astype(float), robot.lower, robot.upper]
+    for body, shape in model.items:
+        parts += [body, type(shape).__name__, shape.pose, np.array(shape.sizes),
+                  *([p.points for p in shape.parts] if isinstance(shape, Compound) else [])]
+    key = digest(parts)
+    cached = load_cached("acm", key) if use_cache else None
+    if isinstance(cached, list) and all(isinstance(p, list) and len(p) == 2
+                                        and all(n in model.links for n in p) for p in cached):
+        return model.with_allowed(cached)
+    never = sample_never(model, samples)
+    if use_cache:
+        store_cached("acm", key, sorted(sorted(p) for p in never))
+    return model.with_allowed(never)
+
+
+def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
+                    missing: str = "error", samples: int = DEFAULT_SAMPLES,
+                    use_cache: bool = True) -> CollisionModel:
+    """The URDF's collision geometry on ``robot``, with its sampled allowed-collision matrix.
+
+    Args:
+        source: The URDF file path or text ``robot`` was loaded from.
+        robot: The robot :func:`~moik.robots.urdf.load_urdf` returned for it.
+        package_dirs: Where ``package://`` meshes are found
+            (:func:`moik.collision.meshes.resolve_mesh`).
+        missing: ``"error"``: a body with no collision geometry raises;
+            ``"ignore"``: such bodies are left unchecked (named in the model's ``source``).
+        samples: Random configurations of the allowed-collision matrix (0: none
+            sampled; only adjacent links are skipped).
+        use_cache: Read and write the fits and the matrix in the disk cache.
+
+    Raises:
+        URDFError: The URDF is not ``robot``'s. GeometryError: A mesh that cannot be used
+            (see :func:`mesh_shapes`), a body without geometry (``missing="error"``).
+    """
+    missing = choice("missing", missing, MISSING)
+    samples = integer("samples", samples, minimum=0)
     names, items = collision_geometry(source, robot)
     shapes: dict[str, list[Shape]] = {}
-    skipped = []
     for item in items:
-        if item.get("skipped"):
-            skipped.append(item["link"])
-            continue
-        shapes.setdefault(names[item["body"]], []).append(_shape(item))
-    model = CollisionModel(robot=robot, shapes=shapes, links=tuple(names),
-                           source=f"<collision> primitives of {robot.source}")
-    return model, skipped
+        if not item.get("skipped"):
+            shapes.setdefault(names[item["body"]], []).append(_shape(item))
+    fitted = mesh_shapes(source, robot, package_dirs=package_dirs, use_cache=use_cache)
+    body_of = {item["link"]: item["body"] for item in items}
+    for link, compound in fitted.items():
+        shapes.setdefault(names[body_of[link]], []).append(compound)
+    shapes = {name: shapes[name] for name in names if name in shapes}  # in body order
+    bare = [name for name in names if name not in shapes]
+    label = robot.source or robot.name
+    if bare and missing == "error":
+        raise GeometryError(f"{label}: bodies {bare} have no <collision> geometry, so their "
+                            "collisions cannot be checked; add <collision> elements to the URDF, "
+                            "or pass missing='ignore' to leave them unchecked")
+    source_text = (f"<collision> geometry of {label} (meshes: {HULL_PIECES} convex hulls per "
+                   "link in a fitted enclosing capsule)")
+    if bare:
+        source_text += f"; bodies without geometry, NOT checked: {', '.join(bare)}"
+    model = CollisionModel(robot=robot, shapes=shapes, links=tuple(names), source=source_text)
+    return _cached_allowed(model, samples, use_cache) if samples else model
+
+
+def robot_model(robot: Robot, *, missing: str = "error") -> CollisionModel:
+    """:func:`model_from_urdf` of the URDF ``robot`` was loaded from (``robot.description``).
+
+    Raises:
+        GeometryError: ``robot`` was not loaded from a URDF.
+    """
+    desc = robot.description
+    if desc is None:
+        raise GeometryError(f"robot {robot.name!r} was not loaded from a URDF: it has no collision "
+                            "geometry of its own; pass collision= a CollisionModel")
+    return model_from_urdf(desc.source, robot, package_dirs=desc.package_dirs, missing=missing)

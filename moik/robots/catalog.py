@@ -243,7 +243,7 @@ def _shipped(file: str, name: str, tip: str | None, origin: str) -> Callable[[],
     """A catalog entry for a URDF shipped in ``moik/robots/data`` (see its README.md)."""
 
     def build() -> Robot:
-        robot = load_urdf(DATA / file, tip_link=tip, name=name)
+        robot = load_urdf(DATA / file, tip_link=tip, name=name, package_dirs=[DATA / "packages"])
         return replace(robot, source=f"{robot.source} ({origin})")
 
     build.__doc__ = f"{name}: {file} ({origin}), chain to {tip or 'its last movable link'}."

@@ -30,6 +30,7 @@ from moik._lazy import lazy_module
 from moik._validate import integer, is_integer, number, real_array
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError
 from moik.robots import checks
+from moik.robots.description import URDFDescription
 from moik.robots.transforms import (
     PRISMATIC,
     REVOLUTE,
@@ -85,6 +86,8 @@ class Robot:
         convention: ``"standard"`` or ``"modified"`` (Craig) DH.
         unit: Length unit of lengths and of FK positions: "m", "cm" or "mm".
         source: Where the parameters come from (paper + table, or file).
+        description: The URDF the robot was loaded from (set by ``load_urdf``; its
+            collision geometry is what collision-aware solves check by default).
 
     Raises:
         ShapeError, NonFiniteError: Arrays of the wrong shape, not real numbers
@@ -117,6 +120,7 @@ class Robot:
     convention: Convention = "standard"
     unit: str = "m"
     source: str = ""
+    description: URDFDescription | None = None
 
     if TYPE_CHECKING:  # what the constructor accepts (the fields hold the checked arrays)
         def __init__(self, *, name: str, lower: ArrayLike, upper: ArrayLike,
@@ -125,7 +129,8 @@ class Robot:
                      origins: ArrayLike | None = None, joint_types: Sequence[str] = (),
                      joint_names: Sequence[str] = (), base: ArrayLike | None = None,
                      tool: ArrayLike | None = None, convention: Convention = "standard",
-                     unit: str = "m", source: str = "") -> None: ...
+                     unit: str = "m", source: str = "",
+                     description: URDFDescription | None = None) -> None: ...
 
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not self.name:
@@ -148,6 +153,9 @@ class Robot:
             )
         if self.unit not in UNITS:
             raise ParameterError(f"unit must be one of {UNITS}, got {self.unit!r}")
+        if self.description is not None and not isinstance(self.description, URDFDescription):
+            raise ParameterError("description must be a moik.robots.description.URDFDescription "
+                                 f"or None, got {type(self.description).__name__}")
         with np.errstate(over="ignore", invalid="ignore"):  # inf is what is checked for
             checks.finite_reach(self.name, self.reach, self.unit)
         checks.warn_if_degrees(self.name, cols, np.array([t == "prismatic" for t in types]),

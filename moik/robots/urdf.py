@@ -34,6 +34,7 @@ import numpy as np
 
 from moik.exceptions import MoikError, UnknownNameError, URDFError
 from moik.robots.chain import Robot
+from moik.robots.description import URDFDescription
 from moik.robots.transforms import rot_x, translation
 
 __all__ = ["URDFError", "load_urdf"]
@@ -220,7 +221,7 @@ def _chain_joints(links, joints, base: str, tip: str | None) -> list[ET.Element]
 
 
 def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
-              name: str | None = None) -> Robot:
+              name: str | None = None, *, package_dirs=None) -> Robot:
     """A :class:`Robot` for the serial chain ``base_link -> tip_link`` of a URDF.
 
     Args:
@@ -230,6 +231,11 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
         name: Robot name (default ``"ROBOT:TIP"``: the URDF's robot name and the chain's
             last link, e.g. ``"ur5:wrist_3_link"``, so that two chains of one file, or a
             file's chain and the catalog arm made from it, do not share a name).
+        package_dirs: Where the URDF's ``package://`` meshes are found: folders holding
+            package folders, or ``{package name: folder}``
+            (:func:`moik.collision.meshes.resolve_mesh`). Nothing is read here: the
+            robot keeps the URDF and these folders (``robot.description``), and a
+            collision-aware solve reads its ``<collision>`` geometry at first use.
 
     Returns:
         The chain with ``joint_names`` the URDF names of its movable joints.
@@ -298,7 +304,10 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
         return Robot(name=name or default_name,
                      origins=np.array(origins), lower=lower, upper=upper,
                      joint_types=tuple(types), joint_names=tuple(names), unit="m",
-                     source=f"URDF {Path(label).name}: {base_link} -> {tip}")
+                     source=f"URDF {Path(label).name}: {base_link} -> {tip}",
+                     description=URDFDescription(
+                         source=source if label == "<URDF string>" else Path(label).resolve(),
+                         package_dirs=package_dirs))
     except URDFError:
         raise
     except MoikError as exc:  # limits, reach: say which file

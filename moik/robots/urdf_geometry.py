@@ -6,9 +6,9 @@ fixed joints and the robot's own joints belongs to body ``b`` = the number of th
 robot's joints on that path (body ``b`` is frame ``b`` of :meth:`Robot.frames`). Each
 such link's ``<collision>`` elements with a primitive geometry (``box``, ``cylinder``,
 ``sphere``, ``capsule``) are returned with their pose in that body's frame; meshes are
-reported as skipped (moik never reads meshes). :func:`mesh_geometry` lists the mesh
-references themselves (file name, scale, pose on the body) for a build-time fit
-(:mod:`moik.collision.fit`); it reads no mesh either. Plain data (dicts): the shapes are
+marked ``skipped`` there. :func:`mesh_geometry` lists the mesh references themselves
+(file name, scale, pose on the body), which :mod:`moik.collision.urdf` reads and fits;
+nothing here reads a mesh. Plain data (dicts): the shapes are
 built by :mod:`moik.collision.urdf`.
 """
 

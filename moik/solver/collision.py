@@ -18,7 +18,13 @@ criterion name ``"clearance"`` (maximise the smallest distance) becomes
 Geometry of the robot: ``collision=`` a :class:`~moik.collision.CollisionModel` (of
 this robot) or a ready :class:`~moik.collision.CollisionChecker` (used as it is: its
 own scene and self pairs); by default the shipped capsule model of a catalog arm
-(:func:`moik.collision.collision_model`).
+(:func:`moik.collision.collision_model`), else the ``<collision>`` geometry of the URDF
+the robot was loaded from (``load_urdf(path, package_dirs=...)``;
+:func:`moik.collision.urdf.robot_model`: its meshes in fitted enclosing capsules, built
+once per robot and cached on disk).
+
+Never a silent answer: a check with no pair to evaluate (no shape on the robot, or every
+pair allowed) is an error, not ``min_distance=inf``.
 """
 
 from __future__ import annotations
@@ -26,6 +32,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
+from weakref import WeakKeyDictionary
 
 import numpy as np
 
@@ -39,15 +46,18 @@ if TYPE_CHECKING:
     from moik.collision import catalog as collision_catalog
     from moik.collision import io as collision_io
     from moik.collision import model as collision_models
+    from moik.collision import urdf as collision_urdf
     from moik.collision.model import CollisionChecker, CollisionModel, Scene
 else:  # loaded when a solve checks collisions (moik._lazy): a blind solve imports none of it
     collision_catalog = lazy_module("moik.collision.catalog")
     collision_io = lazy_module("moik.collision.io")
     collision_models = lazy_module("moik.collision.model")
+    collision_urdf = lazy_module("moik.collision.urdf")
 
 COLLISION_OPTIONS = ("scene", "self_collision", "clearance", "collision")
 _CHECKERS: dict[tuple[int, int, bool], tuple[Any, Any, CollisionChecker]] = {}
 _MODELS: dict[str, CollisionModel] = {}
+_URDF_MODELS: WeakKeyDictionary[Robot, CollisionModel] = WeakKeyDictionary()
 _CACHE_SIZE = 16
 
 
@@ -89,8 +99,16 @@ def same_arm(a: Robot, b: Robot) -> bool:
 
 
 def _shipped(robot: Robot) -> CollisionModel:
-    """The shipped model of ``robot`` (parsed once per name; another arm of that name is
-    refused by :func:`~moik.collision.collision_model`)."""
+    """The default geometry of ``robot``: the shipped model of a catalog arm (parsed once
+    per name; another arm of that name is refused by
+    :func:`~moik.collision.collision_model`), else its URDF's collision geometry (built
+    once per robot)."""
+    if robot.description is not None and robot.name not in collision_catalog.shipped_models():
+        model = _URDF_MODELS.get(robot)
+        if model is None:
+            model = collision_urdf.robot_model(robot)
+            _URDF_MODELS[robot] = model
+        return model
     model = _MODELS.get(robot.name)
     if model is None or not same_arm(model.robot, robot):
         model = collision_catalog.collision_model(robot)
@@ -132,7 +150,9 @@ def collision_guard(robot: Robot, *, scene=None, self_collision=False, clearance
         ParameterError: NaN, infinite or negative ``clearance``; a non-bool
             ``self_collision``; ``scene``/``self_collision`` given beside a checker.
         GeometryError: A scene or geometry of the wrong type, or for another robot.
-        UnknownNameError: No model shipped for the robot (pass ``collision=``).
+        UnknownNameError: No model shipped for the robot and it was not loaded from a URDF
+            (pass ``collision=``).
+        GeometryError: Nothing to check (no pair); a URDF mesh that cannot be used.
     """
     clearance = number("clearance", clearance, minimum=0.0)
     self_collision = flag("self_collision", self_collision)
@@ -147,6 +167,9 @@ def collision_guard(robot: Robot, *, scene=None, self_collision=False, clearance
                                  "self pairs: leave scene= and self_collision= unset, or pass "
                                  "a CollisionModel instead")
         _check_robot(collision.robot, robot)
+        if collision.n_pairs == 0:
+            raise GeometryError("nothing to check: the CollisionChecker given has no pair to "
+                                "evaluate; a collision-free answer would mean nothing")
         return CollisionGuard(collision, clearance)
     if collision is not None and not isinstance(collision, collision_models.CollisionModel):
         raise GeometryError(f"collision must be a CollisionModel or a CollisionChecker, got "
@@ -160,7 +183,14 @@ def collision_guard(robot: Robot, *, scene=None, self_collision=False, clearance
     if collision is not None:
         _check_robot(collision.robot, robot)
     model = _shipped(robot) if collision is None else collision
-    return CollisionGuard(_checker(model, scene, self_collision), clearance)
+    checker = _checker(model, scene, self_collision)
+    if checker.n_pairs == 0:
+        raise GeometryError(f"nothing to check: the collision geometry of {robot.name!r} "
+                            f"({model.source or 'no source'}) gives no pair to evaluate "
+                            f"({'no robot shape' if not model.items else 'every pair allowed'}"
+                            f"{', no obstacle' if scene is None or not scene.obstacles else ''})"
+                            "; a collision-free answer would mean nothing")
+    return CollisionGuard(checker, clearance)
 
 
 def _check_robot(model_robot: Robot, robot: Robot) -> None:

@@ -2,6 +2,7 @@
 each solution's distance, in text and JSON."""
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -148,3 +149,21 @@ def test_pareto_with_no_member_keeping_the_clearance_says_collides(capsys):
     assert main([*argv, "--json"]) == 1
     doc = json.loads(capsys.readouterr().out)
     assert doc["status"] == "collides" and not doc["success"] and doc["solutions"] == []
+
+
+URDF_DIR = Path(__file__).resolve().parents[1] / "data" / "urdf"
+TABLE = {"obstacles": [{"name": "table", "type": "halfspace", "normal": [0, 0, 1],
+                        "offset": -0.01}], "allowed": [["table", "base_link"]]}
+
+
+def test_a_urdf_arm_with_its_meshes(tmp_path, capsys):
+    scene = tmp_path / "scene.json"
+    scene.write_text(json.dumps(TABLE))
+    argv = ["solve", str(URDF_DIR / "kr16_2.urdf"), "--tip", "tool0", "--target", "0.9", "0.2",
+            "0.6", "--scene", str(scene), "--self-collision", "--json"]
+    assert main([*argv, "--package-dir", str(URDF_DIR / "packages")]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["status"] == "solved" and 0.0 <= doc["min_distance"] < np.inf
+    assert main(argv) != 0  # the meshes' package not given: the error says which option
+    err = capsys.readouterr().err
+    assert "kuka_kr16_support" in err and "give --package-dir" in err

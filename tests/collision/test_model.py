@@ -110,3 +110,13 @@ def test_end_distance_from_python_equals_the_checker():
     np.testing.assert_array_equal(checker.min_distance_batch(Q), checker.min_distance(Q))
     with pytest.raises(ParameterError, match="nothing to check"):
         CollisionChecker(model=collision_model("panda"), self_collision=False)
+
+
+def test_shapes_listed_out_of_body_order_keep_their_pairs():
+    """A model whose shapes are given last body first checks the same body pairs."""
+    robot = get_robot("panda")
+    shapes = {"link7": Sphere(radius=0.05), "link0": Sphere(radius=0.05),
+              "link3": Sphere(radius=0.05)}
+    checker = CollisionChecker(model=CollisionModel(robot=robot, shapes=shapes),
+                               self_collision=True)
+    assert sorted(tuple(sorted(p)) for p in checker.pair_bodies) == [(0, 3), (0, 7), (3, 7)]

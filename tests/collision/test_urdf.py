@@ -1,13 +1,18 @@
 """URDF <collision> primitives on the loaded chain's bodies (moik/collision/urdf.py and
 moik/robots/urdf_geometry.py)."""
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
-from moik import load_urdf
-from moik.collision import Box, Capsule, CollisionChecker, Sphere
-from moik.collision.urdf import model_from_urdf
-from moik.exceptions import URDFError
+import moik
+from moik import load_urdf, solve_ik
+from moik.collision import Box, Capsule, CollisionChecker, Scene, Sphere
+from moik.collision.meshes import read_mesh, resolve_mesh
+from moik.collision.urdf import model_from_urdf, robot_model
+from moik.exceptions import GeometryError, URDFError
+from moik.robots.urdf_geometry import mesh_geometry
 
 URDF = """<robot name="two">
   <link name="base"><collision><origin xyz="0 0 0.05"/><geometry><box size="0.2 0.2 0.1"/>
@@ -25,10 +30,14 @@ URDF = """<robot name="two">
 </robot>"""
 
 
+PRIMITIVES = URDF.replace(
+    '<collision><geometry><mesh filename="package://x/fore.stl"/></geometry></collision>', "")
+
+
 def test_primitives_on_the_bodies():
-    robot = load_urdf(URDF)
-    model, skipped = model_from_urdf(URDF, robot)
-    assert model.links == ("base", "upper", "fore") and skipped == ["fore"]
+    robot = load_urdf(PRIMITIVES)
+    model = model_from_urdf(PRIMITIVES, robot, samples=0)
+    assert model.links == ("base", "upper", "fore")
     assert isinstance(model.shapes["base"][0], Box)
     assert isinstance(model.shapes["upper"][0], Capsule)  # the cylinder's enclosing capsule
     assert isinstance(model.shapes["fore"][0], Sphere)
@@ -51,3 +60,101 @@ def test_not_this_robots_urdf():
     other = load_urdf(URDF.replace('"j1"', '"k1"').replace('"j2"', '"k2"'))
     with pytest.raises(URDFError, match="has no joints"):
         model_from_urdf(URDF, other)
+
+
+def test_an_unresolvable_mesh_names_link_file_and_folders(tmp_path):
+    path = tmp_path / "two.urdf"
+    path.write_text(URDF)
+    robot = load_urdf(path, package_dirs=[tmp_path / "pkgs"])
+    with pytest.raises(GeometryError, match=r"link 'fore'.*package://x/fore\.stl.*not found.*"
+                       r"pkgs/x/fore\.stl"):
+        model_from_urdf(path, robot, package_dirs=[tmp_path / "pkgs"])
+
+
+def test_a_body_without_geometry_is_an_error_or_an_explicit_choice():
+    bare = PRIMITIVES.replace('<collision><origin xyz="0.2 0 0"/><geometry><sphere radius="0.05"/>'
+                              '\n    </geometry></collision>', "")
+    robot = load_urdf(bare)
+    with pytest.raises(GeometryError, match=r"bodies \['fore'\] have no <collision>.*"
+                       "missing='ignore'"):
+        model_from_urdf(bare, robot, samples=0)
+    model = model_from_urdf(bare, robot, samples=0, missing="ignore")
+    assert "fore" not in model.shapes and "NOT checked: fore" in model.source
+
+
+DATA = Path(__file__).resolve().parents[1] / "data" / "urdf"
+SHIPPED = Path(moik.__file__).parent / "robots" / "data"
+
+
+def test_the_model_of_the_meshes_is_sound_against_coal():
+    """iiwa14 as its URDF package ships it: free by the model means the meshes do not
+    touch, in every pair of non-neighbouring bodies (the pairs the model allows too)."""
+    from tests.coal_oracle import coal
+
+    robot = load_urdf(SHIPPED / "lbr_iiwa_14_r820.urdf", tip_link="tool0",
+                      package_dirs=[SHIPPED / "packages"])
+    model = robot_model(robot)
+    assert set(model.shapes) == set(model.links) and "NOT checked" not in model.source
+    _, items = mesh_geometry(SHIPPED / "lbr_iiwa_14_r820.urdf", robot)
+    meshes = {}
+    for item in items:
+        path = resolve_mesh(item["filename"], link=item["link"], urdf_dir=SHIPPED,
+                            package_dirs=[SHIPPED / "packages"])
+        mesh = read_mesh(path, link=item["link"], scale=item["scale"])
+        bvh = coal.BVHModelOBBRSS()
+        bvh.beginModel(len(mesh.faces), len(mesh.vertices))
+        bvh.addVertices(mesh.vertices @ item["pose"][:3, :3].T + item["pose"][:3, 3])
+        bvh.addTriangles(np.ascontiguousarray(mesh.faces))
+        bvh.endModel()
+        meshes[item["body"]] = bvh
+    # configurations near the self-collisions of the wrist: joints 4 and 6 folded
+    rng = np.random.default_rng(3)
+    Q = robot.random_q(300, rng=rng)
+    Q[:, 3] = np.sign(Q[:, 3]) * rng.uniform(1.6, 2.09, len(Q))
+    free = CollisionChecker(model=model).min_distance(Q) >= 0.0
+    touching = 0
+    for q, ok in zip(Q, free, strict=True):
+        F = robot.frames(q)
+        tf = {b: coal.Transform3s(F[b][:3, :3], F[b][:3, 3]) for b in meshes}
+        touch = any(coal.collide(meshes[i], tf[i], meshes[j], tf[j], coal.CollisionRequest(),
+                                 coal.CollisionResult())
+                    for i in meshes for j in meshes if j > i + 1)
+        touching += touch
+        assert not (ok and touch)
+    assert touching > 0  # the check saw touching meshes
+
+
+def test_solve_ik_uses_the_urdf_geometry_without_another_step():
+    robot = load_urdf(DATA / "kr16_2.urdf", tip_link="tool0", package_dirs=[DATA / "packages"])
+    q = np.array([0.2, -0.9, 1.6, 0.3, 0.8, 0.1])
+    T = robot.fk(q)
+    free = solve_ik(robot, T, self_collision=True, seed=1)
+    assert free.status == "solved" and 0.0 <= free.min_distance < np.inf
+    slab = Scene({"slab": Box(size=[4.0, 4.0, 0.05], pose=np.eye(4) + _lift(0.45))})
+    blocked = solve_ik(robot, T, scene=slab, self_collision=True, seed=1)
+    assert blocked.status == "collides"
+
+
+def _lift(z):
+    T = np.zeros((4, 4))
+    T[2, 3] = z
+    return T
+
+
+def test_nothing_to_check_is_an_error():
+    """The two-link arm's only non-neighbouring pair (base, fore) never collides: the
+    sampled matrix allows it, and a self-collision check would check nothing."""
+    robot = load_urdf(PRIMITIVES)
+    assert robot_model(robot).checked_body_pairs() == []
+    with pytest.raises(GeometryError, match="nothing to check.*every pair allowed"):
+        solve_ik(robot, robot.fk(np.zeros(2)), self_collision=True)
+
+
+def test_the_shipped_arms_fits_ship(tmp_path, monkeypatch):
+    """The fits and matrices of the catalog's URDF arms are found in moik's data (an empty
+    cache stays empty); when this fails, run `python -m studies.ship_urdf_fits`."""
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    for name in ("panda", "ur5", "iiwa14"):
+        model = robot_model(moik.get_robot(name))
+        assert model.allowed and set(model.shapes) <= set(model.links)
+    assert not list(tmp_path.rglob("*.json"))

@@ -215,3 +215,16 @@ def test_shipped_urdf_arms_are_catalog_robots(name, dof, tip):
     assert robot.dof == dof and robot.unit == "m" and f"-> {tip}" in robot.source
     Q = robot.random_q(20, rng=np.random.default_rng(3))
     np.testing.assert_allclose(robot.fk(Q), fk_reference(robot, Q), atol=1e-12)
+
+
+def test_the_robot_keeps_its_urdf_and_package_folders(tmp_path):
+    robot = load_urdf(URDF_DIR / "ur5_robot.urdf", tip_link="tool0", package_dirs=[tmp_path])
+    assert robot.description.source == (URDF_DIR / "ur5_robot.urdf").resolve()
+    assert robot.description.package_dirs == [tmp_path]
+    text = (URDF_DIR / "ur5_robot.urdf").read_text()
+    assert load_urdf(text, tip_link="tool0").description.source == text
+    assert get_robot("ur5").description.package_dirs == [URDF_DIR / "packages"]
+    assert robot.with_locked_joints({0: 0.0}).description is None  # another chain
+    with pytest.raises(MoikError, match="description must be"):
+        type(robot)(name="x", lower=[0.0], upper=[1.0], a=[1.0], alpha=[0.0], d=[0.0],
+                    theta=[0.0], description="panda.urdf")

@@ -103,7 +103,7 @@ function value, which moik never does, and it was about 6 % of the LLVM IR that 
 first ``--pareto`` solve compiles (80.6k -> 76.0k lines)."""
 
 
-def jit(func: Callable | None = None, *, inline: bool = False) -> Any:
+def jit(func: Callable | None = None, *, inline: bool = False, nogil: bool = False) -> Any:
     """Compile ``func`` with numba (nopython, no fastmath, cached when a cache can be written).
 
     Used as ``@jit``, or ``@jit(inline=True)`` for a helper that numba inlines at its IR
@@ -124,11 +124,17 @@ def jit(func: Callable | None = None, *, inline: bool = False) -> Any:
     lines of a cold ``--pareto`` solve, 9.0k of 42.8k of a cold first solve), optimised and
     compiled once more in the start loop's module. Called from Python, an inlined helper
     compiles as a kernel of its own.
+
+    ``nogil=True`` releases the GIL while the kernel runs when it is called from Python
+    (numba's ``nogil``; the machine code is the same): for the kernels that threads run
+    side by side on chunks of a batch (:mod:`moik.solver.parallel`).
     """
     if func is None:
-        return lambda f: jit(f, inline=inline)
+        return lambda f: jit(f, inline=inline, nogil=nogil)
     _kernels.add(func)
-    options = {**JIT_OPTIONS, "inline": "always"} if inline else JIT_OPTIONS
+    options = {**JIT_OPTIONS, "inline": "always"} if inline else dict(JIT_OPTIONS)
+    if nogil:
+        options["nogil"] = True
     dispatcher = numba.njit(cache=False, **options)(func)
     try:
         # what cache=True does, with our key (numba's types omit the private _cache)

@@ -114,10 +114,11 @@ def set_min_distance(cs, q, scratch):
                            (cs.body, cs.local, cs.kinds, cs.sizes, cs.pairs), scratch)[0]
 
 
-@jit
+@jit(nogil=True)
 def set_min_distances(cs, Q, dmin):
     """:func:`set_min_distance` of every row of ``Q`` ``(n, dof)`` into ``dmin`` ``(n,)``
-    (three arguments: a call from Python costs a third of the twelve-array kernel's)."""
+    (three arguments: a call from Python costs a third of the twelve-array kernel's).
+    Releases the GIL (the batch's threads re-check their chunks' distances with it)."""
     scratch = set_scratch(cs)
     for i in range(Q.shape[0]):
         dmin[i] = set_min_distance(cs, Q[i], scratch)

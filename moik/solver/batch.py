@@ -243,30 +243,32 @@ def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
     positions, rotations, qc = job.positions, job.rotations, job.q_current
     out_Q, solved = np.empty((n, robot.dof)), np.zeros(n, dtype=np.bool_)
     n_evals = np.zeros(n, dtype=np.int64)
+    pos, ori, dist = np.zeros(n), np.zeros(n), np.full(n, np.nan)
     if opts.polish and (qc is not None or opts.starts):
         if guard is None:  # a cold first batch: the start loop's leaves compile beside it
             precompile_starts(robot)
 
-        def chunk(lo: int, hi: int) -> None:
+        def chunk(lo: int, hi: int) -> None:  # a thread's rows: compiled calls, GIL released
             _first_stage(robot, (positions[lo:hi], None if rotations is None
                                  else rotations[lo:hi]), None if qc is None else qc[lo:hi],
                          opts, (tol_pos, tol_ori), (job.root, job.first + lo), guard,
                          (out_Q[lo:hi], solved[lo:hi], n_evals[lo:hi]))
+            done = lo + np.flatnonzero(solved[lo:hi])
+            if qc is not None and len(done):
+                out_Q[done] = nearest_copies(robot, out_Q[done], qc[done])
+            if guard is not None and len(done):  # the re-check's distances (below)
+                dist[done] = guard.distances(out_Q[done])
             if progress is not None:
-                progress(int(solved[lo:hi].sum()))
+                progress(len(done))
 
         parallel.map_chunks(chunk, n, workers)
-    if qc is not None:
-        out_Q[solved] = nearest_copies(robot, out_Q[solved], qc[solved])
     status = np.full(n, "not-converged", dtype=object)
-    pos, ori, dist = np.zeros(n), np.zeros(n), np.full(n, np.nan)
     if solved.any():  # the honest re-check, as solve_ik does it
         k = np.flatnonzero(solved)
         p_k, o_k = pose_errors(robot, (positions[k], None if rotations is None
                                        else rotations[k]), out_Q[k])
         ok = (p_k <= tol_pos) & (o_k <= tol_ori)
-        if guard is not None:
-            dist[k] = guard.distances(out_Q[k])
+        if guard is not None:  # each q's distance, recomputed by its chunk's thread
             ok &= dist[k] >= guard.clearance
         pos[k], ori[k], solved[k] = p_k, o_k, ok
         status[k[ok]] = "solved"

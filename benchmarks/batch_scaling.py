@@ -7,7 +7,9 @@ configurations free of collision (self pairs, and the table + shelf + side wall 
 then a Dask ``LocalCluster`` of that many single-threaded worker processes
 (``client=``). Each row's time is the median of ``--repeats`` calls, the rows of one
 repeat run one after another (interleaved: load on the machine hits every row alike);
-the speed-up column is workers=1's median time over the row's. Every row's answers are
+the speed-up column is workers=1's median time over the row's, cpu/wall the CPU seconds
+of this process over the wall seconds of its calls (how many cores the row really got;
+the tail's forked processes and the Dask workers are not counted). Every row's answers are
 compared with workers=1's, bit for bit (``same``). Start-up outside the timing: one
 untimed call per row first (thread and process pools are made per call and are timed;
 the Dask workers are started and warmed once).
@@ -68,24 +70,28 @@ def table(title: str, robot, poses, kw: dict, rows: list, repeats: int) -> list[
     first = {label: solve_ik_batch(robot, poses, seed=0, **kw, **extra)  # untimed
              for label, extra in rows}
     times: dict[str, list[float]] = {label: [] for label, _ in rows}
+    cpu: dict[str, list[float]] = {label: [] for label, _ in rows}
     results = {}
     for _ in range(repeats):
         for label, extra in rows:
-            t0 = time.perf_counter()
+            c0, t0 = time.process_time(), time.perf_counter()
             results[label] = solve_ik_batch(robot, poses, seed=0, **kw, **extra)
             times[label].append(time.perf_counter() - t0)
+            cpu[label].append(time.process_time() - c0)
     ref_label = rows[0][0]
     ref = results[ref_label]
     t_ref = float(np.median(times[ref_label]))
     lines = [title, f"{'row':>14s} {'median s':>9s} {'range s':>15s} {'solutions/s':>12s} "
-                    f"{'speed-up':>9s} {'solved':>7s} {'same':>5s}"]
-    for label, _ in rows:
+                    f"{'speed-up':>9s} {'cpu/wall':>9s} {'solved':>7s} {'same':>5s}"]
+    for label, extra in rows:
         t = np.array(times[label])
         res = results[label]
         solved = int(res.success.sum())
         ok = same(ref, res) and same(ref, first[label])
+        busy = ("-" if "client" in extra
+                else f"{np.sum(cpu[label]) / np.sum(times[label]):.2f}")
         lines.append(f"{label:>14s} {np.median(t):9.3f} {t.min():7.3f}-{t.max():7.3f} "
-                     f"{solved / np.median(t):12.0f} {t_ref / np.median(t):8.2f}x "
+                     f"{solved / np.median(t):12.0f} {t_ref / np.median(t):8.2f}x {busy:>9s} "
                      f"{solved:7d} {'yes' if ok else 'NO':>5s}")
     return lines
 
@@ -120,8 +126,10 @@ def main() -> None:
     try:
         with table_output(args.out):
             print(f"solve_ik_batch on panda, tol 1e-9, {cores} CPUs; medians of {args.repeats} "
-                  "interleaved calls; speed-up: workers=1's time over the row's; same: "
-                  "answers equal to workers=1's bit for bit")
+                  "interleaved calls; speed-up: workers=1's time over the row's; cpu/wall: "
+                  "this process's CPU seconds over wall seconds (the cores the row got: a "
+                  "busy machine gives fewer than the workers); same: answers equal to "
+                  "workers=1's bit for bit")
             print("\n".join(table(f"\nplain: {len(poses)} random reachable poses", robot,
                                   poses, {}, rows, args.repeats)))
             print("\n".join(table(f"\nwith a scene (table, shelf, side wall) and self pairs: "

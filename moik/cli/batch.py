@@ -34,6 +34,7 @@ from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetEr
 from moik.kinematics.orientation import ROTATION_ATOL, rotation_from_zyx
 from moik.robots import Robot
 from moik.solver import solve_ik_batch
+from moik.solver.parallel import worker_count
 
 PROGRESS_MIN = 1000  # targets from which the progress bar is shown
 RESULT_FORMATS = (".npz", ".csv")
@@ -196,7 +197,7 @@ class _Bar:
             self._bar.close()
 
 
-def summary(res, n_workers: int | None, unit: str, path: Path) -> str:
+def summary(res, n_workers: int, unit: str, path: Path) -> str:
     """One line: how many solved, the other statuses, time and rate, the largest errors."""
     n = len(res.status)
     statuses, counts = np.unique(res.status, return_counts=True)
@@ -204,8 +205,7 @@ def summary(res, n_workers: int | None, unit: str, path: Path) -> str:
                        if s != "solved")
     solved = int(res.success.sum())
     line = (f"{solved}/{n} solved{f' ({others})' if others else ''} in {res.time:.2f} s "
-            f"({solved / res.time:.0f} solutions/s, workers "
-            f"{'all' if n_workers is None else n_workers})")
+            f"({solved / res.time:.0f} solutions/s, {n_workers} workers)")
     if solved:
         pos = res.position_error[res.success].max()
         ori = res.orientation_error[res.success].max()
@@ -234,5 +234,5 @@ def cmd_batch(args: argparse.Namespace) -> int:
     finally:
         bar.close()
     write_results(out, arm, res)
-    print(summary(res, args.workers, arm.unit, out))
+    print(summary(res, worker_count(args.workers), arm.unit, out))
     return 0 if bool(res.success.all()) else 1

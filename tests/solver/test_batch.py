@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from moik import solve_ik, solve_ik_batch
-from moik.collision import HalfSpace, Scene
+from moik.collision import CollisionChecker, HalfSpace, Scene
 from moik.collision.catalog import collision_model
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetError
 from moik.problems import random_reachable_targets
@@ -109,13 +109,13 @@ def _mixed_batch(robot, n, seed):
 
 def test_answers_are_the_same_for_every_worker_count():
     robot = get_robot("panda")
-    poses = _mixed_batch(robot, 150, 5)
+    poses = _mixed_batch(robot, 300, 5)
     one = solve_ik_batch(robot, poses, seed=2, workers=1)
-    assert list(np.flatnonzero(~one.success)) == [7, 147] and one.success.sum() == 148
+    assert list(np.flatnonzero(~one.success)) == [7, 297] and one.success.sum() == 298
     for workers in (2, 3):
         assert_same(one, solve_ik_batch(robot, poses, seed=2, workers=workers))
     seeds = child_seeds(2, len(poses))
-    for i in (0, 7, 100, 147):  # and each as solve_ik answers it alone
+    for i in (0, 7, 200, 297):  # and each as solve_ik answers it alone
         np.testing.assert_array_equal(one.q[i], solve_ik(robot, poses[i], seed=seeds[i]).q)
 
 
@@ -123,7 +123,11 @@ def test_collision_aware_answers_are_the_same_for_every_worker_count():
     robot, model = get_robot("panda"), collision_model("panda")
     table = Scene({"table": HalfSpace.plane([0, 0, 1], 0.0)},
                   allowed=frozenset([("table", model.links[0]), ("table", model.links[1])]))
-    poses = _mixed_batch(robot, 80, 6)
+    checker = CollisionChecker(model=model, scene=table, self_collision=True)
+    Q = robot.random_q(400, rng=np.random.default_rng(6))
+    d = checker.min_distance(Q)
+    Q = np.vstack([Q[d >= 0][:294], Q[d < 0][:6]])  # six poses reached only in collision
+    poses = robot.fk(Q)
     kw = {"seed": 1, "scene": table, "self_collision": True}
     one = solve_ik_batch(robot, poses, workers=1, **kw)
     assert one.min_distance is not None and (one.status == "collides").any()
@@ -133,7 +137,7 @@ def test_collision_aware_answers_are_the_same_for_every_worker_count():
 def test_a_dask_cluster_gives_the_same_answers():
     distributed = pytest.importorskip("distributed")
     robot = get_robot("panda")
-    poses = _mixed_batch(robot, 100, 7)
+    poses = _mixed_batch(robot, 300, 7)
     serial = solve_ik_batch(robot, poses, seed=4, workers=1)
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
                                   dashboard_address=None) as cluster, \
@@ -149,7 +153,7 @@ def test_a_lost_dask_worker_reruns_its_chunk():
     elsewhere; no target is lost or answered twice, the answers are the serial ones."""
     distributed = pytest.importorskip("distributed")
     robot = get_robot("panda")
-    poses = _mixed_batch(robot, 100, 8)
+    poses = _mixed_batch(robot, 300, 8)
     serial = solve_ik_batch(robot, poses, seed=5, workers=1)
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                   dashboard_address=None) as cluster, \

@@ -35,6 +35,7 @@ MIN_CHUNK = 128  # items per chunk at least: its Python glue (~0.05 ms, under th
 # about 1 % of a chunk of easy targets (~0.04 ms each), so 16 threads leave the GIL mostly free
 CHUNKS_PER_WORKER = 4  # chunks per thread: a chunk of hard targets does not leave others idle
 POOL_MIN_TASKS = 2  # fewer per-item tasks run in this process (a pool costs a fork each)
+SPAWN_MIN_TASKS = 8  # where processes are spawned (each imports moik and loads its kernels)
 TASK_RETRIES = 2  # a Dask task that raised is run again this often
 
 
@@ -99,13 +100,14 @@ def map_processes(fn: Callable[[Any, Any], Any], shared: Any, items: Iterable,
     ``fn`` must be a module-level function; ``shared`` is handed to each worker once
     (inherited with ``fork``, pickled otherwise), each item is sent to whichever worker is
     free. Serial, in this process, for one worker, fewer than :data:`POOL_MIN_TASKS`
-    items, or inside a daemonic process.
+    items (:data:`SPAWN_MIN_TASKS` where processes cannot be forked: a spawned one imports
+    moik and loads its kernels first), or inside a daemonic process.
     """
     items = list(items)
-    if (workers <= 1 or len(items) < POOL_MIN_TASKS
+    method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
+    if (workers <= 1 or len(items) < (POOL_MIN_TASKS if method == "fork" else SPAWN_MIN_TASKS)
             or multiprocessing.current_process().daemon):
         return [fn(shared, item) for item in items]
-    method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
     ctx = multiprocessing.get_context(method)
     with ctx.Pool(min(workers, len(items)), initializer=_init_pool_worker,
                   initargs=(fn, shared)) as pool:

@@ -7,7 +7,10 @@ T, seed=s).q[i]`` equals ``solve_ik(robot, T[i], seed=child_i).q`` bit for bit
 (tested). The first stage of every target runs in one compiled loop
 (:func:`~moik.solver.starts.run_batch`: the same Levenberg-Marquardt starts
 ``solve_ik`` makes, in the same order); a target it leaves unsolved goes through the whole of
-:func:`~moik.solver.solve_ik.solve_ik` (search fallback, front, verdict).
+:func:`~moik.solver.solve_ik.solve_ik` (search fallback, front, verdict). Rows ``lo .. hi - 1``
+of a batch need only the seeds ``lo .. hi - 1`` (:class:`BatchJob`), so the batch is solved
+in chunks, on threads and processes or on a Dask cluster (:mod:`moik.solver.parallel`),
+with the answers of the serial run.
 """
 
 from __future__ import annotations

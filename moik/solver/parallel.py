@@ -11,8 +11,9 @@ run gives it (an answer depends on its target and its own seed only):
 - :func:`map_processes`: a process pool for per-item Python work (the hard tail: the
   whole of ``solve_ik``, search and polish, which holds the GIL). ``fork`` where the
   platform has it, so the children inherit this process's compiled kernels instead of
-  loading (or compiling) them; a pool starts only for at least :data:`POOL_MIN_TASKS`
-  items, never inside a daemonic process (a pool's own worker cannot have children).
+  loading (or compiling) them; the first items run in this process, and a pool starts
+  only for what is left after :data:`POOL_AFTER_S` seconds (a cheap tail never pays
+  for one), never inside a daemonic process (a pool's own worker cannot have children).
 - :func:`map_client`: chunks as tasks of a ``dask.distributed`` client, gathered in
   order; a task whose worker is lost is run again by the scheduler (its result is the
   same: it depends only on its chunk), and a task that raises is retried.
@@ -24,6 +25,7 @@ import math
 import multiprocessing
 import os
 import signal
+import time
 from collections.abc import Callable, Iterable, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from typing import Any
@@ -35,6 +37,8 @@ MIN_CHUNK = 128  # items per chunk at least: its Python glue (~0.05 ms, under th
 # about 1 % of a chunk of easy targets (~0.04 ms each), so 16 threads leave the GIL mostly free
 CHUNKS_PER_WORKER = 4  # chunks per thread: a chunk of hard targets does not leave others idle
 POOL_MIN_TASKS = 2  # fewer per-item tasks run in this process (a pool costs a fork each)
+POOL_AFTER_S = 0.25  # per-item tasks run here first; a pool takes the rest after this long
+# (starting one costs ~0.05-0.1 s: a cheap tail, e.g. targets proven out of reach, ends first)
 SPAWN_MIN_TASKS = 8  # where processes are spawned (each imports moik and loads its kernels)
 TASK_RETRIES = 2  # a Dask task that raised is run again this often
 
@@ -99,20 +103,31 @@ def map_processes(fn: Callable[[Any, Any], Any], shared: Any, items: Iterable,
 
     ``fn`` must be a module-level function; ``shared`` is handed to each worker once
     (inherited with ``fork``, pickled otherwise), each item is sent to whichever worker is
-    free. Serial, in this process, for one worker, fewer than :data:`POOL_MIN_TASKS`
-    items (:data:`SPAWN_MIN_TASKS` where processes cannot be forked: a spawned one imports
-    moik and loads its kernels first), or inside a daemonic process.
+    free. The items run in this process for the first :data:`POOL_AFTER_S` seconds; a pool
+    takes the rest only if at least :data:`POOL_MIN_TASKS` remain then
+    (:data:`SPAWN_MIN_TASKS` where processes cannot be forked: a spawned one imports moik
+    and loads its kernels first). All in this process for one worker or inside a
+    daemonic process.
     """
     items = list(items)
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
-    if (workers <= 1 or len(items) < (POOL_MIN_TASKS if method == "fork" else SPAWN_MIN_TASKS)
-            or multiprocessing.current_process().daemon):
-        return [fn(shared, item) for item in items]
+    least = POOL_MIN_TASKS if method == "fork" else SPAWN_MIN_TASKS
+    serial = workers <= 1 or multiprocessing.current_process().daemon
+    out: list = []
+    t0 = time.perf_counter()
+    for item in items:  # here first: a tail that ends within POOL_AFTER_S needs no pool
+        if (not serial and len(items) - len(out) >= least
+                and time.perf_counter() - t0 > POOL_AFTER_S):
+            break
+        out.append(fn(shared, item))
+    rest = items[len(out):]
+    if not rest:
+        return out
     ctx = multiprocessing.get_context(method)
-    with ctx.Pool(min(workers, len(items)), initializer=_init_pool_worker,
+    with ctx.Pool(min(workers, len(rest)), initializer=_init_pool_worker,
                   initargs=(fn, shared)) as pool:
-        done = dict(pool.imap_unordered(_run_task, items))
-    return [done[item] for item in items]
+        done = dict(pool.imap_unordered(_run_task, rest))
+    return out + [done[item] for item in rest]
 
 
 def check_client(client: Any) -> Any:

@@ -14,6 +14,7 @@ from moik.collision.catalog import collision_model
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetError
 from moik.problems import random_reachable_targets
 from moik.robots import get_robot
+from moik.solver import parallel
 from moik.solver.batch import child_seeds
 
 
@@ -107,7 +108,8 @@ def _mixed_batch(robot, n, seed):
     return poses
 
 
-def test_answers_are_the_same_for_every_worker_count():
+def test_answers_are_the_same_for_every_worker_count(monkeypatch):
+    monkeypatch.setattr(parallel, "POOL_AFTER_S", 0.0)  # the tail on a pool at once
     robot = get_robot("panda")
     poses = _mixed_batch(robot, 300, 5)
     one = solve_ik_batch(robot, poses, seed=2, workers=1)
@@ -119,7 +121,8 @@ def test_answers_are_the_same_for_every_worker_count():
         np.testing.assert_array_equal(one.q[i], solve_ik(robot, poses[i], seed=seeds[i]).q)
 
 
-def test_collision_aware_answers_are_the_same_for_every_worker_count():
+def test_collision_aware_answers_are_the_same_for_every_worker_count(monkeypatch):
+    monkeypatch.setattr(parallel, "POOL_AFTER_S", 0.0)
     robot, model = get_robot("panda"), collision_model("panda")
     table = Scene({"table": HalfSpace.plane([0, 0, 1], 0.0)},
                   allowed=frozenset([("table", model.links[0]), ("table", model.links[1])]))

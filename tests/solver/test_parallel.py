@@ -1,6 +1,7 @@
 """The parallel machinery: chunks, threads over chunks, a process pool, the client check."""
 
 import os
+import time
 
 import numpy as np
 import pytest
@@ -45,11 +46,27 @@ def _square_plus(shared, item):
     return item * item + shared, os.getpid()
 
 
-def test_process_pool_keeps_the_order_and_runs_elsewhere():
+def test_process_pool_keeps_the_order_and_runs_elsewhere(monkeypatch):
+    monkeypatch.setattr(parallel, "POOL_AFTER_S", 0.0)  # no item runs here first
     items = [5, 3, 9, 1, 7]
     out = parallel.map_processes(_square_plus, 10, items, 2)
     assert [v for v, _ in out] == [i * i + 10 for i in items]
-    assert any(pid != os.getpid() for _, pid in out)
+    assert all(pid != os.getpid() for _, pid in out)
+
+
+def _slow_first(shared, item):
+    if item == 0:
+        time.sleep(shared)
+    return item, os.getpid()
+
+
+def test_a_tail_that_ends_soon_needs_no_pool_a_long_one_gets_one(monkeypatch):
+    out = parallel.map_processes(_square_plus, 0, list(range(6)), 2)  # quick: all here
+    assert all(pid == os.getpid() for _, pid in out)
+    monkeypatch.setattr(parallel, "POOL_AFTER_S", 0.05)
+    out = parallel.map_processes(_slow_first, 0.1, list(range(6)), 2)  # item 0 runs long
+    assert [v for v, _ in out] == list(range(6))
+    assert out[0][1] == os.getpid() and all(pid != os.getpid() for _, pid in out[1:])
 
 
 def test_small_or_single_worker_pools_stay_here():

@@ -82,17 +82,19 @@ def table(title: str, robot, poses, kw: dict, rows: list, repeats: int) -> list[
     ref = results[ref_label]
     t_ref = float(np.median(times[ref_label]))
     lines = [title, f"{'row':>14s} {'median s':>9s} {'range s':>15s} {'solutions/s':>12s} "
-                    f"{'speed-up':>9s} {'cpu/wall':>9s} {'solved':>7s} {'same':>5s}"]
+                    f"{'speed-up':>9s} {'cpu s':>7s} {'cpu/wall':>9s} {'solved':>7s} "
+                    f"{'same':>5s}"]
     for label, extra in rows:
         t = np.array(times[label])
         res = results[label]
         solved = int(res.success.sum())
         ok = same(ref, res) and same(ref, first[label])
-        busy = ("-" if "client" in extra
-                else f"{np.sum(cpu[label]) / np.sum(times[label]):.2f}")
+        here = "client" not in extra  # a Dask row computes in the workers' processes
+        busy = f"{np.sum(cpu[label]) / np.sum(times[label]):.2f}" if here else "-"
+        cpu_s = f"{np.median(cpu[label]):.3f}" if here else "-"
         lines.append(f"{label:>14s} {np.median(t):9.3f} {t.min():7.3f}-{t.max():7.3f} "
-                     f"{solved / np.median(t):12.0f} {t_ref / np.median(t):8.2f}x {busy:>9s} "
-                     f"{solved:7d} {'yes' if ok else 'NO':>5s}")
+                     f"{solved / np.median(t):12.0f} {t_ref / np.median(t):8.2f}x {cpu_s:>7s} "
+                     f"{busy:>9s} {solved:7d} {'yes' if ok else 'NO':>5s}")
     return lines
 
 
@@ -126,7 +128,9 @@ def main() -> None:
     try:
         with table_output(args.out):
             print(f"solve_ik_batch on panda, tol 1e-9, {cores} CPUs; medians of {args.repeats} "
-                  "interleaved calls; speed-up: workers=1's time over the row's; cpu/wall: "
+                  "interleaved calls; speed-up: workers=1's time over the row's; cpu s: "
+                  "median CPU seconds of this process per call (the work, whatever the "
+                  "cores; forked tail processes not counted); cpu/wall: "
                   "this process's CPU seconds over wall seconds (the cores the row got: a "
                   "busy machine gives fewer than the workers); same: answers equal to "
                   "workers=1's bit for bit")

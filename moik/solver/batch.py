@@ -15,6 +15,7 @@ with the answers of the serial run.
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 import time
 from collections.abc import Callable
@@ -32,7 +33,7 @@ from moik.problems.targets import Target
 from moik.robots.catalog import as_robot
 from moik.robots.chain import Robot
 from moik.solver import parallel
-from moik.solver.collision import collision_guard
+from moik.solver.collision import CollisionGuard, collision_guard
 from moik.solver.context import ik_context
 from moik.solver.lm_precompile import precompile as precompile_starts
 from moik.solver.options import STARTS_KEY, search_options, seed_sequence
@@ -252,15 +253,16 @@ def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
             precompile_starts(robot)
 
         def chunk(lo: int, hi: int) -> None:  # a thread's rows: compiled calls, GIL released
+            own = None if guard is None else _own_guard(guard)
             _first_stage(robot, (positions[lo:hi], None if rotations is None
                                  else rotations[lo:hi]), None if qc is None else qc[lo:hi],
-                         opts, (tol_pos, tol_ori), (job.root, job.first + lo), guard,
+                         opts, (tol_pos, tol_ori), (job.root, job.first + lo), own,
                          (out_Q[lo:hi], solved[lo:hi], n_evals[lo:hi]))
             done = lo + np.flatnonzero(solved[lo:hi])
             if qc is not None and len(done):
                 out_Q[done] = nearest_copies(robot, out_Q[done], qc[done])
-            if guard is not None and len(done):  # the re-check's distances (below)
-                dist[done] = guard.distances(out_Q[done])
+            if own is not None and len(done):  # the re-check's distances (below)
+                dist[done] = own.distances(out_Q[done])
             if progress is not None:
                 progress(len(done))
 
@@ -283,6 +285,15 @@ def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
     if progress is not None and len(tail):
         progress(len(tail))
     return out_Q, status, pos, ori, solved, n_evals, dist
+
+
+def _own_guard(guard: CollisionGuard) -> CollisionGuard:
+    """``guard`` with compiled pairs of its own (the same arrays, the same distances): threads
+    sharing one compiled value would share its reference counts, atomic operations on one
+    cache line at every distance they compute."""
+    twin = copy.copy(guard.checker)
+    twin.__dict__.pop("compiled", None)  # built again, on first use, from the same arrays
+    return CollisionGuard(twin, guard.clearance)
 
 
 def _tail_target(job: BatchJob, i: int) -> tuple:

@@ -29,7 +29,7 @@ from _output import OUT_HELP, table_output
 import moik
 from moik.kinematics.orientation import orientation_metric
 from moik.problems import PoseIK, random_reachable_targets
-from moik.robots import Robot, fk_reference, get_robot
+from moik.robots import Robot, fk_kernels, fk_reference, get_robot
 from moik.robots.urdf import load_urdf
 
 REPEATS = 7
@@ -90,17 +90,27 @@ def interleaved_medians(fns) -> list[float]:
     return [float(np.median(t)) for t in times]
 
 
+def _kernel_call(robot: Robot, Q: np.ndarray):
+    """The compiled FK kernel alone (no validation, output allocated once): the floor."""
+    chain, out = robot.kinematic_chain, np.empty((len(Q), 4, 4))
+    return lambda: fk_kernels.fk_poses(chain.origins, chain.joint_types, Q, out)
+
+
 def fk_table(robots: list[Robot]) -> None:
-    print(f"{'robot':<12} {'batch':>7} {'moik ns/FK':>11} {'numpy ns/FK':>12} {'ratio':>7} "
-          f"{'max |diff| / reach':>19}")
+    print("moik: robot.fk (validation included); kernel: the compiled kernel alone; fk/kernel: "
+          "their ratio; ratio: numpy / moik")
+    print(f"{'robot':<12} {'batch':>7} {'moik ns/FK':>11} {'kernel ns/FK':>13} "
+          f"{'fk/kernel':>10} {'numpy ns/FK':>12} {'ratio':>7} {'max |diff| / reach':>19}")
     for robot in robots:
         for n in (1, 100, 10_000):
             Q = robot.random_q(n, rng=np.random.default_rng(n))
-            fast, ref = interleaved_medians([lambda Q=Q, r=robot: r.fk(Q),
-                                             lambda Q=Q, r=robot: fk_reference(r, Q)])
+            fast, kernel, ref = interleaved_medians([lambda Q=Q, r=robot: r.fk(Q),
+                                                     _kernel_call(robot, Q),
+                                                     lambda Q=Q, r=robot: fk_reference(r, Q)])
             diff = np.abs(robot.fk(Q) - fk_reference(robot, Q)).max() / max(1.0, robot.reach)
-            print(f"{robot.name:<12} {n:>7} {fast / n * 1e9:>11.1f} {ref / n * 1e9:>12.1f} "
-                  f"{ref / fast:>6.1f}x {diff:>19.1e}")
+            print(f"{robot.name:<12} {n:>7} {fast / n * 1e9:>11.1f} {kernel / n * 1e9:>13.1f} "
+                  f"{fast / kernel:>9.2f}x {ref / n * 1e9:>12.1f} {ref / fast:>6.1f}x "
+                  f"{diff:>19.1e}")
 
 
 def numpy_pose_objective(problem: PoseIK, X: np.ndarray) -> np.ndarray:

@@ -103,7 +103,7 @@ function value, which moik never does, and it is compiled for every kernel
 (docs/performance.md, "Compilation and start-up")."""
 
 
-def jit(func: Callable | None = None, *, inline: bool = False) -> Any:
+def jit(func: Callable | None = None, *, inline: bool = False, nogil: bool = False) -> Any:
     """Compile ``func`` with numba (nopython, no fastmath, cached when a cache can be written).
 
     Used as ``@jit``, or ``@jit(inline=True)`` for a helper that numba inlines at its IR
@@ -118,11 +118,17 @@ def jit(func: Callable | None = None, *, inline: bool = False) -> Any:
     the LM iteration's own helpers (their caller's typing grows by what their modules
     save). docs/performance.md gives the measurements behind each choice. Called from
     Python, an inlined helper compiles as a kernel of its own.
+
+    ``nogil=True`` releases the GIL while the kernel runs when it is called from Python
+    (numba's ``nogil``; the machine code is the same): for the kernels that threads run
+    side by side on chunks of a batch (:mod:`moik.solver.parallel`).
     """
     if func is None:
-        return lambda f: jit(f, inline=inline)
+        return lambda f: jit(f, inline=inline, nogil=nogil)
     _kernels.add(func)
-    options = {**JIT_OPTIONS, "inline": "always"} if inline else JIT_OPTIONS
+    options = {**JIT_OPTIONS, "inline": "always"} if inline else dict(JIT_OPTIONS)
+    if nogil:
+        options["nogil"] = True
     dispatcher = numba.njit(cache=False, **options)(func)
     try:
         # what cache=True does, with our key (numba's types omit the private _cache)

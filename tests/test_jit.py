@@ -73,7 +73,8 @@ def test_one_compiled_version_per_kernel():
             problem.evaluate(np.asarray(Q, dtype=float))
         orientation_error(robot.fk_parts(Q)[0], target.rotation, "frobenius")
     kernels = [fk_kernels.fk_poses, fk_kernels.fk_positions, fk_kernels.fk_rotations_positions,
-               fk_kernels.fk_frames, fk_kernels.all_finite, jac.poses_and_jacobians,
+               fk_kernels.fk_frames, fk_kernels.all_finite, fk_kernels.joint_screen,
+               jac.poses_and_jacobians,
                jac.parts_and_jacobians, ik.ik_objectives, rotation_metrics.rotation_errors]
     for kernel in kernels:
         assert len(kernel.signatures) == 1, (kernel.py_func.__name__, kernel.signatures)
@@ -232,9 +233,9 @@ def built_cache(tmp_path_factory):
 
 
 @pytest.mark.parametrize("name, suffix, damage", [
-    ("all_finite", ".nbi", "truncate"), ("all_finite", ".nbi", "empty"),
-    ("all_finite", ".nbi", "300"), ("all_finite", ".nbc", "truncate"),
-    ("all_finite", ".nbc", "empty"), ("all_finite", ".nbc", "2000"),
+    ("joint_screen", ".nbi", "truncate"), ("joint_screen", ".nbi", "empty"),
+    ("joint_screen", ".nbi", "300"), ("joint_screen", ".nbc", "truncate"),
+    ("joint_screen", ".nbc", "empty"), ("joint_screen", ".nbc", "2000"),
     ("fk_poses", ".nbc", "100"),  # numba aborted the process (SIGABRT) on this flip
 ])
 def test_a_damaged_cache_heals_in_the_next_process(tmp_path, built_cache, name, suffix, damage):

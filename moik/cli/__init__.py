@@ -6,6 +6,8 @@ Subcommands:
     moik fk ROBOT q1 ... qn [--deg]  print the end-effector pose (full precision)
     moik solve ROBOT --target x y z [--euler a b c [--deg]] ...   solve IK
     moik solve ROBOT --target ... --pareto CRITERIA ...   the Pareto set of exact solutions
+    moik batch ROBOT TARGETS --out RESULT [--workers N] [--scene FILE] [--self-collision]
+                                     [--clearance D] [--tol T]   solve a .npy/CSV file of targets
     moik compile [--processes N]     compile every kernel family once, in parallel processes
     moik experiment list             list the papers' experiments
     moik experiment run NAME [--quick] [--workers N] [--resume] [--out DIR] [--dask-scheduler A]
@@ -42,7 +44,8 @@ is about), and the solving ones ``"target"``, ``"status"``, ``"success"``, ``"n_
   member), ``"objectives"``, ``"senses"``, ``"F"`` (criteria of each member),
   ``"compromise"`` (index or null), ``"redundant"``, ``"n_exact"``, ``"plots"``.
 
-Exit status: 0 done (``solve``: solved), 1 ``solve`` not solved, 2 bad input or an
+Exit status: 0 done (``solve``: solved; ``batch``: every target solved), 1 ``solve`` not
+solved (``batch``: some target not solved), 2 bad input or an
 unusable file or folder (one line on stderr, never a traceback). The parser
 (:mod:`moik.cli.parser`) imports nothing heavy, and each subcommand's module is
 imported only when that subcommand runs, so ``moik --help`` answers at once.

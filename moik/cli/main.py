@@ -23,6 +23,7 @@ from moik.exceptions import MoikError, MoikWarning
 if TYPE_CHECKING:
     from moik.cli import (  # noqa: F401
         algorithms,
+        batch,
         catalog,
         experiment,
         fk,

@@ -139,6 +139,40 @@ def _solve_arguments(p: argparse.ArgumentParser) -> None:
                    help="multi-objective algorithm of the --pareto search (default {default})")
 
 
+def _batch_arguments(sub) -> None:
+    p = sub.add_parser("batch", help="solve inverse kinematics for a file of targets",
+                       formatter_class=LibraryDefaultsFormatter,
+                       description="Solve every target of a .npy file (poses (n, 4, 4) or "
+                                   "positions (n, 3)) or a CSV file (x y z [roll pitch yaw]: "
+                                   "R = Rz(yaw) Ry(pitch) Rx(roll)) on every core; write the "
+                                   "joint vectors, statuses, errors (and distances) to --out. "
+                                   "Exit status 0 when every target is solved, 1 otherwise.")
+    p.add_argument("robot", help="catalog name (see `moik robots`) or URDF file")
+    p.add_argument("--base", metavar="LINK", help="URDF: first link of the chain")
+    p.add_argument("--tip", metavar="LINK", help="URDF: last link of the chain")
+    p.add_argument("targets", metavar="TARGETS", help="the targets: FILE.npy or FILE.csv")
+    p.add_argument("--out", metavar="RESULT", required=True,
+                   help="results file: RESULT.npz (arrays) or RESULT.csv (one line per target)")
+    p.add_argument("--workers", type=positive_int, default=None,
+                   help="CPUs to use (default: every core; the answers are the same for any "
+                        "number)")
+    p.add_argument("--deg", action="store_true", help="CSV roll, pitch, yaw in degrees")
+    p.add_argument("--scene", metavar="FILE",
+                   help="JSON scene of obstacles: collision-free solutions only (scene and "
+                        "self pairs, the shipped capsule model of a catalog arm)")
+    p.add_argument("--self-collision", action="store_true",
+                   help="without --scene: solutions free of self-collision only")
+    p.add_argument("--clearance", type=float, metavar="D",
+                   help="with --scene or --self-collision: the smallest accepted distance "
+                        "(robot unit, >= 0; default {default})")
+    p.add_argument("--tol", nargs="+", type=float, metavar="TOL",
+                   help="tolerance: one number t (position t*reach, orientation t rad; default "
+                        "{default}) or two (position in the robot's unit, orientation in rad)")
+    p.add_argument("--seed", type=int, help="random seed, an integer >= 0 (default {default})")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar")
+    p.set_defaults(handler="batch:cmd_batch")
+
+
 def _experiment_arguments(sub) -> None:
     p = sub.add_parser("experiment", help="list or run the papers' experiments",
                        description="List or run the experiments that regenerate the papers' "
@@ -216,6 +250,7 @@ def build_parser() -> argparse.ArgumentParser:
                        formatter_class=LibraryDefaultsFormatter)
     _solve_arguments(p)
     p.set_defaults(handler="solve:cmd_solve")
+    _batch_arguments(sub)
     p = sub.add_parser("compile", help="compile every kernel family once, in parallel "
                                        "processes (the first solves then only load them)")
     p.add_argument("--processes", type=int, default=None,

@@ -178,11 +178,12 @@ def pair_distances(cs, Q, out):
             out[i, k] = pair_value(cs, W, k, np.inf)[0]
 
 
-@jit
+@jit(nogil=True)
 def min_distances(cs, Q, dmin, which):
     """Smallest pair distance ``dmin (n,)`` and the pair ``which (n,)`` that attains it.
 
-    With no pairs, ``dmin`` is ``inf`` and ``which`` is -1.
+    With no pairs, ``dmin`` is ``inf`` and ``which`` is -1. Releases the GIL (the batch's
+    threads re-check their chunks' distances with it, :mod:`moik.solver.parallel`).
     """
     scratch = distance_scratch(cs)
     for i in range(Q.shape[0]):

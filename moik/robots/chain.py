@@ -192,6 +192,13 @@ class Robot:
         mask.flags.writeable = False
         return mask
 
+    @cached_property
+    def _revolute(self) -> np.ndarray:
+        """Boolean mask of revolute joints (read-only; the joint screen of :meth:`check_q`)."""
+        mask = ~self.is_prismatic
+        mask.flags.writeable = False
+        return mask
+
     @property
     def limits(self) -> np.ndarray:
         """Joint limits as a ``(2, dof)`` array ``[lower, upper]``."""
@@ -294,10 +301,13 @@ class Robot:
                 f"{name} for robot {self.name!r} must have shape ({self.dof},) or "
                 f"(n, {self.dof}), got {Q.shape}"
             )
-        if not fk_kernels.all_finite(Q.reshape(-1)):
+        screen = fk_kernels.joint_screen(Q.reshape(-1, self.dof), self.lower, self.upper,
+                                         self._revolute, checks.FULL_TURN)
+        if screen == 1:
             raise NonFiniteError(f"{name} must be finite, got NaN or inf in {name}")
-        checks.warn_if_joint_degrees(self.name, self.joint_names, self.lower, self.upper,
-                                     self.is_prismatic, Q, name, stacklevel=3)
+        if screen == 2:  # the kernel's screen is the warning's condition; this words it
+            checks.warn_if_joint_degrees(self.name, self.joint_names, self.lower, self.upper,
+                                         self.is_prismatic, Q, name, stacklevel=3)
         return Q
 
     def kernel_batch(self, q) -> np.ndarray:

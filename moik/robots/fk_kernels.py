@@ -246,6 +246,31 @@ def all_finite(x):
 
 
 @jit
+def joint_screen(Q, lower, upper, revolute, full_turn):
+    """One pass over a joint batch ``Q (n, dof)``: 1 if an entry is NaN or inf; else 2 if
+    its revolute values could look like degrees (one more than ``full_turn`` beyond its
+    limits, or every one a whole number and some beyond ``full_turn`` in magnitude: the
+    conditions of :func:`moik.robots.checks.warn_if_joint_degrees`, which words the
+    warning); else 0."""
+    n, dof = Q.shape
+    far, whole, big, any_rev = False, True, False, False
+    for i in range(n):
+        for j in range(dof):
+            v = Q[i, j]
+            if not math.isfinite(v):
+                return 1
+            if revolute[j]:
+                any_rev = True
+                if upper[j] + full_turn < v or lower[j] - full_turn > v:
+                    far = True
+                if v != math.floor(v):
+                    whole = False
+                if abs(v) > full_turn:
+                    big = True
+    return 2 if any_rev and (far or (whole and big)) else 0
+
+
+@jit
 def fk_frames_into(F, P, types, q, out):
     """Base frame (identity) and every joint frame of ``q``, into ``out (dof + 1, 4, 4)``.
 

@@ -24,7 +24,7 @@ from moik.solver.solve_ik import solve_ik
 if TYPE_CHECKING:
     from moik.solver.batch import IKBatchResult, solve_ik_batch
     from moik.solver.pareto import ParetoIKResult, solve_ik_pareto
-    from moik.solver.path import PathResult, solve_path
+    from moik.solver.path import PathResult, solve_path, solve_paths
 
 _LAZY: dict[str, tuple[str, str | None]] = {
     "IKBatchResult": ("moik.solver.batch", "IKBatchResult"),
@@ -33,11 +33,12 @@ _LAZY: dict[str, tuple[str, str | None]] = {
     "solve_ik_pareto": ("moik.solver.pareto", "solve_ik_pareto"),
     "PathResult": ("moik.solver.path", "PathResult"),
     "solve_path": ("moik.solver.path", "solve_path"),
+    "solve_paths": ("moik.solver.path", "solve_paths"),
 }
 """Public name -> (module, attribute): each loads at first use (start-up time: the
 single-pose solver need not import the search, Pareto and path machinery)."""
 
 __all__ = ["IKBatchResult", "IKResult", "ParetoIKResult", "PathResult", "solve_ik",
-           "solve_ik_batch", "solve_ik_pareto", "solve_path"]
+           "solve_ik_batch", "solve_ik_pareto", "solve_path", "solve_paths"]
 
 __getattr__, __dir__ = lazy_names("moik.solver", _LAZY, globals(), __all__)

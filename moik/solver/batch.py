@@ -7,12 +7,18 @@ T, seed=s).q[i]`` equals ``solve_ik(robot, T[i], seed=child_i).q`` bit for bit
 (tested). The first stage of every target runs in one compiled loop
 (:func:`~moik.solver.starts.run_batch`: the same Levenberg-Marquardt starts
 ``solve_ik`` makes, in the same order); a target it leaves unsolved goes through the whole of
-:func:`~moik.solver.solve_ik.solve_ik` (search fallback, front, verdict).
+:func:`~moik.solver.solve_ik.solve_ik` (search fallback, front, verdict). Rows ``lo .. hi - 1``
+of a batch need only the seeds ``lo .. hi - 1`` (:class:`BatchJob`), so the batch is solved
+in chunks, on threads and processes or on a Dask cluster (:mod:`moik.solver.parallel`),
+with the answers of the serial run.
 """
 
 from __future__ import annotations
 
+import copy
+import dataclasses
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -26,7 +32,9 @@ from moik.kinematics.orientation import check_rotation
 from moik.kinematics.tolerance import Tolerance
 from moik.problems.targets import Target
 from moik.robots.catalog import as_robot
-from moik.solver.collision import collision_guard
+from moik.robots.chain import Robot
+from moik.solver import parallel
+from moik.solver.collision import CollisionGuard, collision_guard
 from moik.solver.context import ik_context
 from moik.solver.options import STARTS_KEY, search_options, seed_sequence
 from moik.solver.session import pose_errors
@@ -97,6 +105,8 @@ def _targets(targets) -> tuple[np.ndarray, np.ndarray | None]:
 
 def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=None,
                    self_collision: bool = False, clearance: float = 0.0, collision=None,
+                   workers: int | None = None, client=None,
+                   progress: Callable[[int], None] | None = None,
                    **options) -> IKBatchResult:
     """Solve IK for a batch of targets; each answer independent of the others.
 
@@ -111,24 +121,38 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=No
             compiled first stage rejects ends in collision and tries the next start; a
             target it leaves without a collision-free answer goes through the whole of
             ``solve_ik``.
+        workers: CPUs to use (default ``None``: every core this process may run on). The
+            compiled first stage runs on that many threads over chunks of targets (it
+            releases the GIL), the hard tail on a process pool of that many; a batch too
+            small for it to pay runs in this thread. The answers are the same bit for bit
+            for every value: each depends on its target and its own seed only. Inside a
+            process pool of your own, pass ``workers=1`` (your pool already uses the cores).
+        client: A ``dask.distributed.Client``: the batch is cut into chunks, each solved
+            on a worker of its cluster (``workers`` is then not used) and gathered in order;
+            the same answers again. A chunk whose worker is lost is run again.
+        progress: Called with a number of targets each time that many are answered
+            (the first stage's solved targets chunk by chunk, then each target of the
+            hard tail); the numbers add up to ``n``, or slightly more when the final
+            re-check sends a first-stage answer on to the tail.
         **options: Any other keyword of ``solve_ik`` except ``n_solutions``.
 
     Raises:
         ShapeError, NonFiniteError, TargetError: Malformed targets (empty batch,
             wrong shape, NaN, non-rotations) or ``q_current``.
-        ParameterError, UnknownNameError: As ``solve_ik`` for its options.
+        ParameterError, UnknownNameError: As ``solve_ik`` for its options, or a bad
+            ``workers`` or ``client``.
     """
     t0 = time.perf_counter()
     robot = as_robot(robot)
     if "n_solutions" in options:
         raise ParameterError("solve_ik_batch returns one joint vector per target: n_solutions "
                              "is not an option here (call solve_ik per target for branches)")
-    opts = search_options("solve_ik_batch", options)
-    guard = collision_guard(robot, scene=scene, self_collision=self_collision,
-                            clearance=clearance, collision=collision)
-    check: dict[str, Any] = ({} if guard is None else
-                             {"collision": guard.checker, "clearance": guard.clearance})
-    tolerance = Tolerance.of(tol, robot.reach)
+    search_options("solve_ik_batch", options)
+    n_workers = parallel.worker_count(workers)
+    collision_args = {"scene": scene, "self_collision": self_collision, "clearance": clearance,
+                      "collision": collision}
+    guard = collision_guard(robot, **collision_args)  # validated before the targets
+    Tolerance.of(tol, robot.reach)
     positions, rotations = _targets(targets)
     n = len(positions)
     qc = None
@@ -139,47 +163,154 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=No
         elif qc.shape[0] != n:
             raise ShapeError(f"q_current must be ({robot.dof},) or ({n}, {robot.dof}), got "
                              f"{qc.shape}")
-    root = seed_sequence(seed)  # target i's seed: _child(root, i), made only if needed
+    job = BatchJob(robot=robot, positions=positions, rotations=rotations, q_current=qc,
+                   root=seed_sequence(seed), first=0, tol=tol, collision=_portable(guard),
+                   options=options)
+    if client is not None:
+        rows = _on_client(parallel.check_client(client), job, progress)
+    else:
+        rows = solve_rows(job, workers=n_workers, progress=progress)
+    q, status, pos, ori, success, n_evals, dist = rows
+    return IKBatchResult(q=q, status=status.astype(str), position_error=pos,
+                         orientation_error=ori, success=success, n_eval=n_evals,
+                         time=time.perf_counter() - t0,
+                         min_distance=None if guard is None else dist)
+
+
+@dataclass(frozen=True, kw_only=True)
+class BatchJob:
+    """Validated targets ``first .. first + n - 1`` of a batch and how to solve them (picklable:
+    a chunk travels to a process or a Dask worker as one of these)."""
+
+    robot: Robot
+    positions: np.ndarray
+    rotations: np.ndarray | None
+    q_current: np.ndarray | None
+    root: np.random.SeedSequence
+    first: int
+    tol: Any
+    collision: dict[str, Any]
+    options: dict[str, Any]
+
+    def rows(self, lo: int, hi: int) -> BatchJob:
+        """The job of this job's rows ``lo .. hi - 1``."""
+        return dataclasses.replace(
+            self, positions=self.positions[lo:hi],
+            rotations=None if self.rotations is None else self.rotations[lo:hi],
+            q_current=None if self.q_current is None else self.q_current[lo:hi],
+            first=self.first + lo)
+
+
+def _portable(guard) -> dict[str, Any]:
+    """The collision arguments that rebuild ``guard``'s check in another process (a checker's
+    compiled pairs do not pickle; its model, scene and self-pair flag do, and give the
+    same checker)."""
+    if guard is None:
+        return {}
+    checker = guard.checker
+    return {"scene": checker.scene, "self_collision": checker.self_collision,
+            "collision": checker.model, "clearance": guard.clearance}
+
+
+Rows = tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]
+
+
+def _on_client(client, job: BatchJob, progress) -> Rows:
+    """The job's rows solved in chunks on a Dask ``client``, gathered in order."""
+    n = len(job.positions)
+    bounds = parallel.chunk_bounds(n, parallel.client_workers(client))
+    done = None if progress is None else (lambda rows: progress(len(rows[0])))
+    parts = parallel.map_client(client, _solve_chunk, [job.rows(lo, hi) for lo, hi in bounds],
+                                progress=done)
+    return tuple(np.concatenate([part[k] for part in parts])  # type: ignore[return-value]
+                 for k in range(7))
+
+
+def _solve_chunk(job: BatchJob) -> Rows:
+    """A Dask task: one chunk on one thread of its worker."""
+    return solve_rows(job, workers=1)
+
+
+def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
+    """The answers of the job's targets (seeds ``first + i``): ``(q, status, position error,
+    orientation error, success, n_eval, min distance)``, the first stage on ``workers``
+    threads, the hard tail on as many processes."""
+    robot, n = job.robot, len(job.positions)
+    opts = search_options("solve_ik_batch", job.options)
+    guard = collision_guard(robot, **job.collision)
+    tolerance = Tolerance.of(job.tol, robot.reach)
+    positions, rotations, qc = job.positions, job.rotations, job.q_current
     out_Q, solved = np.empty((n, robot.dof)), np.zeros(n, dtype=np.bool_)
     n_evals = np.zeros(n, dtype=np.int64)
-    if opts.polish and (qc is not None or opts.starts):
-        _first_stage(robot, positions, rotations, qc, opts, tolerance, root,
-                     guard, (out_Q, solved, n_evals))
-    if qc is not None:
-        out_Q[solved] = nearest_copies(robot, out_Q[solved], qc[solved])
-    status = np.full(n, "not-converged", dtype=object)
     pos, ori, dist = np.zeros(n), np.zeros(n), np.full(n, np.nan)
+    if opts.polish and (qc is not None or opts.starts):
+        def chunk(lo: int, hi: int) -> None:  # a thread's rows: compiled calls, GIL released
+            own = None if guard is None else _own_guard(guard)
+            _first_stage(robot, (positions[lo:hi], None if rotations is None
+                                 else rotations[lo:hi]), None if qc is None else qc[lo:hi],
+                         opts, tolerance, (job.root, job.first + lo), own,
+                         (out_Q[lo:hi], solved[lo:hi], n_evals[lo:hi]))
+            done = lo + np.flatnonzero(solved[lo:hi])
+            if qc is not None and len(done):
+                out_Q[done] = nearest_copies(robot, out_Q[done], qc[done])
+            if own is not None and len(done):  # the re-check's distances (below)
+                dist[done] = own.distances(out_Q[done])
+            if progress is not None:
+                progress(len(done))
+
+        parallel.map_chunks(chunk, n, workers)
+    status = np.full(n, "not-converged", dtype=object)
     if solved.any():  # the honest re-check, as solve_ik does it
         k = np.flatnonzero(solved)
         p_k, o_k = pose_errors(robot, (positions[k], None if rotations is None
                                        else rotations[k]), out_Q[k])
         ok = tolerance.certifies(p_k, o_k)
-        if guard is not None:
-            dist[k] = guard.distances(out_Q[k])
+        if guard is not None:  # each q's distance, recomputed by its chunk's thread
             ok &= guard.keeps(dist[k])
         pos[k], ori[k], solved[k] = p_k, o_k, ok
         status[k[ok]] = "solved"
-    for i in np.flatnonzero(~solved):  # the hard tail: the whole of solve_ik
-        target = Target(positions[i], None if rotations is None else rotations[i])
-        res = solve_ik(robot, target, seed=_child(root, int(i)), tol=tol,
-                       q_current=None if qc is None else qc[i], **check, **options)
-        out_Q[i], status[i], pos[i], ori[i] = res.q, res.status, res.position_error, \
-            res.orientation_error
-        n_evals[i], solved[i] = res.n_eval, res.success
-        if guard is not None:
-            dist[i] = res.min_distance
-    return IKBatchResult(q=out_Q, status=status.astype(str), position_error=pos,
-                         orientation_error=ori, success=solved, n_eval=n_evals,
-                         time=time.perf_counter() - t0,
-                         min_distance=None if guard is None else dist)
+    tail = np.flatnonzero(~solved)  # the hard tail: the whole of solve_ik
+    answers = parallel.map_processes(_tail_target, job, [int(i) for i in tail], workers)
+    for i, (q, st, p, o, ne, ok, d) in zip(tail, answers, strict=True):
+        out_Q[i], status[i], pos[i], ori[i], n_evals[i], solved[i], dist[i] = q, st, p, o, ne, \
+            ok, d
+    if progress is not None and len(tail):
+        progress(len(tail))
+    return out_Q, status, pos, ori, solved, n_evals, dist
 
 
-def _first_stage(robot, positions, rotations, qc, opts, tol, root, guard, out):
+def _own_guard(guard: CollisionGuard) -> CollisionGuard:
+    """``guard`` with compiled pairs of its own (the same arrays, the same distances): threads
+    sharing one compiled value would share its reference counts, atomic operations on one
+    cache line at every distance they compute."""
+    twin = copy.copy(guard.checker)
+    twin.__dict__.pop("compiled", None)  # built again, on first use, from the same arrays
+    return CollisionGuard(twin, guard.clearance)
+
+
+def _tail_target(job: BatchJob, i: int) -> tuple:
+    """Row ``i`` of the job through the whole of ``solve_ik`` (its seed: ``first + i``)."""
+    robot = job.robot
+    guard = collision_guard(robot, **job.collision)
+    check: dict[str, Any] = ({} if guard is None else
+                             {"collision": guard.checker, "clearance": guard.clearance})
+    target = Target(job.positions[i], None if job.rotations is None else job.rotations[i])
+    res = solve_ik(robot, target, seed=_child(job.root, job.first + i), tol=job.tol,
+                   q_current=None if job.q_current is None else job.q_current[i], **check,
+                   **job.options)
+    return (res.q, res.status, res.position_error, res.orientation_error, res.n_eval,
+            res.success, np.nan if guard is None else res.min_distance)
+
+
+def _first_stage(robot, targets, qc, opts, tol, seeds, guard, out):
     """The Levenberg-Marquardt starts ``solve_ik`` makes, for every target in compiled loops
     (:func:`~moik.solver.starts.run_batch`): ``q_current[i]`` (patient), then the first
     :data:`~moik.solver.solve_ik.FIRST_STARTS` random starts, then the rest for the unsolved.
     With a collision ``guard`` an end in collision is rejected inside the loop, as
-    ``solve_ik``'s start loop does. ``out = (out_Q, solved, n_evals)``, written."""
+    ``solve_ik``'s start loop does. ``targets = (positions, rotations)``; ``seeds = (root,
+    first)``: row ``i``'s starts are those of child ``first + i`` of ``root``; ``out =
+    (out_Q, solved, n_evals)``, written. Its own context: threads run it on chunks."""
+    (positions, rotations), (root, first_child) = targets, seeds
     out_Q, solved, n_evals = out
     n, dof = len(positions), robot.dof
     first = Target(positions[0], None if rotations is None else rotations[0])
@@ -192,7 +323,7 @@ def _first_stage(robot, positions, rotations, qc, opts, tol, root, guard, out):
     if qc is not None:
         current = np.array(qc[:, None], dtype=np.float64, copy=True)  # run_batch moves it
         run_batch(ctx, current, targets, (PATIENT, opts.max_evals), found, n_evals)
-    states = start_streams(root, STARTS_KEY, n)  # solve_ik's start generators, compiled
+    states = start_streams(root, STARTS_KEY, n, first_child)  # solve_ik's start generators
     first_n = min(opts.starts, FIRST_STARTS)  # then the rest, for the unsolved only
     run_batch(ctx, draw_rows(states, np.arange(n), first_n, robot.lower, robot.upper),
               targets, (0, opts.max_evals), found, n_evals)

@@ -24,6 +24,7 @@ from moik.exceptions import ParameterError, TargetError
 from moik.kinematics.tolerance import Tolerance
 from moik.problems.targets import as_target, check_unit_range
 from moik.robots.chain import Robot
+from moik.solver import parallel
 from moik.solver.collision import CollisionGuard, collision_guard
 from moik.solver.options import SEARCH_DEFAULTS, SearchOptions, seed_sequence
 from moik.solver.polish import polish
@@ -209,3 +210,34 @@ def pose_errors_all(robot: Robot, targets, Q: np.ndarray) -> tuple[np.ndarray, n
     """Errors of ``Q[i]`` w.r.t. ``targets[i]``, recomputed by FK."""
     errs = [pose_errors(robot, t, q) for t, q in zip(targets, Q, strict=True)]
     return (np.array([e[0][0] for e in errs]), np.array([e[1][0] for e in errs]))
+
+
+def solve_paths(robot: Robot, paths, *, workers: int | None = None,
+                **path_options) -> list[PathResult]:
+    """:func:`solve_path` of each of ``paths``, on a process pool of ``workers`` processes.
+
+    Path ``k``'s result is ``solve_path(robot, paths[k], **path_options)`` bit for bit (its
+    ``time`` aside), whatever ``workers`` is: each path is solved from its own targets and
+    the same options and seed.
+
+    Args:
+        robot: The arm.
+        paths: A sequence of paths, each a sequence of targets.
+        workers: Processes (default ``None``: every core this process may run on; a
+            single path, or one worker, runs in this process).
+        **path_options: The keywords of :func:`solve_path`.
+
+    Raises:
+        ParameterError, TargetError: As :func:`solve_path`, for the first path that has
+            one; a bad ``workers``; ``paths`` not a sequence of paths.
+    """
+    n_workers = parallel.worker_count(workers)
+    if isinstance(paths, str | bytes | dict) or not hasattr(paths, "__len__"):
+        raise TargetError(f"paths must be a sequence of paths, got {type(paths).__name__}")
+    return parallel.map_processes(_one_path, (robot, list(paths), path_options),
+                                  range(len(paths)), n_workers)
+
+
+def _one_path(shared, k: int) -> PathResult:
+    robot, paths, options = shared
+    return solve_path(robot, paths[k], **options)

@@ -129,13 +129,15 @@ def _seed_state(words, pool_size, state):
     state[0], state[1], state[2], state[3] = s_hi, s_lo, inc_hi, inc_lo
 
 
-@jit
-def batch_streams(base, spawn, pool_size, key, n, states):
+@jit(nogil=True)
+def batch_streams(base, spawn, pool_size, key, first, n, states):
     """PCG64 states ``(n, 4)`` of ``SeedSequence(entropy, spawn_key=(*spawn_key, i, key),
-    pool_size)`` for ``i < n``; ``base``: the entropy's words (uint64 holding 32 bits),
-    ``spawn``: the spawn key's words (as :func:`uint32_words`)."""
+    pool_size)`` for ``first <= i < first + n`` (row ``i - first``); ``base``: the
+    entropy's words (uint64 holding 32 bits), ``spawn``: the spawn key's words (as
+    :func:`uint32_words`)."""
     n_run = max(base.size, pool_size)  # numpy pads the entropy to the pool with a spawn key
-    for i in range(n):
+    for r in range(n):
+        i = first + r
         n_i = 1 if i < 2**32 else 2
         words = np.zeros(n_run + spawn.size + n_i + 1, dtype=np.uint64)
         words[:base.size] = base
@@ -144,10 +146,10 @@ def batch_streams(base, spawn, pool_size, key, n, states):
         if n_i == 2:
             words[n_run + spawn.size + 1] = np.uint64(i) >> np.uint64(32)
         words[words.size - 1] = key
-        _seed_state(words, pool_size, states[i])
+        _seed_state(words, pool_size, states[r])
 
 
-@jit
+@jit(nogil=True)
 def draw_starts(states, lower, upper, out):
     """``out[i] = lower + (upper - lower) * U`` with ``U`` the next ``k * dof`` doubles of
     stream ``i`` (C order, as ``Generator.random((k, dof))``); the states advance."""
@@ -165,14 +167,14 @@ def draw_starts(states, lower, upper, out):
         states[i, 0], states[i, 1] = s_hi, s_lo
 
 
-def streams(root: np.random.SeedSequence, key: int, n: int) -> np.ndarray:
-    """The PCG64 states ``(n, 4)`` of the children ``(i, key)`` of ``root``
-    (:func:`batch_streams`)."""
+def streams(root: np.random.SeedSequence, key: int, n: int, first: int = 0) -> np.ndarray:
+    """The PCG64 states ``(n, 4)`` of the children ``(i, key)`` of ``root``,
+    ``first <= i < first + n`` (:func:`batch_streams`)."""
     base = np.array(uint32_words(root.entropy), dtype=np.uint64)
     spawn = np.array(uint32_words(root.spawn_key), dtype=np.uint64)
     states = np.empty((n, 4), dtype=np.uint64)
     with np.errstate(over="ignore"):  # modulo 2**64, also as Python (NUMBA_DISABLE_JIT)
-        batch_streams(base, spawn, int(root.pool_size), np.uint64(key), n, states)
+        batch_streams(base, spawn, int(root.pool_size), np.uint64(key), int(first), n, states)
     return states
 
 
@@ -186,12 +188,15 @@ def numpy_state(root: np.random.SeedSequence, key: int, i: int) -> np.ndarray:
                     dtype=np.uint64)
 
 
-def start_streams(root: np.random.SeedSequence, key: int, n: int) -> np.ndarray:
-    """:func:`streams`, checked on stream 0 against numpy's seeding (should numpy ever
-    seed otherwise, every stream is taken from numpy's, slowly but equal)."""
-    states = streams(root, key, n)
-    if not np.array_equal(states[0], numpy_state(root, key, 0)):
-        states = np.array([numpy_state(root, key, i) for i in range(n)], dtype=np.uint64)
+def start_streams(root: np.random.SeedSequence, key: int, n: int, first: int = 0
+                  ) -> np.ndarray:
+    """:func:`streams` (of the children ``first .. first + n - 1``), checked on the first
+    against numpy's seeding (should numpy ever seed otherwise, every stream is taken from
+    numpy's, slowly but equal)."""
+    states = streams(root, key, n, first)
+    if not np.array_equal(states[0], numpy_state(root, key, first)):
+        states = np.array([numpy_state(root, key, first + i) for i in range(n)],
+                          dtype=np.uint64)
     return states
 
 

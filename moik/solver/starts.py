@@ -173,12 +173,13 @@ def run_starts(ctx, starts, policy, found, best, ends):
     return n_found, n_eval, used
 
 
-@jit
+@jit(nogil=True)
 def run_batch(ctx, starts, targets, policy, found, n_evals):
     """:func:`run_starts` for target ``i`` (``targets = (rotations (n, 3, 3), positions
     (n, 3))``) from the rows of ``starts[i]``, into ``found[i]`` (``(n, want, dof + 2)``);
     a target already solved (``found[i, 0]`` filled) or out of budget is skipped, and the
-    budget of ``policy`` counts each target's ``n_evals[i]`` (accumulated)."""
+    budget of ``policy`` counts each target's ``n_evals[i]`` (accumulated). Releases the
+    GIL (threads run it on chunks of a batch, each with a context of its own)."""
     flags, budget = policy
     n, k, dof = starts.shape
     best, ends = np.empty(dof + 1), np.empty((k, 3))

@@ -1,12 +1,20 @@
 """solve_ik_batch: one call, each target answered as solve_ik would, independent of the batch."""
 
+import os
+import signal
+import time
+from concurrent.futures import ThreadPoolExecutor
+
 import numpy as np
 import pytest
 
 from moik import solve_ik, solve_ik_batch
+from moik.collision import CollisionChecker, HalfSpace, Scene
+from moik.collision.catalog import collision_model
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetError
 from moik.problems import random_reachable_targets
 from moik.robots import get_robot
+from moik.solver import parallel
 from moik.solver.batch import child_seeds
 
 
@@ -77,3 +85,91 @@ def test_bad_options_and_q_current():
     with pytest.raises(TargetError, match="rotation"):
         solve_ik_batch(robot, rot)
     assert solve_ik_batch("eosma7", poses[:1]).success[0]  # a catalog name is accepted
+
+
+FIELDS = ("q", "status", "position_error", "orientation_error", "success", "n_eval",
+          "min_distance")
+
+
+def assert_same(a, b):
+    """Two batch results equal bit for bit (NaN where NaN)."""
+    for field in FIELDS:
+        x, y = getattr(a, field), getattr(b, field)
+        if x is None or y is None:
+            assert x is None and y is None, field
+        else:
+            np.testing.assert_array_equal(x, y, err_msg=field)
+
+
+def _mixed_batch(robot, n, seed):
+    """Reachable poses and two out of reach (the hard tail: solve_ik, in a process pool)."""
+    poses = robot.fk(robot.random_q(n, rng=np.random.default_rng(seed)))
+    poses[[7, n - 3], :3, 3] += 3.0 * robot.reach
+    return poses
+
+
+def test_answers_are_the_same_for_every_worker_count(monkeypatch):
+    monkeypatch.setattr(parallel, "POOL_AFTER_S", 0.0)  # the tail on a pool at once
+    robot = get_robot("panda")
+    poses = _mixed_batch(robot, 300, 5)
+    one = solve_ik_batch(robot, poses, seed=2, workers=1)
+    assert list(np.flatnonzero(~one.success)) == [7, 297] and one.success.sum() == 298
+    for workers in (2, 3):
+        assert_same(one, solve_ik_batch(robot, poses, seed=2, workers=workers))
+    seeds = child_seeds(2, len(poses))
+    for i in (0, 7, 200, 297):  # and each as solve_ik answers it alone
+        np.testing.assert_array_equal(one.q[i], solve_ik(robot, poses[i], seed=seeds[i]).q)
+
+
+def test_collision_aware_answers_are_the_same_for_every_worker_count(monkeypatch):
+    monkeypatch.setattr(parallel, "POOL_AFTER_S", 0.0)
+    robot, model = get_robot("panda"), collision_model("panda")
+    table = Scene({"table": HalfSpace.plane([0, 0, 1], 0.0)},
+                  allowed=frozenset([("table", model.links[0]), ("table", model.links[1])]))
+    checker = CollisionChecker(model=model, scene=table, self_collision=True)
+    Q = robot.random_q(400, rng=np.random.default_rng(6))
+    d = checker.min_distance(Q)
+    Q = np.vstack([Q[d >= 0][:294], Q[d < 0][:6]])  # six poses reached only in collision
+    poses = robot.fk(Q)
+    kw = {"seed": 1, "scene": table, "self_collision": True}
+    one = solve_ik_batch(robot, poses, workers=1, **kw)
+    assert one.min_distance is not None and (one.status == "collides").any()
+    assert_same(one, solve_ik_batch(robot, poses, workers=2, **kw))
+
+
+def test_a_dask_cluster_gives_the_same_answers():
+    distributed = pytest.importorskip("distributed")
+    robot = get_robot("panda")
+    poses = _mixed_batch(robot, 300, 7)
+    serial = solve_ik_batch(robot, poses, seed=4, workers=1)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        chunks = []
+        on_dask = solve_ik_batch(robot, poses, seed=4, client=client, progress=chunks.append)
+    assert_same(serial, on_dask)
+    assert sum(chunks) == len(poses) and len(chunks) > 1  # several chunks, each counted once
+
+
+def test_a_lost_dask_worker_reruns_its_chunk():
+    """A worker process killed while it solves a chunk: the scheduler runs the chunk again
+    elsewhere; no target is lost or answered twice, the answers are the serial ones."""
+    distributed = pytest.importorskip("distributed")
+    robot = get_robot("panda")
+    poses = _mixed_batch(robot, 300, 8)
+    serial = solve_ik_batch(robot, poses, seed=5, workers=1)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        pool = ThreadPoolExecutor(1)
+        batch = pool.submit(solve_ik_batch, robot, poses, seed=5, client=client)
+        busy: list = []
+        while not busy and not batch.done():  # a worker busy with a chunk (loading moik)
+            busy = [w for w, tasks in client.processing().items() if tasks]
+            time.sleep(0.02)
+        assert busy, "the batch ended before a worker could be killed"
+        pids = client.run(os.getpid, workers=busy[:1])
+        os.kill(pids[busy[0]], signal.SIGKILL)
+        on_dask = batch.result(timeout=120)
+        pool.shutdown()
+    assert_same(serial, on_dask)

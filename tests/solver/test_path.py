@@ -3,10 +3,10 @@
 import numpy as np
 import pytest
 
-from moik.exceptions import ParameterError, UnknownNameError
+from moik.exceptions import ParameterError, TargetError, UnknownNameError
 from moik.problems import circle_path
 from moik.robots import get_robot
-from moik.solver import solve_path
+from moik.solver import solve_path, solve_paths
 
 
 def test_circle_path_tracked_continuously():
@@ -58,3 +58,19 @@ def test_solve_options_are_validated_even_when_warm_starts_do_everything():
         solve_path(robot, pts, q_start=start.Q[0], pop_size=1)
     with pytest.raises(UnknownNameError, match="unknown algorithm 'nope'"):
         solve_path(robot, pts, q_start=start.Q[0], method="nope")
+
+
+def test_many_paths_on_a_pool_are_each_solve_path():
+    robot = get_robot("rokbani5")
+    paths = [circle_path([15, 0, 12], r, 6) for r in (6, 7, 8)]
+    fields = ("Q", "position_errors", "orientation_errors", "success", "statuses",
+              "warm_started", "joint_steps", "max_joint_step", "n_eval")
+    serial = solve_paths(robot, paths, workers=1, seed=2)
+    pooled = solve_paths(robot, paths, workers=2, seed=2)
+    for k, path in enumerate(paths):
+        alone = solve_path(robot, path, seed=2)
+        for field in fields:
+            np.testing.assert_array_equal(getattr(serial[k], field), getattr(alone, field))
+            np.testing.assert_array_equal(getattr(pooled[k], field), getattr(alone, field))
+    with pytest.raises(TargetError, match="sequence of paths"):
+        solve_paths(robot, "abc")

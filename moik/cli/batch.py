@@ -1,0 +1,238 @@
+"""``moik batch ROBOT TARGETS --out RESULT``: inverse kinematics of a file of targets.
+
+Targets: a ``.npy`` file of poses ``(n, 4, 4)`` or positions ``(n, 3)``, or a CSV file
+with one target per line, ``x, y, z`` (a position) or ``x, y, z, roll, pitch, yaw`` (a
+pose: ``R = Rz(yaw) Ry(pitch) Rx(roll)``, radians, degrees with ``--deg``), commas or
+blanks between the numbers, an optional header line, ``#`` comments. Lengths are in
+the robot's unit.
+
+Results (:func:`~moik.solver.batch.solve_ik_batch`, ``--workers`` CPUs, default all):
+``.npz`` with the arrays ``q (n, dof)``, ``status``, ``success``, ``position_error``,
+``orientation_error`` (geodesic, rad), ``n_eval`` and, with ``--scene`` or
+``--self-collision``, ``min_distance``; or ``.csv`` with one line per target: the joint
+values (named by the joints), ``status``, the errors and ``min_distance``. A progress
+bar on stderr for batches of :data:`PROGRESS_MIN` targets or more (tqdm), then one
+summary line. Exit status as ``moik solve``: 0 every target solved, 1 some not, 2 bad
+input (a file that cannot be read, of the wrong shape, with NaN, a non-rotation, no
+target) with one line on stderr.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from moik._validate import integer
+from moik.cli import collision
+from moik.cli.common import SOLVE_OPTIONS, library_call, robot, tolerance
+from moik.cli.parser import given
+from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetError
+from moik.kinematics.orientation import ROTATION_ATOL, rotation_from_zyx
+from moik.robots import Robot
+from moik.solver import solve_ik_batch
+from moik.solver.parallel import worker_count
+
+PROGRESS_MIN = 1000  # targets from which the progress bar is shown
+RESULT_FORMATS = (".npz", ".csv")
+TARGET_FORMATS = (".npy", ".csv")
+
+
+def read_targets(path: str, *, degrees: bool = False) -> np.ndarray:
+    """The targets of ``path``: ``(n, 4, 4)`` poses or ``(n, 3)`` positions (not yet
+    validated as rotations: :func:`~moik.solver.batch.solve_ik_batch` does).
+
+    Raises:
+        ParameterError: Not a ``.npy`` or ``.csv`` file, or unreadable.
+        ShapeError: No target, or rows of the wrong length.
+        NonFiniteError: NaN or inf.
+    """
+    file = Path(path)
+    suffix = file.suffix.lower()
+    if suffix not in TARGET_FORMATS:
+        raise ParameterError(f"targets file must end in {' or '.join(TARGET_FORMATS)}, got "
+                             f"{path!r}")
+    if not file.is_file():
+        raise ParameterError(f"targets file {path!r} does not exist or is not a file")
+    arr = _read_npy(file) if suffix == ".npy" else _read_csv(file, degrees)
+    if arr.size == 0:
+        raise ShapeError(f"targets file {path!r} holds no target")
+    if not np.all(np.isfinite(arr)):
+        row = int(np.flatnonzero(~np.isfinite(arr.reshape(len(arr), -1)).all(axis=1))[0]) \
+            if arr.ndim > 1 else 0
+        raise NonFiniteError(f"targets file {path!r}: target {row} holds NaN or inf")
+    if arr.ndim == 3:
+        _check_poses(arr, path)
+    return arr
+
+
+def _check_poses(T: np.ndarray, path: str) -> None:
+    """The first pose of ``T`` that is not rigid, named (the solver's check, per row)."""
+    R, eye = T[:, :3, :3], np.eye(3)
+    gram = np.einsum("nka,nkb->nab", R, R)
+    bad = (np.any(np.abs(gram - eye) > ROTATION_ATOL + 1e-5 * eye, axis=(1, 2))
+           | (np.abs(np.linalg.det(R) - 1.0) > ROTATION_ATOL + 1e-5))
+    if bad.any():
+        raise TargetError(f"targets file {path!r}: target {int(np.flatnonzero(bad)[0])} is not "
+                          "a pose: its rotation is not orthonormal with det +1")
+    last = np.any(np.abs(T[:, 3] - (0.0, 0.0, 0.0, 1.0)) > 1e-8, axis=1)
+    if last.any():
+        raise TargetError(f"targets file {path!r}: target {int(np.flatnonzero(last)[0])} is not "
+                          "a pose: its last row must be [0, 0, 0, 1]")
+
+
+def _read_npy(file: Path) -> np.ndarray:
+    try:
+        arr = np.load(file, allow_pickle=False)
+    except (ValueError, OSError, EOFError):
+        raise ParameterError(f"cannot read targets file {str(file)!r}: not a numpy .npy file "
+                             "of numbers") from None
+    if not isinstance(arr, np.ndarray) or arr.dtype.kind not in "iuf":
+        raise ParameterError(f"targets file {str(file)!r} must hold a real array, got "
+                             f"{getattr(arr, 'dtype', type(arr).__name__)}")
+    arr = arr.astype(np.float64)
+    if arr.size and not ((arr.ndim == 3 and arr.shape[1:] == (4, 4))
+                         or (arr.ndim == 2 and arr.shape[1] == 3)):
+        raise ShapeError(f"targets file {str(file)!r} must hold poses (n, 4, 4) or positions "
+                         f"(n, 3), got shape {arr.shape}")
+    return arr
+
+
+def _read_csv(file: Path, degrees: bool) -> np.ndarray:
+    try:
+        text = file.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise ParameterError(f"cannot read targets file {str(file)!r}: {exc}") from None
+    rows: list[list[float]] = []
+    for number, line in enumerate(text.splitlines(), start=1):
+        line = line.split("#", 1)[0].strip()
+        if not line:
+            continue
+        fields = [f for f in line.replace(",", " ").split() if f]
+        try:
+            values = [float(f) for f in fields]
+        except ValueError:
+            if not rows and all(f.replace("_", "").isalpha() for f in fields):
+                continue  # a header line
+            raise ParameterError(f"targets file {str(file)!r} line {number}: expected numbers "
+                                 f"(x y z [roll pitch yaw]), got {line!r}") from None
+        if len(values) not in (3, 6) or (rows and len(values) != len(rows[0])):
+            want = f"{len(rows[0])}" if rows else "3 (x y z) or 6 (x y z roll pitch yaw)"
+            raise ShapeError(f"targets file {str(file)!r} line {number}: expected {want} "
+                             f"numbers, got {len(values)}")
+        rows.append(values)
+    arr = np.array(rows, dtype=np.float64).reshape(len(rows), -1)
+    if arr.shape[1] == 3 or not len(arr):
+        return arr.reshape(-1, 3) if len(arr) else np.zeros((0, 3))
+    angles = np.radians(arr[:, 3:]) if degrees else arr[:, 3:]
+    poses = np.tile(np.eye(4), (len(arr), 1, 1))
+    poses[:, :3, 3] = arr[:, :3]
+    if np.all(np.isfinite(angles)):
+        poses[:, :3, :3] = [rotation_from_zyx(y, p, r) for r, p, y in angles]
+    else:
+        poses[:, 0, 0] = np.nan  # refused by read_targets as NaN
+    return poses
+
+
+def result_file(spec: str) -> Path:
+    """``--out``, checked before solving: ``.npz`` or ``.csv`` in an existing folder."""
+    path = Path(spec)
+    if path.suffix.lower() not in RESULT_FORMATS:
+        raise ParameterError(f"--out must end in {' or '.join(RESULT_FORMATS)}, got {spec!r}")
+    if not path.parent.is_dir():
+        raise ParameterError(f"--out folder {str(path.parent)!r} does not exist (create it "
+                             "first)")
+    return path
+
+
+def write_results(path: Path, arm: Robot, res) -> None:
+    """The batch's answers into ``path`` (``.npz`` arrays or ``.csv`` lines)."""
+    columns = {"status": res.status, "success": res.success,
+               "position_error": res.position_error,
+               "orientation_error": res.orientation_error, "n_eval": res.n_eval}
+    if res.min_distance is not None:
+        columns["min_distance"] = res.min_distance
+    if path.suffix.lower() == ".npz":
+        with path.open("wb") as f:
+            np.savez(f, q=res.q, **columns)
+        return
+    names = list(arm.joint_names) or [f"q{j + 1}" for j in range(arm.dof)]
+    with path.open("w", newline="", encoding="utf-8") as f:
+        out = csv.writer(f)
+        out.writerow(names + list(columns))
+        for i in range(len(res.q)):
+            out.writerow([repr(float(v)) for v in res.q[i]]
+                         + [_cell(columns[c][i]) for c in columns])
+
+
+def _cell(value) -> str:
+    if isinstance(value, np.floating | float):
+        return repr(float(value))
+    if isinstance(value, np.bool_ | bool):
+        return str(bool(value)).lower()
+    return str(value)
+
+
+class _Bar:
+    """Targets answered so far: tqdm on stderr (when installed), else nothing."""
+
+    def __init__(self, total: int, enabled: bool) -> None:
+        self._bar = None
+        if enabled:
+            try:
+                from tqdm import tqdm
+            except ImportError:  # optional, as for `moik experiment run`
+                return
+            self._bar = tqdm(total=total, unit="target", file=sys.stderr, desc="moik batch")
+
+    def __call__(self, k: int) -> None:
+        if self._bar is not None:
+            self._bar.update(min(k, int(self._bar.total or 0) - self._bar.n))
+
+    def close(self) -> None:
+        if self._bar is not None:
+            self._bar.close()
+
+
+def summary(res, n_workers: int, unit: str, path: Path) -> str:
+    """One line: how many solved, the other statuses, time and rate, the largest errors."""
+    n = len(res.status)
+    statuses, counts = np.unique(res.status, return_counts=True)
+    others = ", ".join(f"{c} {s}" for s, c in zip(statuses, counts, strict=True)
+                       if s != "solved")
+    solved = int(res.success.sum())
+    line = (f"{solved}/{n} solved{f' ({others})' if others else ''} in {res.time:.2f} s "
+            f"({solved / res.time:.0f} solutions/s, {n_workers} workers)")
+    if solved:
+        pos = res.position_error[res.success].max()
+        ori = res.orientation_error[res.success].max()
+        line += f"; largest errors of the solved: position {pos:.3g} {unit}, orientation " \
+                f"{ori:.3g} rad"
+    return f"{line}; written to {path}"
+
+
+def cmd_batch(args: argparse.Namespace) -> int:
+    """Solve every target of the file, write the results, print the summary; 0 when every
+    target is solved, 1 otherwise."""
+    search = given(args, "seed", "tol")
+    if "seed" in search:
+        integer("--seed", search["seed"], minimum=0)
+    if "tol" in search:
+        search["tol"] = tolerance(search["tol"])
+    out = result_file(args.out)
+    arm = robot(args)
+    targets = read_targets(args.targets, degrees=args.deg)
+    check = collision.checker(args, arm)
+    bar = _Bar(len(targets), not args.no_progress and len(targets) >= PROGRESS_MIN)
+    try:
+        with library_call({**SOLVE_OPTIONS, "workers": "--workers"}):
+            res = solve_ik_batch(arm, targets, workers=args.workers, progress=bar, **search,
+                                 **collision.solver_options(check))
+    finally:
+        bar.close()
+    write_results(out, arm, res)
+    print(summary(res, worker_count(args.workers), arm.unit, out))
+    return 0 if bool(res.success.all()) else 1

@@ -1,0 +1,113 @@
+"""``moik batch ROBOT TARGETS --out RESULT``: .npy and CSV in, .npz and CSV out, bad files."""
+
+import csv
+import json
+import re
+
+import numpy as np
+import pytest
+
+from moik import solve_ik_batch
+from moik.cli import batch, main
+from moik.kinematics.orientation import zyx_euler
+from moik.robots import get_robot
+
+SCENE = {"obstacles": [{"name": "table", "type": "halfspace", "normal": [0, 0, 1],
+                        "offset": 0.0}],
+         "allowed": [["table", "panda_link0"], ["table", "panda_link1"]]}
+
+
+@pytest.fixture(scope="module")
+def poses():
+    robot = get_robot("panda")
+    return robot.fk(robot.random_q(40, rng=np.random.default_rng(11)))
+
+
+def test_npy_round_trip_with_the_bar(tmp_path, poses, capsys, monkeypatch):
+    monkeypatch.setattr(batch, "PROGRESS_MIN", 10)
+    np.save(tmp_path / "t.npy", poses)
+    code = main(["batch", "panda", str(tmp_path / "t.npy"), "--out", str(tmp_path / "r.npz"),
+                 "--workers", "2", "--seed", "3"])
+    out, err = capsys.readouterr()
+    assert code == 0 and "40/40 solved" in out and "solutions/s" in out
+    assert "moik batch" in err and "40/40" in err  # the tqdm bar, at its end
+    with np.load(tmp_path / "r.npz") as res:
+        ref = solve_ik_batch("panda", poses, seed=3, workers=1)
+        np.testing.assert_array_equal(res["q"], ref.q)
+        assert list(res["status"]) == list(ref.status) and "min_distance" not in res
+        np.testing.assert_array_equal(res["position_error"], ref.position_error)
+
+
+def test_csv_round_trip_positions_and_poses(tmp_path, poses, capsys):
+    angles = np.array([zyx_euler(T[:3, :3]) for T in poses])  # (yaw, pitch, roll)
+    with (tmp_path / "t.csv").open("w") as f:
+        f.write("x,y,z,roll,pitch,yaw\n")
+        for T, (yaw, pitch, roll) in zip(poses, np.degrees(angles), strict=True):
+            f.write(" ".join(repr(float(v)) for v in (*T[:3, 3], roll, pitch, yaw)) + "\n")
+    code = main(["batch", "panda", str(tmp_path / "t.csv"), "--deg", "--out",
+                 str(tmp_path / "r.csv"), "--scene", str(_scene(tmp_path))])
+    assert code in (0, 1) and "/40 solved" in capsys.readouterr().out
+    rows = list(csv.DictReader((tmp_path / "r.csv").open()))
+    robot = get_robot("panda")
+    assert len(rows) == 40 and "min_distance" in rows[0]
+    for row, T in zip(rows, poses, strict=True):
+        q = np.array([float(row[name]) for name in robot.joint_names])
+        if row["status"] == "solved":
+            assert float(row["min_distance"]) >= 0.0
+            np.testing.assert_allclose(robot.fk(q), T, atol=1e-8)
+    np.savetxt(tmp_path / "p.csv", poses[:5, :3, 3], delimiter=",")
+    assert main(["batch", "panda", str(tmp_path / "p.csv"), "--out",
+                 str(tmp_path / "p.npz")]) == 0
+
+
+def _scene(tmp_path):
+    path = tmp_path / "scene.json"
+    path.write_text(json.dumps(SCENE))
+    return path
+
+
+def test_unsolved_targets_exit_1(tmp_path, poses, capsys):
+    far = poses[:3].copy()
+    far[0, :3, 3] += 5.0
+    np.save(tmp_path / "t.npy", far)
+    assert main(["batch", "panda", str(tmp_path / "t.npy"), "--out",
+                 str(tmp_path / "r.npz")]) == 1
+    assert "2/3 solved (1 unreachable)" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize(("content", "match"), [
+    (np.zeros((4, 3, 4)), r"poses \(n, 4, 4\) or positions \(n, 3\), got shape \(4, 3, 4\)"),
+    (np.zeros((0, 3)), "holds no target"),
+    (np.array([[0.1, np.nan, 0.3]]), "target 0 holds NaN"),
+    ("not-a-rotation", "target 1 is not a pose"),
+    (b"garbage", "not a numpy .npy file"),
+    ("a,b,c\n1,2\n", "line 2: expected 3"),
+    ("1,2,x\n", "line 1: expected numbers"),
+    (None, "does not exist"),
+])
+def test_bad_files_exit_2_with_one_line(tmp_path, poses, capsys, content, match):
+    path = tmp_path / ("t.csv" if isinstance(content, str) and "," in content else "t.npy")
+    if isinstance(content, np.ndarray):
+        np.save(path, content)
+    elif content == "not-a-rotation":
+        bad = poses[:3].copy()
+        bad[1, :3, :3] *= 1.5
+        np.save(path, bad)
+    elif isinstance(content, bytes):
+        path.write_bytes(content)
+    elif isinstance(content, str):
+        path.write_text(content)
+    assert main(["batch", "panda", str(path), "--out", str(tmp_path / "r.npz")]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("moik: error:") and err.count("\n") == 1
+    assert re.search(match, err), err
+
+
+def test_bad_out_and_options(tmp_path, poses, capsys):
+    np.save(tmp_path / "t.npy", poses[:2])
+    for argv, match in ((["--out", str(tmp_path / "r.txt")], "--out must end in"),
+                        (["--out", str(tmp_path / "no" / "r.npz")], "does not exist"),
+                        (["--out", str(tmp_path / "r.npz"), "--clearance", "0.1"],
+                         "--clearance needs")):
+        assert main(["batch", "panda", str(tmp_path / "t.npy"), *argv]) == 2
+        assert match in capsys.readouterr().err

@@ -1,0 +1,86 @@
+"""The parallel machinery: chunks, threads over chunks, a process pool, the client check."""
+
+import os
+import time
+
+import numpy as np
+import pytest
+
+from moik.exceptions import ParameterError
+from moik.solver import parallel
+
+
+def test_chunks_cover_the_range_once_in_order():
+    for n in (1, 31, 32, 33, 100, 1000, 12345):
+        for workers in (1, 2, 3, 16):
+            bounds = parallel.chunk_bounds(n, workers)
+            assert bounds[0][0] == 0 and bounds[-1][1] == n
+            assert all(a[1] == b[0] for a, b in zip(bounds, bounds[1:], strict=False))
+            assert all(hi > lo for lo, hi in bounds)
+            if workers == 1 or n <= parallel.MIN_CHUNK:
+                assert bounds == [(0, n)]
+            else:
+                assert all(hi - lo >= parallel.MIN_CHUNK for lo, hi in bounds[:-1])
+
+
+def test_threads_write_their_chunks():
+    out = np.zeros(1000)
+
+    def fill(lo, hi):
+        out[lo:hi] = np.arange(lo, hi) * 2.0
+
+    parallel.map_chunks(fill, 1000, 3)
+    np.testing.assert_array_equal(out, np.arange(1000) * 2.0)
+
+
+def test_a_chunks_error_is_raised():
+    def fail(lo, hi):
+        if lo > 0:
+            raise ValueError(f"chunk {lo}")
+
+    with pytest.raises(ValueError, match="chunk"):
+        parallel.map_chunks(fail, 500, 2)
+
+
+def _square_plus(shared, item):
+    return item * item + shared, os.getpid()
+
+
+def test_process_pool_keeps_the_order_and_runs_elsewhere(monkeypatch):
+    monkeypatch.setattr(parallel, "POOL_AFTER_S", 0.0)  # no item runs here first
+    items = [5, 3, 9, 1, 7]
+    out = parallel.map_processes(_square_plus, 10, items, 2)
+    assert [v for v, _ in out] == [i * i + 10 for i in items]
+    assert all(pid != os.getpid() for _, pid in out)
+
+
+def _slow_first(shared, item):
+    if item == 0:
+        time.sleep(shared)
+    return item, os.getpid()
+
+
+def test_a_tail_that_ends_soon_needs_no_pool_a_long_one_gets_one(monkeypatch):
+    out = parallel.map_processes(_square_plus, 0, list(range(6)), 2)  # quick: all here
+    assert all(pid == os.getpid() for _, pid in out)
+    monkeypatch.setattr(parallel, "POOL_AFTER_S", 0.05)
+    out = parallel.map_processes(_slow_first, 0.1, list(range(6)), 2)  # item 0 runs long
+    assert [v for v, _ in out] == list(range(6))
+    assert out[0][1] == os.getpid() and all(pid != os.getpid() for _, pid in out[1:])
+
+
+def test_small_or_single_worker_pools_stay_here():
+    for items, workers in (([4], 4), ([1, 2, 3], 1)):
+        out = parallel.map_processes(_square_plus, 0, items, workers)
+        assert [v for v, _ in out] == [i * i for i in items]
+        assert all(pid == os.getpid() for _, pid in out)
+
+
+def test_workers_and_client_are_validated():
+    assert parallel.worker_count(None) == parallel.available_cores() >= 1
+    assert parallel.worker_count(3) == 3
+    for bad in (0, -1, 2.0, True, "2"):
+        with pytest.raises(ParameterError, match="workers"):
+            parallel.worker_count(bad)
+    with pytest.raises(ParameterError, match="dask.distributed.Client"):
+        parallel.check_client(object())

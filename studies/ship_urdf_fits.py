@@ -25,9 +25,10 @@ def main() -> None:
         from moik.collision.urdf import robot_model
         from moik.robots import get_robot
 
+        out = mesh_fit.SHIPPED
+        mesh_fit.SHIPPED = Path(tmp, "none")  # nothing read from the shipped folder: all anew
         for name in ("panda", "ur5", "iiwa14"):
             robot_model(get_robot(name))
-        out = mesh_fit.SHIPPED
         out.mkdir(parents=True, exist_ok=True)
         for old in out.glob("*.json"):
             old.unlink()

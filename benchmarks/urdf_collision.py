@@ -63,7 +63,8 @@ def main() -> None:
             models = {"shipped capsules": collision_model(robot),
                       "URDF meshes, fitted capsules": robot_model(robot)}
             scenes = {k: clutter(m, rng=np.random.default_rng(5)) for k, m in models.items()}
-            checkers = {k: CollisionChecker(model=m, scene=scenes[k]) for k, m in models.items()}
+            checkers = {k: CollisionChecker(model=m, scene=scenes[k], self_collision=True)
+                        for k, m in models.items()}
             Q = robot.random_q(20 * args.targets, rng=np.random.default_rng(3))
             free = np.all([c.min_distance(Q) >= 0.0 for c in checkers.values()], axis=0)
             if not free.any():

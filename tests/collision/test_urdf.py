@@ -111,7 +111,7 @@ def test_the_model_of_the_meshes_is_sound_against_coal():
     rng = np.random.default_rng(3)
     Q = robot.random_q(300, rng=rng)
     Q[:, 3] = np.sign(Q[:, 3]) * rng.uniform(1.6, 2.09, len(Q))
-    free = CollisionChecker(model=model).min_distance(Q) >= 0.0
+    free = CollisionChecker(model=model, self_collision=True).min_distance(Q) >= 0.0
     touching = 0
     for q, ok in zip(Q, free, strict=True):
         F = robot.frames(q)

@@ -17,6 +17,14 @@ from moik.exceptions import UnknownNameError
 from moik.robots.catalog import as_robot
 
 
+MESH_ARMS = ("iiwa14", "panda", "ur5")
+"""Catalog arms whose collision geometry is their URDF's own meshes (shipped in
+``moik/robots/data/packages``): a solve's default geometry for them is
+:func:`moik.collision.urdf.robot_model` (compounds: sound and tight against the meshes),
+not the capsule model of :func:`collision_model` (measured unsound against the meshes for
+panda and ur5: ``docs/results/mesh-collision.md``)."""
+
+
 def shipped_models() -> list[str]:
     """Names of the robots with a shipped capsule model."""
     folder = resources.files("moik.collision") / "data"

@@ -98,12 +98,16 @@ def same_arm(a: Robot, b: Robot) -> bool:
             and bool(np.allclose(a.base, b.base, atol=1e-12)))
 
 
-def _shipped(robot: Robot) -> CollisionModel:
-    """The default geometry of ``robot``: the shipped model of a catalog arm (parsed once
-    per name; another arm of that name is refused by
-    :func:`~moik.collision.collision_model`), else its URDF's collision geometry (built
-    once per robot)."""
-    if robot.description is not None and robot.name not in collision_catalog.shipped_models():
+def default_model(robot: Robot) -> CollisionModel:
+    """The geometry a solve checks when ``collision=`` is not given: a URDF arm's own
+    collision geometry (its meshes as compounds, :func:`moik.collision.urdf.robot_model`;
+    built once per robot), the catalog arms of
+    :data:`~moik.collision.catalog.MESH_ARMS` included; else the shipped capsule model of
+    a catalog arm (parsed once per name; another arm of that name is refused by
+    :func:`~moik.collision.collision_model`)."""
+    if robot.description is not None and (
+            robot.name not in collision_catalog.shipped_models()
+            or robot.name in collision_catalog.MESH_ARMS):
         model = _URDF_MODELS.get(robot)
         if model is None:
             model = collision_urdf.robot_model(robot)
@@ -182,7 +186,7 @@ def collision_guard(robot: Robot, *, scene=None, self_collision=False, clearance
         return None
     if collision is not None:
         _check_robot(collision.robot, robot)
-    model = _shipped(robot) if collision is None else collision
+    model = default_model(robot) if collision is None else collision
     checker = _checker(model, scene, self_collision)
     if checker.n_pairs == 0:
         raise GeometryError(f"nothing to check: the collision geometry of {robot.name!r} "

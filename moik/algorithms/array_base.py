@@ -60,6 +60,7 @@ from moik.algorithms.array_state import (
     check_termination,
     find_limit,
     finite_bounds,
+    given_rows,
     has_time_criterion,
     initial_infill,
     planned_iterations,
@@ -86,8 +87,10 @@ class ArrayStateAlgorithm(Algorithm):
 
     Args:
         pop_size: Population size N.
-        X0: Optional initial points (k rows within the bounds, k at most the initial
-            population); the other rows are drawn uniformly.
+        X0: Optional initial points (k rows within the bounds); with fewer rows than the
+            initial population the other rows are drawn uniformly, with more all are
+            evaluated and the algorithm's ranking keeps the population
+            (:mod:`moik.algorithms.initial_survival`).
         sampling: pymoo's form of the same (a ``Sampling``, an array or a ``Population``,
             :func:`~moik.algorithms.array_state.initial_infill`); not with ``X0``.
         max_iter: Schedule length T (update iterations after initialization, the papers'
@@ -167,7 +170,8 @@ class ArrayStateAlgorithm(Algorithm):
         self.xl, self.xu = finite_bounds(problem, type(self).__name__)
         self._constrained = bool(problem.has_constraints())
         self._plans: dict = {}
-        self._plan_schedule(t=1, n_eval=self._n_initial(), elapsed=0.0)
+        n_initial = max(self._n_initial(), given_rows(self.X0, self.sampling, self._n_initial()))
+        self._plan_schedule(t=1, n_eval=n_initial, elapsed=0.0)
 
     def _plan_schedule(self, *, t: int, n_eval: int, elapsed: float) -> None:
         """Refresh the evaluation budget and T from the current termination (module doc).
@@ -203,9 +207,12 @@ class ArrayStateAlgorithm(Algorithm):
         X = infills.get("X")
         F, CV, GH = self._values_of(infills)
         self.n_received = len(F)
-        self.X, self.F, self.CV = X, F, CV
         self._opt_stale = self.incumbent.receive(X, F, CV, GH) | \
             self.incumbent.end_iteration(rng=self.random_state)
+        if len(F) > self._n_initial():  # a larger sample: the algorithm's ranking keeps N
+            keep = self._initial_survivors(F, CV)
+            X, F, CV = X[keep], F[keep], (None if CV is None else CV[keep])
+        self.X, self.F, self.CV = X, F, CV
         self._check_start()
         self._initialize_state()
 
@@ -379,6 +386,12 @@ class ArrayStateAlgorithm(Algorithm):
     def _n_initial(self) -> int:
         """Size of the initial population."""
         return self.pop_size
+
+    def _initial_survivors(self, F: np.ndarray, CV: np.ndarray | None) -> np.ndarray:
+        """Indices of the rows of an initial sample larger than :meth:`_n_initial` that
+        form the initial population (:mod:`moik.algorithms.initial_survival`; the SO and MO
+        bases rank them, an algorithm with its own survival overrides this)."""
+        raise NotImplementedError("abstract hook: the SO and MO bases implement it")
 
     def _evals_per_iteration(self) -> float:
         """Expected evaluations per iteration (used to plan T from an n_eval budget)."""

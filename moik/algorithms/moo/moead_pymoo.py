@@ -21,6 +21,11 @@ feasible minimum), and an ideal point there draws all subproblems to the same
 few feasible points (measured on OSY, 25,000 evaluations, 3 seeds: 26 feasible
 members reported in all, HV 61 % of NSGA-II's; with the feasible ideal point
 100 per run, 72 %). Unconstrained runs are pymoo's, bit for bit.
+
+A ``sampling=`` of more points than directions (pymoo's biased initialization): all are
+evaluated and NSGA-II's rank and crowding keeps one per direction
+(:func:`~moik.algorithms.initial_survival.surviving_population`; pymoo's own MOEA/D keeps
+them all and then fails on its neighbourhood indices).
 pymoo's NSGA2 and SMS-EMOA are registered unchanged, MOPSO-CD with constraint
 handling (:mod:`moik.algorithms.moo.mopso_cd`).
 """
@@ -35,6 +40,7 @@ from scipy.spatial.distance import cdist
 
 from moik._validate import integer, interval
 from moik.algorithms.array_state import refuse_unknown_keywords
+from moik.algorithms.initial_survival import surviving_population
 from moik.algorithms.moo.reference_directions import default_ref_dirs
 from moik.exceptions import ParameterError
 
@@ -86,6 +92,8 @@ class PymooMOEAD(moead.MOEAD):
             self.decomposition = moead.default_decomp(problem)
 
     def _initialize_advance(self, infills=None, **kwargs) -> None:
+        if infills is not None and len(infills) > len(self.ref_dirs):  # a larger sample=
+            infills = self.pop = surviving_population(infills, len(self.ref_dirs))
         super()._initialize_advance(infills, **kwargs)
         if self.problem.has_constraints():
             F, CV = self.pop.get("F"), self.pop.get("CV")[:, 0]

@@ -191,6 +191,11 @@ class MOMPA(MOArrayAlgorithm):
     def _evals_per_iteration(self) -> float:
         return 3.0 * len(self.Z)
 
+    def _initial_survivors(self, F: np.ndarray, CV: np.ndarray | None) -> np.ndarray:
+        """Every row of a larger initial sample: the reference-point selection of
+        :meth:`_initialize_state` keeps the population."""
+        return np.arange(len(F))
+
     def _initialize_state(self) -> None:
         self.z_min = self.F.min(axis=0)
         self._select(self.X, self.F, self.CV)

@@ -1,0 +1,78 @@
+"""pymoo 0.6.2's biased-initialization, constraint-handling and termination workflows, run
+on every registered algorithm.
+
+Each check is a pymoo documentation example or test with only the algorithm changed
+(``get_algorithm(name)``), at a small size (population 10 to 20, a few generations); the
+source is named in each docstring (``docs/source/...``, ``examples/...`` and ``tests/...``
+of github.com/anyoptimization/pymoo at tag 0.6.2). Single-objective algorithms run the
+single-objective problems of those examples, multi-objective ones the multi-objective ones.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from pymoo.core.evaluator import Evaluator
+from pymoo.core.population import Population
+from pymoo.optimize import minimize
+from pymoo.problems import get_problem
+
+from moik.algorithms import available, get_algorithm, is_multi_objective
+from moik.algorithms.archive import nondominated_mask
+
+NAMES = available()
+POP_SIZE = 10
+
+
+# ---- docs/source/customization/initialization.ipynb (biased initialization) -------------------
+def _sample(name: str):
+    """initialization.ipynb's problem (ZDT2; the 10-D sphere for single-objective algorithms)
+    and its sample: three times the population, uniform in the bounds."""
+    problem = get_problem("zdt2", n_var=10) if is_multi_objective(name) else get_problem(
+        "sphere", n_var=10)
+    rng = np.random.default_rng(0)
+    return problem, rng.uniform(problem.xl, problem.xu, (3 * POP_SIZE, problem.n_var))
+
+
+@pytest.mark.parametrize("form", ["array", "population", "evaluated-population"])
+@pytest.mark.parametrize("name", NAMES)
+def test_biased_initialization_with_a_larger_sample(name, form):
+    """initialization.ipynb: ``sampling=`` 300 points (here 3 x pop_size) as an array, a
+    Population or an evaluated Population: every point evaluated once (the evaluated ones not
+    again), every point offered to the result (the best of all is in the first generation's
+    result), and the run goes on with the algorithm's population."""
+    problem, X = _sample(name)
+    sampling = X if form == "array" else Population.new("X", X)
+    if form == "evaluated-population":
+        Evaluator().eval(problem, sampling)
+    algorithm = get_algorithm(name, pop_size=POP_SIZE, sampling=sampling)
+    first = minimize(problem, algorithm, ("n_gen", 1), seed=1)
+    expected = 0 if form == "evaluated-population" else len(X)
+    if name == "mopso-cd":  # pymoo's MOPSO_CD evaluates its first swarm in _setup as well
+        expected *= 2
+    assert first.algorithm.evaluator.n_eval == expected
+    F = problem.evaluate(X, return_values_of=["F"])
+    if is_multi_objective(name):
+        front = F[nondominated_mask(F)]
+        assert len(front) <= POP_SIZE  # (the archives keep pop_size members)
+        for f in front:  # every non-dominated point of the sample is reported
+            assert np.any(np.all(np.isclose(np.atleast_2d(first.F), f), axis=1)), name
+    else:
+        assert float(np.atleast_1d(first.F)[0]) == pytest.approx(F.min(), rel=1e-12)
+    res = minimize(problem, get_algorithm(name, pop_size=POP_SIZE, sampling=sampling),
+                   ("n_gen", 3), seed=1)
+    assert res.F is not None and np.isfinite(res.F).all()
+    if name != "pymoo-de":  # pymoo's own DE keeps every point of its sample
+        assert len(res.algorithm.pop) < len(X)
+
+
+@pytest.mark.parametrize("name", [n for n in NAMES if not is_multi_objective(n)
+                                  and n not in ("ga", "pymoo-de")])
+def test_a_larger_sample_keeps_the_best_rows(name):
+    """A single-objective moik algorithm starts from the pop_size best points of the sample."""
+    problem, X = _sample(name)
+    res = minimize(problem, get_algorithm(name, pop_size=POP_SIZE, sampling=X), ("n_gen", 1),
+                   seed=1)
+    F = problem.evaluate(X, return_values_of=["F"])[:, 0]
+    kept = np.sort(problem.evaluate(res.algorithm.X, return_values_of=["F"])[:, 0])
+    np.testing.assert_array_equal(kept, np.sort(F)[:len(kept)])

@@ -73,6 +73,7 @@ from moik.algorithms.evaluation import (
     problem_values,
     values_asked,
 )
+from moik.algorithms.meta import setup_through_wrapper
 from moik.algorithms.nonfinite import sanitise
 from moik.exceptions import ParameterError
 
@@ -139,7 +140,9 @@ class ArrayStateAlgorithm(Algorithm):
 
     # ---- pymoo hooks ----------------------------------------------------------------------
     def setup(self, problem, **kwargs):
-        """pymoo's ``setup`` (``minimize`` calls it), after checking the seed it will use.
+        """pymoo's ``setup`` (``minimize`` calls it), after checking the seed it will use;
+        inside a pymoo wrapper that skips ``_setup`` (``AdaptiveConstraintHandling``) the
+        algorithm's ``_setup`` still runs (:mod:`moik.algorithms.meta`).
 
         Raises:
             ParameterError: If the seed (``seed=`` of ``minimize`` or of the constructor)
@@ -149,7 +152,7 @@ class ArrayStateAlgorithm(Algorithm):
         self._nonfinite_warned = False
         if kwargs.get("termination") is None and self.termination is None:
             kwargs["termination"] = self.default_termination()
-        super().setup(problem, **kwargs)
+        setup_through_wrapper(self, super().setup, problem, **kwargs)
         check_termination(self.termination)
         return self
 
@@ -166,6 +169,7 @@ class ArrayStateAlgorithm(Algorithm):
         return MaximumGenerationTermination(T + 1)
 
     def _setup(self, problem, **kwargs) -> None:
+        self._problem_read = True
         self._check_objectives(problem)
         self.xl, self.xu = finite_bounds(problem, type(self).__name__)
         self._constrained = bool(problem.has_constraints())

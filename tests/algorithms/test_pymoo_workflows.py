@@ -12,12 +12,17 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from pymoo.constraints.as_obj import ConstraintsAsObjective
+from pymoo.constraints.as_penalty import ConstraintsAsPenalty
+from pymoo.constraints.eps import AdaptiveEpsilonConstraintHandling
+from pymoo.constraints.from_bounds import ConstraintsFromBounds
 from pymoo.core.evaluator import Evaluator
 from pymoo.core.population import Population
 from pymoo.optimize import minimize
 from pymoo.problems import get_problem
+from pymoo.problems.single import G1, G4
 
-from moik.algorithms import available, get_algorithm, is_multi_objective
+from moik.algorithms import available, entry, get_algorithm, is_multi_objective
 from moik.algorithms.archive import nondominated_mask
 
 NAMES = available()
@@ -76,3 +81,70 @@ def test_a_larger_sample_keeps_the_best_rows(name):
     F = problem.evaluate(X, return_values_of=["F"])[:, 0]
     kept = np.sort(problem.evaluate(res.algorithm.X, return_values_of=["F"])[:, 0])
     np.testing.assert_array_equal(kept, np.sort(F)[:len(kept)])
+
+
+# ---- examples/constraints/{eps,as_penalty,as_obj,from_bounds}.py ------------------------------
+KNOWN_WRAPPER_FAILURES = {
+    "moead-pymoo": "pymoo 0.6.2's own MOEA/D evaluates one Individual at a time; pymoo's "
+    "AttachConfigEvaluator calls Population.apply on it (pymoo's MOEAD fails inside the "
+    "wrapper too, earlier: its _setup is skipped); moik's moead passes",
+}
+
+
+def _wrapper_cases():
+    return [pytest.param(n, marks=pytest.mark.xfail(strict=True, reason=KNOWN_WRAPPER_FAILURES[n]))
+            if n in KNOWN_WRAPPER_FAILURES else n for n in NAMES]
+
+
+def _feasible_or_none(problem, res) -> None:
+    if res.X is None:
+        return
+    G = problem.evaluate(np.atleast_2d(res.X), return_values_of=["G"])
+    assert np.all(G <= 0.0)
+
+
+@pytest.mark.parametrize("name", _wrapper_cases())
+def test_adaptive_epsilon_constraint_handling(name):
+    """examples/constraints/eps.py: ``AdaptiveEpsilonConstraintHandling(algorithm,
+    perc_eps_until=0.5)`` on G1 (BNH for multi-objective algorithms). moik's algorithms
+    keep their feasibility-first comparisons inside the wrapper (docs/algorithms.md,
+    Constraints): the wrapped run is the plain run, bit for bit, and reports only feasible
+    points."""
+    problem = get_problem("bnh") if is_multi_objective(name) else G1()
+    wrapped = AdaptiveEpsilonConstraintHandling(get_algorithm(name, pop_size=20),
+                                                perc_eps_until=0.5)
+    res = minimize(problem, wrapped, ("n_gen", 15), seed=1)
+    assert res.algorithm.n_gen == 16
+    _feasible_or_none(problem, res)
+    if entry(name).cls.__module__.startswith("moik."):
+        plain = minimize(problem, get_algorithm(name, pop_size=20), ("n_gen", 15), seed=1)
+        for a, b in ((res.X, plain.X), (res.F, plain.F)):
+            assert (a is None and b is None) or np.array_equal(a, b)
+
+
+@pytest.mark.parametrize("name", [n for n in NAMES if not is_multi_objective(n)])
+def test_constraints_as_penalty(name):
+    """examples/constraints/as_penalty.py: G4 wrapped in ``ConstraintsAsPenalty(penalty=100)``."""
+    problem = ConstraintsAsPenalty(G4(), penalty=100.0)
+    res = minimize(problem, get_algorithm(name, pop_size=20), ("n_gen", 10), seed=1)
+    assert res.F is not None and np.isfinite(res.F).all()
+
+
+@pytest.mark.parametrize("name", [n for n in NAMES if is_multi_objective(n)])
+def test_constraints_as_objective(name):
+    """examples/constraints/as_obj.py: G1's violation as a second objective
+    (``ConstraintsAsObjective``), solved by a multi-objective algorithm."""
+    problem = ConstraintsAsObjective(G1())
+    res = minimize(problem, get_algorithm(name, pop_size=20), ("n_gen", 10), seed=1)
+    assert res.F is not None and np.atleast_2d(res.F).shape[1] == 2
+    assert np.isfinite(res.F).all()
+
+
+@pytest.mark.parametrize("name", [n for n in NAMES if not is_multi_objective(n)])
+def test_constraints_from_bounds(name):
+    """examples/constraints/from_bounds.py: the sphere's bounds also given as constraints
+    (``ConstraintsFromBounds(remove_bonds=False)``); the result is feasible."""
+    problem = ConstraintsFromBounds(get_problem("sphere"), remove_bonds=False)
+    res = minimize(problem, get_algorithm(name, pop_size=20), ("n_gen", 10), seed=1)
+    assert res.X is not None
+    _feasible_or_none(problem, res)

@@ -41,6 +41,7 @@ from scipy.spatial.distance import cdist
 from moik._validate import integer, interval
 from moik.algorithms.array_state import refuse_unknown_keywords
 from moik.algorithms.initial_survival import surviving_population
+from moik.algorithms.meta import setup_through_wrapper
 from moik.algorithms.moo.reference_directions import default_ref_dirs
 from moik.exceptions import ParameterError
 
@@ -75,7 +76,13 @@ class PymooMOEAD(moead.MOEAD):
         dirs = default_ref_dirs(2, self._n_dirs) if ref_dirs is None else ref_dirs
         super().__init__(ref_dirs=dirs, **kwargs)
 
+    def setup(self, problem, **kwargs):
+        """pymoo's, also inside a wrapper that skips ``_setup`` (:mod:`moik.algorithms.meta`)."""
+        setup_through_wrapper(self, super().setup, problem, **kwargs)
+        return self
+
     def _setup(self, problem, **kwargs) -> None:
+        self._problem_read = True
         if problem.n_obj < 2:  # pymoo's fails with numpy's "larger sample than population"
             raise ParameterError(f"MOEA/D is multi-objective; the problem has "
                                  f"n_obj={problem.n_obj}")

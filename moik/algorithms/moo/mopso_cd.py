@@ -61,6 +61,7 @@ from moik._validate import integer, number, positive
 from moik.algorithms.archive import constrained_nondominated_mask
 from moik.algorithms.array_state import GivenPoints, refuse_unknown_keywords
 from moik.algorithms.initial_survival import rank_and_crowding_rows
+from moik.algorithms.meta import setup_through_wrapper
 from moik.algorithms.moo.dominance import constrained_dominates
 
 
@@ -127,6 +128,15 @@ class MOPSOCD(MOPSO_CD):
         super().__init__(**kwargs)
         if kwargs.get("termination") is not None:
             self.termination = kwargs["termination"]  # pymoo's __init__ replaced it
+
+    def setup(self, problem, **kwargs):
+        """pymoo's, also inside a wrapper that skips ``_setup`` (:mod:`moik.algorithms.meta`)."""
+        setup_through_wrapper(self, super().setup, problem, **kwargs)
+        return self
+
+    def _setup(self, problem, **kwargs) -> None:
+        self._problem_read = True
+        super()._setup(problem, **kwargs)
 
     def _initialize_advance(self, infills=None, **kwargs):
         """pymoo's, after NSGA-II's survival cut a larger ``sampling=`` to ``pop_size``

@@ -38,5 +38,5 @@ def setup_through_wrapper(algorithm: Algorithm, setup: Callable, problem, **kwar
         return
     for klass in type(algorithm).__mro__:
         if not issubclass(klass, Meta) and "_setup" in vars(klass):
-            klass._setup(algorithm, problem, **kwargs)
+            vars(klass)["_setup"](algorithm, problem, **kwargs)
             return

@@ -29,9 +29,13 @@ Evaluation: pymoo's ``Evaluator`` whenever anything is attached to it, else the 
 fast path (:mod:`moik.algorithms.evaluation`).
 
 Default termination: without one, the run is the algorithm's own schedule,
-``("n_gen", T + 1)`` with T = ``max_iter`` or
-:data:`~moik.algorithms.array_state.DEFAULT_SCHEDULE_LENGTH`
-(:meth:`ArrayStateAlgorithm.default_termination`), not pymoo's stagnation-based default.
+``("n_gen", T + 1)`` with T = ``max_iter`` when given, else pymoo's count of
+:data:`~moik.algorithms.array_state.DEFAULT_SCHEDULE_LENGTH` generations, the initial one
+included (:meth:`ArrayStateAlgorithm.default_termination`), not pymoo's stagnation-based
+default. A termination with a tolerance criterion (pymoo's ``ftol``/``xtol``/``cv``, as in
+``DefaultSingleObjectiveTermination``) is run as given, with a
+:class:`~moik.exceptions.ToleranceTerminationWarning`: it stops a method whose best so far
+stays flat while it explores.
 An ``n_gen`` or ``n_eval`` limit below 1 is refused with a ``ParameterError``.
 
 ``n_eval`` budgets are exact: rows of a batch beyond the budget are not evaluated and get
@@ -44,6 +48,7 @@ from __future__ import annotations
 
 import math
 import time
+import warnings
 from typing import Any, cast
 
 import numpy as np
@@ -65,6 +70,7 @@ from moik.algorithms.array_state import (
     initial_infill,
     planned_iterations,
     refuse_unknown_keywords,
+    tolerance_criteria,
 )
 from moik.algorithms.evaluation import (
     constraint_values,
@@ -75,7 +81,7 @@ from moik.algorithms.evaluation import (
 )
 from moik.algorithms.meta import setup_through_wrapper
 from moik.algorithms.nonfinite import sanitise
-from moik.exceptions import ParameterError
+from moik.exceptions import ParameterError, ToleranceTerminationWarning
 
 __all__ = ["ArrayStateAlgorithm"]
 
@@ -154,19 +160,40 @@ class ArrayStateAlgorithm(Algorithm):
             kwargs["termination"] = self.default_termination()
         setup_through_wrapper(self, super().setup, problem, **kwargs)
         check_termination(self.termination)
+        self._warn_of_tolerance()
         return self
 
+    def _warn_of_tolerance(self) -> None:
+        """Warn (:class:`~moik.exceptions.ToleranceTerminationWarning`) when the termination
+        holds a tolerance criterion (``ftol``, ``xtol``, ``cv``)."""
+        found = tolerance_criteria(self.termination)
+        if not found:
+            return
+        name = type(self).__name__
+        warnings.warn(
+            f"{name} runs under a tolerance termination ({', '.join(sorted(set(found)))}): "
+            f"it may stop {name} early, in its exploration phase, where the best so far stays "
+            f"flat for tens of generations (the schedule t/T of a schedule-driven method "
+            f"is then cut short, and its answer is an early one); give a budget instead, "
+            f"('n_gen', G), ('n_eval', E) or ('time', s), or no termination (the algorithm's "
+            f"own schedule)", ToleranceTerminationWarning, stacklevel=3)
+
     def default_termination(self) -> MaximumGenerationTermination:
-        """The termination used when none is given: the algorithm's own schedule, ``max_iter``
-        update iterations after the initial population (:data:`DEFAULT_SCHEDULE_LENGTH`
-        when ``max_iter`` is None), i.e. ``("n_gen", T + 1)``.
+        """The termination used when none is given: the algorithm's own schedule.
+
+        With ``max_iter`` given, its T update iterations after the initial population,
+        ``("n_gen", T + 1)``; without, pymoo's generation count: ``("n_gen",``
+        :data:`DEFAULT_SCHEDULE_LENGTH` ``)``, the limit of pymoo's default termination
+        (the initial population is generation 1, so T = 999 is planned from it and the run
+        ends at ``n_gen`` 1001, as pymoo's own algorithms do).
 
         pymoo's default termination (1000 generations or 100,000 evaluations, or a
         stagnation window of 30-50 generations) would stop a schedule-driven method in its
         exploration phase, long before t/T reaches 1 (ChOA: 0.499 after ~32 generations
         where its schedule reaches 0.014)."""
-        T = DEFAULT_SCHEDULE_LENGTH if self._fixed_T is None else self._fixed_T
-        return MaximumGenerationTermination(T + 1)
+        if self._fixed_T is None:
+            return MaximumGenerationTermination(DEFAULT_SCHEDULE_LENGTH)
+        return MaximumGenerationTermination(self._fixed_T + 1)
 
     def _setup(self, problem, **kwargs) -> None:
         self._problem_read = True

@@ -19,6 +19,7 @@ from pymoo.core.population import Population
 from pymoo.core.sampling import Sampling
 from pymoo.core.termination import TerminateIfAll, TerminateIfAny
 from pymoo.termination.default import DefaultTermination
+from pymoo.termination.delta import DeltaToleranceTermination
 
 from moik._validate import integer, is_integer, keywords
 from moik.algorithms.mechanics import clip_to_bounds, uniform_population
@@ -91,6 +92,18 @@ def check_termination(termination) -> None:
     inner = getattr(termination, "termination", None)
     if inner is not None:
         check_termination(inner)
+
+
+def tolerance_criteria(termination) -> list[str]:
+    """The names of the tolerance criteria (pymoo's ``DeltaToleranceTermination``: ``ftol``,
+    ``xtol``, ``cv``) anywhere in ``termination``."""
+    if isinstance(termination, DeltaToleranceTermination):
+        return [type(termination).__name__]
+    inner = getattr(termination, "termination", None)
+    found = [] if inner is None else tolerance_criteria(inner)
+    for sub in getattr(termination, "criteria", ()):
+        found += tolerance_criteria(sub)
+    return found
 
 
 def has_time_criterion(termination) -> bool:

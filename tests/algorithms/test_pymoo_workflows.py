@@ -10,6 +10,8 @@ single-objective problems of those examples, multi-objective ones the multi-obje
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 import pytest
 from pymoo.constraints.as_obj import ConstraintsAsObjective
@@ -21,9 +23,15 @@ from pymoo.core.population import Population
 from pymoo.optimize import minimize
 from pymoo.problems import get_problem
 from pymoo.problems.single import G1, G4
+from pymoo.termination.default import (
+    DefaultMultiObjectiveTermination,
+    DefaultSingleObjectiveTermination,
+)
 
 from moik.algorithms import available, entry, get_algorithm, is_multi_objective
 from moik.algorithms.archive import nondominated_mask
+from moik.algorithms.array_base import ArrayStateAlgorithm
+from moik.exceptions import ToleranceTerminationWarning
 
 NAMES = available()
 POP_SIZE = 10
@@ -148,3 +156,47 @@ def test_constraints_from_bounds(name):
     res = minimize(problem, get_algorithm(name, pop_size=20), ("n_gen", 10), seed=1)
     assert res.X is not None
     _feasible_or_none(problem, res)
+
+
+# ---- docs/source/interface/termination.ipynb --------------------------------------------------
+MOIK_ARRAY_STATE = [n for n in NAMES if issubclass(entry(n).cls, ArrayStateAlgorithm)]
+
+
+def _small(name: str):
+    return get_problem("zdt1", n_var=3) if is_multi_objective(name) else get_problem(
+        "sphere", n_var=3)
+
+
+@pytest.mark.parametrize("name", MOIK_ARRAY_STATE)
+def test_no_termination_counts_generations_as_pymoo(name):
+    """termination.ipynb, "Default Termination": without a termination pymoo's algorithms stop
+    at 1000 generations at most (``n_gen`` 1001 after the run, the initial population being
+    generation 1); moik's run their own schedule over the same count, to the end (no
+    tolerance window)."""
+    res = minimize(_small(name), get_algorithm(name, pop_size=5), seed=1)
+    assert res.algorithm.n_gen == 1001
+    assert res.algorithm.t == res.algorithm.max_iter == 999  # t / T reached 1
+
+
+@pytest.mark.parametrize("name", MOIK_ARRAY_STATE)
+def test_a_tolerance_termination_is_run_with_a_warning(name):
+    """termination.ipynb: ``DefaultSingleObjectiveTermination(xtol=1e-8, cvtol=1e-6,
+    ftol=1e-6, period=20, n_max_gen=..., n_max_evals=100000)`` (the multi-objective one for
+    multi-objective algorithms): run as given, and the user is told that its tolerance
+    window can stop the method early."""
+    multi = is_multi_objective(name)
+    cls = DefaultMultiObjectiveTermination if multi else DefaultSingleObjectiveTermination
+    termination = cls(xtol=1e-8, cvtol=1e-6, ftol=1e-6 if not multi else 0.0025, period=20,
+                      n_max_gen=8, n_max_evals=100000)
+    with pytest.warns(ToleranceTerminationWarning, match="tolerance termination"):
+        res = minimize(_small(name), get_algorithm(name, pop_size=5), termination, seed=1)
+    assert res.algorithm.n_gen <= 9 and res.F is not None
+
+
+@pytest.mark.parametrize("name", MOIK_ARRAY_STATE)
+def test_budget_terminations_do_not_warn(name):
+    """termination.ipynb: ``("n_gen", 5)``, ``("n_eval", 60)``, ``("time", 0.02)``."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ToleranceTerminationWarning)
+        for termination in (("n_gen", 5), ("n_eval", 60), ("time", 0.02)):
+            minimize(_small(name), get_algorithm(name, pop_size=5), termination, seed=1)

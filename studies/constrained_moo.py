@@ -14,9 +14,10 @@ population 100). For every moik multi-objective algorithm, the same runs three w
 - ``moik``: moik's handling (feasibility first everywhere, Deb's rules; while nothing is
   feasible the archive keeps the ``capacity`` least infeasible rows, as NSGA-II's
   constrained survival fills its population);
-- ``objectives only``: the same objectives without the constraints (the method as its
-  authors coded it: their reference codes have no constraint handling), and whether the
-  returned front lies in the constrained problem's feasible region at all.
+- ``objectives only`` (run where ``moik`` misses the feasible region in some run): the same
+  objectives without the constraints (the method as its authors coded it: their reference
+  codes have no constraint handling), and whether the returned front lies in the
+  constrained problem's feasible region at all.
 
 A run "returns feasible points" when ``res.X`` is not None (pymoo's ``Result``: moik reports
 only feasible members). Where ``objectives only`` never reaches the feasible region, the
@@ -97,14 +98,17 @@ def measure(name: str, problem_name: str, seeds) -> dict:
     problem = get_problem(problem_name)
     row = {"strict": 0, "moik": 0, "objectives": 0, "objectives_min_g": np.inf}
     for seed in seeds:
-        if name != "nsga2":
-            with strict_archive():
-                row["strict"] += _run(problem, name, seed).X is not None
+        row["moik"] += _run(problem, name, seed).X is not None
+        if name == "nsga2":
+            continue
+        with strict_archive():
+            row["strict"] += _run(problem, name, seed).X is not None
+    if name != "nsga2" and row["moik"] < len(seeds):  # only where moik's handling fails
+        for seed in seeds:
             free = _run(ObjectivesOnly(problem), name, seed)
             g = _max_violation(problem, free.X)
             row["objectives"] += bool(np.any(g <= 0.0))
             row["objectives_min_g"] = min(row["objectives_min_g"], float(np.min(g)))
-        row["moik"] += _run(problem, name, seed).X is not None
     return row
 
 
@@ -129,7 +133,8 @@ def verdict(rows: dict, n_runs: int) -> str:
 
 def main(argv: list[str] | None = None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--algorithms", nargs="+", default=["nsga2", *ALGORITHMS])
+    parser.add_argument("--algorithms", nargs="+", default=ALGORITHMS,
+                        help="nsga2 may be added: the reference row (about 25 s a run)")
     parser.add_argument("--problems", nargs="+", default=PROBLEMS)
     parser.add_argument("--seeds", nargs="+", type=int, default=[1, 2])
     parser.add_argument("--write", action="store_true")
@@ -137,8 +142,10 @@ def main(argv: list[str] | None = None) -> None:
     n = len(args.seeds)
     lines = [f"Runs returning feasible points, of {n} (seeds {', '.join(map(str, args.seeds))}; "
              f"{BUDGET:,} evaluations, population {POP_SIZE}): strict archive / moik / "
-             f"objectives only (its front inside the feasible region); smallest max(G) of "
-             f"the objectives-only fronts in brackets.", "",
+             f"objectives only (its front inside the feasible region; run only where moik's "
+             f"handling misses it), smallest max(G) of the objectives-only fronts in "
+             f"brackets. pymoo's NSGA-II: its row with --algorithms nsga2 ...; on MW1-MW3 "
+             f"the moo-constrained-mw experiment.", "",
              "| algorithm | " + " | ".join(args.problems) + " | verdict |",
              "|---|" + "---|" * len(args.problems) + "---|"]
     print("\n".join(lines), flush=True)
@@ -148,8 +155,9 @@ def main(argv: list[str] | None = None) -> None:
             cells = [f"- / {r['moik']} / -" for r in rows.values()]
             text = "pymoo's, the reference"
         else:
-            cells = [f"{r['strict']} / {r['moik']} / {r['objectives']} "
-                     f"({r['objectives_min_g']:.2g})" for r in rows.values()]
+            cells = [f"{r['strict']} / {r['moik']} / " + (
+                f"{r['objectives']} ({r['objectives_min_g']:.2g})"
+                if np.isfinite(r["objectives_min_g"]) else "-") for r in rows.values()]
             text = verdict(rows, n)
         line = f"| {name} | " + " | ".join(cells) + f" | {text} |"
         print(line, flush=True)

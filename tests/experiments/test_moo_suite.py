@@ -55,8 +55,8 @@ def test_the_constrained_suite_lists_every_algorithm_on_bnh_osy_srn_tnk():
 
 
 def test_the_mw_suite_lists_every_algorithm_on_mw1_mw2_mw3():
-    cfg = load_config(CONSTRAINED_MW)
-    assert sorted(cfg.labels) == sorted(_every_multi_objective())
+    cfg = load_config(CONSTRAINED_MW)  # moik's algorithms and the reference, NSGA-II
+    assert sorted(cfg.labels) == sorted(n for n in _every_multi_objective() if n != "sms-emoa")
     assert [t.name for t in cfg.targets] == ["mw1", "mw2", "mw3"]
     assert cfg["problem"]["evaluations"] == 50_000 and cfg["runs"] == 2
     assert cfg["pop_size"] == 100 and cfg["proposed"] == "nsga2"

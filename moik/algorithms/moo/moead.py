@@ -57,9 +57,9 @@ numba kernels (:mod:`moik.algorithms.moo.moead_kernels`).
 
 The archive that reports the result: while no feasible point was seen, it keeps its
 capacity of least infeasible rows (a moik extension,
-:mod:`moik.algorithms.archive.base`; the paper's archive would keep the one least
-infeasible row, and every leader would be it). Infeasible output on pymoo's MW and CTP
-problems, method or handling: docs/results/constrained-moo.md
+:mod:`moik.algorithms.archive.base`; a strict constraint-domination filter would keep
+only the least infeasible row, and every leader would be it). Infeasible output on
+pymoo's MW and CTP problems, method or handling: docs/results/constrained-moo.md
 (``studies/constrained_moo.py``).
 """
 

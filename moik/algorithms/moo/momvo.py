@@ -60,10 +60,10 @@ Beside the port on the same problems and budget (``studies/moo_quality.py``, sec
 ``reference``), moik's MOMVO and MOMVO.m give the same picture, neither consistently ahead.
 
 While no feasible point was seen, the archive keeps its capacity of least infeasible
-rows (a moik extension, :mod:`moik.algorithms.archive.base`; the paper's archive would
-keep the one least infeasible row, and every leader would be it). Infeasible output on
-pymoo's MW and CTP problems, method or handling: docs/results/constrained-moo.md
-(``studies/constrained_moo.py``).
+rows (a moik extension, :mod:`moik.algorithms.archive.base`; a strict
+constraint-domination filter would keep only the least infeasible row, and every leader
+would be it). Infeasible output on pymoo's MW and CTP problems, method or handling:
+docs/results/constrained-moo.md (``studies/constrained_moo.py``).
 """
 
 from __future__ import annotations

@@ -54,10 +54,10 @@ Deviations and readings:
   violation, each its own front (constraint-domination, as pymoo's NSGA-II).
 
 While no feasible point was seen, the archive keeps its capacity of least infeasible
-rows (a moik extension, :mod:`moik.algorithms.archive.base`; the paper's archive would
-keep the one least infeasible row, and every leader would be it). Infeasible output on
-pymoo's MW and CTP problems, method or handling: docs/results/constrained-moo.md
-(``studies/constrained_moo.py``).
+rows (a moik extension, :mod:`moik.algorithms.archive.base`; a strict
+constraint-domination filter would keep only the least infeasible row, and every leader
+would be it). Infeasible output on pymoo's MW and CTP problems, method or handling:
+docs/results/constrained-moo.md (``studies/constrained_moo.py``).
 """
 
 from __future__ import annotations

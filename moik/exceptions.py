@@ -88,3 +88,13 @@ class NonFiniteValuesWarning(MoikWarning, RuntimeWarning):
     moik's algorithms treat such a point as infeasible and worst (``F = CV = inf``) and
     never report it; the warning is issued once per run.
     """
+
+
+class ToleranceTerminationWarning(MoikWarning):
+    """A moik algorithm runs under a tolerance termination (pymoo's ``ftol``/``xtol``/``cv``
+    criteria, as in ``DefaultSingleObjectiveTermination``).
+
+    moik's algorithms plan their run as a budget (``n_gen``, ``n_eval``, ``time``): many
+    follow a schedule in t/T and explore first, with a best so far that stays flat for
+    tens of generations, which a tolerance window reads as convergence and stops.
+    """

@@ -29,9 +29,13 @@ Evaluation: pymoo's ``Evaluator`` whenever anything is attached to it, else the 
 fast path (:mod:`moik.algorithms.evaluation`).
 
 Default termination: without one, the run is the algorithm's own schedule,
-``("n_gen", T + 1)`` with T = ``max_iter`` or
-:data:`~moik.algorithms.array_state.DEFAULT_SCHEDULE_LENGTH`
-(:meth:`ArrayStateAlgorithm.default_termination`), not pymoo's stagnation-based default.
+``("n_gen", T + 1)`` with T = ``max_iter`` when given, else pymoo's count of
+:data:`~moik.algorithms.array_state.DEFAULT_SCHEDULE_LENGTH` generations, the initial one
+included (:meth:`ArrayStateAlgorithm.default_termination`), not pymoo's stagnation-based
+default. A termination with a tolerance criterion (pymoo's ``ftol``/``xtol``/``cv``, as in
+``DefaultSingleObjectiveTermination``) is run as given, with a
+:class:`~moik.exceptions.ToleranceTerminationWarning`: it stops a method whose best so far
+stays flat while it explores.
 An ``n_gen`` or ``n_eval`` limit below 1 is refused with a ``ParameterError``.
 
 ``n_eval`` budgets are exact: rows of a batch beyond the budget are not evaluated and get
@@ -44,6 +48,7 @@ from __future__ import annotations
 
 import math
 import time
+import warnings
 from typing import Any, cast
 
 import numpy as np
@@ -60,10 +65,12 @@ from moik.algorithms.array_state import (
     check_termination,
     find_limit,
     finite_bounds,
+    given_rows,
     has_time_criterion,
     initial_infill,
     planned_iterations,
     refuse_unknown_keywords,
+    tolerance_criteria,
 )
 from moik.algorithms.evaluation import (
     constraint_values,
@@ -72,8 +79,9 @@ from moik.algorithms.evaluation import (
     problem_values,
     values_asked,
 )
+from moik.algorithms.meta import setup_through_wrapper
 from moik.algorithms.nonfinite import sanitise
-from moik.exceptions import ParameterError
+from moik.exceptions import ParameterError, ToleranceTerminationWarning
 
 __all__ = ["ArrayStateAlgorithm"]
 
@@ -86,8 +94,10 @@ class ArrayStateAlgorithm(Algorithm):
 
     Args:
         pop_size: Population size N.
-        X0: Optional initial points (k rows within the bounds, k at most the initial
-            population); the other rows are drawn uniformly.
+        X0: Optional initial points (k rows within the bounds); with fewer rows than the
+            initial population the other rows are drawn uniformly, with more all are
+            evaluated and the algorithm's ranking keeps the population
+            (:mod:`moik.algorithms.initial_survival`).
         sampling: pymoo's form of the same (a ``Sampling``, an array or a ``Population``,
             :func:`~moik.algorithms.array_state.initial_infill`); not with ``X0``.
         max_iter: Schedule length T (update iterations after initialization, the papers'
@@ -136,7 +146,9 @@ class ArrayStateAlgorithm(Algorithm):
 
     # ---- pymoo hooks ----------------------------------------------------------------------
     def setup(self, problem, **kwargs):
-        """pymoo's ``setup`` (``minimize`` calls it), after checking the seed it will use.
+        """pymoo's ``setup`` (``minimize`` calls it), after checking the seed it will use;
+        inside a pymoo wrapper that skips ``_setup`` (``AdaptiveConstraintHandling``) the
+        algorithm's ``_setup`` still runs (:mod:`moik.algorithms.meta`).
 
         Raises:
             ParameterError: If the seed (``seed=`` of ``minimize`` or of the constructor)
@@ -146,28 +158,51 @@ class ArrayStateAlgorithm(Algorithm):
         self._nonfinite_warned = False
         if kwargs.get("termination") is None and self.termination is None:
             kwargs["termination"] = self.default_termination()
-        super().setup(problem, **kwargs)
+        setup_through_wrapper(self, super().setup, problem, **kwargs)
         check_termination(self.termination)
+        self._warn_of_tolerance()
         return self
 
+    def _warn_of_tolerance(self) -> None:
+        """Warn (:class:`~moik.exceptions.ToleranceTerminationWarning`) when the termination
+        holds a tolerance criterion (``ftol``, ``xtol``, ``cv``)."""
+        found = tolerance_criteria(self.termination)
+        if not found:
+            return
+        name = type(self).__name__
+        warnings.warn(
+            f"{name} runs under a tolerance termination ({', '.join(sorted(set(found)))}): "
+            f"it may stop {name} early, in its exploration phase, where the best so far stays "
+            f"flat for tens of generations (the schedule t/T of a schedule-driven method "
+            f"is then cut short, and its answer is an early one); give a budget instead, "
+            f"('n_gen', G), ('n_eval', E) or ('time', s), or no termination (the algorithm's "
+            f"own schedule)", ToleranceTerminationWarning, stacklevel=3)
+
     def default_termination(self) -> MaximumGenerationTermination:
-        """The termination used when none is given: the algorithm's own schedule, ``max_iter``
-        update iterations after the initial population (:data:`DEFAULT_SCHEDULE_LENGTH`
-        when ``max_iter`` is None), i.e. ``("n_gen", T + 1)``.
+        """The termination used when none is given: the algorithm's own schedule.
+
+        With ``max_iter`` given, its T update iterations after the initial population,
+        ``("n_gen", T + 1)``; without, pymoo's generation count: ``("n_gen",``
+        :data:`DEFAULT_SCHEDULE_LENGTH` ``)``, the limit of pymoo's default termination
+        (the initial population is generation 1, so T = 999 is planned from it and the run
+        ends at ``n_gen`` 1001, as pymoo's own algorithms do).
 
         pymoo's default termination (1000 generations or 100,000 evaluations, or a
         stagnation window of 30-50 generations) would stop a schedule-driven method in its
         exploration phase, long before t/T reaches 1 (ChOA: 0.499 after ~32 generations
         where its schedule reaches 0.014)."""
-        T = DEFAULT_SCHEDULE_LENGTH if self._fixed_T is None else self._fixed_T
-        return MaximumGenerationTermination(T + 1)
+        if self._fixed_T is None:
+            return MaximumGenerationTermination(DEFAULT_SCHEDULE_LENGTH)
+        return MaximumGenerationTermination(self._fixed_T + 1)
 
     def _setup(self, problem, **kwargs) -> None:
+        self._problem_read = True
         self._check_objectives(problem)
         self.xl, self.xu = finite_bounds(problem, type(self).__name__)
         self._constrained = bool(problem.has_constraints())
         self._plans: dict = {}
-        self._plan_schedule(t=1, n_eval=self._n_initial(), elapsed=0.0)
+        n_initial = max(self._n_initial(), given_rows(self.X0, self.sampling, self._n_initial()))
+        self._plan_schedule(t=1, n_eval=n_initial, elapsed=0.0)
 
     def _plan_schedule(self, *, t: int, n_eval: int, elapsed: float) -> None:
         """Refresh the evaluation budget and T from the current termination (module doc).
@@ -203,9 +238,12 @@ class ArrayStateAlgorithm(Algorithm):
         X = infills.get("X")
         F, CV, GH = self._values_of(infills)
         self.n_received = len(F)
-        self.X, self.F, self.CV = X, F, CV
         self._opt_stale = self.incumbent.receive(X, F, CV, GH) | \
             self.incumbent.end_iteration(rng=self.random_state)
+        if len(F) > self._n_initial():  # a larger sample: the algorithm's ranking keeps N
+            keep = self._initial_survivors(F, CV)
+            X, F, CV = X[keep], F[keep], (None if CV is None else CV[keep])
+        self.X, self.F, self.CV = X, F, CV
         self._check_start()
         self._initialize_state()
 
@@ -379,6 +417,12 @@ class ArrayStateAlgorithm(Algorithm):
     def _n_initial(self) -> int:
         """Size of the initial population."""
         return self.pop_size
+
+    def _initial_survivors(self, F: np.ndarray, CV: np.ndarray | None) -> np.ndarray:
+        """Indices of the rows of an initial sample larger than :meth:`_n_initial` that
+        form the initial population (:mod:`moik.algorithms.initial_survival`; the SO and MO
+        bases rank them, an algorithm with its own survival overrides this)."""
+        raise NotImplementedError("abstract hook: the SO and MO bases implement it")
 
     def _evals_per_iteration(self) -> float:
         """Expected evaluations per iteration (used to plan T from an n_eval budget)."""

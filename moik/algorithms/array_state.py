@@ -19,6 +19,7 @@ from pymoo.core.population import Population
 from pymoo.core.sampling import Sampling
 from pymoo.core.termination import TerminateIfAll, TerminateIfAny
 from pymoo.termination.default import DefaultTermination
+from pymoo.termination.delta import DeltaToleranceTermination
 
 from moik._validate import integer, is_integer, keywords
 from moik.algorithms.mechanics import clip_to_bounds, uniform_population
@@ -91,6 +92,18 @@ def check_termination(termination) -> None:
     inner = getattr(termination, "termination", None)
     if inner is not None:
         check_termination(inner)
+
+
+def tolerance_criteria(termination) -> list[str]:
+    """The names of the tolerance criteria (pymoo's ``DeltaToleranceTermination``: ``ftol``,
+    ``xtol``, ``cv``) anywhere in ``termination``."""
+    if isinstance(termination, DeltaToleranceTermination):
+        return [type(termination).__name__]
+    inner = getattr(termination, "termination", None)
+    found = [] if inner is None else tolerance_criteria(inner)
+    for sub in getattr(termination, "criteria", ()):
+        found += tolerance_criteria(sub)
+    return found
 
 
 def has_time_criterion(termination) -> bool:
@@ -193,18 +206,19 @@ def planned_iterations(termination, *, t: int, n_eval: int, elapsed: float,
     return max(T, float(t))
 
 
-def check_points(name: str, X0, xl: np.ndarray, xu: np.ndarray, n: int) -> np.ndarray:
-    """``X0`` as a float array of 1 to ``n`` finite rows within ``[xl, xu]``.
+def check_points(name: str, X0, xl: np.ndarray, xu: np.ndarray) -> np.ndarray:
+    """``X0`` as a float array of at least one finite row within ``[xl, xu]`` (any number:
+    a sample larger than the population is evaluated in full and ranked,
+    :mod:`moik.algorithms.initial_survival`).
 
     Raises:
-        ShapeError: For a wrong shape or row count. NonFiniteError: For NaN/inf.
+        ShapeError: For a wrong shape or no row. NonFiniteError: For NaN/inf.
         ParameterError: For points outside the bounds.
     """
     X0 = np.asarray(X0, dtype=float)
     n_var = len(xl)
-    if X0.ndim != 2 or X0.shape[1] != n_var or not 1 <= len(X0) <= n:
-        raise ShapeError(f"{name} must have shape (k, {n_var}) with 1 <= k <= {n}, "
-                         f"got {X0.shape}")
+    if X0.ndim != 2 or X0.shape[1] != n_var or len(X0) < 1:
+        raise ShapeError(f"{name} must have shape (k, {n_var}) with k >= 1, got {X0.shape}")
     if not np.all(np.isfinite(X0)):
         raise NonFiniteError(f"{name} holds NaN or infinite values")
     if np.any(clip_to_bounds(X0, xl, xu) != X0):
@@ -214,10 +228,14 @@ def check_points(name: str, X0, xl: np.ndarray, xu: np.ndarray, n: int) -> np.nd
 
 def initial_population(n: int, xl: np.ndarray, xu: np.ndarray, X0, *,
                        rng: np.random.Generator, name: str = "X0") -> Population:
-    """Uniform initial points; the first rows replaced by ``X0`` if given (validated)."""
+    """Uniform initial points; the first rows replaced by ``X0`` if given (validated);
+    ``X0`` alone when it has ``n`` rows or more."""
+    if X0 is not None:
+        X0 = check_points(name, X0, xl, xu)
+        if len(X0) > n:
+            return Population.new("X", X0.copy())
     X = uniform_population(n, xl, xu, rng=rng)
     if X0 is not None:
-        X0 = check_points(name, X0, xl, xu, n)
         X[: len(X0)] = X0
     return Population.new("X", X)
 
@@ -228,9 +246,10 @@ def initial_infill(problem, n: int, xl: np.ndarray, xu: np.ndarray, *, X0, sampl
     algorithms take them), the rows not given drawn uniformly.
 
     ``sampling`` is a pymoo ``Sampling`` (asked for ``n`` points with the run's random
-    state), an array (as ``X0``: 1 to ``n`` rows) or a ``Population`` (1 to ``n``
+    state), an array (as ``X0``: any number of rows) or a ``Population`` (any number of
     individuals, copied; those already evaluated are not evaluated again, as pymoo's
-    ``Evaluator`` skips them).
+    ``Evaluator`` skips them). More rows than ``n`` are all returned (the algorithm keeps
+    ``n`` of them after their evaluation, :mod:`moik.algorithms.initial_survival`).
 
     Raises:
         ParameterError: If both ``X0`` and ``sampling`` are given, or for a sampling of
@@ -241,13 +260,13 @@ def initial_infill(problem, n: int, xl: np.ndarray, xu: np.ndarray, *, X0, sampl
     if X0 is not None:
         raise ParameterError("give the initial points as X0 or as sampling, not both")
     if isinstance(sampling, Population):
-        check_points("sampling", sampling.get("X"), xl, xu, n)
+        check_points("sampling", sampling.get("X"), xl, xu)
         given = [ind.copy() for ind in sampling]
-        X = uniform_population(n - len(given), xl, xu, rng=rng)
+        X = uniform_population(max(n - len(given), 0), xl, xu, rng=rng)
         return Population.merge(Population.create(*given), Population.new("X", X))
     if isinstance(sampling, Sampling):
         X = sampling.do(problem, n, random_state=rng).get("X")
-        return Population.new("X", check_points("sampling", X, xl, xu, n))
+        return Population.new("X", check_points("sampling", X, xl, xu))
     if isinstance(sampling, (np.ndarray, list, tuple)):
         return initial_population(n, xl, xu, sampling, rng=rng, name="sampling")
     raise ParameterError(f"sampling must be a pymoo Sampling, an array of points or a "
@@ -255,13 +274,19 @@ def initial_infill(problem, n: int, xl: np.ndarray, xu: np.ndarray, *, X0, sampl
 
 
 class GivenPoints(Sampling):
-    """A pymoo ``Sampling`` of given points (an array or a ``Population``, 1 to ``n``
+    """A pymoo ``Sampling`` of given points (an array or a ``Population``, any number of
     rows), the rows not given drawn uniformly: pymoo's array and Population forms of
     ``sampling=`` for a pymoo algorithm that takes only a ``Sampling`` (MOPSO-CD)."""
 
     def __init__(self, points) -> None:
         super().__init__()
         self.points = points
+
+    def do(self, problem, n_samples, *args, random_state=None, **kwargs) -> Population:
+        """The points as a ``Population`` (evaluated individuals stay evaluated)."""
+        xl, xu = (np.asarray(b, dtype=float) for b in problem.bounds())
+        return initial_infill(problem, n_samples, xl, xu, X0=None, sampling=self.points,
+                              rng=random_state)
 
     def _do(self, problem, n_samples, *args, random_state=None, **kwargs):
         xl, xu = (np.asarray(b, dtype=float) for b in problem.bounds())
@@ -271,8 +296,8 @@ class GivenPoints(Sampling):
 
 def given_rows(X0, sampling, n: int) -> int:
     """How many rows of the initial population of size ``n`` the user gave (``X0`` or
-    ``sampling=``: all of them for a pymoo ``Sampling``); an algorithm with its own
-    initialisation (chaotic maps) draws only the others."""
+    ``sampling=``: all of them for a pymoo ``Sampling``; possibly more than ``n``); an
+    algorithm with its own initialisation (chaotic maps) draws only the others."""
     if X0 is not None:
         return len(np.atleast_2d(X0))
     if sampling is None:

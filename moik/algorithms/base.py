@@ -19,6 +19,7 @@ from pymoo.util.display.output import Output
 from moik.algorithms.array_base import ArrayStateAlgorithm
 from moik.algorithms.array_state import Step
 from moik.algorithms.incumbent import BestSoFar
+from moik.algorithms.initial_survival import best_rows
 from moik.exceptions import ParameterError
 
 __all__ = ["ArrayAlgorithm", "ArrayOutput", "Step"]
@@ -65,8 +66,9 @@ class ArrayAlgorithm(ArrayStateAlgorithm):
 
     Args:
         pop_size: Population size N.
-        X0: Optional initial points (k <= pop_size rows within the bounds); the
-            remaining rows are drawn uniformly.
+        X0: Optional initial points (k rows within the bounds); the remaining rows are
+            drawn uniformly, or, with more than ``pop_size`` rows, the ``pop_size`` best
+            are kept (:mod:`moik.algorithms.initial_survival`).
         max_iter: Schedule length T of algorithms whose parameters depend on t/T (the
             papers' Max_t; ``t = 1 .. T``), fixed. None: planned before every iteration
             from the current termination (:mod:`moik.algorithms.array_base`).
@@ -120,3 +122,8 @@ class ArrayAlgorithm(ArrayStateAlgorithm):
 
     def _make_incumbent(self) -> BestSoFar:
         return BestSoFar()
+
+    def _initial_survivors(self, F: np.ndarray, CV: np.ndarray | None) -> np.ndarray:
+        """The best rows, feasibility first
+        (:func:`~moik.algorithms.initial_survival.best_rows`)."""
+        return best_rows(F, CV, self._n_initial())

@@ -10,7 +10,8 @@ For experiments of the kind :mod:`moik.experiments.kinds.moo_functions`
   IGD / higher HV by median, p < 0.05), ``-`` worse, ``=`` no significant
   difference; HV as a share of the reference's mean HV. On constrained
   problems (records with ``n_infeasible``) the members are the feasible ones
-  and a column counts the infeasible members reported over the runs.
+  and columns count the runs that returned a feasible member and the infeasible
+  members reported over the runs.
 - ``mean-ranks``: per problem, the algorithms ranked by mean IGD (1 = lowest)
   and by mean HV (1 = highest), ties sharing the mean of their ranks; the mean
   over the problems, and the ``+``/``=``/``-`` counts of the IGD test over the
@@ -133,7 +134,8 @@ def front_quality_table(res: Results) -> list[Table]:
             cells += ["-" if np.isnan(share) else f"{100 * share:.1f}%",
                       fmt(float(np.mean([r["n_front"] for r in recs])), 4)]
             if constrained:
-                cells.append(str(sum(int(r.get("n_infeasible", 0)) for r in recs)))
+                cells += [f"{sum(int(r['n_front']) > 0 for r in recs)}/{len(recs)}",
+                          str(sum(int(r.get("n_infeasible", 0)) for r in recs))]
             cells += [fmt(float(np.mean([r["time"] for r in recs])), 3), str(len(recs))]
             rows.append(cells)
         first = [r for lab in labels for r in res.by_label[lab] if r["target"] == ti][:1]
@@ -143,8 +145,10 @@ def front_quality_table(res: Results) -> list[Table]:
                  "nadir where positive); std with ddof=1"]
         if constrained:
             notes.append("members re-evaluated: front size counts the feasible members (IGD "
-                         "and HV score only those); infeasible reported: the members with a "
-                         "violated constraint returned, summed over the runs")
+                         "and HV score only those; a run with none scores IGD inf and HV 0); "
+                         "feasible runs: the runs that returned a feasible member; infeasible "
+                         "reported: the members with a violated constraint returned, summed "
+                         "over the runs")
         if compare:
             notes.append(f"vs {reference}: two-sided Wilcoxon rank-sum test; + the row's "
                          f"algorithm better by median (p < {ALPHA:g}), - worse, = no "
@@ -153,7 +157,7 @@ def front_quality_table(res: Results) -> list[Table]:
                             ["algorithm", "IGD mean", "IGD std", f"IGD vs {reference}",
                              "HV mean", "HV std", f"HV vs {reference}",
                              f"HV / {reference}", "front size"]
-                            + (["infeasible reported"] if constrained else [])
+                            + (["feasible runs", "infeasible reported"] if constrained else [])
                             + ["time (s)", "runs"],
                             rows, notes))
     return tables

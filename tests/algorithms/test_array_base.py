@@ -143,7 +143,9 @@ def test_the_default_termination_is_the_algorithms_own_schedule(cls, problem):
     np.testing.assert_array_equal(res.F, explicit.F)
     alg = cls(pop_size=10)
     alg.setup(_problem(problem), seed=1)
-    assert alg.termination.n_max_gen == 1001 and alg.max_iter == 1000
+    assert alg.termination.n_max_gen == 1000 and alg.max_iter == 999  # pymoo's count
+    res = minimize(_problem(problem), cls(pop_size=10), seed=1)
+    assert res.algorithm.n_gen == 1001  # as pymoo's own algorithms end under their default
 
 
 @pytest.mark.parametrize("termination", [("n_gen", 0), ("n_gen", -3), ("n_eval", 0)])

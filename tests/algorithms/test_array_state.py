@@ -122,8 +122,10 @@ def test_bad_sampling_is_a_clear_error():
         PSO(X0=np.zeros((1, 4)), sampling=np.zeros((1, 4)))
     with pytest.raises(ParameterError, match="sampling must be a pymoo Sampling"):
         minimize(_sphere4(), PSO(sampling="lhs"), ("n_gen", 2))
-    with pytest.raises(ShapeError, match=r"sampling must have shape \(k, 4\)"):
-        minimize(_sphere4(), PSO(pop_size=5, sampling=np.zeros((6, 4))), ("n_gen", 2))
+    with pytest.raises(ShapeError, match=r"sampling must have shape \(k, 4\) with k >= 1"):
+        minimize(_sphere4(), PSO(pop_size=5, sampling=np.zeros((6, 3))), ("n_gen", 2))
+    with pytest.raises(ShapeError, match=r"sampling must have shape \(k, 4\) with k >= 1"):
+        minimize(_sphere4(), PSO(pop_size=5, sampling=np.zeros((0, 4))), ("n_gen", 2))
 
 
 def test_a_mixed_variable_problem_is_a_clear_error():

@@ -38,8 +38,9 @@ def test_terminations_and_result(cls):
     assert np.all((res.pop.get("X") >= -5) & (res.pop.get("X") <= 5))
     res = minimize(problem, cls(pop_size=20), ("time", 0.2), seed=3)
     assert 0.2 <= res.exec_time < 1.0
-    res = minimize(problem, cls(pop_size=20), seed=3)  # the default: the whole schedule
-    assert res.algorithm.t == res.algorithm.max_iter == 1000 and res.F[0] < 1e-3
+    res = minimize(problem, cls(pop_size=20), seed=3)  # the default: the whole schedule of
+    assert res.algorithm.t == res.algorithm.max_iter == 999 and res.F[0] < 1e-3  # pymoo's 1000
+    assert res.algorithm.n_gen == 1001  # generations, the initial one included
 
 
 def test_time_termination_string():

@@ -14,6 +14,7 @@ SUITE = ROOT / "experiments" / "moo_suite.toml"
 REFERENCE = ROOT / "experiments" / "moo_reference.toml"
 SUITE_10K = ROOT / "experiments" / "moo_suite_10k.toml"
 CONSTRAINED = ROOT / "experiments" / "moo_constrained.toml"
+CONSTRAINED_MW = ROOT / "experiments" / "moo_constrained_mw.toml"
 OPTIONS = {"moeosma-nsga2-gaussian": ("moeosma", {"diversity": "nsga2-gaussian"}),
            "moalo-first": ("moalo", {"antlion": "first"})}
 
@@ -53,6 +54,14 @@ def test_the_constrained_suite_lists_every_algorithm_on_bnh_osy_srn_tnk():
     assert cfg["problem"]["evaluations"] == 25_000 and cfg["runs"] == 10
 
 
+def test_the_mw_suite_lists_every_algorithm_on_mw1_mw2_mw3():
+    cfg = load_config(CONSTRAINED_MW)  # moik's algorithms and the reference, NSGA-II
+    assert sorted(cfg.labels) == sorted(n for n in _every_multi_objective() if n != "sms-emoa")
+    assert [t.name for t in cfg.targets] == ["mw1", "mw2", "mw3"]
+    assert cfg["problem"]["evaluations"] == 50_000 and cfg["runs"] == 2
+    assert cfg["pop_size"] == 100 and cfg["proposed"] == "nsga2"
+
+
 def test_the_reference_setting_is_zdt1_3_at_100_iterations():
     cfg = load_config(REFERENCE)
     assert [t.name for t in cfg.targets] == ["zdt1-30", "zdt2-30", "zdt3-30", "zdt1-5",
@@ -64,7 +73,7 @@ def test_the_reference_setting_is_zdt1_3_at_100_iterations():
 @pytest.fixture(scope="module")
 def quick_results(tmp_path_factory):
     out = tmp_path_factory.mktemp("moo-quick")
-    for path in (SUITE, REFERENCE, CONSTRAINED):
+    for path in (SUITE, REFERENCE, CONSTRAINED, CONSTRAINED_MW):
         name = path.stem.replace("_", "-")
         assert main(["experiment", "run", "--config", str(path), "--quick", "--workers", "1",
                      "--no-progress", "--out", str(out / name)]) == 0
@@ -73,7 +82,7 @@ def quick_results(tmp_path_factory):
 
 
 def test_every_quick_trial_finishes_with_its_metrics(quick_results):
-    for name in ("moo-suite", "moo-reference", "moo-constrained"):
+    for name in ("moo-suite", "moo-reference", "moo-constrained", "moo-constrained-mw"):
         recs = ResultStore.open(quick_results / name).records()
         assert recs and all(r["status"] == "ok" for r in recs), name
         assert all((r["igd"] is None or r["igd"] >= 0) and r["hv"] >= 0 for r in recs)
@@ -94,6 +103,8 @@ def test_the_report_has_the_tables(quick_results):
     assert "HV reference point [1.1, 1.1, 1.1]" in report
     assert "## moo-constrained:" in report and "#### osy: IGD and HV over the runs" in report
     assert "HV reference point [-37.8, 83.6]" in report and "infeasible reported" in report
+    assert "## moo-constrained-mw:" in report and "#### mw1: IGD and HV over the runs" in report
+    assert "| feasible runs | infeasible reported |" in report
     assert "#### Mean HV as a share of nsga2's" in report
     assert "#### Mean IGD over random-search's (below 1: better than uniform sampling)" in report
 

@@ -18,11 +18,17 @@ Constrained problems (``CV`` given, the total constraint violation of each row,
 multi-objective algorithms): a feasible row dominates an infeasible one, of two
 infeasible rows the smaller violation dominates, two feasible rows compare by
 Pareto dominance. So the archive holds the feasible non-dominated rows as soon
-as one feasible row was seen; before that, the rows of the smallest violation
-(of those, the Pareto non-dominated ones). Its members are then all feasible or
-all share one violation, and truncation and leaders work on ``F`` as without
-constraints. Rows carried in ``extra`` (the constraint values G, H) follow
-their members.
+as one feasible row was seen. Before that (a moik extension: the papers' archives
+and their reference codes have no constraint handling), it holds the ``capacity``
+rows of smallest violation, distinct in ``F``, as NSGA-II's constrained survival
+fills its population with infeasible rows ranked by violation
+(:func:`least_infeasible_mask`): a strict constraint-domination filter would
+keep the single least infeasible row, and every leader drawn from a one-member
+archive would be that row (the measured effect on pymoo's MW1-MW3 and CTP1-CTP3:
+docs/results/constrained-moo.md, ``studies/constrained_moo.py``).
+Truncation and leaders work on ``F`` as without constraints. Rows carried in
+``extra`` (the constraint values G, H) follow their members. An unconstrained
+archive (``CV`` None) is untouched by all of this.
 
 What differs between archives is only how an overfull archive is truncated and
 how leaders are drawn; subclasses implement ``_truncate`` and ``leaders``.
@@ -105,6 +111,15 @@ def roulette(weights: np.ndarray, size: int, rng: np.random.Generator) -> np.nda
     """
     cdf = np.cumsum(weights)
     return np.searchsorted(cdf, rng.random(size) * cdf[-1], side="right").clip(max=weights.size - 1)
+
+
+def least_infeasible_mask(F: np.ndarray, CV: np.ndarray, capacity: int) -> np.ndarray:
+    """Mask of the ``capacity`` rows of smallest violation (distinct objective rows, the
+    first of equal violations first): the archive while no row is feasible (module doc)."""
+    keep = np.zeros(len(CV), dtype=bool)
+    unique = np.flatnonzero(first_unique_mask(F))
+    keep[unique[np.argsort(CV[unique], kind="stable")[:capacity]]] = True
+    return keep
 
 
 class ArchiveBase(abc.ABC):
@@ -195,6 +210,8 @@ class ArchiveBase(abc.ABC):
             extra.copy() if empty else np.concatenate([self._extra, extra]))
         if CV_all is None and F_all.shape[1] == 2:
             keep = front_mask_2d(F_all, True)  # both filters in one sweep
+        elif CV_all is not None and not np.any(CV_all <= 0.0):
+            keep = least_infeasible_mask(F_all, CV_all, self.capacity)
         else:
             keep = constrained_nondominated_mask(F_all, CV_all)
             keep[keep] = first_unique_mask(F_all[keep])

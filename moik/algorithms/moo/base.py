@@ -48,6 +48,7 @@ from moik.algorithms.archive import ArchiveBase, CrowdingArchive
 from moik.algorithms.array_base import ArrayStateAlgorithm
 from moik.algorithms.array_state import DEFAULT_SCHEDULE_LENGTH, Step
 from moik.algorithms.incumbent import ParetoIncumbent
+from moik.algorithms.initial_survival import rank_and_crowding_rows
 from moik.algorithms.moo.dominance import (
     constrained_dominates,
     dominance_memory,
@@ -78,8 +79,10 @@ class MOArrayAlgorithm(ArrayStateAlgorithm):
     Args:
         pop_size: Population size N (per swarm for multi-swarm methods).
         archive_size: Archive capacity; None means ``pop_size`` (the papers).
-        X0: Optional initial points (k rows within the bounds, k at most the
-            initial population); the other rows are drawn uniformly.
+        X0: Optional initial points (k rows within the bounds); the other rows are drawn
+            uniformly, or, with more rows than the initial population, all are offered to
+            the archive and the algorithm's ranking keeps the population
+            (:meth:`_initial_survivors`).
         max_iter: Schedule length T (update iterations after initialization, the
             papers' Max_t; ``t = 1 .. T``), fixed. None: planned before every iteration from
             the current termination (:mod:`moik.algorithms.array_base`), else
@@ -115,6 +118,12 @@ class MOArrayAlgorithm(ArrayStateAlgorithm):
 
     def _make_incumbent(self) -> ParetoIncumbent:
         return ParetoIncumbent(self._make_archive(self.archive_size))
+
+    def _initial_survivors(self, F: np.ndarray, CV: np.ndarray | None) -> np.ndarray:
+        """NSGA-II's survival: constrained non-dominated rank, then crowding
+        (:func:`~moik.algorithms.initial_survival.rank_and_crowding_rows`); every row was
+        offered to the archive first."""
+        return rank_and_crowding_rows(F, CV, self._n_initial())
 
     def _check_start(self) -> None:
         if len(self.pareto_archive) == 0:

@@ -42,6 +42,15 @@ Close to uniform random sampling on ZDT1/3 with 30 variables: a port of Askarzad
 CSA.m run in the same construction gives the same picture (``studies/moo_quality.py``,
 reference table): the method's (a crow follows a random crow's memory, a tenth of the
 moves are random positions), not this implementation's.
+
+Constraints (a moik extension; the paper and the authors' code have none):
+constraint-domination (Deb's rules, as pymoo's algorithms) in the archive, where the
+leaders are drawn, and wherever the method compares points. While no feasible point was
+seen, the archive keeps its capacity of least infeasible rows (a moik extension,
+:mod:`moik.algorithms.archive.base`; a strict constraint-domination filter would keep
+only the least infeasible row, and every leader would be it). Infeasible output on
+pymoo's MW and CTP problems, method or handling: docs/results/constrained-moo.md
+(``studies/constrained_moo.py``).
 """
 
 from __future__ import annotations

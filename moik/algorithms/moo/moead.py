@@ -54,6 +54,13 @@ The EOSMA paper's experiments (``eosma-table8``, ``moo-*``) run this MOEA/D
 "crossover parameter gamma = 0.5" of its MATLAB baseline, whose crossover is not
 given otherwise: the operators here are pymoo's. The mating and the update loop are
 numba kernels (:mod:`moik.algorithms.moo.moead_kernels`).
+
+The archive that reports the result: while no feasible point was seen, it keeps its
+capacity of least infeasible rows (a moik extension,
+:mod:`moik.algorithms.archive.base`; a strict constraint-domination filter would keep
+only the least infeasible row, and every leader would be it). Infeasible output on
+pymoo's MW and CTP problems, method or handling: docs/results/constrained-moo.md
+(``studies/constrained_moo.py``).
 """
 
 from __future__ import annotations

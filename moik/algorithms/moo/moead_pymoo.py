@@ -21,6 +21,11 @@ feasible minimum), and an ideal point there draws all subproblems to the same
 few feasible points (measured on OSY, 25,000 evaluations, 3 seeds: 26 feasible
 members reported in all, HV 61 % of NSGA-II's; with the feasible ideal point
 100 per run, 72 %). Unconstrained runs are pymoo's, bit for bit.
+
+A ``sampling=`` of more points than directions (pymoo's biased initialization): all are
+evaluated and NSGA-II's rank and crowding keeps one per direction
+(:func:`~moik.algorithms.initial_survival.surviving_population`; pymoo's own MOEA/D keeps
+them all and then fails on its neighbourhood indices).
 pymoo's NSGA2 and SMS-EMOA are registered unchanged, MOPSO-CD with constraint
 handling (:mod:`moik.algorithms.moo.mopso_cd`).
 """
@@ -35,6 +40,8 @@ from scipy.spatial.distance import cdist
 
 from moik._validate import integer, interval
 from moik.algorithms.array_state import refuse_unknown_keywords
+from moik.algorithms.initial_survival import surviving_population
+from moik.algorithms.meta import setup_through_wrapper
 from moik.algorithms.moo.reference_directions import default_ref_dirs
 from moik.exceptions import ParameterError
 
@@ -69,7 +76,13 @@ class PymooMOEAD(moead.MOEAD):
         dirs = default_ref_dirs(2, self._n_dirs) if ref_dirs is None else ref_dirs
         super().__init__(ref_dirs=dirs, **kwargs)
 
+    def setup(self, problem, **kwargs):
+        """pymoo's, also inside a wrapper that skips ``_setup`` (:mod:`moik.algorithms.meta`)."""
+        setup_through_wrapper(self, super().setup, problem, **kwargs)
+        return self
+
     def _setup(self, problem, **kwargs) -> None:
+        self._problem_read = True
         if problem.n_obj < 2:  # pymoo's fails with numpy's "larger sample than population"
             raise ParameterError(f"MOEA/D is multi-objective; the problem has "
                                  f"n_obj={problem.n_obj}")
@@ -86,6 +99,8 @@ class PymooMOEAD(moead.MOEAD):
             self.decomposition = moead.default_decomp(problem)
 
     def _initialize_advance(self, infills=None, **kwargs) -> None:
+        if infills is not None and len(infills) > len(self.ref_dirs):  # a larger sample=
+            infills = self.pop = surviving_population(infills, len(self.ref_dirs))
         super()._initialize_advance(infills, **kwargs)
         if self.problem.has_constraints():
             F, CV = self.pop.get("F"), self.pop.get("CV")[:, 0]

@@ -71,6 +71,12 @@ the box the paper's operators lack. Measured: the ``moeosma-nsga2-gaussian`` row
 the ``moo-suite`` experiment (docs/results/moo-suite.md: 95 % of NSGA-II's HV or more
 on ZDT1/2/3/6) and Table 8 in docs/results/moo-quality.md (P1: about the paper's
 method's HV, with a front reaching further towards both ends; P2: the full box).
+
+While no feasible point was seen, the archive keeps its capacity of least infeasible
+rows (a moik extension, :mod:`moik.algorithms.archive.base`; a strict
+constraint-domination filter would keep only the least infeasible row, and every leader
+would be it). Infeasible output on pymoo's MW and CTP problems, method or handling:
+docs/results/constrained-moo.md (``studies/constrained_moo.py``).
 """
 
 from __future__ import annotations

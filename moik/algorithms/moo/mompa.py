@@ -47,6 +47,12 @@ Deviations and readings:
 - Constraints (not in the code): the sorting puts the feasible rows first
   (non-dominated fronts), then the infeasible ones by increasing violation, each
   its own front (constraint-domination, as PlatEMO's NDSort with constraints).
+
+While no feasible point was seen, the archive keeps its capacity of least infeasible
+rows (a moik extension, :mod:`moik.algorithms.archive.base`; a strict
+constraint-domination filter would keep only the least infeasible row, and every leader
+would be it). Infeasible output on pymoo's MW and CTP problems, method or handling:
+docs/results/constrained-moo.md (``studies/constrained_moo.py``).
 """
 
 from __future__ import annotations
@@ -189,6 +195,11 @@ class MOMPA(MOArrayAlgorithm):
 
     def _evals_per_iteration(self) -> float:
         return 3.0 * len(self.Z)
+
+    def _initial_survivors(self, F: np.ndarray, CV: np.ndarray | None) -> np.ndarray:
+        """Every row of a larger initial sample: the reference-point selection of
+        :meth:`_initialize_state` keeps the population."""
+        return np.arange(len(F))
 
     def _initialize_state(self) -> None:
         self.z_min = self.F.min(axis=0)

@@ -58,6 +58,12 @@ Deviations and readings:
 
 Beside the port on the same problems and budget (``studies/moo_quality.py``, section
 ``reference``), moik's MOMVO and MOMVO.m give the same picture, neither consistently ahead.
+
+While no feasible point was seen, the archive keeps its capacity of least infeasible
+rows (a moik extension, :mod:`moik.algorithms.archive.base`; a strict
+constraint-domination filter would keep only the least infeasible row, and every leader
+would be it). Infeasible output on pymoo's MW and CTP problems, method or handling:
+docs/results/constrained-moo.md (``studies/constrained_moo.py``).
 """
 
 from __future__ import annotations

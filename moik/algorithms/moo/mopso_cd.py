@@ -34,6 +34,12 @@ one process and across processes; everything else about the archive stays pymoo'
 is sampled; pymoo's ``__init__`` builds one from ``seed=None``, which ``setup``
 replaces.)
 
+A ``sampling=`` array or ``Population`` reaches pymoo's code as a ``Sampling`` of the
+points (:class:`~moik.algorithms.array_state.GivenPoints`: evaluated individuals are not
+evaluated again); more points than ``pop_size`` are all evaluated and offered to the
+archive, and NSGA-II's rank and crowding keeps the swarm
+(:func:`~moik.algorithms.initial_survival.rank_and_crowding_rows`).
+
 Non-finite values. A row whose objectives (or, with constraints, total violation)
 are NaN or infinite is a fact about that point, not a member: it enters neither the
 archive nor a personal best (pymoo's code would let an archive hold it, or, with the
@@ -54,6 +60,8 @@ from pymoo.util.archive import MultiObjectiveArchive, Truncation
 from moik._validate import integer, number, positive
 from moik.algorithms.archive import constrained_nondominated_mask
 from moik.algorithms.array_state import GivenPoints, refuse_unknown_keywords
+from moik.algorithms.initial_survival import rank_and_crowding_rows
+from moik.algorithms.meta import setup_through_wrapper
 from moik.algorithms.moo.dominance import constrained_dominates
 
 
@@ -120,6 +128,26 @@ class MOPSOCD(MOPSO_CD):
         super().__init__(**kwargs)
         if kwargs.get("termination") is not None:
             self.termination = kwargs["termination"]  # pymoo's __init__ replaced it
+
+    def setup(self, problem, **kwargs):
+        """pymoo's, also inside a wrapper that skips ``_setup`` (:mod:`moik.algorithms.meta`)."""
+        setup_through_wrapper(self, super().setup, problem, **kwargs)
+        return self
+
+    def _setup(self, problem, **kwargs) -> None:
+        self._problem_read = True
+        super()._setup(problem, **kwargs)
+
+    def _initialize_advance(self, infills=None, **kwargs):
+        """pymoo's, after NSGA-II's survival cut a larger ``sampling=`` to ``pop_size``
+        (the other points are offered to the archive)."""
+        if infills is None or len(infills) <= self.pop_size:
+            super()._initialize_advance(infills, **kwargs)
+            return
+        kept = rank_and_crowding_rows(infills.get("F"), infills.get("CV")[:, 0], self.pop_size)
+        rest = np.setdiff1d(np.arange(len(infills)), kept)
+        super()._initialize_advance(infills[kept], **kwargs)
+        self.archive = self._update_archive(infills[rest])
 
     def _update_archive(self, pop):
         constrained = self.problem.has_constraints()

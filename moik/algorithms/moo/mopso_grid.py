@@ -36,6 +36,12 @@ Deviations and readings:
 - Constraints (not in the paper's Section III): every "dominates" above is
   constraint-domination (feasible first, then smaller violation), as in the
   repository.
+
+While no feasible point was seen, the archive keeps its capacity of least infeasible
+rows (a moik extension, :mod:`moik.algorithms.archive.base`; a strict
+constraint-domination filter would keep only the least infeasible row, and every leader
+would be it). Infeasible output on pymoo's MW and CTP problems, method or handling:
+docs/results/constrained-moo.md (``studies/constrained_moo.py``).
 """
 
 from __future__ import annotations

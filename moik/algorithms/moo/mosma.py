@@ -52,6 +52,12 @@ Deviations and readings:
 - Constraints (not in the paper): the elitist order puts the feasible rows first
   (by rank and crowding distance), then the infeasible ones by increasing
   violation, each its own front (constraint-domination, as pymoo's NSGA-II).
+
+While no feasible point was seen, the archive keeps its capacity of least infeasible
+rows (a moik extension, :mod:`moik.algorithms.archive.base`; a strict
+constraint-domination filter would keep only the least infeasible row, and every leader
+would be it). Infeasible output on pymoo's MW and CTP problems, method or handling:
+docs/results/constrained-moo.md (``studies/constrained_moo.py``).
 """
 
 from __future__ import annotations

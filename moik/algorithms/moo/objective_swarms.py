@@ -35,6 +35,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from moik.algorithms.initial_survival import best_rows
 from moik.algorithms.mechanics import greedy_memory, is_better, ranking_fitness
 from moik.algorithms.moo.base import MOArrayAlgorithm
 
@@ -96,7 +97,8 @@ class ObjectiveSwarms(MOArrayAlgorithm):
     Args:
         pop_size: Rows per swarm N (one swarm per objective).
         archive_size: Archive capacity; None means ``pop_size``.
-        X0: Optional initial points (at most M * pop_size rows).
+        X0: Optional initial points (more than M * pop_size rows: each swarm the best on
+            its objective, :meth:`_initial_survivors`).
         max_iter: Schedule length T (see MOArrayAlgorithm).
         **kwargs: pymoo ``Algorithm`` options.
     """
@@ -106,6 +108,12 @@ class ObjectiveSwarms(MOArrayAlgorithm):
 
     def _evals_per_iteration(self) -> float:
         return float(self.problem.n_obj * self.pop_size)
+
+    def _initial_survivors(self, F: np.ndarray, CV: np.ndarray | None) -> np.ndarray:
+        """Of a larger initial sample, swarm k takes the ``pop_size`` best rows on objective
+        k, feasibility first (a row may start in several swarms)."""
+        return np.concatenate([best_rows(F[:, k], CV, self.pop_size)
+                               for k in range(self.problem.n_obj)])
 
     def _initialize_state(self) -> None:
         self.swarm = np.repeat(np.arange(self.problem.n_obj), self.pop_size)

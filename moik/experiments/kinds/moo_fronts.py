@@ -17,6 +17,9 @@ three objectives, the WFG ones, and the constrained OSY and TNK, through
   x3 in [1, 3.732], x5 = 1; x1 in [0, 1], x2 = 2 - x1, x3 = x5 = 1), each
   sampled at :data:`CONSTRAINED_FRONT_POINTS` points, evaluated by pymoo's OSY
   and non-dominated filtered (f1 from -274 to -42, f2 from 76 to 4);
+- MW1-MW3 (Ma & Wang 2019, DOI 10.1109/TEVC.2019.2896967): pymoo's closed-form fronts
+  (the line ``f2 = 1 - 0.85 f1`` or ``1 - f1`` cut or pushed by the constraint), at
+  :data:`CONSTRAINED_FRONT_POINTS` values of ``f1`` in [0, 1];
 - TNK (Tanaka et al. 1995): ``f = x``, so the front is the non-dominated part
   of the first constraint's boundary ``x1^2 + x2^2 = 1 + 0.1 cos(16 atan(x1 /
   x2))`` inside the second constraint: the boundary in polar form,
@@ -70,6 +73,13 @@ def _feasible_front(problem: Problem, X: np.ndarray) -> np.ndarray:
     return non_dominated(np.asarray(F, dtype=float)[np.all(np.asarray(G) <= 1e-12, axis=1)])
 
 
+def mw_front(problem: Problem) -> np.ndarray:
+    """MW1-MW3's front: pymoo's closed form at :data:`CONSTRAINED_FRONT_POINTS` values of f1."""
+    F = np.zeros((CONSTRAINED_FRONT_POINTS, 2))
+    F[:, 0] = np.linspace(0.0, 1.0, CONSTRAINED_FRONT_POINTS)
+    return non_dominated(np.asarray(problem.pareto_front(F, use_cache=False), dtype=float))
+
+
 def osy_front(problem: Problem) -> np.ndarray:
     """OSY's front from Deb's five segments (see the module docstring)."""
     s = np.linspace(0.0, 1.0, CONSTRAINED_FRONT_POINTS)
@@ -91,8 +101,9 @@ def tnk_front(problem: Problem) -> np.ndarray:
     return _feasible_front(problem, np.column_stack([r * np.sin(phi), r * np.cos(phi)]))
 
 
-OWN_FRONTS: dict[str, Callable[[Problem], np.ndarray]] = {"osy": osy_front, "tnk": tnk_front}
-"""Problems whose front is built here (pymoo downloads theirs)."""
+OWN_FRONTS: dict[str, Callable[[Problem], np.ndarray]] = {
+    "osy": osy_front, "tnk": tnk_front, "mw1": mw_front, "mw2": mw_front, "mw3": mw_front}
+"""Problems whose front is built here (pymoo downloads theirs, or gives 100 points)."""
 
 IK_FRONTS = tuple(n for n in ik_problems() if not n.endswith("-motion"))
 """The bi-objective IK problems of :mod:`moik.problems.registry`: their fronts are the
@@ -103,7 +114,7 @@ closed forms. A reachable pose's front is the one point (0, 0), whose HV referen
 ANALYTIC_FRONTS = PYMOO_FRONTS + tuple(OWN_FRONTS) + IK_FRONTS
 """Every problem with a known front."""
 
-CONSTRAINED = ("bnh", "osy", "srn", "tnk")
+CONSTRAINED = ("bnh", "osy", "srn", "tnk", "mw1", "mw2", "mw3")
 """The constrained problems among :data:`ANALYTIC_FRONTS`."""
 
 

@@ -108,8 +108,10 @@ def test_bad_problems_and_parameters():
         MOEOSMA(pop_size=2)
     with pytest.raises(ParameterError, match="max_iter must be a positive integer"):
         MOEOSMA(max_iter=0)
-    with pytest.raises(ShapeError, match=r"X0 must have shape \(k, 2\)"):
-        minimize(Schaffer(), MOEOSMA(pop_size=5, X0=np.zeros((6, 2))), ("n_gen", 2))
+    with pytest.raises(ShapeError, match=r"X0 must have shape \(k, 2\) with k >= 1"):
+        minimize(Schaffer(), MOEOSMA(pop_size=5, X0=np.zeros((6, 3))), ("n_gen", 2))
+    res = minimize(Schaffer(), MOEOSMA(pop_size=5, X0=np.zeros((6, 2))), ("n_gen", 1))
+    assert res.algorithm.evaluator.n_eval == 6  # more rows than pop_size: all evaluated
     with pytest.raises(ParameterError, match="outside the problem bounds"):
         minimize(Schaffer(), MOEOSMA(pop_size=5, X0=np.full((1, 2), 9.0)), ("n_gen", 2))
 

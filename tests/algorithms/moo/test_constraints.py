@@ -69,7 +69,12 @@ def test_archives_hold_feasible_members_once_one_is_seen(make):
     F = rng.random((20, 2))
     archive.add(np.arange(20.0)[:, None], F, rng=rng, CV=np.linspace(1.0, 0.05, 20),
                 extra=-np.ones((20, 1)))
-    assert len(archive) == 1 and archive.CV[0] == 0.05 and archive.X[0, 0] == 19.0
+    # none feasible: the capacity's least infeasible rows (NSGA-II's constrained survival)
+    np.testing.assert_array_equal(np.sort(archive.X[:, 0]), [15.0, 16.0, 17.0, 18.0, 19.0])
+    np.testing.assert_allclose(np.sort(archive.CV), np.linspace(1.0, 0.05, 20)[-5:][::-1])
+    archive.add(50 + np.arange(2.0)[:, None], F[:2], rng=rng, CV=[0.01, 2.0],
+                extra=-np.ones((2, 1)))  # a better infeasible row replaces the worst
+    assert 50.0 in archive.X[:, 0] and 15.0 not in archive.X[:, 0] and len(archive) == 5
     CV = np.where(np.arange(20) % 2 == 0, 0.0, 1.0)
     archive.add(100 + np.arange(20.0)[:, None], F, rng=rng, CV=CV, extra=np.zeros((20, 1)))
     assert np.all(archive.CV == 0.0) and np.all(archive.extra == 0.0)

@@ -17,11 +17,12 @@ criterion name ``"clearance"`` (maximise the smallest distance) becomes
 
 Geometry of the robot: ``collision=`` a :class:`~moik.collision.CollisionModel` (of
 this robot) or a ready :class:`~moik.collision.CollisionChecker` (used as it is: its
-own scene and self pairs); by default the shipped capsule model of a catalog arm
-(:func:`moik.collision.collision_model`), else the ``<collision>`` geometry of the URDF
-the robot was loaded from (``load_urdf(path, package_dirs=...)``;
-:func:`moik.collision.urdf.robot_model`: its meshes in fitted enclosing capsules, built
-once per robot and cached on disk).
+own scene and self pairs); by default (:func:`default_model`) the ``<collision>``
+geometry of the URDF the robot was loaded from (``load_urdf(path, package_dirs=...)``, and
+the catalog's panda, ur5 and iiwa14; :func:`moik.collision.urdf.robot_model`: its meshes as
+compounds, fitted capsules holding the meshes' convex pieces, built once per robot and
+cached on disk), else the shipped capsule model of a catalog arm
+(:func:`moik.collision.collision_model`).
 
 Never a silent answer: a check with no pair to evaluate (no shape on the robot, or every
 pair allowed) is an error, not ``min_distance=inf``.

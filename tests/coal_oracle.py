@@ -6,13 +6,20 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from moik.collision import Box, Capsule, Sphere
+from moik.collision import Box, Capsule, ConvexHull, Sphere
+from moik.collision.shapes import Compound
 
 coal = pytest.importorskip("coal")
 
 
 def coal_shape(s):
-    """The coal geometry of a moik shape (a half-space is ``z <= 0`` of its pose)."""
+    """The coal geometry of a moik shape (a half-space is ``z <= 0`` of its pose; a hull is
+    coal's convex hull of its points)."""
+    if isinstance(s, ConvexHull):
+        points = coal.StdVec_Vec3s()
+        for p in s.points:
+            points.append(np.array(p, dtype=float))
+        return coal.Convex.convexHull(points, False, "")
     r, h, _ = s.sizes
     if isinstance(s, Sphere):
         return coal.Sphere(r)
@@ -30,9 +37,13 @@ def coal_distances(checker, q) -> np.ndarray:
     req.enable_signed_distance = True
     req.gjk_tolerance = req.epa_tolerance = 1e-14
     out = []
-    for a, b in checker.pair_names:
-        A, B = placed[a], placed[b]
-        out.append(coal.distance(coal_shape(A), coal.Transform3s(A.pose[:3, :3], A.pose[:3, 3]),
-                                 coal_shape(B), coal.Transform3s(B.pose[:3, :3], B.pose[:3, 3]),
-                                 req, coal.DistanceResult()))
+    for a, b in checker.pair_names:  # a compound is measured on its parts (the bound culls)
+        parts_a = placed[a].parts if isinstance(placed[a], Compound) else (placed[a],)
+        parts_b = placed[b].parts if isinstance(placed[b], Compound) else (placed[b],)
+        out.append(min(coal.distance(coal_shape(A), coal.Transform3s(A.pose[:3, :3],
+                                                                     A.pose[:3, 3]),
+                                     coal_shape(B), coal.Transform3s(B.pose[:3, :3],
+                                                                     B.pose[:3, 3]),
+                                     req, coal.DistanceResult())
+                       for A in parts_a for B in parts_b))
     return np.array(out)

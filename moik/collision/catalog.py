@@ -16,7 +16,6 @@ from moik.collision.model import CollisionModel
 from moik.exceptions import UnknownNameError
 from moik.robots.catalog import as_robot
 
-
 MESH_ARMS = ("iiwa14", "panda", "ur5")
 """Catalog arms whose collision geometry is their URDF's own meshes (shipped in
 ``moik/robots/data/packages``): a solve's default geometry for them is

@@ -7,10 +7,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from moik import get_robot
 from moik.cli import main
 from moik.collision import CollisionChecker
-from moik.collision.catalog import collision_model
 from moik.collision.io import load_scene
+from moik.solver.collision import default_model
 
 SCENE = {"obstacles": [
     {"name": "table", "type": "halfspace", "normal": [0, 0, 1], "offset": 0.0},
@@ -31,7 +32,7 @@ def test_json_reports_the_recomputed_distance(scene_file, capsys):
     doc = json.loads(capsys.readouterr().out)
     assert code == 0
     # the scene's pairs only: --self-collision is off unless given, as in solve_ik
-    checker = CollisionChecker(model=collision_model("panda"), scene=load_scene(SCENE))
+    checker = CollisionChecker(model=default_model(get_robot("panda")), scene=load_scene(SCENE))
     for sol in doc["solutions"]:
         d = float(checker.min_distance(np.array(sol["q"])))
         assert sol["min_distance"] == pytest.approx(d, abs=1e-12)
@@ -85,7 +86,7 @@ def test_pareto_members_keep_the_clearance_of_the_scene(scene_file, capsys):
     doc = json.loads(capsys.readouterr().out)
     assert code == 0 and doc["solutions"]
     # the scene's pairs only: --self-collision is off unless given, as in solve_ik
-    checker = CollisionChecker(model=collision_model("panda"), scene=load_scene(SCENE))
+    checker = CollisionChecker(model=default_model(get_robot("panda")), scene=load_scene(SCENE))
     for sol, f in zip(doc["solutions"], doc["F"], strict=True):
         d = float(checker.min_distance(np.array(sol["q"])))
         assert sol["min_distance"] == pytest.approx(d, abs=1e-12)
@@ -115,7 +116,8 @@ def test_self_collision_alone_checks_the_self_pairs(capsys):
                  "--clearance", "0.01", "--json"])
     doc = json.loads(capsys.readouterr().out)
     assert code == 0 and doc["status"] == "solved"
-    checker = CollisionChecker(model=collision_model("panda"), self_collision=True)  # no scene
+    checker = CollisionChecker(model=default_model(get_robot("panda")),
+                               self_collision=True)  # no scene
     assert doc["min_distance"] == pytest.approx(float(checker.min_distance(np.array(doc["q"]))),
                                                 abs=1e-12)
     assert doc["min_distance"] >= 0.01
@@ -126,7 +128,7 @@ def test_scene_and_self_collision_check_both(scene_file, capsys):
                  "--self-collision", "--json"])
     doc = json.loads(capsys.readouterr().out)
     assert code == 0
-    both = CollisionChecker(model=collision_model("panda"), scene=load_scene(SCENE),
+    both = CollisionChecker(model=default_model(get_robot("panda")), scene=load_scene(SCENE),
                             self_collision=True)
     assert doc["min_distance"] == pytest.approx(float(both.min_distance(np.array(doc["q"]))),
                                                 abs=1e-12)

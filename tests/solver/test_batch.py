@@ -10,12 +10,12 @@ import pytest
 
 from moik import solve_ik, solve_ik_batch
 from moik.collision import CollisionChecker, HalfSpace, Scene
-from moik.collision.catalog import collision_model
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetError
 from moik.problems import random_reachable_targets
 from moik.robots import get_robot
 from moik.solver import parallel
 from moik.solver.batch import child_seeds
+from moik.solver.collision import default_model
 
 
 @pytest.mark.parametrize("name", ["eosma7", "ur5", "scara4"])
@@ -123,7 +123,8 @@ def test_answers_are_the_same_for_every_worker_count(monkeypatch):
 
 def test_collision_aware_answers_are_the_same_for_every_worker_count(monkeypatch):
     monkeypatch.setattr(parallel, "POOL_AFTER_S", 0.0)
-    robot, model = get_robot("panda"), collision_model("panda")
+    robot = get_robot("panda")
+    model = default_model(robot)  # the geometry the solves check
     table = Scene({"table": HalfSpace.plane([0, 0, 1], 0.0)},
                   allowed=frozenset([("table", model.links[0]), ("table", model.links[1])]))
     checker = CollisionChecker(model=model, scene=table, self_collision=True)

@@ -4,7 +4,7 @@ answers checked by coal, forced collisions give "collides", defaults unchanged, 
 import numpy as np
 import pytest
 
-from moik import solve_ik
+from moik import get_robot, solve_ik
 from moik.collision import Box, CollisionChecker, HalfSpace, Scene, Sphere
 from moik.collision.catalog import collision_model
 from moik.collision.io import rpy_pose
@@ -12,6 +12,7 @@ from moik.exceptions import GeometryError, MoikError, ParameterError
 from moik.problems.targets import as_target
 from moik.solver import solve_ik_batch, solve_ik_pareto, solve_path
 from moik.solver.batch import child_seeds
+from moik.solver.collision import default_model
 from moik.solver.session import pose_errors
 
 coal = pytest.importorskip("coal")
@@ -27,7 +28,7 @@ def coal_min(checker, q):
 
 @pytest.fixture(scope="module")
 def world():
-    model = collision_model("panda")
+    model = default_model(get_robot("panda"))  # the solve's own: the URDF's meshes
     scene = Scene({"table": HalfSpace.plane([0, 0, 1], 0.0),
                    "box": Box(size=(0.2, 0.2, 0.2), pose=rpy_pose([0.5, 0.0, 0.4])),
                    "ball": Sphere(radius=0.1, pose=rpy_pose([0.0, 0.5, 0.5]))},

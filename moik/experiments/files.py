@@ -9,7 +9,6 @@ file; a crash leaves at most such a temporary, which the next run removes
 
 from __future__ import annotations
 
-import contextlib
 import os
 import platform
 import socket
@@ -21,6 +20,7 @@ import numpy as np
 import pymoo
 import scipy
 
+from moik import _paths
 from moik._version import __version__
 from moik.exceptions import ResultsError
 
@@ -52,35 +52,32 @@ def make_folders(folder: Path) -> Path | None:
     return made
 
 
-def atomic_write_bytes(path: Path, data: bytes) -> None:
-    """Write ``data`` to ``path`` atomically (temporary file + ``os.replace``).
+def atomic_write_bytes(path: Path, data: bytes, *, folder: str | Path | None = None) -> None:
+    """Write ``data`` to ``path`` atomically (temporary file + ``os.replace``), never through
+    a symbolic link, and (with ``folder``) only inside ``folder``
+    (:func:`moik._paths.atomic_write_bytes`).
 
     Raises:
-        ResultsError: If the write fails (a full disk: names ``path``); the
-            temporary file is removed and ``path`` keeps its former content.
+        ResultsError: If the path is refused or the write fails (a full disk: names
+            ``path``); the temporary file is removed (also on Ctrl-C) and ``path`` keeps
+            its former content.
     """
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    try:
-        with open(tmp, "wb") as fh:
-            fh.write(data)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except OSError as exc:
-        with contextlib.suppress(OSError):
-            tmp.unlink()
-        raise ResultsError(f"cannot write {str(path)!r}: {exc.strerror or exc}") from exc
+    _paths.atomic_write_bytes(path, data, folder=folder)
 
 
 def remove_stale_temporaries(folder: Path) -> int:
     """Delete the ``.NAME.PID.tmp`` files interrupted atomic writes left in ``folder``.
 
     Only safe while holding the folder's run lock (no other writer). Returns the count.
+
+    Raises:
+        ResultsError: ``folder/arrays`` is a symbolic link (nothing is deleted through it).
     """
     removed = 0
     for where in (folder, folder / "arrays"):
+        _paths.inside(folder, where)
         for tmp in where.glob(".*.tmp"):
-            tmp.unlink(missing_ok=True)
+            _paths.remove(folder, tmp)
             removed += 1
     return removed
 

@@ -10,9 +10,11 @@ warn with the file and the line number instead of failing on it.
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass, field
 from pathlib import Path
+
+from moik import _paths, _reading
+from moik.exceptions import MoikError, ResultsError
 
 REQUIRED = {"trial": str, "status": str, "algorithm": str, "target": int, "run": int}
 """The fields (and their JSON types) every stored trial record has."""
@@ -27,7 +29,12 @@ def record_problem(record: object) -> str | None:
             return f"no {key!r} field"
         value = record[key]
         if not isinstance(value, kind) or isinstance(value, bool):
-            return f"{key!r} is {value!r}, expected a {kind.__name__}"
+            shown = repr(value) if len(repr(value)) <= 60 else repr(value)[:57] + "..."
+            return f"{key!r} is {shown}, expected a {kind.__name__}"
+    try:
+        _paths.file_name(record["trial"].replace("/", "__"), "its trial id")
+    except ResultsError as exc:
+        return str(exc)
     return None
 
 
@@ -57,12 +64,18 @@ class Lines:
 
 
 def read_lines(path: Path) -> Lines:
-    """Parse ``path`` (missing: no lines) into trial records and malformed lines."""
+    """Parse ``path`` (missing: no lines) into trial records and malformed lines.
+
+    Raises:
+        ResultsError: ``path`` is not a regular file, or cannot be read.
+    """
     out = Lines()
-    try:
-        data = path.read_bytes()
-    except FileNotFoundError:
+    if not path.exists() and not path.is_symlink():
         return out
+    if path.is_symlink():
+        raise ResultsError(f"{str(path)!r} is a symbolic link; moik reads and appends to "
+                           "the results.jsonl of the folder itself only: remove it")
+    data = _reading.read_bytes(path, "results file", ResultsError, limit=2**32)
     lines = data.split(b"\n")
     out.torn_tail = lines[-1] != b""
     for number, line in enumerate(lines[:-1], start=1):
@@ -70,9 +83,11 @@ def read_lines(path: Path) -> Lines:
             out.malformed.append((number, "an empty line"))
             continue
         try:
-            record = json.loads(line)
-        except ValueError as exc:
-            out.malformed.append((number, f"not JSON ({str(exc).split(':')[0]})"))
+            record = _reading.parse_json(line, "the line", ResultsError)
+        except MoikError as exc:
+            why = str(exc).removeprefix("the line ")
+            why = why.split(": ", 1)[1].split(":")[0] if "not valid JSON" in why else why
+            out.malformed.append((number, f"not JSON ({why[:100]})"))
             continue
         why = record_problem(record)
         if why is None:

@@ -15,6 +15,7 @@ import json
 import os
 from pathlib import Path
 
+from moik._paths import file_name
 from moik.exceptions import ResultsError
 from moik.experiments.records import read_lines
 
@@ -45,14 +46,40 @@ def repair_meta(meta: dict) -> list[str]:
     return notes
 
 
-def meta_problem(meta: dict) -> str | None:
-    """What makes ``meta`` unusable for resuming (a missing or mistyped field), or None."""
-    for key, kind in META_REQUIRED.items():
+READ_REQUIRED = {"experiment": str, "config": dict, "targets": list}
+"""The ``meta.json`` fields every reader needs (the fingerprint and sessions are repairable)."""
+CONFIG_REQUIRED = {"name": str, "title": str, "source": str, "problem": dict}
+"""The fields of ``meta.json``'s stored config the report reads."""
+
+
+def meta_problem(meta: dict, *, reading: bool = False) -> str | None:
+    """What makes ``meta`` unusable (a missing or mistyped field), or None.
+
+    Args:
+        meta: The parsed ``meta.json``.
+        reading: Check only what a reader needs (:data:`READ_REQUIRED`); else also what
+            resuming needs (:data:`META_REQUIRED`).
+    """
+    required = READ_REQUIRED if reading else {**META_REQUIRED, **READ_REQUIRED}
+    for key, kind in required.items():
         if key not in meta:
             return f"lacks {key!r}"
         if not isinstance(meta[key], kind):
-            return f"has {key!r} = {meta[key]!r}, expected a {kind.__name__}"
+            return f"has {key!r} = {_short(meta[key])}, expected a {kind.__name__}"
+    for key, kind in CONFIG_REQUIRED.items():
+        value = meta["config"].get(key)
+        if not isinstance(value, kind):
+            return f"has a config whose {key!r} is {_short(value)}, expected a {kind.__name__}"
+    try:
+        file_name(meta["experiment"], "its experiment name")
+    except ResultsError as exc:
+        return f"has {exc}"
     return None
+
+
+def _short(value: object) -> str:
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
 
 
 def adopt(folder: Path, config, problem: str, resume: bool) -> list[str]:

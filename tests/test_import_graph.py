@@ -6,7 +6,7 @@ import ast
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1] / "moik"
-ORDER = ("exceptions", "_validate", "_kernel_cache", "_jit", "_version", "_lazy", "_background",
+ORDER = ("exceptions", "_validate", "_paths", "_toml", "_reading", "_kernel_cache", "_jit", "_version", "_lazy", "_background",
          "robots", "kinematics", "collision", "fronts", "problems")
 INDEPENDENT = {"algorithms": {"algorithms", "exceptions", "_validate", "_jit"},
                "metrics": {"metrics", "exceptions", "_validate", "_jit", "_lazy"}}

@@ -34,12 +34,12 @@ from __future__ import annotations
 
 import datetime as _dt
 import re
-import shutil
 import sys
 import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from moik._paths import file_name, inside, remove
 from moik.exceptions import ResultsError
 from moik.experiments.files import atomic_write_bytes, git_commit
 from moik.experiments.headlines import headline
@@ -47,6 +47,7 @@ from moik.experiments.report import (
     FOLDER_ERRORS,
     damaged_warning,
     experiment_section,
+    md,
     result_folders,
 )
 from moik.experiments.store import ResultStore
@@ -125,8 +126,13 @@ def stamp(store: ResultStore, res: Results, *, generated_at: str | None) -> str:
 
 
 def page_name(store: ResultStore) -> str:
-    """``NAME`` of ``DOCS/results/NAME.md`` for this results folder."""
-    return store.meta["experiment"] + ("-quick" if store.meta.get("quick") else "")
+    """``NAME`` of ``DOCS/results/NAME.md`` for this results folder.
+
+    Raises:
+        ResultsError: An experiment name that cannot name a file (``../x``, a NUL ...).
+    """
+    name = file_name(store.meta["experiment"], "the experiment name in meta.json")
+    return name + ("-quick" if store.meta.get("quick") else "")
 
 
 @dataclass
@@ -165,19 +171,21 @@ def _page(store: ResultStore, docs: Path, name: str, line: str, *, figures: bool
             return (Path("figures") / name / png.name).as_posix()
 
         section = experiment_section(store, figures=figures, link=link, figure_folder=Path(tmp))
+        inside(docs, fig_dir)
         if fig_dir.is_dir():
             for old in fig_dir.glob("*.png"):
-                old.unlink()
+                remove(docs, old)
         if drawn:
             fig_dir.mkdir(parents=True, exist_ok=True)
             for src, dst in drawn.items():
-                shutil.copyfile(src, dst)
-    text = (f"# {name}: generated results\n\n{line}\n\nGenerated from the stored results by "
+                atomic_write_bytes(dst, src.read_bytes(), folder=docs)
+    text = (f"# {name}: generated results\n\n{md(line)}\n\nGenerated from the stored results by "
             "`moik report RESULTS --docs docs` (do not edit by hand: the next run replaces this "
             "file).\n\n" + section)
     path = results / f"{name}.md"
+    inside(docs, results)
     results.mkdir(parents=True, exist_ok=True)
-    atomic_write_bytes(path, text.encode())
+    atomic_write_bytes(path, text.encode(), folder=docs)
     return path
 
 
@@ -225,6 +233,9 @@ def write_docs(folders, docs: str | Path, *, figures: bool = True) -> DocsUpdate
         ResultsError: If no results folder among ``folders`` can be read.
     """
     docs, update = Path(docs), DocsUpdate()
+    if not docs.is_dir():
+        raise ResultsError(f"the docs folder {str(docs)!r} does not exist (or is not a folder): "
+                           "give the docs folder that holds reproducing.md")
     summaries: dict[str, str] = {}
     generated_at = git_commit()
     subs = []
@@ -243,11 +254,11 @@ def write_docs(folders, docs: str | Path, *, figures: bool = True) -> DocsUpdate
             line = stamp(store, res, generated_at=generated_at)
             name = page_name(store)
             update.pages.append(_page(store, docs, name, line, figures=figures))
-            body = "\n".join(headline(res)).rstrip("\n")
+            body = "\n".join(map(md, headline(res))).rstrip("\n")
             if store.meta["experiment"] in summaries:
                 _warn(update, f"{sub}: a second results folder of {store.meta['experiment']!r}; "
                               "its summary replaces the earlier one's")
-            summaries[store.meta["experiment"]] = f"{line}\n\n{body}\n"
+            summaries[store.meta["experiment"]] = f"{md(line)}\n\n{body}\n"
             used += 1
         except FOLDER_ERRORS as exc:
             _warn(update, f"{sub} left out: {exc.__class__.__name__}: {exc}")
@@ -262,7 +273,7 @@ def write_docs(folders, docs: str | Path, *, figures: bool = True) -> DocsUpdate
             if BLOCK.search(old):
                 update.block_pages.append(page)
             if new != old:
-                atomic_write_bytes(page, new.encode())
+                atomic_write_bytes(page, new.encode(), folder=docs)
         elif page_file == SUMMARY_PAGES[0]:
             _warn(update, f"{page} does not exist: only the results pages were written")
     return update

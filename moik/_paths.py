@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import secrets
 from pathlib import Path
 
 from moik.exceptions import MoikError, ResultsError
@@ -80,7 +81,7 @@ def inside(folder: str | Path, path: str | Path) -> Path:
 def atomic_write_bytes(path: Path, data: bytes, *, folder: str | Path | None = None) -> None:
     """Write ``data`` to ``path`` atomically (temporary file + ``os.replace``).
 
-    The temporary ``.NAME.PID.tmp`` is created with ``O_EXCL | O_NOFOLLOW`` and removed
+    The temporary ``.NAME.PID.RANDOM.tmp`` is created with ``O_EXCL | O_NOFOLLOW`` and removed
     again whatever interrupts the write (a full disk, Ctrl-C, SIGTERM). With ``folder``,
     ``path`` is first checked to lie inside it without links (:func:`inside`); ``path``
     itself being a link is always refused (the link would be replaced, not written
@@ -96,12 +97,9 @@ def atomic_write_bytes(path: Path, data: bytes, *, folder: str | Path | None = N
     if path.is_symlink():
         raise ResultsError(f"{str(path)!r} is a symbolic link; moik does not write through "
                            "links: remove it")
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.{secrets.token_hex(4)}.tmp")
     created = False
     try:
-        with contextlib.suppress(FileNotFoundError):
-            if tmp.is_symlink() or tmp.is_file():
-                tmp.unlink()  # this process's own leftover (or a planted link): not followed
         fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | _NOFOLLOW, 0o644)
         created = True
         with os.fdopen(fd, "wb") as fh:

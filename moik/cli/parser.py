@@ -30,6 +30,14 @@ def positive_int(text: str) -> int:
     return value
 
 
+def nonempty(text: str) -> str:
+    """An argparse type: a file, folder or list given on the command line is not empty
+    (``--out ""`` must not silently mean the default)."""
+    if not text:
+        raise argparse.ArgumentTypeError("expected a non-empty value, got ''")
+    return text
+
+
 LIBRARY_DEFAULTS = {"max_evals": ("solve_ik", "max_evals"), "method": ("solve_ik", "method"),
                     "starts": ("solve_ik", "starts"), "seed": ("solve_ik", "seed"),
                     "n_solutions": ("solve_ik", "n_solutions"),
@@ -73,10 +81,10 @@ class LibraryDefaultsFormatter(argparse.HelpFormatter):
 
 
 def _robot_arguments(p: argparse.ArgumentParser, optional: bool = False) -> None:
-    p.add_argument("robot", nargs="?" if optional else None,
+    p.add_argument("robot", nargs="?" if optional else None, type=nonempty,
                    help="catalog name (see `moik robots`) or URDF file")
-    p.add_argument("--base", metavar="LINK", help="URDF: first link of the chain")
-    p.add_argument("--tip", metavar="LINK", help="URDF: last link of the chain")
+    p.add_argument("--base", metavar="LINK", type=nonempty, help="URDF: first link of the chain")
+    p.add_argument("--tip", metavar="LINK", type=nonempty, help="URDF: last link of the chain")
     p.add_argument("--json", action="store_true", help="print JSON (see `pydoc moik.cli`)")
 
 
@@ -93,7 +101,7 @@ def _solve_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--q-current", nargs="+", type=float, metavar="Q",
                    help="current joint values (rad, deg with --deg): the first start; "
                         "solutions nearest to it first; needed by --pareto joint_motion")
-    p.add_argument("--scene", metavar="FILE",
+    p.add_argument("--scene", metavar="FILE", type=nonempty,
                    help="JSON scene of obstacles: solve for collision-free solutions (scene and "
                         "self pairs, shipped capsule models of the catalog arms) and report "
                         "each one's distance; status collides (exit 1) if all exact ones collide")
@@ -116,13 +124,13 @@ def _solve_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--seed", type=int, help="random seed, an integer >= 0 (default {default})")
     p.add_argument("--n-solutions", type=int,
                    help="distinct solutions wanted (default {default})")
-    p.add_argument("--plot", metavar="FILE",
+    p.add_argument("--plot", metavar="FILE", type=nonempty,
                    help="save a 3-D drawing: FILE.png, .pdf or .svg (no extension: .png and .pdf)")
-    p.add_argument("--html", metavar="FILE",
+    p.add_argument("--html", metavar="FILE", type=nonempty,
                    help="write the interactive explorer, one self-contained HTML file (needs "
                         "moik[explorer]): the Pareto set with --pareto, else the error front "
                         "of an unreachable pose; a click on a point shows its posture")
-    p.add_argument("--pareto", metavar="CRITERIA",
+    p.add_argument("--pareto", metavar="CRITERIA", type=nonempty,
                    help="the Pareto set of exact solutions over these comma-separated "
                         f"criteria ({', '.join(CRITERIA_NAMES)})")
     p.add_argument("--preferred-euler", nargs=3, type=float, metavar=("A", "B", "C"),
@@ -147,7 +155,7 @@ def _experiment_arguments(sub) -> None:
     which = q.add_mutually_exclusive_group(required=True)
     which.add_argument("name", nargs="?",
                        help="experiment name (see `moik experiment list`) or config file")
-    which.add_argument("--config", metavar="FILE",
+    which.add_argument("--config", metavar="FILE", type=nonempty,
                        help="run the experiment defined by this TOML config file (your own; "
                             f"the folders in {EXPERIMENTS_ENV} are listed by name too)")
     q.add_argument("--quick", action="store_true", help="the seconds-long smoke-test size")
@@ -155,9 +163,9 @@ def _experiment_arguments(sub) -> None:
                    help="worker processes (default: the number of cores; 1 = serial)")
     q.add_argument("--resume", action="store_true",
                    help="continue the results in --out, skipping finished trials")
-    q.add_argument("--out", metavar="DIR",
+    q.add_argument("--out", metavar="DIR", type=nonempty,
                    help="results folder (default results/NAME or results/NAME-quick)")
-    q.add_argument("--dask-scheduler", metavar="ADDRESS",
+    q.add_argument("--dask-scheduler", metavar="ADDRESS", type=nonempty,
                    help="run on a Dask distributed scheduler (needs moik[dask])")
     q.add_argument("--limit", type=positive_int, default=None,
                    help="run at most this many pending trials, then stop")
@@ -171,13 +179,14 @@ def _experiment_arguments(sub) -> None:
                                    "and figures. DIR is a results folder or a folder of them. "
                                    "With --docs DOCS: write DOCS/results/NAME.md per experiment "
                                    "and regenerate its blocks in DOCS/reproducing.md.")
-    p.add_argument("folder", metavar="DIR", nargs="+",
+    p.add_argument("folder", metavar="DIR", type=nonempty, nargs="+",
                    help="results folder (or a folder of them)")
     p.add_argument("--no-figures", action="store_true", help="tables only")
-    p.add_argument("--output", metavar="FILE", help="report file (default DIR/report.md)")
-    p.add_argument("--docs", metavar="DOCS",
+    p.add_argument("--output", metavar="FILE", type=nonempty,
+                   help="report file (default DIR/report.md)")
+    p.add_argument("--docs", metavar="DOCS", type=nonempty,
                    help="docs folder to regenerate from the results (e.g. docs/)")
-    p.add_argument("--html", metavar="FILE", nargs="?", const="",
+    p.add_argument("--html", metavar="FILE", nargs="?", const="", type=nonempty,
                    help="write the interactive report instead (fronts linked to postures, "
                         "convergence, the tables; needs moik[explorer]): FILE, default "
                         "DIR/report.html")

@@ -1,7 +1,7 @@
 """Files of a results folder: atomic writes, stale temporaries, reading ``.npz`` arrays back,
 and the description of the run's environment that ``meta.json`` records.
 
-Every file a run writes goes to ``.NAME.PID.tmp`` first and is moved into place
+Every file a run writes goes to ``.NAME.PID.RANDOM.tmp`` first and is moved into place
 with ``os.replace`` (atomic on POSIX and Windows), so a reader never sees half a
 file; a crash leaves at most such a temporary, which the next run removes
 (:func:`remove_stale_temporaries`, under the folder's run lock).
@@ -66,7 +66,7 @@ def atomic_write_bytes(path: Path, data: bytes, *, folder: str | Path | None = N
 
 
 def remove_stale_temporaries(folder: Path) -> int:
-    """Delete the ``.NAME.PID.tmp`` files interrupted atomic writes left in ``folder``.
+    """Delete the ``.NAME.*.tmp`` files interrupted atomic writes left in ``folder``.
 
     Only safe while holding the folder's run lock (no other writer). Returns the count.
 

@@ -67,6 +67,12 @@ class Results:
         return np.array([np.inf if r.get(key) is None else r[key] for r in self.by_label[label]],
                         dtype=float)
 
+    def scalar_labels(self) -> list[str]:
+        """The labels whose trials stored a final objective value (``best_f``): a
+        multi-objective trial stores a front instead, and has none to summarise."""
+        return [lab for lab in self.labels
+                if any(r.get("best_f") is not None for r in self.by_label[lab])]
+
     def notes(self) -> list[str]:
         """Counts of finished and failed trials, then the config's ``paper["notes"]``."""
         planned = self.meta.get("trials")

@@ -21,9 +21,14 @@ from moik.kinematics.orientation import available_metrics
 
 DEFAULT_POP_SIZES = (20, 40)  # search population: one solution wanted, several
 
-# (name, smallest value) of the integer options
-_COUNTS = (("n_solutions", 1), ("max_evals", 1), ("starts", 0), ("generations", 1),
-           ("candidates_per_round", 1), ("patience", 1), ("front_evals", 1))
+MAX_SOLUTIONS = 100_000
+"""Most distinct solutions one solve may ask for (each costs memory up front)."""
+
+# (name, smallest value, largest value) of the integer options: the largest keep what
+# is allocated up front bounded (a typo such as 1000000000 must not ask for 67 GiB)
+_COUNTS = (("n_solutions", 1, MAX_SOLUTIONS), ("max_evals", 1, 10**12), ("starts", 0, 10**6),
+           ("generations", 1, 10**7), ("candidates_per_round", 1, 10**4),
+           ("patience", 1, 10**7), ("front_evals", 1, 10**12))
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -59,9 +64,10 @@ class SearchOptions:
     front_evals: int = 10_000
 
     def __post_init__(self) -> None:
-        for name, low in _COUNTS:
-            object.__setattr__(self, name, integer(name, getattr(self, name), minimum=low))
-        pop_size = optional_integer("pop_size", self.pop_size, minimum=2)
+        for name, low, high in _COUNTS:
+            object.__setattr__(self, name, integer(name, getattr(self, name), minimum=low,
+                                                   maximum=high))
+        pop_size = optional_integer("pop_size", self.pop_size, minimum=2, maximum=10**6)
         if pop_size is None:
             pop_size = DEFAULT_POP_SIZES[0] if self.n_solutions == 1 else DEFAULT_POP_SIZES[1]
         object.__setattr__(self, "pop_size", pop_size)

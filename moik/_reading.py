@@ -41,12 +41,12 @@ def read_bytes(path: str | Path, what: str, error: type[MoikError], *,
     try:
         fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
     except FileNotFoundError:
-        raise error(f"{what} {str(path)!r} does not exist") from None
+        raise error(f"cannot read {what} {str(path)!r}: it does not exist") from None
     except OSError as exc:
         raise error(f"cannot read {what} {str(path)!r}: {exc.strerror or exc}") from None
     try:
         if not stat.S_ISREG(os.fstat(fd).st_mode):
-            raise error(f"{what} {str(path)!r} is not a regular file")
+            raise error(f"cannot read {what} {str(path)!r}: it is not a regular file")
         chunks, size = [], 0
         while True:
             chunk = os.read(fd, 1 << 20)
@@ -54,7 +54,7 @@ def read_bytes(path: str | Path, what: str, error: type[MoikError], *,
                 break
             size += len(chunk)
             if size > limit:
-                raise error(f"{what} {str(path)!r} is larger than {limit} bytes")
+                raise error(f"cannot read {what} {str(path)!r}: larger than {limit} bytes")
             chunks.append(chunk)
         return b"".join(chunks)
     except OSError as exc:

@@ -7,7 +7,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1] / "moik"
 ORDER = ("exceptions", "_validate", "_paths", "_toml", "_reading", "_kernel_cache", "_jit",
-         "_version", "_lazy", "_background", "robots", "kinematics", "collision", "fronts", "problems")
+         "_version", "_lazy", "_background", "robots", "kinematics", "collision", "fronts",
+         "problems")
 INDEPENDENT = {"algorithms": {"algorithms", "exceptions", "_validate", "_jit"},
                "metrics": {"metrics", "exceptions", "_validate", "_jit", "_lazy"}}
 LAZY = {("cli", "moik.plotting"),  # matplotlib only when a plot is asked for

@@ -39,7 +39,8 @@ def test_defaults_are_normalised():
     ({"front_method": "eosma"}, ParameterError, "front_method must be a multi-objective"),
     ({"method": "nope"}, UnknownNameError, "unknown algorithm 'nope'"),
     ({"orientation": 3}, UnknownNameError, "unknown orientation metric 3"),
-    ({"pop_size": True}, ParameterError, r"pop_size must be an integer in \[2, 1000000\], got True"),
+    ({"pop_size": True}, ParameterError,
+     r"pop_size must be an integer in \[2, 1000000\], got True"),
     ({"pop_size": 2, "method": "eosma"}, ParameterError, "pop_size must be an integer >= 3"),
     ({"starts": 2.5}, ParameterError, r"starts must be an integer in \[0, 1000000\], got 2.5"),
     ({"distinct": -1}, ParameterError, r"distinct must be a (positive )?finite number"),
@@ -89,7 +90,8 @@ def test_defaults_come_from_search_options():
     assert {f.name: f.default for f in fields(SearchOptions)} == SEARCH_DEFAULTS
     assert SearchOptions.of(**SEARCH_DEFAULTS) is DEFAULT_OPTIONS == SearchOptions()
     assert SearchOptions.of(**{**SEARCH_DEFAULTS, "n_solutions": 2}).pop_size == 40
-    with pytest.raises(ParameterError, match=r"n_solutions must be an integer in \[1, 100000\], got True"):
+    with pytest.raises(ParameterError,
+                       match=r"n_solutions must be an integer in \[1, 100000\], got True"):
         SearchOptions.of(**{**SEARCH_DEFAULTS, "n_solutions": True})  # True == 1, refused
 
 

@@ -18,8 +18,7 @@ from moik.experiments.report import make_report, md
 from moik.experiments.runner import run_experiment
 from moik.experiments.store import ResultStore
 from moik.experiments.tables import Results
-
-from .conftest import TINY
+from tests.experiments.conftest import TINY
 
 
 @pytest.fixture(scope="module")

@@ -112,7 +112,7 @@ def stamp(store: ResultStore, res: Results, *, generated_at: str | None) -> str:
     run_commits = list(dict.fromkeys(_short(s.get("git_commit", meta.get("git_commit")))
                                      for s in sessions)) or [_short(meta.get("git_commit"))]
     versions = list(dict.fromkeys(s.get("versions", meta.get("versions", {})).get("moik", "?")
-                                  for s in sessions)) or [meta["versions"]["moik"]]
+                                  for s in sessions)) or [meta.get("versions", {}).get("moik", "?")]
     executors = ", ".join(dict.fromkeys(s.get("executor", "?") for s in sessions))
     seconds, measured = wall_time(store, res.ok + res.failed)
     started = (sessions[0].get("started") or "?")[:10] if sessions else "?"

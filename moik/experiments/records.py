@@ -20,6 +20,14 @@ REQUIRED = {"trial": str, "status": str, "algorithm": str, "target": int, "run":
 """The fields (and their JSON types) every stored trial record has."""
 
 
+_NUMBER = (int, float, type(None))
+TYPED = {"time": _NUMBER, "n_eval": _NUMBER, "best_f": _NUMBER, "position_error": _NUMBER,
+         "orientation_error": _NUMBER, "attempts": _NUMBER, "hv": _NUMBER, "igd": _NUMBER,
+         "has_arrays": bool, "arrays": list, "target_name": str, "error": (str, type(None)),
+         "experiment": str, "config_fingerprint": str, "finished_at": (str, type(None))}
+"""The JSON types of the other fields the report reads, where a record has them."""
+
+
 def record_problem(record: object) -> str | None:
     """Why ``record`` (a parsed line) is not a trial record, or None when it is one."""
     if not isinstance(record, dict):
@@ -31,6 +39,15 @@ def record_problem(record: object) -> str | None:
         if not isinstance(value, kind) or isinstance(value, bool):
             shown = repr(value) if len(repr(value)) <= 60 else repr(value)[:57] + "..."
             return f"{key!r} is {shown}, expected a {kind.__name__}"
+    for key, kind in TYPED.items():
+        value = record.get(key)
+        kinds = kind if isinstance(kind, tuple) else (kind,)
+        if key in record and (not isinstance(value, kinds) or
+                              isinstance(value, bool) and bool not in kinds):
+            shown = repr(value) if len(repr(value)) <= 60 else repr(value)[:57] + "..."
+            return f"{key!r} is {shown}, not of the type moik writes"
+    if any(not isinstance(a, str) for a in record.get("arrays", [])):
+        return "'arrays' holds entries that are not names"
     try:
         _paths.file_name(record["trial"].replace("/", "__"), "its trial id")
     except ResultsError as exc:

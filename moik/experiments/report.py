@@ -101,7 +101,8 @@ def experiment_section(store: ResultStore, *, figures: bool, link: Callable[[Pat
     algs = ", ".join(meta.get("algorithms", []))
     if meta.get("skipped_algorithms"):
         algs += (" (not registered, left out: " + ", ".join(meta["skipped_algorithms"]) + ")")
-    sess = meta["sessions"]
+    sess = meta.get("sessions", [])
+    versions, machine = meta.get("versions", {}), meta.get("machine", {})
     lines = [f"## {cfg['name']}: {cfg['title']} ({size})", "",
              f"- source: {cfg['source']}",
              (f"- benchmark problems {', '.join(t['name'] for t in meta['targets'])}, "
@@ -117,11 +118,11 @@ def experiment_section(store: ResultStore, *, figures: bool, link: Callable[[Pat
                 else f"iterations {cfg['iterations']}, ")
              + f"seed {cfg['seed']}",
              f"- algorithms: {algs}",
-             f"- moik {meta['versions']['moik']}, pymoo {meta['versions']['pymoo']}, numpy "
-             f"{meta['versions']['numpy']}, commit {meta.get('git_commit') or 'unknown'}; "
-             f"machine {meta['machine']['hostname']} ({meta['machine']['platform']}, "
-             f"{meta['machine']['cpu_count']} cores)",
-             "- sessions: " + "; ".join(f"{s['started']} ({s.get('executor', '?')})"
+             f"- moik {versions.get('moik', '?')}, pymoo {versions.get('pymoo', '?')}, numpy "
+             f"{versions.get('numpy', '?')}, commit {meta.get('git_commit') or 'unknown'}; "
+             f"machine {machine.get('hostname', '?')} ({machine.get('platform', '?')}, "
+             f"{machine.get('cpu_count', '?')} cores)",
+             "- sessions: " + "; ".join(f"{s.get('started', '?')} ({s.get('executor', '?')})"
                                         for s in sess),
              f"- results folder: `{_code(store.folder)}`"]
     lines = [md(line) for line in lines]

@@ -51,7 +51,8 @@ import numpy as np
 
 from moik import _paths, _reading
 from moik._validate import flag
-from moik.exceptions import ResultsError
+from moik.exceptions import MoikError, ResultsError
+from moik.experiments.config import ExperimentConfig
 from moik.experiments.files import (
     atomic_write_bytes,
     environment,
@@ -142,6 +143,11 @@ class ResultStore:
         why = meta_problem(meta, reading=True)
         if why is not None:
             raise ResultsError(f"{folder}/meta.json {why}")
+        try:  # the stored config is checked as a config file is (the report reads it)
+            ExperimentConfig.from_dict(meta["config"], path=f"{folder}/meta.json: config",
+                                       is_quick=bool(meta.get("quick")))
+        except MoikError as exc:
+            raise ResultsError(f"{folder}/meta.json holds an invalid config: {exc}") from None
         store = cls(folder, meta)
         if flag("verify", verify):
             store.damaged = store.check_arrays()

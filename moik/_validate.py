@@ -60,11 +60,9 @@ def integer(name: str, value: object, *, minimum: int | None = None, maximum: in
 
 
 def optional_integer(name: str, value: object, *, minimum: int | None = None,
-                     maximum: int | None = None, error: type[MoikError] = ParameterError
-                     ) -> int | None:
+                     error: type[MoikError] = ParameterError) -> int | None:
     """``None`` or :func:`integer`."""
-    return None if value is None else integer(name, value, minimum=minimum, maximum=maximum,
-                                              error=error)
+    return None if value is None else integer(name, value, minimum=minimum, error=error)
 
 
 def number(name: str, value: object, *, minimum: float | None = None,

@@ -23,16 +23,7 @@ from hypothesis import strategies as st
 from moik import get_robot
 from moik.cli import main
 from moik.collision.catalog import collision_model
-from moik.collision.io import (
-    MODEL_KEYS,
-    PLACEMENT_KEYS,
-    SCENE_KEYS,
-    SHAPE_TYPES,
-    SIZE_KEYS,
-    load_model,
-    load_scene,
-    model_to_dict,
-)
+from moik.collision.io import load_model, load_scene, model_to_dict
 from moik.exceptions import MoikError, MoikWarning
 from moik.experiments.config import ExperimentConfig, load_config
 from moik.experiments.docs import stamp, write_docs
@@ -43,6 +34,15 @@ from moik.experiments.runner import run_experiment
 from moik.experiments.store import ResultStore
 from moik.experiments.tables import Results
 from tests.experiments.conftest import TINY
+
+# the file formats as moik/collision/io.py documents them (the oracle of "no key ignored")
+SHAPE_TYPES = ("box", "capsule", "cylinder", "halfspace", "sphere")
+PLACEMENT_KEYS = ("type", "pose", "xyz", "rpy")
+SIZE_KEYS = {"sphere": ("radius",), "capsule": ("radius", "length", "a", "b"),
+             "cylinder": ("radius", "length"), "box": ("size",),
+             "halfspace": ("normal", "offset")}
+SCENE_KEYS = ("obstacles", "allowed")
+MODEL_KEYS = ("robot", "dof", "links", "shapes", "allowed", "source", "acm")
 
 FUZZ = settings(max_examples=60, deadline=None,
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])

@@ -186,7 +186,7 @@ def _experiment_arguments(sub) -> None:
                    help="report file (default DIR/report.md)")
     p.add_argument("--docs", metavar="DOCS", type=nonempty,
                    help="docs folder to regenerate from the results (e.g. docs/)")
-    p.add_argument("--html", metavar="FILE", nargs="?", const="", type=nonempty,
+    p.add_argument("--html", metavar="FILE", nargs="?", const="",
                    help="write the interactive report instead (fronts linked to postures, "
                         "convergence, the tables; needs moik[explorer]): FILE, default "
                         "DIR/report.html")

@@ -23,7 +23,7 @@ REQUIRED = {"trial": str, "status": str, "algorithm": str, "target": int, "run":
 _NUMBER = (int, float, type(None))
 TYPED = {"time": _NUMBER, "n_eval": _NUMBER, "best_f": _NUMBER, "position_error": _NUMBER,
          "orientation_error": _NUMBER, "attempts": _NUMBER, "hv": _NUMBER, "igd": _NUMBER,
-         "has_arrays": bool, "arrays": list, "target_name": str, "error": (str, type(None)),
+         "has_arrays": bool, "arrays": list, "target_name": str,
          "experiment": str, "config_fingerprint": str, "finished_at": (str, type(None))}
 """The JSON types of the other fields the report reads, where a record has them."""
 

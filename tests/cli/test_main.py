@@ -505,7 +505,7 @@ def test_a_signal_ends_any_command_with_one_line(sig, status, name):
 
 @pytest.mark.parametrize("argv, match", [
     (["solve", "planar2", "--target", "1", "0", "0", "--n-solutions", "1000000000"],
-     r"n-solutions must be an integer in \[1, 100000\]"),
+     "n-solutions must be at most 100000"),
     (["solve", "planar2", "--target", "1", "0", "0", "--scene", "/dev/zero"],
      "not a regular file"),
     (["experiment", "run", "--config", "/dev/null"], "not a regular file"),

@@ -39,10 +39,9 @@ def test_defaults_are_normalised():
     ({"front_method": "eosma"}, ParameterError, "front_method must be a multi-objective"),
     ({"method": "nope"}, UnknownNameError, "unknown algorithm 'nope'"),
     ({"orientation": 3}, UnknownNameError, "unknown orientation metric 3"),
-    ({"pop_size": True}, ParameterError,
-     r"pop_size must be an integer in \[2, 1000000\], got True"),
+    ({"pop_size": True}, ParameterError, "pop_size must be an integer >= 2, got True"),
     ({"pop_size": 2, "method": "eosma"}, ParameterError, "pop_size must be an integer >= 3"),
-    ({"starts": 2.5}, ParameterError, r"starts must be an integer in \[0, 1000000\], got 2.5"),
+    ({"starts": 2.5}, ParameterError, "starts must be an integer >= 0, got 2.5"),
     ({"distinct": -1}, ParameterError, r"distinct must be a (positive )?finite number"),
 ])
 def test_bad_values(change, error, message):
@@ -90,8 +89,7 @@ def test_defaults_come_from_search_options():
     assert {f.name: f.default for f in fields(SearchOptions)} == SEARCH_DEFAULTS
     assert SearchOptions.of(**SEARCH_DEFAULTS) is DEFAULT_OPTIONS == SearchOptions()
     assert SearchOptions.of(**{**SEARCH_DEFAULTS, "n_solutions": 2}).pop_size == 40
-    with pytest.raises(ParameterError,
-                       match=r"n_solutions must be an integer in \[1, 100000\], got True"):
+    with pytest.raises(ParameterError, match="n_solutions must be an integer >= 1, got True"):
         SearchOptions.of(**{**SEARCH_DEFAULTS, "n_solutions": True})  # True == 1, refused
 
 
@@ -129,7 +127,9 @@ def test_public_solver_names_are_the_functions_after_any_import_order():
 
 def test_counts_are_bounded_above():
     """Before: n_solutions=1000000000 was accepted and asked for 67 GiB up front."""
-    with pytest.raises(ParameterError, match=r"n_solutions must be an integer in \[1, 100000\]"):
+    with pytest.raises(ParameterError, match="n_solutions must be at most 100000, got 1000000000"):
         SearchOptions(n_solutions=1_000_000_000)
-    with pytest.raises(ParameterError, match="starts"):
+    with pytest.raises(ParameterError, match="starts must be at most"):
         SearchOptions(starts=10**9)
+    with pytest.raises(ParameterError, match="pop_size must be at most"):
+        SearchOptions(pop_size=10**9)

@@ -88,7 +88,7 @@ def _holder_from(raw: bytes) -> LockHolder | None:
         data = _reading.parse_json(raw[:4096], "run.lock", ResultsError)
         pid, start = data["pid"], data.get("process_start")
         if not isinstance(pid, int) or isinstance(pid, bool) or not 0 < pid < 2**31 or \
-                not isinstance(start, (int, float, str, type(None))):
+                not isinstance(start, (str, type(None))):
             return None
         return LockHolder(pid=pid, host=str(data["host"]), started=str(data["started"]),
                           process_start=start)

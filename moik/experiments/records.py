@@ -20,11 +20,12 @@ REQUIRED = {"trial": str, "status": str, "algorithm": str, "target": int, "run":
 """The fields (and their JSON types) every stored trial record has."""
 
 
-_NUMBER = (int, float, type(None))
-TYPED = {"time": _NUMBER, "n_eval": _NUMBER, "best_f": _NUMBER, "position_error": _NUMBER,
-         "orientation_error": _NUMBER, "attempts": _NUMBER, "hv": _NUMBER, "igd": _NUMBER,
-         "has_arrays": bool, "arrays": list, "target_name": str,
-         "experiment": str, "config_fingerprint": str, "finished_at": (str, type(None))}
+_NUMBER: tuple[type, ...] = (int, float, type(None))
+TYPED: dict[str, tuple[type, ...]] = {
+    "time": _NUMBER, "n_eval": _NUMBER, "best_f": _NUMBER, "position_error": _NUMBER,
+    "orientation_error": _NUMBER, "attempts": _NUMBER, "hv": _NUMBER, "igd": _NUMBER,
+    "has_arrays": (bool,), "arrays": (list,), "target_name": (str,), "experiment": (str,),
+    "config_fingerprint": (str,), "finished_at": (str, type(None))}
 """The JSON types of the other fields the report reads, where a record has them."""
 
 
@@ -39,9 +40,8 @@ def record_problem(record: object) -> str | None:
         if not isinstance(value, kind) or isinstance(value, bool):
             shown = repr(value) if len(repr(value)) <= 60 else repr(value)[:57] + "..."
             return f"{key!r} is {shown}, expected a {kind.__name__}"
-    for key, kind in TYPED.items():
+    for key, kinds in TYPED.items():
         value = record.get(key)
-        kinds = kind if isinstance(kind, tuple) else (kind,)
         if key in record and (not isinstance(value, kinds) or
                               isinstance(value, bool) and bool not in kinds):
             shown = repr(value) if len(repr(value)) <= 60 else repr(value)[:57] + "..."
@@ -102,9 +102,9 @@ def read_lines(path: Path) -> Lines:
         try:
             record = _reading.parse_json(line, "the line", ResultsError)
         except MoikError as exc:
-            why = str(exc).removeprefix("the line ")
-            why = why.split(": ", 1)[1].split(":")[0] if "not valid JSON" in why else why
-            out.malformed.append((number, f"not JSON ({why[:100]})"))
+            text = str(exc).removeprefix("the line ")
+            text = text.split(": ", 1)[1].split(":")[0] if "not valid JSON" in text else text
+            out.malformed.append((number, f"not JSON ({text[:100]})"))
             continue
         why = record_problem(record)
         if why is None:

@@ -92,6 +92,9 @@ def read_npz(path: Path) -> dict[str, np.ndarray]:
         size = path.stat().st_size
     except FileNotFoundError:
         raise ResultsError(f"arrays file {str(path)!r} is missing") from None
+    except OSError as exc:  # `arrays` is a file, a link loop ...
+        raise ResultsError(f"arrays file {str(path)!r} cannot be read: "
+                           f"{exc.strerror or exc}") from None
     if size == 0 or not zipfile.is_zipfile(path):
         why = "an empty file" if size == 0 else f"{size} bytes that are not an .npz archive"
         raise ResultsError(f"arrays file {str(path)!r} is damaged ({why})")

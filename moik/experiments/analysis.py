@@ -55,7 +55,8 @@ def summary_table(res: Results) -> list[Table]:
         return []  # multi-objective trials: no final objective value to summarise
     for label in labels:
         f = np.nan_to_num(res.values(label, "best_f"), posinf=np.finfo(float).max)
-        s = summarize(f, res.values(label, "time"))
+        with np.errstate(over="ignore"):  # a trial without a value counts as the largest
+            s = summarize(f, res.values(label, "time"))
         row = [label, "moik", fmt(s.worst), fmt(s.mean), fmt(s.best), fmt(s.std), fmt(s.median),
                fmt(s.time), f"{100 * success_rate(f, thr):.0f}%"]
         if protocol:

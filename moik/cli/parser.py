@@ -193,12 +193,19 @@ def _experiment_arguments(sub) -> None:
     p.set_defaults(handler="report:cmd_report")
 
 
+class OneLineParser(argparse.ArgumentParser):
+    """An argument parser whose errors are one line on stderr and exit status 2, as every
+    other error of the command (the usage is one ``--help`` away)."""
+
+    def error(self, message: str):  # type: ignore[override]
+        self.exit(2, f"moik: error: {self.prog}: {message} (see `{self.prog} --help`)\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of the ``moik`` command."""
-    parser = argparse.ArgumentParser(prog="moik",
-                                     description="The ``moik`` command line (also "
-                                                 "``python -m moik``).",
-                                     epilog="JSON schemas and exit codes: pydoc moik.cli")
+    parser = OneLineParser(prog="moik",
+                           description="The ``moik`` command line (also ``python -m moik``).",
+                           epilog="JSON schemas and exit codes: pydoc moik.cli")
     parser.add_argument("--version", action="version", version=f"moik {__version__}")
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("robots", help="list the robot catalog, or describe one robot")

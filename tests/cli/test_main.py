@@ -528,4 +528,6 @@ def test_empty_paths_and_lists_are_refused(argv, capsys):
     with pytest.raises(SystemExit) as exc:
         main(argv)
     assert exc.value.code == 2
-    assert "expected a non-empty value" in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert err.startswith("moik: error: ") and err.count("\n") == 1
+    assert "expected a non-empty value" in err

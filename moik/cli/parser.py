@@ -8,6 +8,7 @@ option: ``--seed must be an integer >= 0``), so that this module needs no numpy.
 from __future__ import annotations
 
 import argparse
+from typing import NoReturn
 
 from moik._version import __version__
 
@@ -197,7 +198,7 @@ class OneLineParser(argparse.ArgumentParser):
     """An argument parser whose errors are one line on stderr and exit status 2, as every
     other error of the command (the usage is one ``--help`` away)."""
 
-    def error(self, message: str):  # type: ignore[override]
+    def error(self, message: str) -> NoReturn:
         self.exit(2, f"moik: error: {self.prog}: {message} (see `{self.prog} --help`)\n")
 
 

@@ -2,8 +2,8 @@
 results folders (lines, ``meta.json``, arrays, symbolic links) and command lines.
 
 Every case must end in a result or a :class:`~moik.exceptions.MoikError` (0 raw
-exceptions), write or delete nothing outside the folders given, and ignore no key
-silently (a file that loads holds only keys its reader knows). Examples are drawn
+exceptions) within a minute (0 hangs), write or delete nothing outside the folders given,
+and ignore no key silently (a file that loads holds only keys its reader knows). Examples are drawn
 derandomized (tests/conftest.py), few enough that the module runs in seconds.
 """
 
@@ -12,6 +12,7 @@ import copy
 import json
 import os
 import shutil
+import signal
 import tempfile
 import warnings
 from pathlib import Path
@@ -77,9 +78,28 @@ def _check_keys_known(data, shape_extra):
         assert set(item) <= allowed, sorted(set(item) - allowed)
 
 
+@contextlib.contextmanager
+def _no_hang(seconds: int = 60):
+    """Fails the example instead of hanging (SIGALRM; where it is available)."""
+    def stop(signum, frame):
+        raise AssertionError(f"hung: no result after {seconds} s")
+
+    if not hasattr(signal, "SIGALRM"):
+        yield
+        return
+    before = signal.signal(signal.SIGALRM, stop)
+    signal.alarm(seconds)
+    try:
+        yield
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, before)
+
+
 def _quiet(call, *args, **kwargs):
-    """``call(...)``, or None when it raises a MoikError (numpy warnings are errors)."""
-    with warnings.catch_warnings():
+    """``call(...)``, or None when it raises a MoikError (numpy warnings are errors), within
+    a minute (a hang fails the test)."""
+    with _no_hang(), warnings.catch_warnings():
         warnings.simplefilter("error")
         warnings.simplefilter("ignore", MoikWarning)
         try:
@@ -289,7 +309,7 @@ def test_resuming_a_folder_with_links_writes_nothing_outside(stored, changes):
         for change in changes:
             _apply(folder, victim, change)
         outside = _snapshot(victim)
-        with contextlib.suppress(MoikError):
+        with contextlib.suppress(MoikError), _no_hang():
             run_experiment(ExperimentConfig.from_dict(copy.deepcopy(TINY)), out=folder,
                            resume=True)
         assert _snapshot(victim) == outside
@@ -312,7 +332,8 @@ def test_command_lines(argv, capsys):
         cwd = os.getcwd()
         os.chdir(tmp)
         try:
-            status = main(argv)
+            with _no_hang():
+                status = main(argv)
         except SystemExit as exc:  # the parser: one error line, status 2 (or --help: 0)
             status = exc.code
         finally:

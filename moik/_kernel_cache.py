@@ -12,7 +12,9 @@ starts with a SHA-256 digest of the rest, checked before numba unpickles or link
 byte of it: a truncated, emptied or bit-flipped file (which would make numba raise
 ``EOFError``/``UnpicklingError`` or abort the process inside LLVM) is discarded
 with a :class:`~moik.exceptions.CacheWarning` and the kernel recompiled; so is an
-entry that fails to load for any other reason. A cache that cannot be written (a
+entry that fails to load for any other reason, and one that loads but holds another
+kernel's code or another signature (intact files that disagree, which would otherwise
+fail or compute the wrong thing when called). A cache that cannot be written (a
 full disk, a vanished folder) warns once and the computation goes on uncached.
 """
 
@@ -146,11 +148,35 @@ class KernelCache(FunctionCache):
 
     def _load_overload(self, sig, target_context):
         try:
-            return super()._load_overload(sig, target_context)
+            result = super()._load_overload(sig, target_context)
         except Exception as exc:  # noqa: BLE001 - an intact file numba cannot rebuild
             warn_once("damaged", f"moik: discarded a kernel cache entry of {self._name} that "
                                   f"failed to load ({type(exc).__name__}: {exc}); recompiling")
             return None
+        why = None if result is None else self._mismatch(result, sig)
+        if why is not None:  # a whole, valid-looking entry of another kernel or signature
+            warn_once("damaged", f"moik: discarded a kernel cache entry of {self._name} that "
+                                  f"holds {why}; recompiling")
+            return None
+        return result
+
+    def _mismatch(self, result: Any, sig: Any) -> str | None:
+        """What makes a loaded entry not this kernel's compiled ``sig`` (None: it is).
+
+        An index and a data file that are each intact can still disagree (a data file
+        renamed or copied over another, two writers numbering their entries alike): the
+        entry would load and then run another kernel's code, or fail, when called."""
+        try:
+            fndesc, loaded = result.fndesc, tuple(result.signature.args)
+            wanted = tuple(getattr(sig, "args", sig))
+        except Exception:  # noqa: BLE001 - not a compile result at all
+            return "no compiled function"
+        func = self._py_func
+        if (fndesc.qualname, fndesc.modname) != (func.__qualname__, func.__module__):
+            return f"the code of {fndesc.modname}.{fndesc.qualname}"
+        if loaded != wanted:
+            return f"the signature {loaded} instead of {wanted}"
+        return None
 
     def save_overload(self, sig, data):
         try:

@@ -18,6 +18,7 @@ Each validator takes the ``name`` of the argument for its message and an
 
 from __future__ import annotations
 
+import difflib
 from collections.abc import Iterable, Mapping
 from typing import Any, TypeGuard
 
@@ -233,3 +234,33 @@ def keywords(owner: str, given: Mapping[str, Any], accepted: Iterable[str]) -> N
     if unknown:
         raise ParameterError(f"unknown parameter(s) {', '.join(unknown)} for {owner}; "
                              f"accepted: {', '.join(sorted(allowed))}")
+
+
+def unknown_keys_message(where: str, given: Iterable[object], accepted: Iterable[str]
+                         ) -> str | None:
+    """What is wrong with the keys ``given`` (each unknown one with the nearest accepted
+    key), or None when every key is in ``accepted``."""
+    allowed = sorted(set(accepted))
+    unknown = sorted((k for k in given if k not in allowed), key=str)
+    if not unknown:
+        return None
+    named = []
+    for key in unknown:
+        near = difflib.get_close_matches(str(key), allowed, n=1) if isinstance(key, str) else []
+        shown = key if isinstance(key, str) and key.isprintable() and len(key) <= 80 \
+            else _short(key)
+        named.append(f"{shown}" + (f" (did you mean {near[0]!r}?)" if near else ""))
+    return (f"{where}: unknown key(s) {', '.join(named)}; expected some of: "
+            f"{', '.join(allowed)}")
+
+
+def known_keys(where: str, given: Mapping[Any, Any], accepted: Iterable[str], *,
+               error: type[MoikError] = ParameterError) -> None:
+    """Refuse keys of ``given`` outside ``accepted`` (a misspelt key must not pass silently).
+
+    Raises:
+        error: Naming each unknown key with the nearest accepted one, and listing them all.
+    """
+    message = unknown_keys_message(where, given, accepted)
+    if message is not None:
+        raise error(message)

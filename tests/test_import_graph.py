@@ -6,8 +6,8 @@ import ast
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1] / "moik"
-ORDER = ("exceptions", "_validate", "_kernel_cache", "_jit", "_version", "_lazy", "robots",
-         "kinematics", "collision", "fronts", "problems")
+ORDER = ("exceptions", "_validate", "_paths", "_toml", "_reading", "_kernel_cache", "_jit",
+         "_version", "_lazy", "robots", "kinematics", "collision", "fronts", "problems")
 INDEPENDENT = {"algorithms": {"algorithms", "exceptions", "_validate", "_jit"},
                "metrics": {"metrics", "exceptions", "_validate", "_jit", "_lazy"}}
 LAZY = {("cli", "moik.plotting"),  # matplotlib only when a plot is asked for

@@ -505,3 +505,27 @@ def test_an_inlined_helper_compiles_only_inside_its_caller():
     out = subprocess.run([sys.executable, "-c", _INLINED_HELPER], capture_output=True,
                          text=True, timeout=600)
     assert out.returncode == 0, out.stderr
+
+
+_SWAP = """
+import shutil, sys
+from pathlib import Path
+cache = Path(sys.argv[1])
+victim = next(cache.rglob("fk_kernels.all_finite-*.nbc"))
+other = next(cache.rglob("fk_kernels.fk_poses-*.nbc"))
+shutil.copyfile(other, victim)  # intact, with its own valid digest: another kernel's code
+""" + SCRIPT
+
+
+def test_an_intact_entry_of_another_kernel_is_discarded_and_recompiled(tmp_path, built_cache):
+    """Before: a data file that is whole (valid digest) but holds another kernel's code
+    loaded without complaint and failed, or computed the wrong thing, when called."""
+    cache = tmp_path / "cache"
+    shutil.copytree(built_cache, cache)
+    root = Path(moik.__file__).parent
+    env = _env(NUMBA_CACHE_DIR=str(cache), PYTHONPATH=str(root.parent))
+    out = subprocess.run([sys.executable, "-c", _SWAP, str(cache)], env=env, cwd=tmp_path,
+                         capture_output=True, text=True, timeout=600)
+    assert out.returncode == 0, out.stderr
+    assert "discarded a kernel cache entry of" in out.stderr and "holds the code of" in out.stderr
+    assert "Traceback" not in out.stderr

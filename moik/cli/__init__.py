@@ -45,8 +45,9 @@ is about), and the solving ones ``"target"``, ``"status"``, ``"success"``, ``"n_
   ``"compromise"`` (index or null), ``"redundant"``, ``"n_exact"``, ``"plots"``.
 
 Exit status: 0 done (``solve``: solved; ``batch``: every target solved), 1 ``solve`` not
-solved (``batch``: some target not solved), 2 bad input or an
-unusable file or folder (one line on stderr, never a traceback). The parser
+solved (``batch``: some target not solved), 2 bad input (a bad command line too) or an
+unusable file or folder (one line on stderr, never a traceback), 130 interrupted by
+Ctrl-C, 143 by SIGTERM (one line: ``moik: interrupted (SIGTERM)``). The parser
 (:mod:`moik.cli.parser`) imports nothing heavy, and each subcommand's module is
 imported only when that subcommand runs, so ``moik --help`` answers at once.
 """

@@ -10,11 +10,15 @@ import-graph test.
 
 from __future__ import annotations
 
+import contextlib
 import importlib
 import os
+import signal
 import sys
+import threading
 import time
 import warnings
+from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from moik.cli.parser import build_parser
@@ -60,8 +64,46 @@ def _compile_summary(count: int, seconds: float) -> None:
               "runs load them from the cache", file=sys.stderr)
 
 
+class Terminated(KeyboardInterrupt):
+    """SIGTERM arrived (handled as Ctrl-C: files being written are removed, locks released)."""
+
+
+def _terminate(signum, frame) -> None:
+    raise Terminated(f"signal {signum}")
+
+
+@contextlib.contextmanager
+def _signals_honoured() -> Iterator[None]:
+    """While inside, SIGTERM raises :class:`Terminated` (SIGINT raises ``KeyboardInterrupt``
+    as always, unless the caller ignored it), so either ends the command through the same
+    clean-up and one line. Only in the main thread; the handler is restored."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    before = signal.signal(signal.SIGTERM, _terminate)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, before)
+
+
 def main(argv: list[str] | None = None) -> int:
-    """Entry point of the ``moik`` console script and of ``python -m moik``."""
+    """Entry point of the ``moik`` console script and of ``python -m moik``.
+
+    SIGINT (Ctrl-C) and SIGTERM are honoured from the first instruction: the command
+    stops with one line on stderr and exit status 130 (SIGINT) or 143 (SIGTERM), no
+    traceback; a file being written is removed, a run keeps its finished trials.
+    """
+    with _signals_honoured():
+        try:
+            return _main(argv)
+        except KeyboardInterrupt as exc:
+            term = isinstance(exc, Terminated) or type(exc).__name__ == "Terminated"
+            print(f"moik: interrupted ({'SIGTERM' if term else 'SIGINT'})", file=sys.stderr)
+            return 143 if term else 130
+
+
+def _main(argv: list[str] | None) -> int:
     args = build_parser().parse_args(argv)
     try:
         with warnings.catch_warnings():

@@ -8,6 +8,7 @@ option: ``--seed must be an integer >= 0``), so that this module needs no numpy.
 from __future__ import annotations
 
 import argparse
+from typing import NoReturn
 
 from moik._version import __version__
 
@@ -28,6 +29,14 @@ def positive_int(text: str) -> int:
     if value < 1:
         raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
     return value
+
+
+def nonempty(text: str) -> str:
+    """An argparse type: a file, folder or list given on the command line is not empty
+    (``--out ""`` must not silently mean the default)."""
+    if not text:
+        raise argparse.ArgumentTypeError("expected a non-empty value, got ''")
+    return text
 
 
 LIBRARY_DEFAULTS = {"max_evals": ("solve_ik", "max_evals"), "method": ("solve_ik", "method"),
@@ -73,11 +82,12 @@ class LibraryDefaultsFormatter(argparse.HelpFormatter):
 
 
 def _robot_arguments(p: argparse.ArgumentParser, optional: bool = False) -> None:
-    p.add_argument("robot", nargs="?" if optional else None,
+    p.add_argument("robot", nargs="?" if optional else None, type=nonempty,
                    help="catalog name (see `moik robots`) or URDF file")
-    p.add_argument("--base", metavar="LINK", help="URDF: first link of the chain")
-    p.add_argument("--tip", metavar="LINK", help="URDF: last link of the chain")
+    p.add_argument("--base", metavar="LINK", type=nonempty, help="URDF: first link of the chain")
+    p.add_argument("--tip", metavar="LINK", type=nonempty, help="URDF: last link of the chain")
     p.add_argument("--package-dir", action="append", metavar="DIR", dest="package_dirs",
+                   type=nonempty,
                    help="URDF: a folder holding the packages its package:// meshes name "
                         "(repeatable; ROS_PACKAGE_PATH is searched too)")
     p.add_argument("--json", action="store_true", help="print JSON (see `pydoc moik.cli`)")
@@ -96,15 +106,15 @@ def _solve_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--q-current", nargs="+", type=float, metavar="Q",
                    help="current joint values (rad, deg with --deg): the first start; "
                         "solutions nearest to it first; needed by --pareto joint_motion")
-    p.add_argument("--scene", metavar="FILE",
-                   help="JSON scene of obstacles: solve for collision-free solutions (scene and "
-                        "self pairs; shipped capsule models of the catalog arms, a URDF's "
-                        "<collision> geometry) and report each one's distance; status collides "
-                        "(exit 1) if all exact ones collide")
+    p.add_argument("--scene", metavar="FILE", type=nonempty,
+                   help="JSON scene of obstacles: solve for solutions free of them and report "
+                        "each one's distance; status collides (exit 1) if all exact ones collide "
+                        "(with --self-collision: the arm's self pairs too)")
     p.add_argument("--self-collision", action="store_true",
-                   help="without --scene: solve for solutions free of self-collision only "
-                        "(the arm's shipped capsule model or its URDF's <collision> geometry; "
-                        "--scene checks its self pairs too)")
+                   help="solve for solutions free of self-collision (a URDF arm's own "
+                        "<collision> geometry, its meshes measured on their convex pieces, "
+                        "panda, ur5 and iiwa14 included; the shipped capsule models of the "
+                        "other catalog arms)")
     p.add_argument("--clearance", type=float, metavar="D",
                    help="with --scene or --self-collision: the smallest accepted distance "
                         "(robot unit, >= 0; default {default})")
@@ -121,13 +131,13 @@ def _solve_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--seed", type=int, help="random seed, an integer >= 0 (default {default})")
     p.add_argument("--n-solutions", type=int,
                    help="distinct solutions wanted (default {default})")
-    p.add_argument("--plot", metavar="FILE",
+    p.add_argument("--plot", metavar="FILE", type=nonempty,
                    help="save a 3-D drawing: FILE.png, .pdf or .svg (no extension: .png and .pdf)")
-    p.add_argument("--html", metavar="FILE",
+    p.add_argument("--html", metavar="FILE", type=nonempty,
                    help="write the interactive explorer, one self-contained HTML file (needs "
                         "moik[explorer]): the Pareto set with --pareto, else the error front "
                         "of an unreachable pose; a click on a point shows its posture")
-    p.add_argument("--pareto", metavar="CRITERIA",
+    p.add_argument("--pareto", metavar="CRITERIA", type=nonempty,
                    help="the Pareto set of exact solutions over these comma-separated "
                         f"criteria ({', '.join(CRITERIA_NAMES)})")
     p.add_argument("--preferred-euler", nargs=3, type=float, metavar=("A", "B", "C"),
@@ -186,7 +196,7 @@ def _experiment_arguments(sub) -> None:
     which = q.add_mutually_exclusive_group(required=True)
     which.add_argument("name", nargs="?",
                        help="experiment name (see `moik experiment list`) or config file")
-    which.add_argument("--config", metavar="FILE",
+    which.add_argument("--config", metavar="FILE", type=nonempty,
                        help="run the experiment defined by this TOML config file (your own; "
                             f"the folders in {EXPERIMENTS_ENV} are listed by name too)")
     q.add_argument("--quick", action="store_true", help="the seconds-long smoke-test size")
@@ -194,9 +204,9 @@ def _experiment_arguments(sub) -> None:
                    help="worker processes (default: the number of cores; 1 = serial)")
     q.add_argument("--resume", action="store_true",
                    help="continue the results in --out, skipping finished trials")
-    q.add_argument("--out", metavar="DIR",
+    q.add_argument("--out", metavar="DIR", type=nonempty,
                    help="results folder (default results/NAME or results/NAME-quick)")
-    q.add_argument("--dask-scheduler", metavar="ADDRESS",
+    q.add_argument("--dask-scheduler", metavar="ADDRESS", type=nonempty,
                    help="run on a Dask distributed scheduler (needs moik[dask])")
     q.add_argument("--limit", type=positive_int, default=None,
                    help="run at most this many pending trials, then stop")
@@ -210,11 +220,12 @@ def _experiment_arguments(sub) -> None:
                                    "and figures. DIR is a results folder or a folder of them. "
                                    "With --docs DOCS: write DOCS/results/NAME.md per experiment "
                                    "and regenerate its blocks in DOCS/reproducing.md.")
-    p.add_argument("folder", metavar="DIR", nargs="+",
+    p.add_argument("folder", metavar="DIR", type=nonempty, nargs="+",
                    help="results folder (or a folder of them)")
     p.add_argument("--no-figures", action="store_true", help="tables only")
-    p.add_argument("--output", metavar="FILE", help="report file (default DIR/report.md)")
-    p.add_argument("--docs", metavar="DOCS",
+    p.add_argument("--output", metavar="FILE", type=nonempty,
+                   help="report file (default DIR/report.md)")
+    p.add_argument("--docs", metavar="DOCS", type=nonempty,
                    help="docs folder to regenerate from the results (e.g. docs/)")
     p.add_argument("--html", metavar="FILE", nargs="?", const="",
                    help="write the interactive report instead (fronts linked to postures, "
@@ -223,12 +234,19 @@ def _experiment_arguments(sub) -> None:
     p.set_defaults(handler="report:cmd_report")
 
 
+class OneLineParser(argparse.ArgumentParser):
+    """An argument parser whose errors are one line on stderr and exit status 2, as every
+    other error of the command (the usage is one ``--help`` away)."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(2, f"moik: error: {self.prog}: {message} (see `{self.prog} --help`)\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of the ``moik`` command."""
-    parser = argparse.ArgumentParser(prog="moik",
-                                     description="The ``moik`` command line (also "
-                                                 "``python -m moik``).",
-                                     epilog="JSON schemas and exit codes: pydoc moik.cli")
+    parser = OneLineParser(prog="moik",
+                           description="The ``moik`` command line (also ``python -m moik``).",
+                           epilog="JSON schemas and exit codes: pydoc moik.cli")
     parser.add_argument("--version", action="version", version=f"moik {__version__}")
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("robots", help="list the robot catalog, or describe one robot")

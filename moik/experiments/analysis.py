@@ -50,9 +50,13 @@ def summary_table(res: Results) -> list[Table]:
     header = ["algorithm", "source", "worst", "mean", "best", "std", "median", "time (s)",
               f"success (f < {thr:g})"] + (["runs per target"] if protocol else [])
     rows, paper = [], _paper(res, "summary")
-    for label in res.labels:
+    labels = res.scalar_labels()
+    if not labels:
+        return []  # multi-objective trials: no final objective value to summarise
+    for label in labels:
         f = np.nan_to_num(res.values(label, "best_f"), posinf=np.finfo(float).max)
-        s = summarize(f, res.values(label, "time"))
+        with np.errstate(over="ignore"):  # a trial without a value counts as the largest
+            s = summarize(f, res.values(label, "time"))
         row = [label, "moik", fmt(s.worst), fmt(s.mean), fmt(s.best), fmt(s.std), fmt(s.median),
                fmt(s.time), f"{100 * success_rate(f, thr):.0f}%"]
         if protocol:
@@ -63,7 +67,7 @@ def summary_table(res: Results) -> list[Table]:
             rows.append([label, res.citation] + [fmt(p.get(k)) for k in
                          ("worst", "mean", "best", "std", "median", "time")] + ["-"]
                         + (["-"] if protocol else []))
-    n_values = {len(res.by_label[lab]) for lab in res.labels}
+    n_values = {len(res.by_label[lab]) for lab in labels}
     return [Table("Final objective value over all targets and runs", header, rows,
                   [f"values per algorithm: {', '.join(map(str, sorted(n_values)))}"])]
 

@@ -44,10 +44,7 @@ def check_keys(where: str, spec: Any, allowed: set[str], required: tuple[str, ..
     """``spec`` as a dict with only ``allowed`` keys and all ``required`` ones."""
     if not isinstance(spec, Mapping):
         raise ConfigError(f"{where} must be a dict, got {type(spec).__name__}")
-    unknown = sorted(set(spec) - allowed)
-    if unknown:
-        raise ConfigError(f"{where}: unknown key(s) {', '.join(unknown)}; "
-                          f"expected some of: {', '.join(sorted(allowed))}")
+    _validate.known_keys(where, spec, allowed, error=ConfigError)
     missing = [k for k in required if k not in spec]
     if missing:
         raise ConfigError(f"{where}: missing key(s) {', '.join(missing)}")

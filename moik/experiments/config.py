@@ -49,6 +49,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from moik._paths import MAX_NAME
 from moik.algorithms import available, get_algorithm
 from moik.algorithms.registry import accepted_parameters, is_multi_objective
 from moik.exceptions import ConfigError, MoikError
@@ -71,6 +72,13 @@ _REQUIRED = ("name", "title", "source", "problem", "algorithms", "pop_size", "it
 _NAME = re.compile(r"^[a-z0-9]+(-[a-z0-9]+)*$")
 
 
+def _shown(value: object) -> str:
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+
+
 @dataclass(frozen=True)
 class AlgorithmSpec:
     """One algorithm of an experiment: registry ``name``, shown ``label``, ``params``."""
@@ -91,6 +99,9 @@ def _algorithms(where: str, raw: Any, cfg: Mapping, kind: str, multi: bool
         w = f"{where}[{i}]"
         entry = check_keys(w, entry, {"name", "label", "params", "optional"}, ("name",))
         name = entry["name"]
+        if not isinstance(name, str):
+            raise ConfigError(f"{w}.name must be an algorithm name (a string), got "
+                              f"{type(name).__name__}")
         known = name in own or name in available()
         if flag(f"{w}.optional", entry.get("optional", False)) and not known:
             skipped.append(name)
@@ -99,8 +110,10 @@ def _algorithms(where: str, raw: Any, cfg: Mapping, kind: str, multi: bool
             raise ConfigError(f"{w}.name: unknown algorithm {name!r}; expected one of: "
                               f"{', '.join([*available(), *own])}")
         label = entry.get("label", name)
-        if not isinstance(label, str) or not _NAME.match(label) or label in labels:
-            raise ConfigError(f"{w}.label must be a unique lower-case name, got {label!r}")
+        if not isinstance(label, str) or not _NAME.match(label) or label in labels \
+                or len(label) > MAX_NAME:
+            raise ConfigError(f"{w}.label must be a unique lower-case name of at most "
+                              f"{MAX_NAME} characters, got {_shown(label)}")
         labels.add(label)
         accepted = own[name] if name in own else accepted_parameters(name)
         params = dict(check_keys(f"{w}.params", entry.get("params", {}), set(accepted)))
@@ -163,8 +176,9 @@ class ExperimentConfig:
         _refuse_renamed(f"{where}: quick", cfg.get("quick", {}))
         quick = check_keys(f"{where}: quick", cfg.pop("quick", {}), _TOP_KEYS - {"quick", "name"})
         name = cfg["name"]
-        if not isinstance(name, str) or not _NAME.match(name):
-            raise ConfigError(f"{where}: name must be lower-case words joined by '-', got {name!r}")
+        if not isinstance(name, str) or not _NAME.match(name) or len(name) > MAX_NAME:
+            raise ConfigError(f"{where}: name must be lower-case words joined by '-' (at most "
+                              f"{MAX_NAME} characters), got {_shown(name)}")
         for key in ("title", "source"):
             if not isinstance(cfg[key], str) or not cfg[key]:
                 raise ConfigError(f"{where}: {key} must be a non-empty string")

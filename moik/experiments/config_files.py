@@ -20,7 +20,8 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
-from moik import _toml
+from moik import _reading
+from moik._paths import file_name
 from moik.exceptions import ConfigError
 
 SUFFIX = ".toml"
@@ -44,24 +45,17 @@ def name_of(path: Path) -> str:
 
 
 def _parse(path: Path) -> dict[str, Any]:
-    if not path.is_file():
+    if not path.exists():
         raise ConfigError(f"experiment file {str(path)!r} does not exist")
+    if not path.is_file():
+        raise ConfigError(f"experiment file {str(path)!r} is not a regular file")
     if path.suffix.lower() != SUFFIX:
         what = "Python code, which moik does not run" if path.suffix == ".py" else \
             f"a {path.suffix or 'suffix-less'} file"
         raise ConfigError(f"{path}: experiment configs are TOML data files ({SUFFIX}); this is "
                           f"{what}: write the EXPERIMENT keys as TOML (see the configs in "
                           "moik's experiments/ folder)")
-    try:
-        with path.open("rb") as f:
-            return _toml.load(f)
-    except _toml.TOMLDecodeError as exc:
-        text = path.read_text(errors="replace")
-        hint = ("; it looks like Python code: a config is data (TOML), never run"
-                if any(w in text for w in ("import ", "def ", "EXPERIMENT =", "lambda")) else "")
-        raise ConfigError(f"{path}: not valid TOML: {exc}{hint}") from None
-    except OSError as exc:
-        raise ConfigError(f"{path}: cannot be read: {exc.strerror or exc}") from None
+    return _reading.read_toml(path, "experiment file", ConfigError)
 
 
 def read_config(path: str | Path, bases: Mapping[str, Path] | None = None,
@@ -84,6 +78,7 @@ def read_config(path: str | Path, bases: Mapping[str, Path] | None = None,
     if not isinstance(base_name, str) or not base_name:
         raise ConfigError(f"{p}: extends must be the name of another experiment, got "
                           f"{base_name!r}")
+    file_name(base_name, f"{p}: extends", error=ConfigError)
     if base_name in (*_seen, name_of(p)):
         raise ConfigError(f"{p}: extends {base_name!r} makes a cycle "
                           f"({' -> '.join((*_seen, name_of(p), base_name))})")

@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
+from moik._paths import inside
 from moik.experiments.analysis import analyze
 from moik.experiments.figures import (
     _curves,
@@ -134,6 +135,8 @@ def report_explorer(folder: str | Path, path: str | Path | None = None, *,
     """
     base = Path(folder)
     out = Path(path) if path is not None else base / "report.html"
+    if path is None:
+        inside(base, out)
     panels, notes = [], []
     for sub in result_folders(base):
         try:

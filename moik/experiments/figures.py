@@ -30,6 +30,7 @@ from pathlib import Path
 import numpy as np
 
 import moik.plotting as mp
+from moik._paths import file_name, inside
 from moik.exceptions import MoikError
 from moik.experiments.tables import Results
 from moik.metrics import ranksum_pvalues
@@ -248,6 +249,8 @@ def make_figures(res: Results, folder: Path) -> tuple[list[tuple[str, Path]], li
     made, notes = [], []
     for stem, caption, draw in plans:
         try:
+            for suffix in (".png", ".pdf"):  # never drawn through a link planted there
+                inside(folder, folder / (file_name(stem, "figure name") + suffix))
             draw(str(folder / stem))
             made.append((caption, folder / f"{stem}.png"))
         except (MoikError, ValueError, KeyError, IndexError) as exc:

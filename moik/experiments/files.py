@@ -1,7 +1,7 @@
 """Files of a results folder: atomic writes, stale temporaries, reading ``.npz`` arrays back,
 and the description of the run's environment that ``meta.json`` records.
 
-Every file a run writes goes to ``.NAME.PID.tmp`` first and is moved into place
+Every file a run writes goes to ``.NAME.PID.RANDOM.tmp`` first and is moved into place
 with ``os.replace`` (atomic on POSIX and Windows), so a reader never sees half a
 file; a crash leaves at most such a temporary, which the next run removes
 (:func:`remove_stale_temporaries`, under the folder's run lock).
@@ -9,7 +9,6 @@ file; a crash leaves at most such a temporary, which the next run removes
 
 from __future__ import annotations
 
-import contextlib
 import os
 import platform
 import socket
@@ -21,6 +20,7 @@ import numpy as np
 import pymoo
 import scipy
 
+from moik import _paths
 from moik._version import __version__
 from moik.exceptions import ResultsError
 
@@ -52,35 +52,32 @@ def make_folders(folder: Path) -> Path | None:
     return made
 
 
-def atomic_write_bytes(path: Path, data: bytes) -> None:
-    """Write ``data`` to ``path`` atomically (temporary file + ``os.replace``).
+def atomic_write_bytes(path: Path, data: bytes, *, folder: str | Path | None = None) -> None:
+    """Write ``data`` to ``path`` atomically (temporary file + ``os.replace``), never through
+    a symbolic link, and (with ``folder``) only inside ``folder``
+    (:func:`moik._paths.atomic_write_bytes`).
 
     Raises:
-        ResultsError: If the write fails (a full disk: names ``path``); the
-            temporary file is removed and ``path`` keeps its former content.
+        ResultsError: If the path is refused or the write fails (a full disk: names
+            ``path``); the temporary file is removed (also on Ctrl-C) and ``path`` keeps
+            its former content.
     """
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    try:
-        with open(tmp, "wb") as fh:
-            fh.write(data)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except OSError as exc:
-        with contextlib.suppress(OSError):
-            tmp.unlink()
-        raise ResultsError(f"cannot write {str(path)!r}: {exc.strerror or exc}") from exc
+    _paths.atomic_write_bytes(path, data, folder=folder)
 
 
 def remove_stale_temporaries(folder: Path) -> int:
-    """Delete the ``.NAME.PID.tmp`` files interrupted atomic writes left in ``folder``.
+    """Delete the ``.NAME.*.tmp`` files interrupted atomic writes left in ``folder``.
 
     Only safe while holding the folder's run lock (no other writer). Returns the count.
+
+    Raises:
+        ResultsError: ``folder/arrays`` is a symbolic link (nothing is deleted through it).
     """
     removed = 0
     for where in (folder, folder / "arrays"):
+        _paths.inside(folder, where)
         for tmp in where.glob(".*.tmp"):
-            tmp.unlink(missing_ok=True)
+            _paths.remove(folder, tmp)
             removed += 1
     return removed
 
@@ -95,6 +92,9 @@ def read_npz(path: Path) -> dict[str, np.ndarray]:
         size = path.stat().st_size
     except FileNotFoundError:
         raise ResultsError(f"arrays file {str(path)!r} is missing") from None
+    except OSError as exc:  # `arrays` is a file, a link loop ...
+        raise ResultsError(f"arrays file {str(path)!r} cannot be read: "
+                           f"{exc.strerror or exc}") from None
     if size == 0 or not zipfile.is_zipfile(path):
         why = "an empty file" if size == 0 else f"{size} bytes that are not an .npz archive"
         raise ResultsError(f"arrays file {str(path)!r} is damaged ({why})")

@@ -43,11 +43,15 @@ def summary_lines(res: Results) -> list[str]:
     """Mean/median/worst/success/time per algorithm, the paper's mean and worst beside."""
     thr = res.config.get("success_threshold", 1e-6)
     paper = _paper(res, "summary")
+    if not res.scalar_labels():
+        return ["- no final objective values to summarise (the trials store fronts: ask for "
+                "a front analysis such as front-quality in the config's analyses)", ""]
     lines = [f"| algorithm | mean | median | worst | best | success (f < {thr:g}) | time (s) "
              "| paper mean | paper worst |", "|---|---|---|---|---|---|---|---|---|"]
-    for lab in res.labels:
+    for lab in res.scalar_labels():
         f = np.nan_to_num(res.values(lab, "best_f"), posinf=np.finfo(float).max)
-        s = summarize(f, res.values(lab, "time"))
+        with np.errstate(over="ignore"):  # a trial without a value counts as the largest
+            s = summarize(f, res.values(lab, "time"))
         p = paper.get(lab, {})
         lines.append(f"| {lab} | {fmt(s.mean, 3)} | {fmt(s.median, 3)} | {fmt(s.worst, 3)} | "
                      f"{fmt(s.best, 3)} | {100 * success_rate(f, thr):.0f}% | {fmt(s.time, 3)} | "

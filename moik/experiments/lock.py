@@ -25,7 +25,8 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from moik.exceptions import ResultsError
+from moik import _reading
+from moik.exceptions import MoikError, ResultsError
 
 LOCK_NAME = "run.lock"
 _ATTEMPTS = 50
@@ -82,11 +83,16 @@ class LockHolder:
 
 
 def _holder_from(raw: bytes) -> LockHolder | None:
+    """The holder a lock file names, or None when it is unreadable (then stale)."""
     try:
-        data = json.loads(raw)
-        return LockHolder(pid=int(data["pid"]), host=str(data["host"]),
-                          started=str(data["started"]), process_start=data.get("process_start"))
-    except (ValueError, KeyError, TypeError):
+        data = _reading.parse_json(raw[:4096], "run.lock", ResultsError)
+        pid, start = data["pid"], data.get("process_start")
+        if not isinstance(pid, int) or isinstance(pid, bool) or not 0 < pid < 2**31 or \
+                not isinstance(start, (str, type(None))):
+            return None
+        return LockHolder(pid=pid, host=str(data["host"]), started=str(data["started"]),
+                          process_start=start)
+    except (MoikError, KeyError, TypeError):
         return None
 
 

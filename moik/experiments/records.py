@@ -10,12 +10,23 @@ warn with the file and the line number instead of failing on it.
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from moik import _paths, _reading
+from moik.exceptions import MoikError, ResultsError
+
 REQUIRED = {"trial": str, "status": str, "algorithm": str, "target": int, "run": int}
 """The fields (and their JSON types) every stored trial record has."""
+
+
+_NUMBER: tuple[type, ...] = (int, float, type(None))
+TYPED: dict[str, tuple[type, ...]] = {
+    "time": _NUMBER, "n_eval": _NUMBER, "best_f": _NUMBER, "position_error": _NUMBER,
+    "orientation_error": _NUMBER, "attempts": _NUMBER, "hv": _NUMBER, "igd": _NUMBER,
+    "has_arrays": (bool,), "arrays": (list,), "target_name": (str,), "experiment": (str,),
+    "config_fingerprint": (str,), "finished_at": (str, type(None))}
+"""The JSON types of the other fields the report reads, where a record has them."""
 
 
 def record_problem(record: object) -> str | None:
@@ -27,7 +38,20 @@ def record_problem(record: object) -> str | None:
             return f"no {key!r} field"
         value = record[key]
         if not isinstance(value, kind) or isinstance(value, bool):
-            return f"{key!r} is {value!r}, expected a {kind.__name__}"
+            shown = repr(value) if len(repr(value)) <= 60 else repr(value)[:57] + "..."
+            return f"{key!r} is {shown}, expected a {kind.__name__}"
+    for key, kinds in TYPED.items():
+        value = record.get(key)
+        if key in record and (not isinstance(value, kinds) or
+                              isinstance(value, bool) and bool not in kinds):
+            shown = repr(value) if len(repr(value)) <= 60 else repr(value)[:57] + "..."
+            return f"{key!r} is {shown}, not of the type moik writes"
+    if any(not isinstance(a, str) for a in record.get("arrays", [])):
+        return "'arrays' holds entries that are not names"
+    try:
+        _paths.file_name(record["trial"].replace("/", "__"), "its trial id")
+    except ResultsError as exc:
+        return str(exc)
     return None
 
 
@@ -57,12 +81,18 @@ class Lines:
 
 
 def read_lines(path: Path) -> Lines:
-    """Parse ``path`` (missing: no lines) into trial records and malformed lines."""
+    """Parse ``path`` (missing: no lines) into trial records and malformed lines.
+
+    Raises:
+        ResultsError: ``path`` is not a regular file, or cannot be read.
+    """
     out = Lines()
-    try:
-        data = path.read_bytes()
-    except FileNotFoundError:
+    if not path.exists() and not path.is_symlink():
         return out
+    if path.is_symlink():
+        raise ResultsError(f"{str(path)!r} is a symbolic link; moik reads and appends to "
+                           "the results.jsonl of the folder itself only: remove it")
+    data = _reading.read_bytes(path, "results file", ResultsError, limit=2**32)
     lines = data.split(b"\n")
     out.torn_tail = lines[-1] != b""
     for number, line in enumerate(lines[:-1], start=1):
@@ -70,9 +100,11 @@ def read_lines(path: Path) -> Lines:
             out.malformed.append((number, "an empty line"))
             continue
         try:
-            record = json.loads(line)
-        except ValueError as exc:
-            out.malformed.append((number, f"not JSON ({str(exc).split(':')[0]})"))
+            record = _reading.parse_json(line, "the line", ResultsError)
+        except MoikError as exc:
+            text = str(exc).removeprefix("the line ")
+            text = text.split(": ", 1)[1].split(":")[0] if "not valid JSON" in text else text
+            out.malformed.append((number, f"not JSON ({text[:100]})"))
             continue
         why = record_problem(record)
         if why is None:

@@ -15,6 +15,8 @@ import json
 import os
 from pathlib import Path
 
+from moik._paths import file_name
+from moik._validate import unknown_keys_message
 from moik.exceptions import ResultsError
 from moik.experiments.records import read_lines
 
@@ -45,14 +47,83 @@ def repair_meta(meta: dict) -> list[str]:
     return notes
 
 
-def meta_problem(meta: dict) -> str | None:
-    """What makes ``meta`` unusable for resuming (a missing or mistyped field), or None."""
-    for key, kind in META_REQUIRED.items():
+META_KEYS = ("format", "experiment", "quick", "config_path", "config", "config_fingerprint",
+             "algorithms", "skipped_algorithms", "created", "versions", "git_commit", "machine",
+             "sessions", "targets", "trials", "adopted")
+"""Every key moik writes in ``meta.json`` (any other is refused, naming the nearest)."""
+READ_REQUIRED = {"experiment": str, "config": dict, "targets": list}
+"""The ``meta.json`` fields every reader needs (the fingerprint and sessions are repairable)."""
+CONFIG_REQUIRED = {"name": str, "title": str, "source": str, "problem": dict}
+"""The fields of ``meta.json``'s stored config the report reads."""
+
+
+def meta_problem(meta: dict, *, reading: bool = False) -> str | None:
+    """What makes ``meta`` unusable (a missing or mistyped field), or None.
+
+    Args:
+        meta: The parsed ``meta.json``.
+        reading: Check only what a reader needs (:data:`READ_REQUIRED`); else also what
+            resuming needs (:data:`META_REQUIRED`).
+    """
+    unknown = unknown_keys_message("meta.json", meta, META_KEYS)
+    if unknown is not None:
+        return "has " + unknown.removeprefix("meta.json: ")
+    required = READ_REQUIRED if reading else {**META_REQUIRED, **READ_REQUIRED}
+    for key, kind in required.items():
         if key not in meta:
             return f"lacks {key!r}"
         if not isinstance(meta[key], kind):
-            return f"has {key!r} = {meta[key]!r}, expected a {kind.__name__}"
+            return f"has {key!r} = {_short(meta[key])}, expected a {kind.__name__}"
+    for key, kind in CONFIG_REQUIRED.items():
+        value = meta["config"].get(key)
+        if not isinstance(value, kind):
+            return f"has a config whose {key!r} is {_short(value)}, expected a {kind.__name__}"
+    try:
+        file_name(meta["experiment"], "its experiment name")
+    except ResultsError as exc:
+        return f"has {exc}"
+    return _optional_problem(meta)
+
+
+OPTIONAL_TYPES = {"quick": bool, "versions": dict, "machine": dict, "sessions": list,
+                  "trials": list, "algorithms": list, "skipped_algorithms": list,
+                  "config_fingerprint": str}
+"""The types of the other ``meta.json`` fields, where present."""
+
+
+SESSION_TYPES: dict[str, tuple[type, ...]] = {
+    "started": (str,), "finished": (str,), "executor": (str,), "git_commit": (str, type(None)),
+    "wall_time_s": (int, float, type(None)), "trials_run": (int,), "versions": (dict,)}
+"""The types of the fields of a session entry, where present."""
+
+
+def _optional_problem(meta: dict) -> str | None:
+    for key, kind in OPTIONAL_TYPES.items():
+        if key in meta and not isinstance(meta[key], kind):
+            return f"has {key!r} = {_short(meta[key])}, expected a {kind.__name__}"
+    for key in ("targets", "sessions", "trials"):
+        if any(not isinstance(item, dict) for item in meta.get(key, [])):
+            return f"has a {key!r} entry that is not an object"
+    if any(not isinstance(t.get("name"), str) for t in meta["targets"]):
+        return "has a target without a name (string)"
+    for key in ("algorithms", "skipped_algorithms"):
+        if any(not isinstance(a, str) for a in meta.get(key, [])):
+            return f"has {key!r} entries that are not names (strings)"
+    for session in meta.get("sessions", []):
+        for key, kinds in SESSION_TYPES.items():
+            if key in session and (not isinstance(session[key], kinds)
+                                   or isinstance(session[key], bool)):
+                return f"has a session whose {key!r} is {_short(session[key])}"
+    for key in ("versions", "machine"):
+        if any(not isinstance(v, (str, int, float, type(None))) or isinstance(v, bool)
+               for v in meta.get(key, {}).values()):
+            return f"has {key!r} values that are not text or numbers"
     return None
+
+
+def _short(value: object) -> str:
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
 
 
 def adopt(folder: Path, config, problem: str, resume: bool) -> list[str]:

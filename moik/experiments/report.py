@@ -18,11 +18,13 @@ section saying why while the others are reported.
 
 from __future__ import annotations
 
+import re
 import sys
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from moik._paths import inside
 from moik.exceptions import MoikError, ResultsError
 from moik.experiments.analysis import analyze
 from moik.experiments.figures import make_figures
@@ -53,16 +55,32 @@ def result_folders(folder: str | Path) -> list[Path]:
     return subs
 
 
+_TAG = re.compile(r"<(?=[A-Za-z/!?])")
+
+
+def md(text: object) -> str:
+    """``text`` (from a results folder or a config: data, not markup) made safe to put in
+    a line of Markdown: on one line, no HTML tag or comment (``<x`` becomes ``&lt;x``) and
+    no inline link (``](`` becomes ``]\\(``). Other text is kept as it is."""
+    one_line = " ".join(str(text).splitlines()) if text is not None else "None"
+    return _TAG.sub("&lt;", one_line).replace("](", "]\\(")
+
+
+def _code(text: object) -> str:
+    """``text`` inside a Markdown code span (a backtick would end it)."""
+    return str(text).replace("`", "'")
+
+
 def _escape(cell: str) -> str:
-    return cell.replace("|", "\\|")
+    return md(cell).replace("|", "\\|")
 
 
 def table_markdown(table: Table) -> str:
-    """A :class:`Table` as a Markdown section."""
-    lines = [f"#### {table.title}", "", "| " + " | ".join(table.header) + " |",
-             "|" + "|".join("---" for _ in table.header) + "|"]
+    """A :class:`Table` as a Markdown section (every text escaped: :func:`md`)."""
+    lines = [f"#### {md(table.title)}", "", "| " + " | ".join(map(_escape, table.header))
+             + " |", "|" + "|".join("---" for _ in table.header) + "|"]
     lines += ["| " + " | ".join(_escape(c) for c in row) + " |" for row in table.rows]
-    lines += [""] + [f"- {n}" for n in table.notes]
+    lines += [""] + [f"- {md(n)}" for n in table.notes]
     return "\n".join(lines) + "\n"
 
 
@@ -83,7 +101,8 @@ def experiment_section(store: ResultStore, *, figures: bool, link: Callable[[Pat
     algs = ", ".join(meta.get("algorithms", []))
     if meta.get("skipped_algorithms"):
         algs += (" (not registered, left out: " + ", ".join(meta["skipped_algorithms"]) + ")")
-    sess = meta["sessions"]
+    sess = meta.get("sessions", [])
+    versions, machine = meta.get("versions", {}), meta.get("machine", {})
     lines = [f"## {cfg['name']}: {cfg['title']} ({size})", "",
              f"- source: {cfg['source']}",
              (f"- benchmark problems {', '.join(t['name'] for t in meta['targets'])}, "
@@ -99,25 +118,28 @@ def experiment_section(store: ResultStore, *, figures: bool, link: Callable[[Pat
                 else f"iterations {cfg['iterations']}, ")
              + f"seed {cfg['seed']}",
              f"- algorithms: {algs}",
-             f"- moik {meta['versions']['moik']}, pymoo {meta['versions']['pymoo']}, numpy "
-             f"{meta['versions']['numpy']}, commit {meta.get('git_commit') or 'unknown'}; "
-             f"machine {meta['machine']['hostname']} ({meta['machine']['platform']}, "
-             f"{meta['machine']['cpu_count']} cores)",
-             "- sessions: " + "; ".join(f"{s['started']} ({s.get('executor', '?')})"
+             f"- moik {versions.get('moik', '?')}, pymoo {versions.get('pymoo', '?')}, numpy "
+             f"{versions.get('numpy', '?')}, commit {meta.get('git_commit') or 'unknown'}; "
+             f"machine {machine.get('hostname', '?')} ({machine.get('platform', '?')}, "
+             f"{machine.get('cpu_count', '?')} cores)",
+             "- sessions: " + "; ".join(f"{s.get('started', '?')} ({s.get('executor', '?')})"
                                         for s in sess),
-             f"- results folder: `{store.folder}`"]
-    lines += [f"- {n}" for n in res.notes()]
+             f"- results folder: `{_code(store.folder)}`"]
+    lines = [md(line) for line in lines]
+    lines += [f"- {md(n)}" for n in res.notes()]
     if store.damaged:
-        lines.append(f"- **warning**: {damaged_warning(store)}")
+        lines.append(f"- **warning**: {md(damaged_warning(store))}")
     if store.malformed:
-        lines.append(f"- **warning**: {malformed_warning(store)}")
+        lines.append(f"- **warning**: {md(malformed_warning(store))}")
     lines.append("")
     lines += [table_markdown(t) for t in tables]
     if figures:
-        made, notes = _figures(res, figure_folder or store.folder / "figures")
+        if figure_folder is None:
+            figure_folder = inside(store.folder, store.folder / "figures")
+        made, notes = _figures(res, figure_folder)
         for caption, png in made:
-            lines.append(f"![{caption}]({link(png)})\n")
-        lines += [f"- {n}" for n in notes]
+            lines.append(f"![{md(caption).replace(']', '')}]({link(png)})\n")
+        lines += [f"- {md(n)}" for n in notes]
     return "\n".join(lines) + "\n"
 
 
@@ -194,6 +216,8 @@ def make_report(folder: str | Path, *, figures: bool = True,
     """
     base = Path(folder)
     out = Path(output) if output is not None else base / "report.md"
+    if output is None:
+        inside(base, out)
     report = Report(out)
     parts = ["# moik reproduction report", "",
              "Tables put moik's numbers (source `moik`) beside the paper's (source = the "
@@ -216,11 +240,11 @@ def make_report(folder: str | Path, *, figures: bool = True,
             why = f"{exc.__class__.__name__}: {exc}"
             report.failed.append(f"{sub}: {why}")
             print(f"moik: warning: {sub} not reported: {why}", file=sys.stderr)
-            parts.append(f"## {sub.name}: not reported\n\n- `{sub}` could not be read or "
-                         f"analysed: {why}\n")
+            parts.append(md(f"## {sub.name}: not reported") + "\n\n" +
+                         md(f"- `{sub}` could not be read or analysed: {why}") + "\n")
     if len(report.failed) == len(subs):
         raise ResultsError("no results folder could be reported: " + "; ".join(report.failed))
-    atomic_write_bytes(out, "\n".join(parts).encode())
+    atomic_write_bytes(out, "\n".join(parts).encode(), folder=base if output is None else None)
     return report
 
 

@@ -49,8 +49,10 @@ from pathlib import Path
 
 import numpy as np
 
+from moik import _paths, _reading
 from moik._validate import flag
-from moik.exceptions import ResultsError
+from moik.exceptions import MoikError, ResultsError
+from moik.experiments.config import ExperimentConfig
 from moik.experiments.files import (
     atomic_write_bytes,
     environment,
@@ -63,6 +65,20 @@ from moik.experiments.records import read_lines
 from moik.experiments.recovery import adopt, meta_problem, repair_meta
 
 FORMAT = "moik-results/1"
+MEMBERS = ("meta.json", "results.jsonl", "arrays", "run.lock", "figures", "report.md",
+           "report.html")
+"""What moik writes in a results folder: none of them may be a symbolic link."""
+
+
+def planned_ids(meta: dict) -> set[str] | None:
+    """The ids of the trials ``meta`` plans (None: it lists none, so every id counts)."""
+    trials = meta.get("trials")
+    if not isinstance(trials, list) or not trials:
+        return None
+    return {t["trial_id"] for t in trials if isinstance(t, dict)
+            and isinstance(t.get("trial_id"), str)}
+
+
 def _now() -> str:
     return _dt.datetime.now(_dt.timezone.utc).isoformat(timespec="seconds")
 
@@ -117,13 +133,21 @@ class ResultStore:
         """
         folder = Path(folder)
         try:
-            meta = json.loads((folder / "meta.json").read_text())
-        except (OSError, ValueError) as exc:
-            raise ResultsError(f"{str(folder)!r} is not a moik results folder (meta.json: "
-                               f"{exc.__class__.__name__})") from None
+            meta = _reading.read_json(folder / "meta.json", "meta.json", ResultsError)
+        except ResultsError as exc:
+            raise ResultsError(f"{str(folder)!r} is not a moik results folder ({exc})") from None
         found = meta.get("format") if isinstance(meta, dict) else type(meta).__name__
         if found != FORMAT:
-            raise ResultsError(f"{folder}/meta.json has format {found!r}, expected {FORMAT!r}")
+            shown = repr(found) if len(repr(found)) <= 60 else repr(found)[:57] + "..."
+            raise ResultsError(f"{folder}/meta.json has format {shown}, expected {FORMAT!r}")
+        why = meta_problem(meta, reading=True)
+        if why is not None:
+            raise ResultsError(f"{folder}/meta.json {why}")
+        try:  # the stored config is checked as a config file is (the report reads it)
+            ExperimentConfig.from_dict(meta["config"], path=f"{folder}/meta.json: config",
+                                       is_quick=bool(meta.get("quick")))
+        except MoikError as exc:
+            raise ResultsError(f"{folder}/meta.json holds an invalid config: {exc}") from None
         store = cls(folder, meta)
         if flag("verify", verify):
             store.damaged = store.check_arrays()
@@ -147,6 +171,8 @@ class ResultStore:
         made = make_folders(folder)
         lock = None
         try:
+            for member in MEMBERS:
+                _paths.inside(folder, folder / member)
             lock = RunLock.acquire(folder)
             notes = [f"took over a stale run lock: {lock.replaced}"] if lock.replaced else []
             removed = remove_stale_temporaries(folder)
@@ -241,8 +267,14 @@ class ResultStore:
 
     @staticmethod
     def array_name(trial_id: str) -> str:
-        """File name of a trial's arrays (``/`` in the id becomes ``__``)."""
-        return trial_id.replace("/", "__") + ".npz"
+        """File name of a trial's arrays (``/`` in the id becomes ``__``).
+
+        Raises:
+            ResultsError: An id that cannot name a file (:func:`moik._paths.file_name`).
+        """
+        if not isinstance(trial_id, str):
+            raise ResultsError(f"a trial id must be a string, got {type(trial_id).__name__}")
+        return _paths.file_name(trial_id.replace("/", "__"), "trial id") + ".npz"
 
     def append(self, record: dict, arrays: dict) -> None:
         """Store one finished trial: its arrays (atomic), then its line (commit mark).
@@ -273,7 +305,7 @@ class ResultStore:
         """One line at the end of ``results.jsonl``, whole or not at all (then raises)."""
         path = self.results_path
         if self._fd is None:
-            self._fd = os.open(path, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o644)
+            self._fd = _paths.open_append(path)
         start = os.lseek(self._fd, 0, os.SEEK_END)
         try:
             view = memoryview(line)

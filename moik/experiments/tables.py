@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from moik.experiments.store import ResultStore
+from moik.experiments.store import ResultStore, planned_ids
 
 
 @dataclass
@@ -49,6 +49,10 @@ class Results:
         cite = self.paper.get("citation")
         self.paper_note = f"paper rows: {cite}" if cite else None
         records = store.records()
+        planned = planned_ids(self.meta)
+        self.unplanned = [r["trial"] for r in records
+                          if planned is not None and r["trial"] not in planned]
+        records = [r for r in records if planned is None or r["trial"] in planned]
         self.ok = [r for r in records if r.get("status") == "ok"]
         self.failed = [r for r in records if r.get("status") != "ok"]
         labels = self.meta.get("algorithms") or [a.get("label", a["name"])
@@ -63,6 +67,12 @@ class Results:
         return np.array([np.inf if r.get(key) is None else r[key] for r in self.by_label[label]],
                         dtype=float)
 
+    def scalar_labels(self) -> list[str]:
+        """The labels whose trials stored a final objective value (``best_f``): a
+        multi-objective trial stores a front instead, and has none to summarise."""
+        return [lab for lab in self.labels
+                if any(r.get("best_f") is not None for r in self.by_label[lab])]
+
     def notes(self) -> list[str]:
         """Counts of finished and failed trials, then the config's ``paper["notes"]``."""
         planned = self.meta.get("trials")
@@ -70,6 +80,10 @@ class Results:
                if isinstance(planned, list) and planned else
                f"{len(self.ok)} trials finished (the number planned is unknown: meta.json "
                "lists no planned trials)"]
+        if self.unplanned:
+            shown = ", ".join(repr(t[:40]) for t in self.unplanned[:3])
+            out.append(f"warning: {len(self.unplanned)} stored trial(s) that meta.json does not "
+                       f"plan were left out ({shown}{', ...' if len(self.unplanned) > 3 else ''})")
         out += [f"about the paper's numbers: {n}" for n in self.paper.get("notes", [])]
         if self.failed:
             out.append(f"{len(self.failed)} trials failed (status error), e.g. "

@@ -14,15 +14,18 @@ and returned without being stored; a damaged file is recomputed.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
+import io
 import json
 import os
-import tempfile
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from moik import _paths
+from moik.exceptions import MoikError
 from moik.fronts.front import METHOD_VERSION, ReferenceFront, bi_objective_front
 from moik.fronts.motion import motion_front
 from moik.robots.chain import Robot
@@ -71,28 +74,35 @@ def _meta(front: ReferenceFront) -> dict:
 
 
 def _load(path: Path, key: str) -> ReferenceFront | None:
+    """The front stored at ``path`` under ``key``, or None (missing, for another key, or
+    damaged: a damaged file of the user's cache is removed, so the recomputed front
+    replaces it; a shipped file is never removed)."""
     try:
         with np.load(path, allow_pickle=False) as data:
             meta = json.loads(str(data["meta"]))
-            if meta.pop("fingerprint") != key:
+            if not isinstance(meta, dict) or meta.pop("fingerprint", None) != key:
                 return None
-            return ReferenceFront(F=data["F"], Q=data["Q"], kkt=data["kkt"], **meta)
-    except (OSError, ValueError, KeyError, TypeError, json.JSONDecodeError):
+            front = ReferenceFront(F=data["F"], Q=data["Q"], kkt=data["kkt"], **meta)
+    except Exception:  # noqa: BLE001 - any damage (BadZipFile, EOFError, a CRC, bad meta)
+        if path.parent != SHIPPED:
+            with contextlib.suppress(OSError, MoikError):
+                _paths.remove(path.parent, path)
         return None
+    return front
 
 
 def store(path: Path, key: str, front: ReferenceFront) -> bool:
-    """Write ``front`` to ``path`` (atomically) under fingerprint ``key``; False when the
-    folder is not writable."""
+    """Write ``front`` to ``path`` (atomically, never through a link) under fingerprint
+    ``key``; False when the folder is not writable. The temporary is removed whatever
+    interrupts the write."""
+    buffer = io.BytesIO()
+    np.savez(buffer, F=front.F, Q=front.Q, kkt=front.kkt,
+             meta=np.array(json.dumps({"fingerprint": key, **_meta(front)})))
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
-        with os.fdopen(fd, "wb") as f:
-            np.savez(f, F=front.F, Q=front.Q, kkt=front.kkt,
-                     meta=np.array(json.dumps({"fingerprint": key, **_meta(front)})))
-        os.replace(tmp, path)
+        _paths.atomic_write_bytes(path, buffer.getvalue())
         return True
-    except OSError:
+    except (OSError, MoikError):
         return False
 
 

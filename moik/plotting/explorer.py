@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from moik._paths import atomic_write_bytes
 from moik.exceptions import ParameterError, ShapeError
 from moik.plotting._explorer_page import page
 from moik.plotting.explorer_panels import (
@@ -75,8 +76,8 @@ def write_explorer(path: str | Path, panels: Sequence[FrontPanel | CurvePanel | 
             raise ParameterError(f"panels must be FrontPanel, CurvePanel or TablePanel, got "
                                  f"{type(panel).__name__}")
     path = Path(path)
-    path.write_text(page(title=title, notes=list(notes), panels=built, plotlyjs=get_plotlyjs()),
-                    encoding="utf-8")
+    html = page(title=title, notes=list(notes), panels=built, plotlyjs=get_plotlyjs())
+    atomic_write_bytes(path, html.encode("utf-8"))  # never written through a link
     return path
 
 

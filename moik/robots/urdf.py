@@ -32,6 +32,7 @@ from pathlib import Path
 
 import numpy as np
 
+from moik import _reading
 from moik.exceptions import MoikError, UnknownNameError, URDFError
 from moik.robots.chain import Robot
 from moik.robots.description import URDFDescription
@@ -102,10 +103,8 @@ def _read(source) -> tuple[ET.Element, str]:
         if path.suffix == ".xacro":
             raise URDFError(f"{label!r} is a xacro file: run xacro first "
                             f"(`xacro {path.name} > {path.stem}.urdf`) and load the URDF")
-        try:
-            text = path.read_text()
-        except OSError as exc:
-            raise URDFError(f"cannot read URDF {label!r}: {exc}") from None
+        text = _reading.text(_reading.read_bytes(path, "URDF", URDFError, limit=MAX_URDF_BYTES),
+                             f"URDF {label!r}", URDFError)
     try:
         root = ET.fromstring(text)
     except ET.ParseError as exc:
@@ -314,6 +313,13 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
         raise URDFError(f"{label!r} ({base_link} -> {tip}): {exc}") from exc
 
 
+MAX_URDF_BYTES = 64 * 2**20
+"""Size of a URDF file moik reads."""
+MAX_LIMIT = 1e6
+"""Magnitude of a joint limit (rad or m): a larger one is no physical limit (-1e308 would
+overflow the solver's arithmetic)."""
+
+
 def _limits(el: ET.Element, name: str, jtype: str) -> tuple[float, float]:
     if jtype == "continuous":
         return -np.pi, np.pi
@@ -322,6 +328,11 @@ def _limits(el: ET.Element, name: str, jtype: str) -> tuple[float, float]:
     if lo is None or hi is None:
         raise URDFError(f"joint {name!r} ({jtype}) needs <limit lower= upper=>")
     try:
-        return float(lo), float(hi)
+        values = float(lo), float(hi)
     except ValueError:
         raise URDFError(f"joint {name!r} limits must be numbers") from None
+    if not all(abs(v) <= MAX_LIMIT for v in values):
+        raise URDFError(f"joint {name!r} limits must lie within +-{MAX_LIMIT:g} (rad or m), got "
+                        f"lower={lo}, upper={hi}; an unlimited revolute joint is "
+                        "type=\"continuous\"")
+    return values

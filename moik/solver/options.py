@@ -21,9 +21,28 @@ from moik.kinematics.orientation import available_metrics
 
 DEFAULT_POP_SIZES = (20, 40)  # search population: one solution wanted, several
 
-# (name, smallest value) of the integer options
-_COUNTS = (("n_solutions", 1), ("max_evals", 1), ("starts", 0), ("generations", 1),
-           ("candidates_per_round", 1), ("patience", 1), ("front_evals", 1))
+MAX_SOLUTIONS = 100_000
+"""Most distinct solutions one solve may ask for (each costs memory up front)."""
+MAX_POP_SIZE = 10**6
+"""Largest search population."""
+
+
+def at_most(name: str, value: int, high: int) -> int:
+    """``value`` if it is at most ``high``.
+
+    Raises:
+        ParameterError: Naming ``name`` and the bound (what is allocated up front grows
+            with it: ``n_solutions=1000000000`` would ask for 67 GiB).
+    """
+    if value > high:
+        raise ParameterError(f"{name} must be at most {high}, got {value}")
+    return value
+
+# (name, smallest value, largest value) of the integer options: the largest keep what
+# is allocated up front bounded (a typo such as 1000000000 must not ask for 67 GiB)
+_COUNTS = (("n_solutions", 1, MAX_SOLUTIONS), ("max_evals", 1, 10**12), ("starts", 0, 10**6),
+           ("generations", 1, 10**7), ("candidates_per_round", 1, 10**4),
+           ("patience", 1, 10**7), ("front_evals", 1, 10**12))
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -59,9 +78,12 @@ class SearchOptions:
     front_evals: int = 10_000
 
     def __post_init__(self) -> None:
-        for name, low in _COUNTS:
-            object.__setattr__(self, name, integer(name, getattr(self, name), minimum=low))
+        for name, low, high in _COUNTS:
+            value = integer(name, getattr(self, name), minimum=low)
+            object.__setattr__(self, name, at_most(name, value, high))
         pop_size = optional_integer("pop_size", self.pop_size, minimum=2)
+        if pop_size is not None:
+            at_most("pop_size", pop_size, MAX_POP_SIZE)
         if pop_size is None:
             pop_size = DEFAULT_POP_SIZES[0] if self.n_solutions == 1 else DEFAULT_POP_SIZES[1]
         object.__setattr__(self, "pop_size", pop_size)

@@ -54,7 +54,7 @@ from moik.problems.pareto_ik import ParetoIK
 from moik.robots.catalog import as_robot
 from moik.solver.collision import CollisionGuard, collision_guard, with_clearance
 from moik.solver.memetic import memetic_search
-from moik.solver.options import seed_sequence
+from moik.solver.options import MAX_SOLUTIONS, at_most, seed_sequence
 from moik.solver.pareto_search import BRANCH_STARTS, Projector, enumerate_branches, spread_subset
 from moik.solver.session import pose_errors
 
@@ -192,7 +192,8 @@ def solve_ik_pareto(robot, target, *, objectives=DEFAULT_OBJECTIVES, q_current=N
     objectives = with_clearance(objectives, guard)
     problem = ParetoIK(robot, target, objectives=objectives, q_current=q_current,
                        rotation=rotation, tol=tol)
-    n_solutions = integer("n_solutions", n_solutions, minimum=1)
+    n_solutions = at_most("n_solutions", integer("n_solutions", n_solutions, minimum=1),
+                          MAX_SOLUTIONS)
     starts = integer("starts", starts, minimum=0)
     pop_size = integer("pop_size", pop_size, minimum=2)
     generations = integer("generations", generations, minimum=0)

@@ -477,3 +477,57 @@ def test_fewer_solutions_than_asked_are_said(capsys):
     doc = json.loads(capsys.readouterr().out)
     assert doc["fewer_solutions"] is True and len(doc["solutions"]) == 2
     assert doc["n_solutions"] == 5 and "found 2 of the 5" in doc["detail"]
+
+
+_BLOCKING = ("import importlib, sys, time\nm = importlib.import_module('moik.cli.main')\n"
+             "def handler(spec):\n"
+             "    def run(args):\n"
+             "        print('ready', flush=True)\n"
+             "        time.sleep(60)\n"
+             "    return run\n"
+             "m._handler = handler\nsys.exit(m.main(['robots']))\n")
+
+
+@pytest.mark.parametrize("sig, status, name", [("SIGTERM", 143, "SIGTERM"),
+                                               ("SIGINT", 130, "SIGINT")])
+def test_a_signal_ends_any_command_with_one_line(sig, status, name):
+    """Before: SIGTERM at start-up exited silently, SIGINT printed a traceback."""
+    import signal
+
+    proc = subprocess.Popen([sys.executable, "-c", _BLOCKING], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True)
+    assert proc.stdout.readline().strip() == "ready"
+    proc.send_signal(getattr(signal, sig))
+    _, err = proc.communicate(timeout=30)
+    assert proc.returncode == status
+    assert err.strip() == f"moik: interrupted ({name})"
+
+
+@pytest.mark.parametrize("argv, match", [
+    (["solve", "planar2", "--target", "1", "0", "0", "--n-solutions", "1000000000"],
+     "n-solutions must be at most 100000"),
+    (["solve", "planar2", "--target", "1", "0", "0", "--scene", "/dev/zero"],
+     "not a regular file"),
+    (["experiment", "run", "--config", "/dev/null"], "not a regular file"),
+])
+def test_untrusted_arguments_end_in_one_line_and_status_2(argv, match, capsys):
+    """Before: --n-solutions 1000000000 allocated 67 GiB; /dev/zero was read without limit;
+    --config /dev/null 'does not exist'."""
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and re.search(match, err), err
+
+
+@pytest.mark.parametrize("argv", [
+    ["experiment", "run", "tiny", "--out", ""],
+    ["solve", "planar2", "--target", "1", "0", "0", "--pareto", ""],
+    ["report", "x", "--docs", ""],
+])
+def test_empty_paths_and_lists_are_refused(argv, capsys):
+    """Before: --out "" and --pareto "" silently meant the defaults."""
+    with pytest.raises(SystemExit) as exc:
+        main(argv)
+    assert exc.value.code == 2
+    err = capsys.readouterr().err
+    assert err.startswith("moik: error: ") and err.count("\n") == 1
+    assert "expected a non-empty value" in err

@@ -53,3 +53,52 @@ def test_every_catalog_arm_has_a_model():
         assert sum(len(v) for v in model.shapes.values()) >= model.robot.dof
     with pytest.raises(UnknownNameError):
         collision_model(get_robot("panda").with_locked_joints({0: 0.0}))
+
+
+@pytest.mark.parametrize("item, near", [
+    ({"type": "box", "size": [1, 1, 1], "xzy": [1, 0, 0]}, "xyz"),
+    ({"type": "halfspace", "normal": [0, 0, 1], "ofset": 0.5}, "offset"),
+    ({"type": "sphere", "radius": 0.1, "radus": 0.2}, "radius"),
+])
+def test_a_misspelt_scene_key_is_refused_with_the_nearest_key(item, near):
+    """Before: the key was ignored (a box at the origin, a floor at 0)."""
+    with pytest.raises(GeometryError, match=f"did you mean '{near}'"):
+        load_scene({"obstacles": [item]})
+
+
+def test_unknown_top_level_keys_are_refused_in_scenes_and_models():
+    with pytest.raises(GeometryError, match="did you mean 'allowed'"):
+        load_scene({"obstacles": [], "alowed": []})
+    data = model_to_dict(collision_model(get_robot("planar2")))
+    data["shape"] = data.pop("shapes")
+    with pytest.raises(GeometryError, match="did you mean 'shapes'"):
+        load_model(data, get_robot("planar2"))
+    data = model_to_dict(collision_model(get_robot("planar2")))
+    data["shapes"][0]["lnk"] = "x"
+    with pytest.raises(GeometryError, match="did you mean 'link'"):
+        load_model(data, get_robot("planar2"))
+
+
+@pytest.mark.parametrize("scene, match", [
+    ({"obstacles": [{"name": ["a"], "type": "sphere", "radius": 1}]}, "'name' must be a string"),
+    ({"obstacles": [{"type": "sphere", "radius": 1}], "allowed": [[["a"], "b"]]}, "pairs"),
+    ({"obstacles": [{"type": "capsule", "radius": 0.1, "length": int("9" * 400)}]}, "digits"),
+    ({"obstacles": [{"type": "sphere", "radius": "big"}]}, "number"),
+    ({"obstacles": [{"type": ["sphere"], "radius": 1}]}, "shape type"),
+])
+def test_malformed_names_and_numbers_end_in_a_geometry_error(scene, match):
+    """Before: TypeError for list-valued names, OverflowError for a 400-digit length."""
+    with pytest.raises((GeometryError, UnknownNameError), match=match):
+        load_scene(scene)
+
+
+def test_deep_and_endless_scene_files_are_refused(tmp_path):
+    """Before: RecursionError for deep nesting; /dev/zero was read without limit."""
+    deep = tmp_path / "deep.json"
+    deep.write_text('{"obstacles": ' + "[" * 100_000 + "]" * 100_000 + "}")
+    with pytest.raises(GeometryError, match="nested deeper"):
+        load_scene(deep)
+    with pytest.raises(GeometryError, match="not a regular file"):
+        load_scene("/dev/zero")
+    with pytest.raises(GeometryError, match="JSON file path"):
+        load_scene("")

@@ -117,3 +117,14 @@ def test_a_store_holds_the_lock_until_closed(tmp_path, tiny_config):
     store.close()
     ResultStore.create(tmp_path / "r", config=tiny_config, targets=[], trials=[],
                        resume=True, session={}).close()
+
+
+@pytest.mark.parametrize("content", [b"[" * 100_000 + b"]" * 100_000,
+                                     b'{"pid": ' + b"9" * 400 + b', "host": "h", "started": "s"}',
+                                     b'{"pid": -5, "host": "h", "started": "s"}', b"\xff\xfe"])
+def test_a_hostile_lock_file_is_an_unreadable_one(tmp_path, content):
+    """Before: RecursionError (deep nesting) or OverflowError (os.kill of a 400-digit pid)."""
+    (tmp_path / "run.lock").write_bytes(content)
+    lock = RunLock.acquire(tmp_path)
+    assert lock.replaced == "an unreadable lock file"
+    lock.release()

@@ -46,7 +46,7 @@ def test_a_bad_folder_is_reported_and_the_others_go_on(results, capsys):
     text = (results / "report.md").read_text()
     assert "## tiny-test: tiny position experiment (full size)" in text
     assert "## b: not reported" in text and "## c: not reported" in text
-    assert "meta.json: JSONDecodeError" in text and "meta.json: FileNotFoundError" in text
+    assert "meta.json' is not valid JSON" in text and "meta.json': it does not exist" in text
 
 
 def test_no_readable_folder_is_an_error(results):

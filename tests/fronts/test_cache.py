@@ -1,6 +1,7 @@
 """The disk cache of reference fronts: fingerprint, round trip, unwritable folders."""
 
 import inspect
+import os
 from dataclasses import replace
 
 import numpy as np
@@ -73,3 +74,45 @@ def test_ship_uses_cached_fronts_defaults():
 def test_cache_dir_follows_xdg(monkeypatch, tmp_path, name):
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
     assert getattr(cache, name)() == tmp_path / "moik" / "fronts"
+
+
+def _flip_bit(data: bytes) -> bytes:
+    middle = len(data) // 2
+    return data[:middle] + bytes([data[middle] ^ 0x10]) + data[middle + 1:]
+
+
+@pytest.mark.parametrize("damage", [
+    lambda d: d[: len(d) // 2],  # truncated: BadZipFile
+    lambda d: b"",  # emptied: EOFError
+    _flip_bit,  # a flipped bit: a CRC error
+    lambda d: b"PK\x03\x04" + b"\x00" * 40,  # a zip header with nothing behind
+    lambda d: b"\x93NUMPY" + d,  # garbage before the archive
+])
+def test_a_damaged_cache_file_is_recomputed_and_replaced(tmp_path, monkeypatch, damage):
+    """Before: BadZipFile and EOFError escaped _load, breaking pareto_front() for good."""
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    robot = get_robot("planar2")
+    p, R = _planar_target()
+    first = cache.cached_front(robot, p, R, metric="geodesic", levels=6, starts=2)
+    (path,) = (tmp_path / "moik" / "fronts").glob("*.npz")
+    path.write_bytes(damage(path.read_bytes()))
+    again = cache.cached_front(robot, p, R, metric="geodesic", levels=6, starts=2)
+    np.testing.assert_array_equal(first.F, again.F)
+    assert cache._load(path, path.stem) is not None  # healed: the file is whole again
+    assert [f.name for f in path.parent.iterdir()] == [path.name]
+
+
+def test_a_failed_store_leaves_no_temporary(tmp_path, monkeypatch):
+    """Before: an exception during the write left the mkstemp temporary behind."""
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    robot = get_robot("planar2")
+    p, R = _planar_target()
+
+    def interrupted(fd):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(os, "fsync", interrupted)
+    with pytest.raises(KeyboardInterrupt):
+        cache.cached_front(robot, p, R, metric="geodesic", levels=6, starts=2)
+    folder = tmp_path / "moik" / "fronts"
+    assert not folder.exists() or list(folder.iterdir()) == []

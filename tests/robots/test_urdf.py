@@ -154,7 +154,7 @@ def test_absurd_lengths_are_refused_not_solved_with_infinite_reach():
     with pytest.raises(URDFError, match="to joint 'j2' overflows"):  # 3e308 = inf
         load_urdf(_chain(_joint("j1", "a", "b", far, jtype="fixed"), _joint("j2", "b", "c", far)))
     stroke = _joint("j1", "a", "b", jtype="prismatic").replace("upper='1'", "upper='1e300'")
-    with pytest.raises(URDFError, match="reach"):
+    with pytest.raises(URDFError, match="reach|limits must lie within"):
         load_urdf(_chain(stroke, links=("a", "b")))
 
 
@@ -228,3 +228,11 @@ def test_the_robot_keeps_its_urdf_and_package_folders(tmp_path):
     with pytest.raises(MoikError, match="description must be"):
         type(robot)(name="x", lower=[0.0], upper=[1.0], a=[1.0], alpha=[0.0], d=[0.0],
                     theta=[0.0], description="panda.urdf")
+
+
+def test_a_limit_beyond_any_physical_one_is_refused():
+    """Before: lower=-1e308 loaded, and solve_ik then raised a misleading NonFiniteError."""
+    joint = _joint("j1", "a", "b").replace("lower='-1'", "lower='-1e308'")
+    assert "-1e308" in joint
+    with pytest.raises(URDFError, match="limits must lie within"):
+        load_urdf(_chain(joint, _joint("j2", "b", "c")))

@@ -123,3 +123,13 @@ def test_public_solver_names_are_the_functions_after_any_import_order():
             "assert all(callable(f) and not isinstance(f, type(moik)) for f in (solve_ik, "
             "solve_ik_batch, solve_ik_pareto, solve_path, moik.solve_ik, moik.solve_ik_batch))\n")
     subprocess.run([sys.executable, "-c", code], check=True)
+
+
+def test_counts_are_bounded_above():
+    """Before: n_solutions=1000000000 was accepted and asked for 67 GiB up front."""
+    with pytest.raises(ParameterError, match="n_solutions must be at most 100000, got 1000000000"):
+        SearchOptions(n_solutions=1_000_000_000)
+    with pytest.raises(ParameterError, match="starts must be at most"):
+        SearchOptions(starts=10**9)
+    with pytest.raises(ParameterError, match="pop_size must be at most"):
+        SearchOptions(pop_size=10**9)

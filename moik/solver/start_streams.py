@@ -130,11 +130,12 @@ def _seed_state(words, pool_size, state):
 
 
 @jit(nogil=True)
-def batch_streams(base, spawn, pool_size, key, first, n, states):
+def batch_streams(base, spawn, rows, states):
     """PCG64 states ``(n, 4)`` of ``SeedSequence(entropy, spawn_key=(*spawn_key, i, key),
-    pool_size)`` for ``first <= i < first + n`` (row ``i - first``); ``base``: the
-    entropy's words (uint64 holding 32 bits), ``spawn``: the spawn key's words (as
-    :func:`uint32_words`)."""
+    pool_size)`` for ``first <= i < first + n`` (row ``i - first``), ``rows = (pool_size,
+    key, first, n)``; ``base``: the entropy's words (uint64 holding 32 bits), ``spawn``: the
+    spawn key's words (as :func:`uint32_words`)."""
+    pool_size, key, first, n = rows
     n_run = max(base.size, pool_size)  # numpy pads the entropy to the pool with a spawn key
     for r in range(n):
         i = first + r
@@ -174,7 +175,7 @@ def streams(root: np.random.SeedSequence, key: int, n: int, first: int = 0) -> n
     spawn = np.array(uint32_words(root.spawn_key), dtype=np.uint64)
     states = np.empty((n, 4), dtype=np.uint64)
     with np.errstate(over="ignore"):  # modulo 2**64, also as Python (NUMBA_DISABLE_JIT)
-        batch_streams(base, spawn, int(root.pool_size), np.uint64(key), int(first), n, states)
+        batch_streams(base, spawn, (int(root.pool_size), np.uint64(key), int(first), n), states)
     return states
 
 

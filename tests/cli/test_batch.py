@@ -108,6 +108,6 @@ def test_bad_out_and_options(tmp_path, poses, capsys):
     for argv, match in ((["--out", str(tmp_path / "r.txt")], "--out must end in"),
                         (["--out", str(tmp_path / "no" / "r.npz")], "does not exist"),
                         (["--out", str(tmp_path / "r.npz"), "--clearance", "0.1"],
-                         "--clearance needs")):
+                         "--clearance was given but nothing is checked")):
         assert main(["batch", "panda", str(tmp_path / "t.npy"), *argv]) == 2
         assert match in capsys.readouterr().err

@@ -511,7 +511,7 @@ _SWAP = """
 import shutil, sys
 from pathlib import Path
 cache = Path(sys.argv[1])
-victim = next(cache.rglob("fk_kernels.all_finite-*.nbc"))
+victim = next(cache.rglob("fk_kernels.joint_screen-*.nbc"))
 other = next(cache.rglob("fk_kernels.fk_poses-*.nbc"))
 shutil.copyfile(other, victim)  # intact, with its own valid digest: another kernel's code
 """ + SCRIPT

@@ -75,7 +75,9 @@ def test_target_inside_obstacle_collides(world):
                    patience=1, max_evals=5000)
     assert res.status == "collides" and not res.success and len(res.solutions) == 0
     assert res.min_distance < 0.0
-    assert res.min_distance == pytest.approx(coal_min(checker, res.q), abs=1e-9)
+    # in contact: a mesh link's depth is its hulls' overlap along their centres, never less
+    # deep than coal's exact depth (a primitive pair's is exact)
+    assert res.min_distance <= coal_min(checker, res.q) + 1e-9
     pos, _ = pose_errors(model.robot, as_target([0.5, 0.0, 0.4]), res.q)
     assert pos[0] <= TOL * model.robot.reach  # the best answer is exact, only colliding
     assert "rejected for collision" in res.detail

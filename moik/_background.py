@@ -24,6 +24,7 @@ import pickle
 import subprocess
 import sys
 import threading
+import time
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -59,9 +60,12 @@ class Background:
 
     def wait(self) -> None:
         """Wait until the child says :data:`READY` (or ends), at most :data:`WAIT_LIMIT` s
-        (then it is stopped)."""
+        (then it is stopped); the time waited counts as compiling
+        (:func:`moik._jit.compile_seconds`)."""
+        t0 = time.perf_counter()
         if not self._ready.wait(timeout=WAIT_LIMIT):
             self.stop()
+        _jit.add_compile_seconds(time.perf_counter() - t0)
 
     def stop(self) -> None:
         """Stop the child if it still runs."""

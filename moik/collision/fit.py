@@ -3,7 +3,7 @@
 Build-time code (``studies/fit_capsules.py`` uses it to make the shipped models; moik
 never reads a mesh when it loads or checks a model). :func:`enclosing_capsule` is pure
 numpy: the capsule it returns contains every point given. :func:`mesh_vertices` reads a
-mesh file with trimesh, the optional extra ``moik[fit]``, imported only when called;
+mesh file with trimesh, the optional extra ``fit``, imported only when called;
 :func:`urdf_mesh_points` and :func:`fit_urdf` put a URDF's mesh vertices on a robot's
 bodies (:func:`moik.robots.urdf_geometry.mesh_geometry`) and fit one capsule per link.
 
@@ -202,13 +202,15 @@ def mesh_vertices(path: Any) -> np.ndarray:
     """The vertices of a mesh file (STL, OBJ, COLLADA ...), read with trimesh.
 
     Raises:
-        MoikError: trimesh is not installed (``pip install moik[fit]``).
+        MoikError: trimesh is not installed (``pip install -e '.[fit]'`` in the
+            moik repository).
         GeometryError: the file holds no triangle mesh.
     """
     try:
         import trimesh
     except ImportError:
-        raise MoikError("reading meshes needs trimesh: pip install 'moik[fit]'") from None
+        raise MoikError("reading meshes needs trimesh: pip install -e '.[fit]' in the moik "
+                        "repository") from None
     mesh = trimesh.load(str(path), force="mesh")
     if not isinstance(mesh, trimesh.Trimesh):
         raise GeometryError(f"{str(path)!r} holds no triangle mesh")

@@ -40,7 +40,7 @@ import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from moik.exceptions import ResultsError
+from moik.exceptions import ParameterError, ResultsError
 from moik.experiments.files import atomic_write_bytes, git_commit
 from moik.experiments.headlines import headline
 from moik.experiments.report import (
@@ -164,7 +164,8 @@ def _page(store: ResultStore, docs: Path, name: str, line: str, *, figures: bool
             drawn[png] = fig_dir / png.name
             return (Path("figures") / name / png.name).as_posix()
 
-        section = experiment_section(store, figures=figures, link=link, figure_folder=Path(tmp))
+        section = experiment_section(store, figures=figures, link=link, figure_folder=Path(tmp),
+                                     folder_label=store.folder.name)
         if fig_dir.is_dir():
             for old in fig_dir.glob("*.png"):
                 old.unlink()
@@ -210,23 +211,32 @@ def replace_blocks(text: str, summaries: dict[str, str], update: DocsUpdate,
     return BLOCK.sub(swap, text)
 
 
-def write_docs(folders, docs: str | Path, *, figures: bool = True) -> DocsUpdate:
+def write_docs(folders, docs: str | Path, *, figures: bool = True,
+               force: bool = False) -> DocsUpdate:
     """Regenerate the docs of the experiments in ``folders`` (see the module docstring).
 
     Args:
         folders: Results folders, or folders of results folders.
         docs: The docs folder (holding ``reproducing.md``, which may be absent).
         figures: Draw the figures (needs matplotlib).
+        force: Write them even when moik's code has uncommitted changes (the stamps then
+            say ``with uncommitted changes``); refused otherwise, so that committed pages
+            name the commit whose code wrote them.
 
     Returns:
         A :class:`DocsUpdate` (its warnings are also printed on stderr).
 
     Raises:
         ResultsError: If no results folder among ``folders`` can be read.
+        ParameterError: moik's code has uncommitted changes and ``force`` is not set.
     """
     docs, update = Path(docs), DocsUpdate()
     summaries: dict[str, str] = {}
     generated_at = git_commit()
+    if generated_at is not None and generated_at.endswith("-dirty") and not force:
+        raise ParameterError("moik's code (moik/, experiments/, pyproject.toml) has uncommitted "
+                             "changes: commit them first, so that the pages' stamps name the "
+                             "code that wrote them (or force it: --force, force=True)")
     subs = []
     for folder in folders:
         try:

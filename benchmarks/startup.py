@@ -54,7 +54,9 @@ MOIK = ("import numpy as np, moik\n"
         "assert moik.solve_ik(moik.get_robot('puma560'), T).success\n")
 
 
-CLI = "import sys\nfrom moik.cli import main\nsys.exit(main(sys.argv[1:]))\n"
+CLI = ("import sys\nfrom moik.cli import main\n"
+       "if __name__ == '__main__':  # moik compile's worker processes import this file\n"
+       "    sys.exit(main(sys.argv[1:]))\n")
 COLD = {  # the command lines of the cold first uses, and their goals (s)
     "first solve": (["solve", "puma560", "--target", "0.4", "0.2", "0.3"], 10.0),
     "first solve --pareto": (["solve", "iiwa14", "--target", "0.4", "0.2", "0.5", "--pareto",

@@ -103,6 +103,8 @@ def not_run(argv: list[str]) -> str | None:
         return "tests/test_docs_site.py builds the site"
     if head != "moik":
         return f"not a moik command ({head})"
+    if argv[1:2] == ["compile"]:
+        return "compiles every kernel: minutes on a first run (tests/cli/test_kernels.py)"
     if argv[1:3] == ["experiment", "run"] and "--quick" not in argv:
         return "a full-size experiment: minutes to hours (its --quick runs are tested)"
     if "--dask-scheduler" in argv:
@@ -178,8 +180,11 @@ def first_run_text() -> str:
                         if m["low"] != m["high"] else "")
                      for what, m in runs.items())
     machine = f"a {when[2]}-CPU machine on {when[1]}" if when else "one machine"
-    return (f"Measured with an empty kernel cache on {machine} (median wall time; "
-            f"[docs/results/first-runs.txt](docs/results/first-runs.txt), "
+    load = re.search(r"load average ([\d.]+) after them", table)
+    busy = (f", shared with other work (load average {float(load[1]):.0f}: expect less on "
+            "a quiet machine)" if load and when and float(load[1]) > int(when[2]) else "")
+    return (f"Measured with an empty kernel cache on {machine}{busy}; median wall time "
+            f"([docs/results/first-runs.txt](docs/results/first-runs.txt), "
             f"`benchmarks/startup.py --first-runs`): {said}.\n")
 
 

@@ -8,6 +8,7 @@ compiled first: ``12.3 ms (compiled 10 kernels in 22.1 s first)``.
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
@@ -30,15 +31,23 @@ class Compiling:
         return text
 
 
+def _so_far() -> tuple[int, float]:
+    """Kernels compiled and seconds spent compiling so far in this process, read without
+    importing ``moik._jit`` (nor numba; as :func:`moik.cli.main._compiled` does): before
+    numba is loaded nothing has been compiled."""
+    jit = sys.modules.get("moik._jit")
+    if jit is None or "numba" not in sys.modules:
+        return 0, 0.0
+    return jit.compile_count(), jit.compile_seconds()
+
+
 @contextmanager
 def compiling() -> Iterator[Compiling]:
     """The kernels compiled, and the seconds spent compiling, inside the ``with`` block."""
-    from moik import _jit  # numba: only for a command that solves
-
     out = Compiling()
-    kernels, seconds = _jit.compile_count(), _jit.compile_seconds()
+    kernels, seconds = _so_far()
     try:
         yield out
     finally:
-        out.kernels = _jit.compile_count() - kernels
-        out.seconds = _jit.compile_seconds() - seconds
+        now_kernels, now_seconds = _so_far()
+        out.kernels, out.seconds = now_kernels - kernels, now_seconds - seconds

@@ -175,10 +175,11 @@ def first_run_text() -> str:
     header = table.splitlines()[0]
     when = re.search(r"; (\d{4}-\d\d-\d\d) [\d:]+, [^,]+, (\d+) CPUs", header)
     runs = {m["what"]: m for m in MEASURED.finditer(table)}
-    said = "; ".join(f"{what.split(' (')[0]} {float(m['wall']):.0f} s"
-                     + (f" ({float(m['low']):.0f}-{float(m['high']):.0f} s)"
-                        if m["low"] != m["high"] else "")
-                     for what, m in runs.items())
+    def seconds(m: re.Match) -> str:
+        low, high = f"{float(m['low']):.0f}", f"{float(m['high']):.0f}"
+        return f"{float(m['wall']):.0f} s" + (f" ({low}-{high} s)" if low != high else "")
+
+    said = "; ".join(f"{what.split(' (')[0]} {seconds(m)}" for what, m in runs.items())
     machine = f"a {when[2]}-CPU machine on {when[1]}" if when else "one machine"
     load = re.search(r"load average ([\d.]+) after them", table)
     busy = (f", shared with other work (load average {float(load[1]):.0f}: expect less on "

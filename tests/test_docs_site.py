@@ -113,3 +113,44 @@ def test_every_example_is_in_the_gallery():
     assert len(EXAMPLES) >= 4
     for example in EXAMPLES:
         assert f'--8<-- "examples/{example.name}"' in gallery
+
+
+TABLE_CHECK = """
+return [...document.querySelectorAll('article table')].filter(
+  (t) => t.scrollWidth > t.clientWidth + 1 || t.getBoundingClientRect().right >
+         document.querySelector('article').getBoundingClientRect().right + 1
+).map((t) => t.rows[0].textContent.trim().slice(0, 60));
+"""
+
+
+def test_no_table_is_clipped_at_1280_px(site, monkeypatch):
+    """In headless Chromium 1280 px wide, every table of every page fits the page's
+    content area whole (docs/stylesheets/extra.css; results pages without a table of
+    contents beside them): none is cut off or needs scrolling sideways."""
+    chromium, chromedriver = Path("/usr/bin/chromium"), Path("/usr/bin/chromedriver")
+    if not (chromium.is_file() and chromedriver.is_file()):
+        pytest.skip("no headless Chromium (Debian: apt-get install chromium chromium-driver)")
+    webdriver = pytest.importorskip("selenium.webdriver", reason="selenium (test extra)")
+    from selenium.webdriver.chrome.service import Service
+
+    out, run = site
+    assert run.returncode == 0, run.stdout + run.stderr
+    monkeypatch.setenv("SE_OFFLINE", "true")  # selenium-manager never downloads
+    options = webdriver.ChromeOptions()
+    options.binary_location = str(chromium)
+    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                "--window-size=1280,900"):
+        options.add_argument(arg)
+    driver = webdriver.Chrome(service=Service(executable_path=str(chromedriver)),
+                              options=options)
+    try:
+        clipped = {}
+        pages = sorted(out.glob("*.html")) + sorted((out / "results").glob("*.html"))
+        for page in pages:
+            driver.get(page.as_uri())
+            found = driver.execute_script(TABLE_CHECK)
+            if found:
+                clipped[page.name] = found
+    finally:
+        driver.quit()
+    assert len(pages) > 30 and clipped == {}

@@ -173,7 +173,9 @@ def _page(store: ResultStore, docs: Path, name: str, line: str, *, figures: bool
             fig_dir.mkdir(parents=True, exist_ok=True)
             for src, dst in drawn.items():
                 shutil.copyfile(src, dst)
-    text = (f"# {name}: generated results\n\n{line}\n\nGenerated from the stored results by "
+    # no table of contents beside the page (mkdocs-material): its wide tables get the room
+    text = (f"---\nhide: [toc]\n---\n\n# {name}: generated results\n\n{line}\n\n"
+            "Generated from the stored results by "
             "`moik report RESULTS --docs docs` (do not edit by hand: the next run replaces this "
             "file).\n\n" + section)
     path = results / f"{name}.md"

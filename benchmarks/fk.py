@@ -137,6 +137,13 @@ def objective_table() -> None:
               f"{diff:>11.1e}")
 
 
+def _where(package: Path) -> str:
+    """The moik measured: this repository's (no path of the machine in a stored table)
+    or an installed one."""
+    here = Path(__file__).resolve().parents[1]
+    return "this repository" if package.resolve().parent == here else "an installed copy"
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", help=OUT_HELP)
@@ -145,7 +152,7 @@ def main() -> None:
         load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
         print(f"numpy {np.__version__}, numba {numba.__version__}, {os.cpu_count()} CPUs, "
               f"load average {load:.2f}; medians of {REPEATS} interleaved repeats; "
-              f"moik from {Path(moik.__file__).parent}\n")
+              f"moik from {_where(Path(moik.__file__).parent)}\n")
         fk_table([get_robot("eosma7"), get_robot("puma560"), iiwa_like(), ur5_like()])
         objective_table()
 

@@ -27,6 +27,7 @@ import argparse
 import time
 
 import numpy as np
+from _output import OUT_HELP, table_output
 
 from moik import get_robot, solve_ik, solve_ik_pareto
 from moik.kinematics.criteria import nearest_copies
@@ -145,9 +146,11 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--n", type=int, default=10, help="poses per arm")
     parser.add_argument("--seed", type=int, default=2026)
+    parser.add_argument("--out", help=OUT_HELP)
     args = parser.parse_args()
-    iiwa(args)
-    six_dof(args)
+    with table_output(args.out):
+        iiwa(args)
+        six_dof(args)
 
 
 if __name__ == "__main__":

@@ -25,9 +25,14 @@ even on a busy machine) and, each right after, with ``MOIK_BACKGROUND_COMPILE=0`
 the process compiles every kernel itself), and prints the ratios of the pairs: what the
 background compiles save.
 
+``--first-runs`` times only what a newcomer runs first (:data:`FIRST_RUNS`: the README's
+main job, a first ``--pareto`` and collision-aware solve, ``moik compile``), each with an
+empty kernel cache; its table (docs/results/first-runs.txt) is the one the README's
+first-run times are generated from (``python tests/docs_blocks.py --update README.md``).
+
 Run: python benchmarks/startup.py [--n 15] [--cold] [--cold-n 5] [--baseline REV]
-[--without-background] [--out FILE] (``--out`` also writes the printed table to FILE, e.g.
-docs/results/startup.txt, which docs/performance.md links to).
+[--without-background] [--first-runs] [--out FILE] (``--out`` also writes the printed table
+to FILE, e.g. docs/results/startup.txt, which docs/performance.md links to).
 """
 
 from __future__ import annotations
@@ -53,12 +58,24 @@ MOIK = ("import numpy as np, moik\n"
         "assert moik.solve_ik(moik.get_robot('puma560'), T).success\n")
 
 
-CLI = "import sys\nfrom moik.cli import main\nsys.exit(main(sys.argv[1:]))\n"
+CLI = ("import sys\nfrom moik.cli import main\n"
+       "if __name__ == '__main__':  # moik compile's worker processes import this file\n"
+       "    sys.exit(main(sys.argv[1:]))\n")
 COLD = {  # the command lines of the cold first uses, and their goals (s)
     "first solve": (["solve", "puma560", "--target", "0.4", "0.2", "0.3"], 10.0),
     "first solve --pareto": (["solve", "iiwa14", "--target", "0.4", "0.2", "0.5", "--pareto",
                               "manipulability,limit_margin", "--pareto-size", "5"], 10.0),
     "first unreachable solve": (["solve", "puma560", "--target", "2", "0", "0"], 10.0),
+}
+
+FIRST_RUNS = {  # what a newcomer runs first, each with an empty kernel cache (--first-runs)
+    "the README's main job (moik solve eosma7 ... --n-solutions 3)":
+        ["solve", "eosma7", "--target", "-24.748737", "100.961941", "50", "--euler", "135",
+         "0", "-90", "--deg", "--n-solutions", "3"],
+    "a first --pareto solve (moik solve iiwa14 ... --pareto)": COLD["first solve --pareto"][0],
+    "a first collision-aware solve (moik solve panda ... --self-collision)":
+        ["solve", "panda", "--target", "0.4", "0.2", "0.5", "--self-collision"],
+    "moik compile (every kernel, once)": ["compile"],
 }
 
 # the cold times of commit 62ac347 on the machine that set the goals (the issue that set
@@ -99,14 +116,39 @@ def main() -> None:
                         help="with --cold: also time the cold first uses without background "
                              "compiles (MOIK_BACKGROUND_COMPILE=0), interleaved, and print "
                              "the ratios")
+    parser.add_argument("--first-runs", action="store_true",
+                        help="only time what a newcomer runs first (FIRST_RUNS), --cold-n "
+                             "samples each with an empty kernel cache")
     parser.add_argument("--out", help=OUT_HELP)
     args = parser.parse_args()
+    if args.first_runs:
+        with table_output(args.out):
+            first_runs(args.cold_n)
+        return
     with table_output(args.out), tempfile.TemporaryDirectory() as tree:
         baseline = None
         if args.baseline:
             baseline = (args.baseline, checkout(args.baseline, tree))
         measure(args.n, cold=args.cold, cold_n=args.cold_n, baseline=baseline,
                 without_background=args.without_background)
+
+
+def first_runs(n: int) -> None:
+    """Print the wall and CPU seconds of each of :data:`FIRST_RUNS`, ``n`` samples each
+    (interleaved), each in a fresh process with its own empty NUMBA_CACHE_DIR."""
+    samples: dict[str, list[tuple[float, float]]] = {what: [] for what in FIRST_RUNS}
+    for _ in range(n):
+        for what, argv in FIRST_RUNS.items():
+            with tempfile.TemporaryDirectory() as cache:
+                env = {**os.environ, "NUMBA_CACHE_DIR": cache}
+                samples[what].append(wall(CLI, env=env, args=argv, check=False))
+    load = os.getloadavg()[0]
+    print(f"first runs, each with an empty kernel cache: {n} sample(s) of each, interleaved; "
+          f"load average {load:.1f} after them")
+    for what in FIRST_RUNS:
+        walls, cpus = np.array(samples[what]).T
+        print(f"{what}: median {np.median(walls):.1f} s wall ({walls.min():.1f}-"
+              f"{walls.max():.1f}), {np.median(cpus):.1f} s CPU")
 
 
 def checkout(rev: str, into: str) -> str:

@@ -66,11 +66,17 @@ class _CompileNotice(event.Listener):
             _compiled["since"] = _compiled["last"] = time.perf_counter()
             print(COMPILE_NOTICE, file=sys.stderr, flush=True)
         _compiled["kernels"] += 1
+        if _compiled["depth"] == 0:  # a kernel compiling another: counted once
+            _compiled["began"] = time.perf_counter()
+        _compiled["depth"] += 1
 
     def on_end(self, ev: event.Event) -> None:
         if not _ours(ev):
             return
         now = time.perf_counter()
+        _compiled["depth"] -= 1
+        if _compiled["depth"] == 0:
+            _compiled["seconds"] += now - _compiled["began"]
         if now - _compiled["last"] >= PROGRESS_EVERY:
             _compiled["last"] = now
             print(f"  ... {_compiled['kernels']} kernels compiled so far "
@@ -85,12 +91,24 @@ def _ours(ev: event.Event) -> bool:
 
 # moik kernel compilations in this process (compile_count) and the times of the notice
 # and of the last progress line
-_compiled: dict[str, Any] = {"kernels": 0, "since": 0.0, "last": 0.0}
+_compiled: dict[str, Any] = {"kernels": 0, "since": 0.0, "last": 0.0, "seconds": 0.0,
+                             "depth": 0, "began": 0.0}
 
 
 def compile_count() -> int:
     """How many moik kernels this process has compiled (not loaded from the cache)."""
     return _compiled["kernels"]
+
+
+def compile_seconds() -> float:
+    """Wall seconds this process has spent compiling moik kernels, or waiting for a child
+    process compiling them (:meth:`moik._background.Background.wait`)."""
+    return _compiled["seconds"]
+
+
+def add_compile_seconds(seconds: float) -> None:
+    """Count ``seconds`` (spent waiting for kernels compiled elsewhere) as compiling."""
+    _compiled["seconds"] += seconds
 
 
 event.register("numba:compile", _CompileNotice())

@@ -331,7 +331,8 @@ def test_a_long_compilation_prints_progress_lines(monkeypatch, capsys):
 
     kernel = next(iter(jit_module._kernels))
     monkeypatch.setattr(jit_module, "_notice", {"printed": False})
-    monkeypatch.setattr(jit_module, "_compiled", {"kernels": 0, "since": 0.0, "last": 0.0})
+    monkeypatch.setattr(jit_module, "_compiled", {"kernels": 0, "since": 0.0, "last": 0.0,
+                                                  "seconds": 0.0, "depth": 0, "began": 0.0})
     listener = jit_module._CompileNotice()
 
     class Dispatcher:
@@ -357,6 +358,38 @@ def test_a_long_compilation_prints_progress_lines(monkeypatch, capsys):
     err = capsys.readouterr().err
     assert err.startswith("  ... 2 kernels compiled so far (") and err.count("\n") == 1
     assert jit_module.compile_count() == 2
+
+
+def test_compile_seconds_count_nested_compilations_once(monkeypatch):
+    """A kernel compiling the kernels it calls: the seconds from the outer start to the
+    outer end, once; time waited for a background child is added."""
+    from numba.core import event
+
+    import moik._jit as jit_module
+
+    kernel = next(iter(jit_module._kernels))
+    monkeypatch.setattr(jit_module, "_notice", {"printed": True})
+    monkeypatch.setattr(jit_module, "_compiled", {"kernels": 0, "since": 0.0, "last": 0.0,
+                                                  "seconds": 0.0, "depth": 0, "began": 0.0})
+    clock = iter([10.0, 12.0, 13.5])  # outer start, inner end, outer end
+    monkeypatch.setattr(jit_module.time, "perf_counter", lambda: next(clock))
+    listener = jit_module._CompileNotice()
+
+    class Dispatcher:
+        py_func = kernel
+
+    def fire(status):
+        ev = event.Event(kind="numba:compile", status=status, data={"dispatcher": Dispatcher})
+        (listener.on_start if status == event.EventStatus.START else listener.on_end)(ev)
+
+    monkeypatch.setattr(jit_module, "PROGRESS_EVERY", 1e9)
+    fire(event.EventStatus.START)  # 10.0
+    fire(event.EventStatus.START)  # nested: no clock read
+    fire(event.EventStatus.END)  # 12.0
+    fire(event.EventStatus.END)  # 13.5
+    assert jit_module.compile_count() == 2 and jit_module.compile_seconds() == 3.5
+    jit_module.add_compile_seconds(0.5)
+    assert jit_module.compile_seconds() == 4.0
 
 
 def test_is_cached_says_which_kernels_the_cache_holds(built_cache, tmp_path):

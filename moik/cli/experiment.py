@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import sys
 
+from moik.cli import output
 from moik.exceptions import MoikError
 from moik.experiments.config import load_config
 from moik.experiments.registry import ENV_VAR, experiment_files, get_experiment
@@ -17,14 +18,15 @@ def cmd_list(args: argparse.Namespace) -> int:
     if not files:
         print(f"no experiments found (see {ENV_VAR})")
         return 0
-    print(f"{'name':<16}{'trials':>8}{'quick':>7}  title")
+    rows = []
     for name in files:
         try:
             cfg = get_experiment(name)
             counts = [len(c.algorithms) * len(c.targets) * c["runs"] for c in (cfg, cfg.quick())]
-            print(f"{name:<16}{counts[0]:>8}{counts[1]:>7}  {cfg['title']}")
+            rows.append([name, str(counts[0]), str(counts[1]), cfg["title"]])
         except MoikError as exc:
-            print(f"{name:<16}{'-':>8}{'-':>7}  INVALID: {exc}")
+            rows.append([name, "-", "-", f"INVALID: {exc}"])
+    print(output.table(["name", "trials", "quick", "title"], rows, right={1, 2}))
     return 0
 
 

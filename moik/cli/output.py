@@ -14,6 +14,7 @@ pose printed by ``moik fk`` can be pasted into ``moik solve``.
 from __future__ import annotations
 
 import json
+from collections.abc import Collection
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -49,15 +50,29 @@ def floats(values) -> str:
     return "(" + ", ".join(repr(float(v) + 0.0) for v in values) + ")"
 
 
+def table(header: list[str], rows: list[list[str]], right: Collection[int] = ()) -> str:
+    """Rows of text as columns sized to their widest cell (header included), two spaces
+    apart; the columns whose index is in ``right`` are right-aligned, the last is not
+    padded."""
+    cells = [header, *rows]
+    widths = [max(len(r[i]) for r in cells) for i in range(len(header))]
+    lines = []
+    for r in cells:
+        parts = [c.rjust(w) if i in right else c.ljust(w)
+                 for i, (c, w) in enumerate(zip(r, widths, strict=True))]
+        parts[-1] = parts[-1] if len(header) - 1 in right else r[-1]
+        lines.append("  ".join(parts).rstrip())
+    return "\n".join(lines)
+
+
 def print_robot_list(robots: list[Robot], as_json: bool) -> None:
     """The catalog: name, DOF, kind, unit and source of each robot."""
     if as_json:
         print_json({"robots": [{"name": r.name, "dof": r.dof, "kind": kind(r), "unit": r.unit,
                                 "source": r.source} for r in robots]})
         return
-    print(f"{'name':<18}{'dof':>4}  {'kind':<15}{'unit':<5} source")
-    for r in robots:
-        print(f"{r.name:<18}{r.dof:>4}  {kind(r):<15}{r.unit:<5} {r.source}")
+    print(table(["name", "dof", "kind", "unit", "source"],
+                [[r.name, str(r.dof), kind(r), r.unit, r.source] for r in robots], right={1}))
 
 
 def print_robot(robot: Robot, as_json: bool) -> None:
@@ -100,6 +115,4 @@ def print_algorithms(entries: list, as_json: bool) -> None:
         print_json({"algorithms": [{"name": e.name, "kind": e.kind, "source": e.source}
                                    for e in entries]})
         return
-    print(f"{'name':<10}{'kind':<18}source")
-    for e in entries:
-        print(f"{e.name:<10}{e.kind:<18}{e.source}")
+    print(table(["name", "kind", "source"], [[e.name, e.kind, e.source] for e in entries]))

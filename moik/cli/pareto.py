@@ -24,6 +24,7 @@ from moik.cli.common import PARETO_OPTIONS, joint_values, library_call, toleranc
 from moik.cli.parser import given
 from moik.cli.solutions import euler_angles
 from moik.cli.solutions import target as target_of
+from moik.cli.timing import Compiling, compiling
 from moik.exceptions import ParameterError
 from moik.plotting.explorer import pareto_explorer
 from moik.plotting.pareto import plot_pareto_ik
@@ -63,7 +64,7 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
     beside_pareto(robot, target, objectives=criteria, q_current=q_current, rotation=rotation,
                   **options)  # on a cold first run: the search algorithm's kernels
     check = collision.checker(args, robot)
-    with library_call(PARETO_OPTIONS), collision.option_names():
+    with library_call(PARETO_OPTIONS), collision.option_names(), compiling() as compiled:
         res = solve_ik_pareto(robot, target, objectives=criteria, q_current=q_current,
                               rotation=rotation, **options, **collision.solver_options(check))
     index = res.compromise_index() if len(res.X) else None
@@ -79,7 +80,7 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
     if args.json:
         print(json.dumps(as_json(robot, target, res, index, plots, near, clearance)))
     else:
-        print(format_result(robot, target, res, index, clearance))
+        print(format_result(robot, target, res, index, clearance, compiled=compiled))
         if near:
             collision.print_distances(near, robot.unit, label="member", start=0)
     if plots and not args.json:
@@ -147,7 +148,7 @@ def _status(res: ParetoIKResult, compromise: int | None, clearance: float | None
 
 
 def format_result(robot, target: Target, res: ParetoIKResult, compromise: int | None,
-                  clearance: float | None = None) -> str:
+                  clearance: float | None = None, *, compiled: Compiling | None = None) -> str:
     """The members as a table: criteria, then joint values in degrees (``clearance``: that
     of a collision check, for the verdict when no member keeps it)."""
     kind = "pose" if target.rotation is not None else "position"
@@ -156,7 +157,7 @@ def format_result(robot, target: Target, res: ParetoIKResult, compromise: int | 
     lines = [f"robot {robot.name}: {kind} target {np.round(target.position, 6).tolist()} "
              f"{robot.unit}",
              f"{len(res.X)} exact solutions, mutually non-dominated ({how}, {res.n_eval} FK "
-             f"evaluations, {res.time * 1e3:.1f} ms)"]
+             f"evaluations, {(compiled or Compiling()).time_text(res.time)})"]
     if not len(res.X):
         if _status(res, compromise, clearance) == "collides":
             return "\n".join(lines + [f"status: collides (no exact point keeps the clearance "

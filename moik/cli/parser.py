@@ -135,7 +135,7 @@ def _solve_arguments(p: argparse.ArgumentParser) -> None:
                    help="save a 3-D drawing: FILE.png, .pdf or .svg (no extension: .png and .pdf)")
     p.add_argument("--html", metavar="FILE", type=nonempty,
                    help="write the interactive explorer, one self-contained HTML file (needs "
-                        "moik[explorer]): the Pareto set with --pareto, else the error front "
+                        "the explorer extra): the Pareto set with --pareto, else the error front "
                         "of an unreachable pose; a click on a point shows its posture")
     p.add_argument("--pareto", metavar="CRITERIA", type=nonempty,
                    help="the Pareto set of exact solutions over these comma-separated "
@@ -207,7 +207,7 @@ def _experiment_arguments(sub) -> None:
     q.add_argument("--out", metavar="DIR", type=nonempty,
                    help="results folder (default results/NAME or results/NAME-quick)")
     q.add_argument("--dask-scheduler", metavar="ADDRESS", type=nonempty,
-                   help="run on a Dask distributed scheduler (needs moik[dask])")
+                   help="run on a Dask distributed scheduler (needs the dask extra)")
     q.add_argument("--limit", type=positive_int, default=None,
                    help="run at most this many pending trials, then stop")
     q.add_argument("--by-run", action="store_true",
@@ -226,10 +226,15 @@ def _experiment_arguments(sub) -> None:
     p.add_argument("--output", metavar="FILE", type=nonempty,
                    help="report file (default DIR/report.md)")
     p.add_argument("--docs", metavar="DOCS", type=nonempty,
-                   help="docs folder to regenerate from the results (e.g. docs/)")
+                   help="docs folder to regenerate from the results (e.g. docs/); refused "
+                        "while moik's code has uncommitted changes (the pages' stamps name "
+                        "the commit that wrote them)")
+    p.add_argument("--force", action="store_true",
+                   help="with --docs: write them from a tree with uncommitted changes (the "
+                        "stamps then say so)")
     p.add_argument("--html", metavar="FILE", nargs="?", const="",
                    help="write the interactive report instead (fronts linked to postures, "
-                        "convergence, the tables; needs moik[explorer]): FILE, default "
+                        "convergence, the tables; needs the explorer extra): FILE, default "
                         "DIR/report.html")
     p.set_defaults(handler="report:cmd_report")
 

@@ -30,10 +30,12 @@ def cmd_problems(args: argparse.Namespace) -> int:
     if args.json:
         output.print_json({"problems": rows})
         return 0
-    print(f"{'name':<24}{'robot':<11}{'obj':>4}  {'orientation':<14}{'front':>6}  reachable")
+    cells = []
     for r in rows:
         front = "-" if r["front_points"] is None else str(r["front_points"])
         reach = "-" if r["reachable"] is None else ("yes" if r["reachable"] else "no")
-        print(f"{r['name']:<24}{r['robot']:<11}{r['n_obj']:>4}  {r['orientation'] or '-':<14}"
-              f"{front:>6}  {reach}")
+        cells.append([r["name"], r["robot"], str(r["n_obj"]), r["orientation"] or "-", front,
+                      reach])
+    print(output.table(["name", "robot", "obj", "orientation", "front", "reachable"], cells,
+                       right={2, 4}))
     return 0

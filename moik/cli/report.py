@@ -14,6 +14,9 @@ from moik.experiments.report import make_report
 
 def cmd_report(args: argparse.Namespace) -> int:
     """Write the report of each results folder, or with ``--docs`` the docs (1 if one failed)."""
+    if args.force and args.docs is None:
+        raise ParameterError("--force goes with --docs (writing the docs from a tree with "
+                             "uncommitted changes)")
     if args.docs is not None:
         if args.html is not None:
             raise ParameterError("--docs writes the docs folder; --html the interactive report: "
@@ -56,7 +59,7 @@ def _html(args: argparse.Namespace) -> int:
 
 
 def _docs(args: argparse.Namespace) -> int:
-    update = write_docs(args.folder, args.docs, figures=not args.no_figures)
+    update = write_docs(args.folder, args.docs, figures=not args.no_figures, force=args.force)
     for page in update.pages:
         print(f"written {page}")
     replaced = ", ".join(f"{name} {kind}" for name, kind in update.replaced) or "none"

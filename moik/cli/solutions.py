@@ -10,6 +10,7 @@ import argparse
 import numpy as np
 
 from moik.cli.output import display_q, floats, kind, print_json, q_units
+from moik.cli.timing import Compiling
 from moik.exceptions import TargetError
 from moik.kinematics.orientation import eosma_euler, zyx_euler
 from moik.problems.targets import Target
@@ -77,13 +78,14 @@ def print_solve_json(robot: Robot, target: Target, res, errors: list, plots: lis
         "plots": [str(p) for p in plots]})
 
 
-def print_solve(robot: Robot, target: Target, res, Q: np.ndarray, errors: list, plots: list
-                ) -> None:
+def print_solve(robot: Robot, target: Target, res, Q: np.ndarray, errors: list, plots: list,
+                *, compiled: Compiling | None = None) -> None:
     """Every solution (or the best candidate / the compromise) with its errors, in words
-    that say what an unsolved ``q`` is."""
+    that say what an unsolved ``q`` is; the time without the compiling of ``compiled``."""
     what = "pose" if target.has_orientation else "position"
     print(f"robot {robot.name}: {what} target {floats(target.position)} {robot.unit}")
-    print(f"status: {res.status}  ({res.n_eval} FK evaluations, {res.time * 1e3:.1f} ms)")
+    spent = (compiled or Compiling()).time_text(res.time)
+    print(f"status: {res.status}  ({res.n_eval} FK evaluations, {spent})")
     print(f"joints: {' '.join(robot.joint_names)}  ({q_units(robot)})")
     if res.success:
         labels = [f"solution {k}" for k in range(1, len(Q) + 1)]

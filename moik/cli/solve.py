@@ -17,6 +17,7 @@ from moik.cli import collision, pareto, solutions
 from moik.cli.common import SOLVE_OPTIONS, joint_values, library_call, robot, tolerance
 from moik.cli.parser import given
 from moik.cli.solutions import target
+from moik.cli.timing import compiling
 from moik.exceptions import ParameterError
 from moik.plotting.explorer import pareto_explorer
 from moik.problems.targets import Target
@@ -68,7 +69,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
     q_current = (None if args.q_current is None
                  else joint_values(arm, args.q_current, args.deg, "--q-current"))
     check = collision.checker(args, arm)
-    with library_call(SOLVE_OPTIONS):
+    with library_call(SOLVE_OPTIONS), compiling() as compiled:
         res = solve_ik(arm, goal, q_current=q_current, **search,
                        **collision.solver_options(check))
     Q = res.solutions if len(res.solutions) else res.q[None]
@@ -82,7 +83,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
         solutions.print_solve_json(arm, goal, res, errors, plots, res.n_requested,
                                    collision=near)
     else:
-        solutions.print_solve(arm, goal, res, Q, errors, plots)
+        solutions.print_solve(arm, goal, res, Q, errors, plots, compiled=compiled)
         if near is not None:
             collision.print_distances(near, arm.unit)
     if html is not None:

@@ -202,13 +202,15 @@ def mesh_vertices(path: Any) -> np.ndarray:
     """The vertices of a mesh file (STL, OBJ, COLLADA ...), read with trimesh.
 
     Raises:
-        MoikError: trimesh is not installed (``pip install moik[fit]``).
+        MoikError: trimesh is not installed (``pip install -e '.[fit]'`` in the
+            moik repository).
         GeometryError: the file holds no triangle mesh.
     """
     try:
         import trimesh
     except ImportError:
-        raise MoikError("reading meshes needs trimesh: pip install 'moik[fit]'") from None
+        raise MoikError("reading meshes needs trimesh: pip install -e '.[fit]' in the moik "
+                        "repository") from None
     mesh = trimesh.load(str(path), force="mesh")
     if not isinstance(mesh, trimesh.Trimesh):
         raise GeometryError(f"{str(path)!r} holds no triangle mesh")

@@ -53,7 +53,7 @@ def _shapes(owner: str, shapes: Any) -> tuple[Shape, ...]:
     return items
 
 
-@dataclass(frozen=True, eq=False, kw_only=True)
+@dataclass(frozen=True, eq=False, kw_only=True, repr=False)
 class CollisionModel:
     """Collision shapes on a robot's bodies, and the body pairs never checked.
 
@@ -118,6 +118,11 @@ class CollisionModel:
         return [(i, j) for i in used for j in used if j > i + 1
                 and frozenset((self.links[i], self.links[j])) not in self.allowed]
 
+    def __repr__(self) -> str:
+        n = sum(len(s) for s in self.shapes.values())
+        return (f"CollisionModel({self.robot.name!r}, {n} shapes on {len(self.shapes)} of "
+                f"{len(self.links)} links, {len(self.allowed)} allowed pairs)")
+
     def with_allowed(self, pairs: Iterable[Sequence[str]]) -> CollisionModel:
         """The model with ``pairs`` added to the allowed-collision matrix."""
         return CollisionModel(robot=self.robot, shapes=self.shapes, links=self.links,
@@ -125,7 +130,7 @@ class CollisionModel:
                               source=self.source)
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, repr=False)
 class Scene:
     """Obstacles in the world frame (the robot's base frame is placed by ``robot.base``).
 
@@ -156,6 +161,21 @@ class Scene:
             if name not in self.obstacles:
                 raise UnknownNameError("obstacle", name, self.obstacles)
 
+    def __repr__(self) -> str:
+        items = ", ".join(f"{name!r}: {shape!r}" for name, shape in self.obstacles.items())
+        allowed = f", allowed={sorted(self.allowed)}" if self.allowed else ""
+        return f"Scene({{{items}}}{allowed})"
+
+
+def shape_names(model: CollisionModel) -> list[str]:
+    """The names of a model's shapes, in :attr:`CollisionModel.items` order: the link's name
+    when the link has one shape, else ``link#k``, its ``k``-th shape (from 1, in the order
+    given)."""
+    names = []
+    for link, shapes in model.shapes.items():
+        names += [link] if len(shapes) == 1 else [f"{link}#{k}" for k in range(1, len(shapes) + 1)]
+    return names
+
 
 def keeps_clearance(distances, clearance: float):
     """Whether signed distances keep ``clearance`` (``distance >= clearance``; NaN never
@@ -176,7 +196,7 @@ class CollisionChecker:
             default, as in :func:`~moik.solver.solve_ik`).
 
     The pairs are the robot's checked self pairs (if ``self_collision``) and every robot
-    shape against every obstacle; :attr:`pair_names` names them.
+    shape against every obstacle; :attr:`pair_names` names them (:func:`shape_names`).
     """
 
     def __init__(self, *, model: CollisionModel, scene: Scene | None = None,
@@ -194,8 +214,7 @@ class CollisionChecker:
         items = model.items
         tops = [s for _, s in items] + list(() if scene is None else scene.obstacles.values())
         top_bodies = [b for b, _ in items] + [-1] * (len(tops) - len(items))
-        names = [f"{model.links[b]}[{k}]" for k, (b, _) in enumerate(items)]
-        names += list(() if scene is None else scene.obstacles)
+        names = list(shape_names(model)) + list(() if scene is None else scene.obstacles)
         shapes, bodies, parts = expand_compounds(tops, top_bodies)
         kinds, local, sizes = shape_arrays(shapes)
         hull_points, hull_ranges = hull_arrays(shapes, sizes)

@@ -58,7 +58,7 @@ def _length(owner: str, what: str, value: Any, *, allow_zero: bool) -> float:
     return v
 
 
-@dataclass(frozen=True, eq=False, kw_only=True)
+@dataclass(frozen=True, eq=False, kw_only=True, repr=False)
 class Shape(ABC):
     """Base of the primitives: a pose and the kernel's kind code and sizes."""
 
@@ -89,12 +89,27 @@ class Shape(ABC):
     def _sizes_dict(self) -> dict[str, Any]:
         """The shape's own sizes, by name (its part of :meth:`to_dict`)."""
 
+    def __repr__(self) -> str:
+        """One line: the sizes, the pose's origin, and ``rotated`` when the pose turns."""
+        parts = [f"{k}={_short(v)}" for k, v in self._sizes_dict().items()]
+        parts.append(f"at={_short(self.pose[:3, 3].tolist())}")
+        if not np.allclose(self.pose[:3, :3], np.eye(3)):
+            parts.append("rotated")
+        return f"{type(self).__name__}({', '.join(parts)})"
+
+
+def _short(value: Any) -> str:
+    """A number or a list of numbers with 4 significant digits."""
+    if isinstance(value, (list, tuple)):
+        return "(" + ", ".join(_short(v) for v in value) + ")"
+    return f"{float(value) + 0.0:.4g}"
+
 
 def _replace_pose(shape: Shape, pose: np.ndarray) -> Shape:
     return replace(shape, pose=pose)
 
 
-@dataclass(frozen=True, eq=False, kw_only=True)
+@dataclass(frozen=True, eq=False, kw_only=True, repr=False)
 class Sphere(Shape):
     """A ball of ``radius`` around the pose's origin."""
 
@@ -114,7 +129,7 @@ class Sphere(Shape):
         return {"radius": self.radius}
 
 
-@dataclass(frozen=True, eq=False, kw_only=True)
+@dataclass(frozen=True, eq=False, kw_only=True, repr=False)
 class Capsule(Shape):
     """The points within ``radius`` of a segment of ``length`` along the pose's z axis."""
 
@@ -156,7 +171,7 @@ class Capsule(Shape):
         return {"radius": self.radius, "length": self.length}
 
 
-@dataclass(frozen=True, eq=False, kw_only=True)
+@dataclass(frozen=True, eq=False, kw_only=True, repr=False)
 class Box(Shape):
     """A box of full side lengths ``size = (x, y, z)`` along the pose's axes."""
 
@@ -179,7 +194,7 @@ class Box(Shape):
         return {"size": list(self.size)}
 
 
-@dataclass(frozen=True, eq=False, kw_only=True)
+@dataclass(frozen=True, eq=False, kw_only=True, repr=False)
 class HalfSpace(Shape):
     """The solid ``z <= 0`` of the pose's frame (outward normal: the pose's z axis)."""
 
@@ -200,6 +215,11 @@ class HalfSpace(Shape):
     @property
     def sizes(self) -> tuple[float, float, float]:
         return 0.0, 0.0, 0.0
+
+    def __repr__(self) -> str:
+        """As :meth:`plane` takes it: the unit outward normal and the offset along it."""
+        n = self.pose[:3, 2]
+        return f"HalfSpace(normal={_short(n.tolist())}, offset={_short(n @ self.pose[:3, 3])})"
 
     def _sizes_dict(self) -> dict[str, Any]:
         return {}

@@ -57,7 +57,7 @@ def summary_table(res: Results) -> list[Table]:
         f = np.nan_to_num(res.values(label, "best_f"), posinf=np.finfo(float).max)
         with np.errstate(over="ignore"):  # a trial without a value counts as the largest
             s = summarize(f, res.values(label, "time"))
-        row = [label, "moik", fmt(s.worst), fmt(s.mean), fmt(s.best), fmt(s.std), fmt(s.median),
+        row = [label, res.source, fmt(s.worst), fmt(s.mean), fmt(s.best), fmt(s.std), fmt(s.median),
                fmt(s.time), f"{100 * success_rate(f, thr):.0f}%"]
         if protocol:
             row.append(fmt(float(np.mean(res.values(label, "attempts")))))
@@ -131,7 +131,7 @@ def friedman_hv_table(res: Results) -> list[Table]:
             times = [r["time"] for r in res.by_label[lab] if r["target"] == ti]
             sizes = [r["n_front"] for r in res.by_label[lab] if r["target"] == ti]
             rank = (f"{fr.mean_ranks[lab]:.2f} ({fr.order[lab]})" if fr else "-")
-            rows.append([lab, "moik", fmt(float(hv[lab].mean()), 6),
+            rows.append([lab, res.source, fmt(float(hv[lab].mean()), 6),
                          fmt(float(np.std(hv[lab], ddof=1)) if hv[lab].size > 1 else 0.0, 3),
                          rank, fmt(float(np.mean(times))), fmt(float(np.mean(sizes))),
                          *uncovered(float(hv[lab].mean()))])
@@ -165,7 +165,7 @@ def joint_motion_table(res: Results) -> list[Table]:
         best = min(recs, key=lambda r: r["best_f"])
         q = np.degrees(best["best_x"])
         dist = [r["joint_distance_deg"] for r in recs]
-        rows.append([lab, "moik"] + [f"{v:.6f}" for v in q] + [
+        rows.append([lab, res.source] + [f"{v:.6f}" for v in q] + [
             fmt(best.get("joint_distance_deg"), 7), fmt(best["best_f"], 3),
             f"{np.mean(dist):.4g} +- {np.std(dist):.2g}"])
         p = paper.get(lab)
@@ -188,7 +188,7 @@ def compromise_table(res: Results) -> list[Table]:
             if not np.all(np.isfinite(v)):
                 continue
             s = summarize(v)
-            rows.append([lab, name, "moik", fmt(s.best), fmt(s.worst), fmt(s.mean), fmt(s.std),
+            rows.append([lab, name, res.source, fmt(s.best), fmt(s.worst), fmt(s.mean), fmt(s.std),
                          fmt(s.median)])
             p = paper.get(lab, {}).get(name)
             if p:
@@ -225,7 +225,7 @@ def signed_rank_table(res: Results) -> list[Table]:
         a, b = [base[k] for k in pairs], [other[k] for k in pairs]
         t = signed_rank(a, b)
         p_ranksum = ranksum_pvalues({proposed: a, lab: b}, proposed)[lab]
-        rows.append([proposed, lab, "moik", fmt(t.r_plus), fmt(t.r_minus), fmt(t.p_value, 3),
+        rows.append([proposed, lab, res.source, fmt(t.r_plus), fmt(t.r_minus), fmt(t.p_value, 3),
                      fmt(p_ranksum, 3), t.better(proposed, lab), str(len(pairs))])
         p = paper.get(lab)
         if p:

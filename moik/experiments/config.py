@@ -290,4 +290,5 @@ def check_requirements(config: ExperimentConfig) -> None:
         module, what = EXTRAS[extra]
         if importlib.util.find_spec(module) is None:
             raise ConfigError(f"experiment {config.name!r} needs the optional extra {extra!r} "
-                              f"({module}, for {what}): pip install 'moik[{extra}]'")
+                              f"({module}, for {what}): pip install -e '.[{extra}]' in the "
+                              "moik repository")

@@ -89,4 +89,27 @@ def read_config(path: str | Path, bases: Mapping[str, Path] | None = None,
         raise ConfigError(f"{p}: extends {base_name!r}, which is not a known experiment "
                           f"(known: {', '.join(known)})")
     base = read_config(base_path, bases, (*_seen, name_of(p)))
-    return merge(base, data)
+    merged = merge(base, data)
+    if isinstance(base.get("paper"), dict) and "paper" not in data:
+        # the paper's numbers come with the base's budget: a variant that changes it is
+        # marked in its report (moik.experiments.tables.Results)
+        merged["paper"].setdefault("budget", budget_of(base))
+    return merged
+
+
+def budget_of(config: Mapping) -> dict[str, int]:
+    """What sets an experiment's budget (a paper's numbers compare with a run at the
+    same): ``iterations``, ``pop_size`` and the problem's ``evaluations``, those the
+    config's data sets."""
+    values = {"iterations": config.get("iterations"), "pop_size": config.get("pop_size"),
+              "evaluations": (config.get("problem") or {}).get("evaluations")}
+    return {k: v for k, v in values.items() if v is not None}
+
+
+def budget_text(budget: Mapping) -> str:
+    """``1000 iterations, population 100`` (or ``10000 evaluations``) in words."""
+    if budget.get("evaluations"):
+        return f"{budget['evaluations']} evaluations"
+    parts = ([f"{budget['iterations']} iterations"] if "iterations" in budget else []) + (
+        [f"population {budget['pop_size']}"] if "pop_size" in budget else [])
+    return ", ".join(parts) or "its budget"

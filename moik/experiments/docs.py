@@ -40,7 +40,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from moik._paths import file_name, inside, remove
-from moik.exceptions import ResultsError
+from moik.exceptions import ParameterError, ResultsError
 from moik.experiments.files import atomic_write_bytes, git_commit
 from moik.experiments.headlines import headline
 from moik.experiments.report import (
@@ -170,7 +170,8 @@ def _page(store: ResultStore, docs: Path, name: str, line: str, *, figures: bool
             drawn[png] = fig_dir / png.name
             return (Path("figures") / name / png.name).as_posix()
 
-        section = experiment_section(store, figures=figures, link=link, figure_folder=Path(tmp))
+        section = experiment_section(store, figures=figures, link=link, figure_folder=Path(tmp),
+                                     folder_label=store.folder.name)
         inside(docs, fig_dir)
         if fig_dir.is_dir():
             for old in fig_dir.glob("*.png"):
@@ -179,7 +180,9 @@ def _page(store: ResultStore, docs: Path, name: str, line: str, *, figures: bool
             fig_dir.mkdir(parents=True, exist_ok=True)
             for src, dst in drawn.items():
                 atomic_write_bytes(dst, src.read_bytes(), folder=docs)
-    text = (f"# {name}: generated results\n\n{md(line)}\n\nGenerated from the stored results by "
+    # no table of contents beside the page (mkdocs-material): its wide tables get the room
+    text = (f"---\nhide: [toc]\n---\n\n# {name}: generated results\n\n{md(line)}\n\n"
+            "Generated from the stored results by "
             "`moik report RESULTS --docs docs` (do not edit by hand: the next run replaces this "
             "file).\n\n" + section)
     path = results / f"{name}.md"
@@ -218,19 +221,24 @@ def replace_blocks(text: str, summaries: dict[str, str], update: DocsUpdate,
     return BLOCK.sub(swap, text)
 
 
-def write_docs(folders, docs: str | Path, *, figures: bool = True) -> DocsUpdate:
+def write_docs(folders, docs: str | Path, *, figures: bool = True,
+               force: bool = False) -> DocsUpdate:
     """Regenerate the docs of the experiments in ``folders`` (see the module docstring).
 
     Args:
         folders: Results folders, or folders of results folders.
         docs: The docs folder (holding ``reproducing.md``, which may be absent).
         figures: Draw the figures (needs matplotlib).
+        force: Write them even when moik's code has uncommitted changes (the stamps then
+            say ``with uncommitted changes``); refused otherwise, so that committed pages
+            name the commit whose code wrote them.
 
     Returns:
         A :class:`DocsUpdate` (its warnings are also printed on stderr).
 
     Raises:
         ResultsError: If no results folder among ``folders`` can be read.
+        ParameterError: moik's code has uncommitted changes and ``force`` is not set.
     """
     docs, update = Path(docs), DocsUpdate()
     if not docs.is_dir():
@@ -238,6 +246,10 @@ def write_docs(folders, docs: str | Path, *, figures: bool = True) -> DocsUpdate
                            "give the docs folder that holds reproducing.md")
     summaries: dict[str, str] = {}
     generated_at = git_commit()
+    if generated_at is not None and generated_at.endswith("-dirty") and not force:
+        raise ParameterError("moik's code (moik/, experiments/, pyproject.toml) has uncommitted "
+                             "changes: commit them first, so that the pages' stamps name the "
+                             "code that wrote them (or force it: --force, force=True)")
     subs = []
     for folder in folders:
         try:

@@ -15,7 +15,7 @@ the message, the stored trials kept, the lock released, the session end recorded
 - ``dask``: ``distributed.Client(address)`` (connected before the results folder
   is made); ``client.map(warm_trial, specs)`` and ``distributed.as_completed``;
   on interrupt the futures are cancelled.
-  Needs the optional extra ``moik[dask]`` and moik installed on the workers.
+  Needs the optional extra ``dask`` and moik installed on the workers.
 
 :class:`Progress` is a tqdm bar when tqdm is installed, else a plain line on
 stderr at most every two seconds: trials done/total, failures, ETA.
@@ -143,7 +143,7 @@ def connect_dask(address: str, *, timeout: float = 20.0):
         from distributed import Client
     except ImportError:
         raise ParameterError("--dask-scheduler needs dask.distributed: "
-                             "pip install 'moik[dask]'") from None
+                             "pip install -e '.[dask]' in the moik repository") from None
     try:
         return Client(address, timeout=timeout)
     except (OSError, TimeoutError, ValueError) as exc:

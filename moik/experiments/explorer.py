@@ -31,6 +31,7 @@ from moik.experiments.figures import (
 from moik.experiments.report import FOLDER_ERRORS, damaged_warning, result_folders
 from moik.experiments.store import ResultStore
 from moik.experiments.tables import Results
+from moik.metrics.compromise import closest_to_utopia
 from moik.plotting.explorer import CurvePanel, Front, FrontPanel, TablePanel, write_explorer
 from moik.problems.targets import Target
 from moik.robots import get_robot
@@ -57,8 +58,16 @@ def front_panels(res: Results, *, posture_runs: int | None = 3) -> list[FrontPan
         return []  # single-objective trials store no front
     robot = get_robot(cfg["robot"]) if kind == "bi-objective" else None
     unit = robot.unit if robot is not None else ""
+    metric_note = []
     if robot is not None:
         metric = cfg["problem"].get("orientation", "geodesic")
+        if metric != "geodesic":
+            metric_note = [f"Two orientation errors: the front's axis is the experiment's "
+                           f"metric, {metric} (the paper's); a member's details give the "
+                           "geodesic angle of the same rotation error, recomputed by forward "
+                           "kinematics. They differ: an Euler-angle error compares three "
+                           "angles, the geodesic angle is the one rotation between the two "
+                           "frames."]
         axes = [f"position error ({unit})", f"{metric} orientation error "
                 f"({orientation_unit(metric)})"]
     panels = []
@@ -83,8 +92,11 @@ def front_panels(res: Results, *, posture_runs: int | None = 3) -> list[FrontPan
             title=f"{cfg['name']}: fronts at {t['name']} (one trace per algorithm and run)",
             fronts=fronts, objectives=names, robot=robot,
             target=_target(t) if robot is not None else None,
+            initial=(0, closest_to_utopia(fronts[0].F)),
             notes=[f"{len(fronts)} fronts; run 0 of each algorithm shown, the others in the "
-                   f"legend; postures embedded for {kept}."]))
+                   f"legend; postures embedded for {kept}. The member shown first is the "
+                   f"compromise (closest to the utopia point) of {fronts[0].name}.",
+                   *metric_note]))
     return panels
 
 

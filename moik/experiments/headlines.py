@@ -47,7 +47,8 @@ def summary_lines(res: Results) -> list[str]:
         return ["- no final objective values to summarise (the trials store fronts: ask for "
                 "a front analysis such as front-quality in the config's analyses)", ""]
     lines = [f"| algorithm | mean | median | worst | best | success (f < {thr:g}) | time (s) "
-             "| paper mean | paper worst |", "|---|---|---|---|---|---|---|---|---|"]
+             f"| {res.citation} mean | {res.citation} worst |",
+             "|---|---|---|---|---|---|---|---|---|"]
     for lab in res.scalar_labels():
         f = np.nan_to_num(res.values(lab, "best_f"), posinf=np.finfo(float).max)
         with np.errstate(over="ignore"):  # a trial without a value counts as the largest
@@ -93,7 +94,7 @@ def compromise_lines(res: Results) -> list[str]:
                 cited.append(f"{name} mean {fmt(p['mean'], 3)} {u}")
         if parts:
             lines.append(f"- {lab}: " + ", ".join(parts)
-                         + (f"; paper: {', '.join(cited)}" if cited else ""))
+                         + (f"; {res.citation}: {', '.join(cited)}" if cited else ""))
     return lines
 
 
@@ -115,7 +116,7 @@ def signed_rank_lines(res: Results) -> list[str]:
             continue
         t = signed_rank([base[k] for k in common], [pairs[k] for k in common])
         p = paper.get(other, {})
-        cited = (f" (paper {fmt(p.get('r_plus'))}/{fmt(p.get('r_minus'))})"
+        cited = (f" ({res.citation} {fmt(p.get('r_plus'))}/{fmt(p.get('r_minus'))})"
                  if p.get("r_plus") is not None else "")
         lines.append(f"- {lab} vs {other}: R+/R- = {fmt(t.r_plus)}/{fmt(t.r_minus)}{cited}, "
                      f"p = {fmt(t.p_value, 2)}, better: {t.better(lab, other)} "
@@ -138,7 +139,7 @@ def friedman_hv_lines(res: Results) -> list[str]:
         p = paper.get(name, {}).get(lab, {})
         cited = ""
         if p.get("mean") is not None:
-            cited = (f" (paper {fmt(p['mean'], 6)}, rank {p.get('rank', '-')}; uncovered "
+            cited = (f" ({res.citation} {fmt(p['mean'], 6)}, rank {p.get('rank', '-')}; uncovered "
                      f"{fmt(box - p['mean'], 3)}, {100 * (box - p['mean']) / box:.2f} %)")
         lines.append(f"- {name}: {lab} HV {fmt(means[lab], 6)}, rank by mean HV "
                      f"{order.index(lab) + 1} of {len(order)}; uncovered box - HV = "
@@ -161,7 +162,7 @@ def joint_motion_lines(res: Results) -> list[str]:
                   and r.get("orientation_error", 0.0) < thr]
         best = min(recs, key=lambda r: r["best_f"])
         p = paper.get(lab, {})
-        cited = f" (paper {fmt(p['distance'], 7)} deg)" if p.get("distance") else ""
+        cited = f" ({res.citation} {fmt(p['distance'], 7)} deg)" if p.get("distance") else ""
         lines.append(f"- {lab}: pose reached (errors < {thr:g}) in {len(solved)} of {len(recs)} "
                      f"runs; lowest objective {fmt(best['best_f'], 3)} at joint distance "
                      f"{fmt(best.get('joint_distance_deg'), 7)} deg{cited}")
@@ -172,7 +173,7 @@ def per_target_lines(res: Results) -> list[str]:
     """Per target: the focus algorithm's median and mean, the best median and who has it."""
     lab = focus(res)
     paper = res.paper.get("per_target", {})
-    lines = [f"| target | {lab} median | {lab} mean | paper {lab} mean | best median |",
+    lines = [f"| target | {lab} median | {lab} mean | {res.citation} {lab} mean | best median |",
              "|---|---|---|---|---|"]
     for ti, target in enumerate(res.meta["targets"]):
         med = {}

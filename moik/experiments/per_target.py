@@ -58,7 +58,7 @@ def per_target_table(res: Results) -> list[Table]:
                 stats = [fmt(s.best), fmt(s.worst), fmt(s.mean), fmt(s.median), fmt(s.std)]
             else:
                 stats = ["-"] * 5
-            rows.append([name, lab, "moik", *stats, fmt(t), f"{f.size}/{len(recs)}"])
+            rows.append([name, lab, res.source, *stats, fmt(t), f"{f.size}/{len(recs)}"])
             p = paper.get(name, {}).get(lab)
             if p:
                 rows.append([name, lab, res.citation] + [fmt(p.get(k)) for k in
@@ -109,7 +109,7 @@ def per_target_ranksum_table(res: Results) -> list[Table]:
         pv = ranksum_pvalues(samples, proposed)
         med = {lab: float(np.median(v)) for lab, v in samples.items()}
         ours = [_verdict(pv[lab], med[proposed], med[lab]) for lab in others]
-        rows.append([name, "moik"] + [f"{fmt(pv[lab], 3)} {v}" for lab, v in
+        rows.append([name, res.source] + [f"{fmt(pv[lab], 3)} {v}" for lab, v in
                                       zip(others, ours, strict=True)])
         theirs = _paper_verdicts(res, name, proposed, others)
         p = paper.get(name)

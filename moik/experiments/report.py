@@ -85,7 +85,8 @@ def table_markdown(table: Table) -> str:
 
 
 def experiment_section(store: ResultStore, *, figures: bool, link: Callable[[Path], str],
-                       figure_folder: Path | None = None) -> str:
+                       figure_folder: Path | None = None, folder_label: str | None = None
+                       ) -> str:
     """The report section of one results folder (Markdown).
 
     Args:
@@ -94,6 +95,8 @@ def experiment_section(store: ResultStore, *, figures: bool, link: Callable[[Pat
         link: Figure PNG path -> the link written in the section (relative to the file
             that holds the section; :mod:`moik.experiments.docs` copies the file there).
         figure_folder: Where the figures are drawn (default ``store.folder/figures``).
+        folder_label: How the results folder is named (default its path; the docs give its
+            name alone: a committed page holds no path of the machine that wrote it).
     """
     res, tables = analyze(store)
     meta, cfg = store.meta, store.meta["config"]
@@ -124,7 +127,7 @@ def experiment_section(store: ResultStore, *, figures: bool, link: Callable[[Pat
              f"{machine.get('cpu_count', '?')} cores)",
              "- sessions: " + "; ".join(f"{s.get('started', '?')} ({s.get('executor', '?')})"
                                         for s in sess),
-             f"- results folder: `{_code(store.folder)}`"]
+             f"- results folder: `{_code(folder_label or store.folder)}`"]
     lines = [md(line) for line in lines]
     lines += [f"- {md(n)}" for n in res.notes()]
     if store.damaged:

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from moik.experiments.config_files import budget_of, budget_text
 from moik.experiments.store import ResultStore, planned_ids
 
 
@@ -45,9 +46,17 @@ class Results:
         self.meta = store.meta
         self.config = store.meta["config"]
         self.paper = self.config.get("paper", {})
-        self.citation = "paper"
+        self.citation, self.source = "paper", "moik"
         cite = self.paper.get("citation")
         self.paper_note = f"paper rows: {cite}" if cite else None
+        theirs, ours = self.paper.get("budget"), budget_of(self.config)
+        if theirs and any(ours.get(k) != v for k, v in theirs.items()):
+            # a variant at another budget than the paper's: its numbers are no comparison
+            self.citation = f"paper, at {budget_text(theirs)}"
+            self.source = f"this run, at {budget_text(ours)}"
+            self.paper_note = (f"the paper's rows are at {budget_text(theirs)}, this run at "
+                               f"{budget_text(ours)}: not comparable row by row"
+                               + (f" (paper rows: {cite})" if cite else ""))
         records = store.records()
         planned = planned_ids(self.meta)
         self.unplanned = [r["trial"] for r in records
@@ -85,6 +94,8 @@ class Results:
             out.append(f"warning: {len(self.unplanned)} stored trial(s) that meta.json does not "
                        f"plan were left out ({shown}{', ...' if len(self.unplanned) > 3 else ''})")
         out += [f"about the paper's numbers: {n}" for n in self.paper.get("notes", [])]
+        if self.citation != "paper" and self.paper_note:
+            out.append(self.paper_note)
         if self.failed:
             out.append(f"{len(self.failed)} trials failed (status error), e.g. "
                        f"{self.failed[0]['trial']}: {self.failed[0].get('error')}")

@@ -97,14 +97,16 @@ SCRIPT = r"""
       h += ' (forward kinematics of this member)';
     }
     h += '<table class="joints"><tr><th class="name">joint</th><th>value</th><th>deg</th>' +
-         '<th>lower</th><th>upper</th></tr>';
+         '<th>lower limit</th><th>upper limit</th></tr>';
     P.q[i].forEach((q, j) => {
       const lo = panel.limits[0][j], hi = panel.limits[1][j], pr = panel.prismatic[j];
       const bad = q < lo || q > hi ? ' class="outside"' : '';
+      const unit = pr ? ' ' + esc(panel.unit) : ' rad';  // limits in the value's unit
+      const limit = (v) => fmt(v) + unit + (pr ? '' : ' (' + fmt(v * 180 / Math.PI, 5) +
+                                                      ' deg)');
       h += '<tr' + bad + '><td class="name">' + esc(panel.joint_names[j]) + '</td><td>' +
-           fmt(q, 6) + (pr ? ' ' + esc(panel.unit) : ' rad') + '</td><td>' +
-           (pr ? '-' : fmt(q * 180 / Math.PI, 5)) + '</td><td>' + fmt(lo) + '</td><td>' +
-           fmt(hi) + '</td></tr>';
+           fmt(q, 6) + unit + '</td><td>' + (pr ? '-' : fmt(q * 180 / Math.PI, 5)) +
+           '</td><td>' + limit(lo) + '</td><td>' + limit(hi) + '</td></tr>';
     });
     return h + '</table>';
   }

@@ -80,12 +80,12 @@ def finish_3d(ax, unit: str | None, *, ticks: int = 5, min_fraction: float = 0.3
     centre to at least ``min_fraction`` of the longest one (the scales stay equal),
     and gets at most ``ticks`` ticks, fewer in proportion when it is shorter.
     """
-    from matplotlib.ticker import MaxNLocator
+    from matplotlib.ticker import FixedLocator, MaxNLocator
 
     sfx = f" ({unit})" if unit else ""
-    ax.set_xlabel(f"x{sfx}", labelpad=8)
-    ax.set_ylabel(f"y{sfx}", labelpad=8)
-    ax.set_zlabel(f"z{sfx}", labelpad=10)
+    ax.set_xlabel(f"x{sfx}", labelpad=12)  # clear of the tick labels in any view
+    ax.set_ylabel(f"y{sfx}", labelpad=16)
+    ax.set_zlabel(f"z{sfx}", labelpad=14)
     limits = [ax.get_xlim(), ax.get_ylim(), ax.get_zlim()]
     longest = max(hi - lo for lo, hi in limits)
     setters = (ax.set_xlim, ax.set_ylim, ax.set_zlim)
@@ -93,5 +93,12 @@ def finish_3d(ax, unit: str | None, *, ticks: int = 5, min_fraction: float = 0.3
                                        strict=True):
         half = max(hi - lo, min_fraction * longest) / 2
         set_lim((lo + hi) / 2 - half, (lo + hi) / 2 + half)
-        axis.set_major_locator(MaxNLocator(max(3, round(ticks * 2 * half / longest))))
+        lo, hi = (lo + hi) / 2 - half, (lo + hi) / 2 + half
+        at = MaxNLocator(max(3, round(ticks * 2 * half / longest))).tick_values(lo, hi)
+        at = at[(at >= lo) & (at <= hi)]
+        if axis is ax.xaxis:  # the x axis ends where the y axis starts (matplotlib's views,
+            # azimuth -60 deg): no x tick near that corner, where its label would sit on
+            # the first y label
+            at = at[at <= hi - 0.12 * (hi - lo)]
+        axis.set_major_locator(FixedLocator(at))
     ax.set_aspect("equal")

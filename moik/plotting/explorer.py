@@ -8,8 +8,8 @@ and lists its joint values, limits and errors, recomputed by the robot's FK
 (:meth:`moik.robots.Robot.frames`, the frames :func:`moik.plotting.plot_robot`
 draws). Curve panels plot convergence curves, table panels the report's statistics.
 
-plotly is an optional dependency (the ``explorer`` extra: ``pip install
-moik[explorer]``), imported only when a page is written.
+plotly is an optional dependency (the ``explorer`` extra: ``pip install -e
+'.[explorer]'`` in the repository), imported only when a page is written.
 
 >>> from moik import get_robot, solve_ik_pareto
 >>> from moik.plotting import pareto_explorer

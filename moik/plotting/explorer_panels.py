@@ -96,7 +96,8 @@ def plotly_modules():
         from plotly.offline import get_plotlyjs
     except ImportError:
         raise ParameterError("the explorer needs plotly, which is not installed: pip install "
-                             "'moik[explorer]' (or pip install plotly)") from None
+                             "-e '.[explorer]' in the moik repository (or pip install "
+                             "plotly)") from None
     return go, get_plotlyjs
 
 

@@ -63,10 +63,9 @@ def draw_shape(ax, shape: Shape, *, color: str, span: float, alpha: float = 0.25
 
 def draw_collision(ax, checker: CollisionChecker, q: np.ndarray, *, span: float) -> None:
     """The robot's shapes at ``q`` and the scene's obstacles."""
-    robot_names = set(checker.shape_names[:len(checker.model.items)])
-    for name, shape in checker.world_shapes(q):
-        draw_shape(ax, shape, span=span,
-                   color=ROBOT_COLOR if name in robot_names else OBSTACLE_COLOR)
+    n_robot = len(checker.model.items)  # the robot's shapes come first, then the obstacles
+    for k, (_, shape) in enumerate(checker.world_shapes(q)):
+        draw_shape(ax, shape, span=span, color=ROBOT_COLOR if k < n_robot else OBSTACLE_COLOR)
 
 
 def _mesh(shape: Shape, span: float) -> tuple[np.ndarray, np.ndarray]:

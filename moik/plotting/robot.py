@@ -88,7 +88,7 @@ def _joint_numbers(ax, points: np.ndarray, colors: list, scale: float, *, dims: 
         text = ",".join(str(j) for j in sorted({j for _, j, _ in members}))
         color = colors[members[0][0]] if len(sols) == 1 else "black"
         ax.text(*(members[0][2][:dims] + offset), text, color=color, fontsize=8,
-                fontweight="bold", zorder=8)
+                fontweight="bold", zorder=8, gid="data-label")  # on the data, not the layout
 
 
 def plot_robot(robot: Robot, Q, *, ax=None, target=None, target_rotation=None, labels=None,
@@ -133,8 +133,13 @@ def plot_robot(robot: Robot, Q, *, ax=None, target=None, target_rotation=None, l
     scale = float(max(np.max(np.linalg.norm(every, axis=1)), 1e-9))
     side = None
     if ax is None:
-        fig = plt.figure(figsize=(13.0, 6.0) if side_view else (7.0, 6.0))
-        grid = fig.add_gridspec(1, 2 if side_view else 1, wspace=0.3)  # room for the z label
+        fig = plt.figure(figsize=(14.0, 7.0) if side_view else (7.0, 6.0))
+        if side_view:  # the 3-D view larger; the side view's labels on its right side,
+            # clear of the 3-D view's z label
+            grid = fig.add_gridspec(1, 2, width_ratios=(1.25, 1.0), wspace=0.18, left=0.0,
+                                    right=0.93, bottom=0.2, top=0.93)
+        else:
+            grid = fig.add_gridspec(1, 1)
         ax = fig.add_subplot(grid[0, 0], projection="3d")
         side = fig.add_subplot(grid[0, 1]) if side_view else None
     ax.view_init(elev=20, azim=-60)
@@ -159,11 +164,14 @@ def plot_robot(robot: Robot, Q, *, ax=None, target=None, target_rotation=None, l
     if collision is not None:
         draw_collision(ax, collision, Q[0], span=scale)
     base_marker(ax)
-    finish_3d(ax, robot.unit)
+    finish_3d(ax, robot.unit, min_fraction=0.5)
     ax.set_title(f"{robot.name}: 3-D view")
-    if side is not None:  # below the whole figure: clear of the 3-D tick labels in any view
-        ax.legend(loc="upper left", bbox_to_anchor=(0.03, 0.02),
-                  bbox_transform=ax.figure.transFigure, fontsize="small")
+    if side is not None:  # under the 3-D view's tick and axis labels, as drawn
+        fig = ax.figure
+        drawn = ax.get_tightbbox(fig.canvas.get_renderer()).transformed(
+            fig.transFigure.inverted())
+        ax.legend(loc="upper center", bbox_to_anchor=((drawn.x0 + drawn.x1) / 2, drawn.y0),
+                  bbox_transform=fig.transFigure, fontsize="small")
     else:
         legend_outside(ax, loc="below", ncol=1, below=-0.06)
     if side is not None:
@@ -201,8 +209,15 @@ def _side_view(ax, robot: Robot, frames, joints, p_t, styles, scale: float, *,
     unit = robot.unit
     ax.set_xlabel(f"horizontal distance from the base toward azimuth {azimuth:.0f} deg ({unit})")
     ax.set_ylabel(f"height z ({unit})")
+    ax.yaxis.set_label_position("right")
+    ax.yaxis.tick_right()
     low, high = min(z.min(), 0.0) - 0.06 * scale, z.max() + 0.1 * scale
-    ax.set_ylim(low, max(high, low + 0.4 * scale))  # a flat arm keeps a readable panel
+    top = max(high, low + 0.4 * scale)  # a flat arm keeps a readable panel
+    ax.set_ylim(low, top)
+    left, right = ax.get_xlim()
+    if right - left < 0.6 * (top - low):  # and an upright one readable ticks
+        middle = (left + right) / 2
+        ax.set_xlim(middle - 0.3 * (top - low), middle + 0.3 * (top - low))
     ax.set_aspect("equal", adjustable="box")
     ax.grid(True, alpha=0.3)
     ax.set_title("side view: true heights (vertical plane through base and target)")

@@ -14,7 +14,7 @@ from moik.kinematics.orientation import zyx_euler
 from moik.problems import random_reachable_targets
 from moik.robots import get_robot
 
-pytest.importorskip("plotly", reason="the explorer needs plotly (pip install 'moik[explorer]')")
+pytest.importorskip("plotly", reason="the explorer needs plotly (the explorer extra)")
 
 
 def page_data(path) -> dict:

@@ -329,6 +329,21 @@ def test_experiment_list(capsys):
         assert name in out
 
 
+@pytest.mark.parametrize("argv", [["algorithms"], ["experiment", "list"], ["robots"],
+                                  ["problems"]])
+def test_listings_are_columns_sized_to_their_content(capsys, argv):
+    """Every column starts where its header starts, on every row, and is separated from
+    the one before it by at least two spaces (no name runs into the next column)."""
+    assert main(argv) == 0
+    lines = capsys.readouterr().out.splitlines()
+    header = lines[0]
+    starts = [m.start() for m in re.finditer(r"\S+", header)]
+    assert len(starts) >= 3
+    for line in lines[1:]:
+        for a, b in zip(starts[:-1], starts[1:], strict=True):
+            assert line[a:b].strip() and line[b - 2:b] == "  ", (header[a:b].strip(), line)
+
+
 def test_unwritable_out_is_a_one_line_error(capsys, tmp_path):
     (tmp_path / "file").write_text("")
     args = ["experiment", "run", "mpso-single", "--quick", "--workers", "1", "--no-progress",

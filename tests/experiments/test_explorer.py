@@ -15,9 +15,10 @@ from moik.experiments.explorer import report_explorer
 from moik.experiments.figures import benchmark_curves
 from moik.experiments.runner import run_experiment
 from moik.experiments.store import ResultStore
+from moik.metrics.compromise import closest_to_utopia
 from moik.robots import get_robot
 
-pytest.importorskip("plotly", reason="the explorer needs plotly (pip install 'moik[explorer]')")
+pytest.importorskip("plotly", reason="the explorer needs plotly (the explorer extra)")
 
 BI = {
     "name": "tiny-front", "title": "tiny bi-objective experiment", "source": "test",
@@ -66,6 +67,12 @@ def test_fronts_of_every_algorithm_and_run_with_their_postures(bi_results, tmp_p
                                    rtol=1e-9, atol=1e-12)
     visible = [t["visible"] for t in front["figure"]["data"][:-1]]
     assert visible == [True, "legendonly", True, "legendonly"]
+    # the page opens on the compromise of the first trace, as its note says
+    assert front["initial"] == [0, closest_to_utopia(np.array(front["traces"][0]["F"]))]
+    assert any("compromise" in note for note in front["notes"])
+    # the front's eosma-euler axis and the details' geodesic angle are both explained
+    assert any("Two orientation errors" in note and "eosma-euler" in note
+               for note in front["notes"])
 
 
 def test_the_tables_are_the_reports_own(bi_results, tmp_path):

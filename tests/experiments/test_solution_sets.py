@@ -15,7 +15,9 @@ def _solutions(name, target, n=6, seed=0):
         sol = least_squares(lambda q: robot.fk_position(q[None])[0] - target, q0,
                             xtol=1e-15, ftol=1e-15, gtol=1e-15)
         if np.linalg.norm(sol.fun) < 1e-10:
-            out.append(sol.x)
+            # the same configuration with each (revolute) joint in [-pi, pi): the
+            # unbounded search may leave a joint turns away, which moik warns about
+            out.append(np.angle(np.exp(1j * sol.x)))
     return robot, np.array(out)
 
 

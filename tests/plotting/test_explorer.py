@@ -15,7 +15,7 @@ from moik.plotting import pareto_explorer, write_explorer
 from moik.plotting.explorer import CurvePanel, Front, FrontPanel, TablePanel
 from moik.problems import Target
 
-pytest.importorskip("plotly", reason="the explorer needs plotly (pip install 'moik[explorer]')")
+pytest.importorskip("plotly", reason="the explorer needs plotly (the explorer extra)")
 
 
 def page_data(path) -> dict:
@@ -134,7 +134,7 @@ def test_bad_input_is_refused_clearly(tmp_path, panda, members):
 def test_without_plotly_the_error_says_how_to_install_it(tmp_path, panda, members, monkeypatch):
     monkeypatch.setitem(sys.modules, "plotly", None)
     monkeypatch.setitem(sys.modules, "plotly.graph_objects", None)
-    with pytest.raises(ParameterError, match=r"pip install 'moik\[explorer\]'"):
+    with pytest.raises(ParameterError, match=r"pip install -e '\.\[explorer\]'"):
         pareto_explorer({"F": members[1]}, panda, tmp_path / "p.html")
 
 
@@ -157,3 +157,14 @@ def test_an_unreachable_solve_ik_shows_its_front(tmp_path):
     solved = solve_ik(robot, robot.fk(np.full(7, 0.3)), seed=0)
     with pytest.raises(ParameterError, match="has no front .status 'solved'"):
         pareto_explorer(solved, robot, tmp_path / "p.html")
+
+
+def test_the_joint_limits_carry_their_units(tmp_path):
+    """The members' joint tables label the limit columns and give each limit in the
+    value's unit (rad, or the robot's unit for a prismatic joint) and in degrees."""
+    robot = get_robot("panda")
+    X = robot.random_q(3, rng=np.random.default_rng(0))
+    F = np.column_stack([np.arange(3.0), -np.arange(3.0)])
+    page = pareto_explorer({"F": F, "X": X}, robot, tmp_path / "p.html").read_text()
+    assert "<th>lower limit</th><th>upper limit</th>" in page
+    assert "fmt(v) + unit" in page and "' deg)'" in page

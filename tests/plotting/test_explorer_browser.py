@@ -21,9 +21,9 @@ from moik.plotting.explorer import CurvePanel, Front, FrontPanel, TablePanel
 
 CHROMIUM, CHROMEDRIVER = Path("/usr/bin/chromium"), Path("/usr/bin/chromedriver")
 
-pytest.importorskip("plotly", reason="the explorer needs plotly (pip install 'moik[explorer]')")
+pytest.importorskip("plotly", reason="the explorer needs plotly (the explorer extra)")
 webdriver = pytest.importorskip("selenium.webdriver",
-                                reason="selenium is not installed (it is in moik[test])")
+                                reason="selenium is not installed (it is in the test extra)")
 if not (CHROMIUM.is_file() and CHROMEDRIVER.is_file()):
     pytest.skip(f"no headless Chromium: {CHROMIUM} or {CHROMEDRIVER} is missing (Debian: "
                 "apt-get install chromium chromium-driver; .ci/run installs them)",

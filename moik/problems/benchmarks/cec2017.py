@@ -7,7 +7,7 @@ F27, F30 at D = 30 on [-100, 100]^D), and Awad, Ali, Liang, Qu & Suganthan,
 (N. Awad, last update 26 May 2017) with its ``input_data`` folder.
 
 The functions come from the optional dependency ``minionpy`` (``pip install
-moik[cec]``, pinned to 1.9.1, MIT licence), a C++ port of ``cec17_func.cpp``
+-e '.[cec]'`` in the repository, pinned to 1.9.1, MIT licence), a C++ port of ``cec17_func.cpp``
 whose wheel ships the official shift vectors, rotation matrices and shuffle
 permutations (``minionpy/cec_input_data/input_data_2017``, the official
 ``input_data`` files byte for byte); nothing is downloaded at run time.
@@ -84,7 +84,7 @@ def load_minionpy() -> ModuleType:
     except ImportError as err:
         raise MoikError(
             "the CEC2017 functions need the optional dependency minionpy; "
-            "install it with: pip install moik[cec]"
+            "install it with: pip install -e '.[cec]' in the moik repository"
         ) from err
 
 

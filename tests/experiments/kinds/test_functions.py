@@ -58,7 +58,8 @@ def test_missing_extra_is_one_clear_error(monkeypatch, tmp_path):
 
     cfg = ExperimentConfig.from_dict(_bench(requires=["cec"]))
     monkeypatch.setattr(config.importlib.util, "find_spec", lambda name: None)
-    with pytest.raises(ConfigError, match=r"needs the optional extra 'cec' .*moik\[cec\]"):
+    with pytest.raises(ConfigError,
+                       match=r"needs the optional extra 'cec' .*pip install -e '\.\[cec\]'"):
         run_experiment(cfg, out=tmp_path / "r")
 
 

@@ -128,7 +128,8 @@ def main(argv: list[str] | None = None) -> None:
             solves(args.solves)
     sys.stdout.write(text.getvalue())
     if args.out is not None:
-        args.out.write_text("```\n$ python -m studies.mesh_collision_check"
+        args.out.write_text("---\nhide: [toc]\n---\n\n"  # wide tables: no table of contents
+                            "```\n$ python -m studies.mesh_collision_check"
                             f"{'' if args.n == 10_000 else f' --n {args.n}'}"
                             f"{'' if args.solves == 50 else f' --solves {args.solves}'}\n"
                             f"{text.getvalue()}```\n")

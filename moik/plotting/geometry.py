@@ -1,5 +1,7 @@
 """Collision shapes in a 3-D robot plot: capsules, spheres and boxes as translucent
-surfaces, half-spaces as a translucent patch of their boundary plane.
+surfaces, convex hulls as their triangles (a compound as its parts: the geometry the
+check measures, not its bound), half-spaces as a translucent patch of their boundary
+plane.
 
 Called by :func:`moik.plotting.robot.plot_robot` with ``collision=`` (a
 :class:`~moik.collision.model.CollisionChecker`): the robot's shapes at the first
@@ -13,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from moik.collision.model import CollisionChecker, Scene
-from moik.collision.shapes import Box, Capsule, HalfSpace, Shape, Sphere
+from moik.collision.shapes import Box, Capsule, Compound, ConvexHull, HalfSpace, Shape, Sphere
 
 ROBOT_COLOR, OBSTACLE_COLOR = "tab:blue", "0.45"
 
@@ -40,12 +42,32 @@ def _box_faces(s: Box):
     return corners, faces
 
 
+def _hull_triangles(shape: ConvexHull) -> tuple[np.ndarray, np.ndarray]:
+    """The hull's vertices (its frame) and its triangles (qhull; a flat hull: none)."""
+    from scipy.spatial import ConvexHull as Qhull  # loaded at the first hull drawn
+    from scipy.spatial import QhullError
+
+    try:
+        return shape.points, Qhull(shape.points).simplices
+    except (QhullError, ValueError):
+        return shape.points, np.zeros((0, 3), dtype=np.int64)
+
+
 def draw_shape(ax, shape: Shape, *, color: str, span: float, alpha: float = 0.25) -> None:
     """Draw one shape (in world coordinates) into the 3-D Axes ``ax``."""
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
+    if isinstance(shape, Compound):
+        for part in shape.parts:
+            draw_shape(ax, part, color=color, span=span, alpha=alpha)
+        return
     R, p = shape.pose[:3, :3], shape.pose[:3, 3]
-    if isinstance(shape, (Capsule, Sphere)):
+    if isinstance(shape, ConvexHull):
+        P, tri = _hull_triangles(shape)
+        W = P @ R.T + p
+        ax.add_collection3d(Poly3DCollection([W[t] for t in tri], facecolor=color,
+                                             edgecolor="none", alpha=alpha))
+    elif isinstance(shape, (Capsule, Sphere)):
         P = np.einsum("ij,jmn->imn", R, _capsule_mesh(shape)) + p[:, None, None]
         ax.plot_surface(P[0], P[1], P[2], color=color, alpha=alpha, linewidth=0,
                         shade=True)
@@ -84,6 +106,9 @@ def _mesh(shape: Shape, span: float) -> tuple[np.ndarray, np.ndarray]:
         P = np.array([[sa * span, sb * span, 0.0] for sa, sb in ((-1, -1), (1, -1), (1, 1),
                                                                  (-1, 1))])
         tri = [(0, 1, 2), (0, 2, 3)]
+    elif isinstance(shape, ConvexHull):
+        P, hull_tri = _hull_triangles(shape)
+        tri = [tuple(t) for t in hull_tri]
     else:
         raise TypeError(f"no surface for {type(shape).__name__}")
     return P @ R.T + p, np.array(tri, dtype=np.int64)

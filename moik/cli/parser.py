@@ -93,19 +93,8 @@ def _robot_arguments(p: argparse.ArgumentParser, optional: bool = False) -> None
     p.add_argument("--json", action="store_true", help="print JSON (see `pydoc moik.cli`)")
 
 
-def _solve_arguments(p: argparse.ArgumentParser) -> None:
-    _robot_arguments(p)
-    p.add_argument("--target", nargs=3, type=float, required=True, metavar=("X", "Y", "Z"),
-                   help="target position in the robot's length unit")
-    p.add_argument("--euler", nargs=3, type=float, metavar=("A", "B", "C"),
-                   help="target orientation as Euler angles (alpha, beta, gamma)")
-    p.add_argument("--convention", default="zyx-euler", choices=["zyx-euler", "eosma-euler"],
-                   help="Euler convention (default zyx-euler: Rz(a) Ry(b) Rx(c))")
-    p.add_argument("--deg", action="store_true",
-                   help="Euler angles and revolute --q-current values in degrees")
-    p.add_argument("--q-current", nargs="+", type=float, metavar="Q",
-                   help="current joint values (rad, deg with --deg): the first start; "
-                        "solutions nearest to it first; needed by --pareto joint_motion")
+def _check_arguments(p: argparse.ArgumentParser) -> None:
+    """The collision check and the tolerance of ``solve`` and ``batch``."""
     p.add_argument("--scene", metavar="FILE", type=nonempty,
                    help="JSON scene of obstacles: solve for solutions free of them and report "
                         "each one's distance; status collides (exit 1) if all exact ones collide "
@@ -121,6 +110,22 @@ def _solve_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--tol", nargs="+", type=float, metavar="TOL",
                    help="tolerance: one number t (position t*reach, orientation t rad; default "
                         "{default}) or two (position in the robot's unit, orientation in rad)")
+
+
+def _solve_arguments(p: argparse.ArgumentParser) -> None:
+    _robot_arguments(p)
+    p.add_argument("--target", nargs=3, type=float, required=True, metavar=("X", "Y", "Z"),
+                   help="target position in the robot's length unit")
+    p.add_argument("--euler", nargs=3, type=float, metavar=("A", "B", "C"),
+                   help="target orientation as Euler angles (alpha, beta, gamma)")
+    p.add_argument("--convention", default="zyx-euler", choices=["zyx-euler", "eosma-euler"],
+                   help="Euler convention (default zyx-euler: Rz(a) Ry(b) Rx(c))")
+    p.add_argument("--deg", action="store_true",
+                   help="Euler angles and revolute --q-current values in degrees")
+    p.add_argument("--q-current", nargs="+", type=float, metavar="Q",
+                   help="current joint values (rad, deg with --deg): the first start; "
+                        "solutions nearest to it first; needed by --pareto joint_motion")
+    _check_arguments(p)
     p.add_argument("--max-evals", type=int, help="FK evaluation budget (default {default})")
     p.add_argument("--algorithm", dest="method",
                    help="global search algorithm, used when the local starts fail (default "
@@ -167,17 +172,7 @@ def _batch_arguments(sub) -> None:
                    help="CPUs to use (default: every core; the answers are the same for any "
                         "number)")
     p.add_argument("--deg", action="store_true", help="CSV roll, pitch, yaw in degrees")
-    p.add_argument("--scene", metavar="FILE",
-                   help="JSON scene of obstacles: collision-free solutions only (scene and "
-                        "self pairs, the shipped capsule model of a catalog arm)")
-    p.add_argument("--self-collision", action="store_true",
-                   help="without --scene: solutions free of self-collision only")
-    p.add_argument("--clearance", type=float, metavar="D",
-                   help="with --scene or --self-collision: the smallest accepted distance "
-                        "(robot unit, >= 0; default {default})")
-    p.add_argument("--tol", nargs="+", type=float, metavar="TOL",
-                   help="tolerance: one number t (position t*reach, orientation t rad; default "
-                        "{default}) or two (position in the robot's unit, orientation in rad)")
+    _check_arguments(p)
     p.add_argument("--seed", type=int, help="random seed, an integer >= 0 (default {default})")
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
     p.set_defaults(handler="batch:cmd_batch")

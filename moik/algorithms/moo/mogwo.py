@@ -31,14 +31,9 @@ Deviations and readings:
   paper's ``P_i = c / N_i`` is the case beta = 1.
 - Random streams differ from MATLAB's; only the distributions match.
 
-Constraints (a moik extension; the paper and the authors' code have none):
-constraint-domination (Deb's rules, as pymoo's algorithms) in the archive, where the
-leaders are drawn, and wherever the method compares points. While no feasible point was
-seen, the archive keeps its capacity of least infeasible rows (a moik extension,
-:mod:`moik.algorithms.archive.base`; a strict constraint-domination filter would keep
-only the least infeasible row, and every leader would be it). Infeasible output on
-pymoo's MW and CTP problems, method or handling: docs/results/constrained-moo.md
-(``studies/constrained_moo.py``).
+Constraints: a moik extension (the paper and the authors' code have none), the shared one
+of docs/algorithms.md "Constraints" (constraint-domination in the archive and the leaders;
+the least infeasible rows kept while none is feasible; docs/results/constrained-moo.md).
 """
 
 from __future__ import annotations

@@ -61,8 +61,13 @@ def test_scene_goes_to_the_solver(scene_file, capsys):
     assert doc["solutions"] and not any(sol["collides"] for sol in doc["solutions"])
 
 
-def test_target_in_an_obstacle_collides(scene_file, capsys):
-    code = main(["solve", "panda", "--target", "0.55", "0.0", "0.35", "--scene", str(scene_file),
+def test_target_in_an_obstacle_collides(tmp_path, capsys):
+    """A target deep inside a block: the hand (its mesh ends about 4 cm short of the tool
+    point between the fingers) is in the block too, whichever way it comes."""
+    block = tmp_path / "block.json"
+    block.write_text(json.dumps({"obstacles": [{"name": "block", "type": "box",
+                                                "size": [0.3, 0.3, 0.3], "xyz": [0.55, 0, 0.35]}]}))
+    code = main(["solve", "panda", "--target", "0.55", "0.0", "0.35", "--scene", str(block),
                  "--starts", "30", "--max-evals", "3000", "--json"])
     doc = json.loads(capsys.readouterr().out)
     assert code == 1 and doc["status"] == "collides" and not doc["success"]

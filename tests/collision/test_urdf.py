@@ -48,11 +48,11 @@ def test_primitives_on_the_bodies():
         c1, s1 = np.cos(q[0]), np.sin(q[0])
         Ry1 = np.array([[c1, 0, s1], [0, 1, 0], [-s1, 0, c1]])
         p_upper = np.array([0, 0, 0.1]) + Ry1 @ [0, 0, 0.25]
-        np.testing.assert_allclose(placed["upper[1]"].pose[:3, 3], p_upper, atol=1e-12)
+        np.testing.assert_allclose(placed["upper"].pose[:3, 3], p_upper, atol=1e-12)
         a = q[1] + np.pi / 2
         Ry2 = np.array([[np.cos(a), 0, np.sin(a)], [0, 1, 0], [-np.sin(a), 0, np.cos(a)]])
         p_fore = np.array([0, 0, 0.1]) + Ry1 @ ([0, 0, 0.5] + Ry2 @ [0.2, 0, 0])
-        np.testing.assert_allclose(placed["fore[2]"].pose[:3, 3], p_fore, atol=1e-12)
+        np.testing.assert_allclose(placed["fore"].pose[:3, 3], p_fore, atol=1e-12)
     assert checker.n_pairs == 1  # base and fore (upper is adjacent to both)
 
 

@@ -61,7 +61,7 @@ def main() -> None:
         for name in ARMS:
             robot = get_robot(name)
             models = {"shipped capsules": collision_model(robot),
-                      "URDF meshes, fitted capsules": robot_model(robot)}
+                      "URDF meshes (compounds)": robot_model(robot)}
             scenes = {k: clutter(m, rng=np.random.default_rng(5)) for k, m in models.items()}
             checkers = {k: CollisionChecker(model=m, scene=scenes[k], self_collision=True)
                         for k, m in models.items()}

@@ -20,6 +20,7 @@ from pymoo.termination.robust import RobustTermination
 
 from moik.algorithms import MOALO, MOEOSMA, MOGWO, MOPSO, MOArrayAlgorithm, available, entry
 from moik.algorithms.array_state import planned_iterations
+from moik.exceptions import ToleranceTerminationWarning
 
 MOIK_MO = [n for n in available("multi-objective") if issubclass(entry(n).cls, MOArrayAlgorithm)]
 
@@ -77,8 +78,9 @@ def test_default_termination_and_a_fixed_max_iter():
     alg = MOEOSMA(pop_size=10, max_iter=33)
     res = minimize(get_problem("zdt1", n_var=5), alg, ("n_gen", 5), seed=0)
     assert res.algorithm.max_iter == 33
-    res = minimize(get_problem("zdt1", n_var=5), MOGWO(pop_size=10),
-                   DefaultMultiObjectiveTermination(n_max_gen=12), seed=0)
+    with pytest.warns(ToleranceTerminationWarning, match="MOGWO"):  # said to the user
+        res = minimize(get_problem("zdt1", n_var=5), MOGWO(pop_size=10),
+                       DefaultMultiObjectiveTermination(n_max_gen=12), seed=0)
     assert res.algorithm.max_iter == 11
 
 

@@ -79,15 +79,16 @@ def shape_pair(cs, W, a, b, limit):
 @jit
 def distance_scratch(cs):
     """Scratch of :func:`min_distance_of` for ``cs``: ``(frames (dof + 1, 4, 4), axes
-    (dof, 6), W (m, 4, 4))``."""
+    (dof, 6), W (m, 4, 4), bounds (p,))``."""
     dof = cs.chain.joint_types.size
-    return (np.empty((dof + 1, 4, 4)), np.empty((dof, 6)), np.empty((cs.body.size, 4, 4)))
+    return (np.empty((dof + 1, 4, 4)), np.empty((dof, 6)), np.empty((cs.body.size, 4, 4)),
+            np.empty(cs.pairs.shape[0]))
 
 
 @jit
 def place_all(cs, q, scratch):
     """Every shape of ``cs`` placed in the world at ``q`` (into ``scratch``'s ``W``)."""
-    frames, axes, W = scratch
+    frames, axes, W = scratch[0], scratch[1], scratch[2]
     world_frames(cs.chain, q, frames, axes)
     place_shapes(frames, cs.body, cs.local, W)
 
@@ -204,11 +205,14 @@ def distance_below(cs, q, scratch, limit):
     pairs whose bounds keep ``limit`` are not measured: the start loop's test of an end
     (``limit`` = the clearance) measures only the pairs that come close."""
     place_all(cs, q, scratch)
-    W = scratch[2]
+    W, bounds = scratch[2], scratch[3]
     kinds, sizes, pairs = cs.kinds, cs.sizes, cs.pairs
     first, low = -1, np.inf  # the pair of the smallest bound is evaluated first
     for k in range(pairs.shape[0]):
         lb = pair_bound(kinds, W, sizes, pairs[k, 0], pairs[k, 1])
+        if cs.refine[k, 1] > 0 and lb < limit:  # a compound pair: its bounds' distance
+            lb = max(lb, shape_pair(cs, W, pairs[k, 0], pairs[k, 1], limit)[0])
+        bounds[k] = lb
         if first < 0 or lb < low:
             first, low = k, lb
     best, arg = np.inf, -1
@@ -219,7 +223,7 @@ def distance_below(cs, q, scratch, limit):
         if k == first:
             continue
         cap = min(best, limit)
-        if pair_bound(kinds, W, sizes, pairs[k, 0], pairs[k, 1]) > cap:
+        if bounds[k] > cap:
             continue  # its distance is at least its bound: not below the minimum
         d = pair_value(cs, W, k, cap)[0]
         if d < best or (d == best and k < arg):  # the first pair attaining it, as in order

@@ -177,7 +177,8 @@ def _cell(value) -> str:
 
 
 class _Bar:
-    """Targets answered so far: tqdm on stderr (when installed), else nothing."""
+    """Targets answered so far: a tqdm bar on stderr (tqdm is a dependency; without it,
+    nothing)."""
 
     def __init__(self, total: int, enabled: bool) -> None:
         self._bar = None

@@ -301,6 +301,12 @@ class CollisionChecker:
         kernels.min_distance_gradients(self.compiled, Q2, d, g)
         return (d[0], g[0]) if Q.ndim == 1 else (d, g)
 
+    @property
+    def compiled_arrays(self) -> dict[str, np.ndarray]:
+        """The arrays of :attr:`compiled` but the arm's record (for a set of one's own:
+        ``collision_set(chain=..., **checker.compiled_arrays)``)."""
+        return dict(self._shapes)
+
     @cached_property
     def compiled(self) -> CollisionSet:
         """The checker as one compiled value (:class:`~moik.collision.compiled.CollisionSet`),

@@ -250,6 +250,12 @@ class Robot:
         """The arm as the one compiled record every kernel outside :mod:`moik.algorithms`
         takes (:class:`~moik.robots.chain_model.ChainModel`: the chain, base, limits and
         ``1 / reach``; built once)."""
+        return self.new_chain_model()
+
+    def new_chain_model(self) -> chain_models.ChainModel:
+        """A :attr:`chain_model` of its own (the same arrays): for a thread, whose compiled
+        code would otherwise share one record's reference count with the others' (an atomic
+        operation on one cache line at each use)."""
         return chain_models.chain_model(self.kinematic_chain, self.base, self.lower,
                                         self.upper, self.reach)
 

@@ -26,6 +26,7 @@ import numpy as np
 
 from moik._jit import kernel_array
 from moik._validate import finite_array
+from moik.collision.compiled import collision_set
 from moik.exceptions import ParameterError, ShapeError, TargetError
 from moik.kinematics.criteria import nearest_copies
 from moik.kinematics.orientation import check_rotation
@@ -284,7 +285,8 @@ def _own_guard(guard: CollisionGuard) -> CollisionGuard:
     sharing one compiled value would share its reference counts, atomic operations on one
     cache line at every distance they compute."""
     twin = copy.copy(guard.checker)
-    twin.__dict__.pop("compiled", None)  # built again, on first use, from the same arrays
+    twin.__dict__["compiled"] = collision_set(chain=twin.robot.new_chain_model(),
+                                              **twin.compiled_arrays)
     return CollisionGuard(twin, guard.clearance)
 
 
@@ -315,6 +317,7 @@ def _first_stage(robot, targets, qc, opts, tol, seeds, guard, out):
     n, dof = len(positions), robot.dof
     first = Target(positions[0], None if rotations is None else rotations[0])
     ctx = ik_context(robot, first, stop=tol.stop, distinct=opts.distinct,
+                     chain=robot.new_chain_model(),  # the thread's own (module doc)
                      collision=None if guard is None else guard.checker.compiled,
                      clearance=0.0 if guard is None else guard.clearance)
     targets = (kernel_array(np.tile(np.eye(3), (n, 1, 1)) if rotations is None else rotations),

@@ -27,6 +27,7 @@ from moik.collision.compiled import CollisionSet
 from moik.kinematics.target_spec import NO_METRIC, TargetSpec
 from moik.problems.targets import Target
 from moik.robots.chain import Robot
+from moik.robots.chain_model import ChainModel
 
 NO_STOP = -1.0  # a stopping tolerance that never converges (the front's scalarisations)
 LM_ITERATIONS = 30  # Levenberg-Marquardt iterations per start (first stage, projections)
@@ -88,7 +89,7 @@ def solver_target(target: Target) -> tuple[np.ndarray, np.ndarray, bool]:
 def ik_context(robot: Robot, target: Target, *, stop: tuple[float, float],
                tol: tuple[float, float] = (0.0, 0.0), distinct: float = 0.1,
                max_iter: int = LM_ITERATIONS, collision: CollisionSet | None = None,
-               clearance: float = 0.0) -> IKContext:
+               clearance: float = 0.0, chain: ChainModel | None = None) -> IKContext:
     """The :class:`IKContext` of ``robot`` and ``target`` (the one place it is built).
 
     Args:
@@ -104,8 +105,10 @@ def ik_context(robot: Robot, target: Target, *, stop: tuple[float, float],
             pairs of ``collision`` (a checker's
             :attr:`~moik.collision.CollisionChecker.compiled`) is at least ``clearance``;
             ``None``: no check.
+        chain: The arm's compiled record (default ``robot.chain_model``; a thread passes
+            one of its own, :meth:`~moik.robots.chain.Robot.new_chain_model`).
     """
-    return _new_context(robot.chain_model, solver_target(target),
+    return _new_context(robot.chain_model if chain is None else chain, solver_target(target),
                         (float(stop[0]), float(stop[1])),
                         (float(tol[0]), float(tol[1]), float(clearance)),
                         collision,

@@ -84,17 +84,17 @@ def map_chunks(fn: Callable[[int, int], None], n: int, workers: int) -> None:
         future.result()
 
 
-_TASK: dict[str, Any] = {}  # a pool worker's function and its shared argument
+_TASK: dict[str, Any] = {}  # a pool worker's function and its common argument
 
 
-def _init_pool_worker(fn: Callable, shared: Any) -> None:
+def _init_pool_worker(fn: Callable, common: Any) -> None:
     """A pool worker: Ctrl-C reaches only the parent (which ends the pool)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    _TASK["fn"], _TASK["shared"] = fn, shared
+    _TASK["fn"], _TASK["common"] = fn, common
 
 
 def _run_task(item: Any) -> tuple[Any, Any]:
-    return item, _TASK["fn"](_TASK["shared"], item)
+    return item, _TASK["fn"](_TASK["common"], item)
 
 
 def map_processes(fn: Callable[[Any, Any], Any], shared: Any, items: Iterable,

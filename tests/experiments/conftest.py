@@ -4,6 +4,9 @@ import copy
 
 import pytest
 
+from moik.experiments import docs as docs_module
+from moik.experiments.docs import git_commit
+
 TINY = {
     "name": "tiny-test",
     "title": "tiny position experiment",
@@ -39,3 +42,12 @@ def tiny_config(tiny):
 def stable(record: dict) -> dict:
     """A record without its timing and machine fields (what must be reproducible)."""
     return {k: v for k, v in record.items() if k not in ("time", "worker", "finished_at")}
+
+
+@pytest.fixture(autouse=True)
+def _clean_tree(monkeypatch):
+    """The checkout's commit as if its code had no uncommitted changes (the tests run in
+    working trees that may have some; ``moik report --docs`` refuses them): refusing a
+    dirty tree is tested on its own (tests/experiments/test_docs.py)."""
+    monkeypatch.setattr(docs_module, "git_commit",
+                        lambda: (git_commit() or "").removesuffix("-dirty") or None)

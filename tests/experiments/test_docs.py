@@ -42,14 +42,6 @@ def quick_run(tmp_path_factory):
     return out
 
 
-@pytest.fixture(autouse=True)
-def _clean_tree(monkeypatch):
-    """The checkout's commit as if its code had no uncommitted changes (the tests run in
-    working trees that do): refusing a dirty tree is tested on its own."""
-    monkeypatch.setattr(docs_module, "git_commit",
-                        lambda: (git_commit() or "").removesuffix("-dirty") or None)
-
-
 @pytest.fixture
 def docs(tmp_path):
     folder = tmp_path / "docs"

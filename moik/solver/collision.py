@@ -45,12 +45,16 @@ from moik.robots.chain import Robot
 
 if TYPE_CHECKING:
     from moik.collision import catalog as collision_catalog
+    from moik.collision import compiled as collision_compiled
     from moik.collision import io as collision_io
+    from moik.collision import kernels as collision_kernels
     from moik.collision import model as collision_models
     from moik.collision import urdf as collision_urdf
     from moik.collision.model import CollisionChecker, CollisionModel, Scene
 else:  # loaded when a solve checks collisions (moik._lazy): a blind solve imports none of it
     collision_catalog = lazy_module("moik.collision.catalog")
+    collision_compiled = lazy_module("moik.collision.compiled")
+    collision_kernels = lazy_module("moik.collision.kernels")
     collision_io = lazy_module("moik.collision.io")
     collision_models = lazy_module("moik.collision.model")
     collision_urdf = lazy_module("moik.collision.urdf")
@@ -86,6 +90,43 @@ class CollisionGuard:
     def free(self, Q: np.ndarray) -> np.ndarray:
         """Whether each row of ``Q`` keeps the clearance (``(n,)`` bool)."""
         return self.keeps(self.distances(Q))
+
+    def target_bound(self, q: np.ndarray, pose: bool
+                     ) -> tuple[float, tuple[str, str] | None, float]:
+        """The smallest distance at ``q`` over the pairs the target alone places, that pair,
+        and the smallest distance of ``q`` over every pair (:meth:`distances`).
+
+        Obstacles (body -1) and the base (body 0) never move; for a pose target
+        (``pose``) neither does the last body at an exact answer (it moves with the end
+        effector). A pair of two such bodies has the same distance at every exact answer
+        (up to the pose tolerance), so no exact answer is farther from contact than this
+        bound: when it is below the clearance, none is collision-free. ``(inf, None, ...)``
+        when no checked pair is placed by the target alone.
+        """
+        least = float(self.distances(q)[0])
+        fixed = self._target_pairs(pose)
+        if fixed is None:
+            return np.inf, None, least
+        Q = self.checker.robot.kernel_batch(np.atleast_2d(np.asarray(q, dtype=float)))
+        d, which = np.empty(1), np.empty(1, dtype=np.int64)
+        collision_kernels.min_distances(fixed[0], Q, d, which)
+        return float(d[0]), (fixed[1][which[0]] if which[0] >= 0 else None), least
+
+    def _target_pairs(self, pose: bool) -> tuple[Any, tuple[tuple[str, str], ...]] | None:
+        """The compiled pairs placed by the target alone (see :meth:`target_bound`) and their
+        names, made once per guard; ``None`` when there is none."""
+        cache = self.__dict__.setdefault("_target_sets", {})
+        if pose not in cache:
+            checker = self.checker
+            fixed = {-1, 0, checker.robot.dof} if pose else {-1, 0}
+            idx = [k for k, (a, b) in enumerate(checker.pair_bodies)
+                   if a in fixed and b in fixed]
+            arrays = checker.compiled_arrays
+            arrays["pairs"], arrays["refine"] = arrays["pairs"][idx], arrays["refine"][idx]
+            cache[pose] = None if not idx else (
+                collision_compiled.collision_set(chain=checker.robot.chain_model, **arrays),
+                tuple(checker.pair_names[k] for k in idx))
+        return cache[pose]
 
 
 def same_arm(a: Robot, b: Robot) -> bool:

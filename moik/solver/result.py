@@ -173,6 +173,10 @@ def ik_result(session: SolveSession, q_current, t0: float, searched_out: bool, f
         detail = (f"{max(session.n_rejected, 1)} exact answer(s) rejected for collision; the "
                   f"farthest from contact is at {v.min_distance:.4g} {robot.unit}, below the "
                   f"clearance {guard.clearance:g}")
+        if session.collision_proof is not None:  # solve_ik.collision_proven
+            pair, _ = session.collision_proof
+            detail += (f"; proven, no exact answer can keep it: {' and '.join(pair or ())}, "
+                       "placed by the target alone, are closer than that")
     distances = None if guard is None else v.distances if len(v.solutions) else np.zeros(0)
     return IKResult(q=v.q, position_error=v.errors[0], orientation_error=v.errors[1],
                     success=v.status == "solved", status=v.status, n_eval=session.n_eval,

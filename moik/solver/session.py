@@ -98,6 +98,8 @@ class SolveSession:
         # the exact answer rejected for collision with the largest distance: (distance, q)
         self.colliding: tuple[float, np.ndarray] | None = None
         self.n_rejected = 0  # exact answers rejected for collision
+        # why no exact answer can keep the clearance: (pair, its distance), set when proven
+        self.collision_proof: tuple[tuple[str, str] | None, float] | None = None
         self.ctx = ik_context(robot, target, stop=tol.stop, tol=tol, distinct=distinct,
                               collision=None if guard is None else guard.checker.compiled,
                               clearance=0.0 if guard is None else guard.clearance)

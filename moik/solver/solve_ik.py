@@ -58,6 +58,7 @@ STATUSES = ("solved", "unreachable", "not-converged", "collides")
 FINAL_NFEV = 300  # extended refinement of the best candidate before giving up
 FIRST_STARTS = 8  # random starts drawn first; the remaining ``starts`` only when needed
 FOUND_PATIENCE = 1  # idle search rounds once all starts found some, not all, solutions
+BODY_EXTENT = 10.0  # a bound on the last body's geometry's distance from the end effector (x reach)
 QUICK_NFEV = 12  # a good start converges in ~5-10 evaluations; a bad one is dropped early
 
 
@@ -188,12 +189,15 @@ def _solve(session: SolveSession, opts: SearchOptions, starts_rng: np.random.Gen
         if len(session.found) < n_solutions and first and session.n_eval < opts.max_evals:
             session.local_starts(Q0)
         if (len(session.found) < n_solutions and opts.starts > first
-                and session.n_eval < opts.max_evals):  # no start begins past the budget
+                and session.n_eval < opts.max_evals  # no start begins past the budget
+                and not collision_proven(session)):
             session.local_starts(robot.random_q(opts.starts - first, rng=starts_rng))
     elif q_current is not None:
         session.consider(np.clip(q_current, robot.lower, robot.upper)[None])
     if len(session.found) >= n_solutions:  # the usual end: the first stage solved it
         return ik_result(session, q_current, t0, False, None, None)
+    if collision_proven(session):  # the target alone collides: no search can do better
+        return ik_result(session, q_current, t0, True, None, None)
     problem = _search_problem(robot, target, opts.orientation)
     seeds = np.random.SeedSequence(seed) if isinstance(seed, int) else seed
     idle_rounds, patience = 0, opts.patience
@@ -219,6 +223,26 @@ def _solve(session: SolveSession, opts: SearchOptions, starts_rng: np.random.Gen
                                                front_q, budget=opts.front_evals)
             session.n_eval += n
     return ik_result(session, q_current, t0, searched_out, front, front_q)
+
+
+def collision_proven(session: SolveSession) -> bool:
+    """Whether every exact answer collides and none can be farther from contact than the
+    one found: no answer found, an exact one rejected for collision, and a pair placed by
+    the target alone (:meth:`~moik.solver.collision.CollisionGuard.target_bound`) below the
+    clearance and attaining that answer's smallest distance, both up to the slack the
+    pose tolerance allows (two exact answers place the last body up to twice the tolerance
+    apart; a point of it up to :data:`BODY_EXTENT` reaches from the end effector). The
+    proof is kept as ``session.collision_proof`` (the pair and its distance)."""
+    guard, colliding = session.guard, session.colliding
+    if guard is None or colliding is None or session.found:
+        return False
+    bound, pair, least = guard.target_bound(colliding[1], session.target.rotation is not None)
+    tol, reach = session.tol, session.robot.reach
+    slack = 2.0 * (tol.position + tol.orientation * BODY_EXTENT * reach)
+    if not (bound < guard.clearance - slack and least >= bound - slack):
+        return False
+    session.collision_proof = (pair, bound)
+    return True
 
 
 def _out_of_reach(session: SolveSession, opts: SearchOptions, rng: np.random.Generator,

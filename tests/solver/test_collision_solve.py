@@ -1,6 +1,8 @@
 """Collision-aware solve_ik / solve_ik_batch / solve_path (moik/solver/collision.py):
 answers checked by coal, forced collisions give "collides", defaults unchanged, bad input."""
 
+import importlib
+
 import numpy as np
 import pytest
 
@@ -12,7 +14,7 @@ from moik.exceptions import GeometryError, MoikError, ParameterError
 from moik.problems.targets import as_target
 from moik.solver import solve_ik_batch, solve_ik_pareto, solve_path
 from moik.solver.batch import child_seeds
-from moik.solver.collision import default_model
+from moik.solver.collision import collision_guard, default_model
 from moik.solver.session import pose_errors
 
 coal = pytest.importorskip("coal")
@@ -174,3 +176,43 @@ def test_pareto_constraint_form_keeps_feasible_members(world):
         assert len(res.X) >= 1
         for q in res.X:
             _check_answer(model.robot, checker, T[k], q, 0.01)
+
+
+def test_collision_proof_ends_a_target_whose_hand_is_in_an_obstacle(world, monkeypatch):
+    """A pose putting the hand in the box: every exact answer collides, which the target
+    alone proves (the last body vs the box); the search is skipped, and a full search
+    without the proof finds nothing collision-free either (the proof's soundness here)."""
+    model, scene, checker, _ = world
+    robot = model.robot
+    pose = np.eye(4)
+    pose[:3, :3] = np.diag([1.0, -1.0, -1.0])  # pointing down, into the box's top
+    pose[:3, 3] = [0.5, 0.0, 0.45]
+    res = solve_ik(robot, pose, seed=0, scene=scene)
+    assert res.status == "collides" and "proven" in res.detail and "box" in res.detail
+    pos, ori = pose_errors(robot, as_target(pose), res.q, reference=True)
+    assert pos[0] <= TOL * robot.reach and ori[0] <= TOL  # exact, only colliding
+    last = [k for k, (a, b) in enumerate(checker.pair_bodies)
+            if a == robot.dof and checker.pair_names[k][1] == "box"]
+    assert last and coal_distances(checker, res.q)[last].min() < 0.0  # coal: the hand is in it
+    solve_ik_module = importlib.import_module("moik.solver.solve_ik")  # not the function
+    monkeypatch.setattr(solve_ik_module, "collision_proven", lambda session: False)
+    full = solve_ik(robot, pose, seed=0, scene=scene, max_evals=20_000)
+    assert full.status == "collides" and full.n_eval > 5 * res.n_eval
+
+
+def test_collision_proof_never_for_what_the_target_does_not_place(world):
+    """A position target leaves the hand free to turn: only base and obstacle pairs (none
+    checked here but the table's allowed ones) can prove a collision, so the search runs."""
+    model, scene, _, _ = world
+    guard = collision_guard(model.robot, scene=scene, self_collision=True)
+    bodies = guard.checker.pair_bodies
+    q = model.robot.random_q(1, rng=np.random.default_rng(0))[0]
+    d_pose, pair_pose, least = guard.target_bound(q, True)
+    d_pos, pair_pos, _ = guard.target_bound(q, False)
+    fixed = {-1, 0, model.robot.dof}
+    expected = min((d for d, (a, b) in zip(guard.checker.distances(q), bodies, strict=True)
+                    if a in fixed and b in fixed), default=np.inf)
+    assert d_pose == pytest.approx(expected, abs=1e-12) and least <= d_pose
+    assert pair_pos is None or model.robot.dof not in {
+        bodies[guard.checker.pair_names.index(pair_pos)][0]}
+    assert d_pos >= d_pose

@@ -8,6 +8,7 @@ what a target may be.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -187,7 +188,7 @@ def check_unit_range(target: Target, robot: Robot) -> None:
     surely in the wrong unit (m vs cm vs mm).
     """
     robot = check_robot(robot)
-    dist = float(np.linalg.norm(target.position))
+    dist = math.hypot(*target.position.tolist())  # norm of 3 floats (a hot path)
     if dist > UNIT_RANGE_FACTOR * robot.reach:
         raise TargetError(
             f"target position {target.position} is {dist:.4g} {robot.unit} from the base of "

@@ -9,6 +9,7 @@ before the search, whose options would otherwise never be looked at).
 from __future__ import annotations
 
 import importlib
+import operator
 from dataclasses import dataclass, fields
 from typing import Any
 
@@ -99,7 +100,7 @@ class SearchOptions:
         (``solve_ik``'s signature passes them through: an identity test, so ``True`` for
         ``1`` is still validated), the one validated :data:`DEFAULT_OPTIONS` instead
         (solve_ik's hot path: validating costs about a third of a first-stage solve)."""
-        if all(v is SEARCH_DEFAULTS[k] for k, v in values.items()):
+        if all(map(operator.is_, values.values(), map(SEARCH_DEFAULTS.__getitem__, values))):
             return DEFAULT_OPTIONS
         return cls(**values)
 
@@ -179,8 +180,9 @@ class start_generator:  # noqa: N801 (used as a function: ``with start_generator
     """``Generator(PCG64(starts_sequence(seed)))`` for an integer ``seed`` >= 0, bit for
     bit, held for the ``with`` block.
 
-    Seeding a PCG64 through a SeedSequence costs about 35 us, a third of a first-stage
-    solve; loading a kept state into an existing generator about 1.5 us. So the initial
+    Seeding a PCG64 through numpy's SeedSequence costs about 10 us, a sixth of a
+    first-stage solve, the compiled seeding (:func:`_seeded`) about 3 us; loading a kept
+    state into an existing generator about 1.5 us. So the initial
     state of each seed is kept (up to ``_MAX_STATES`` seeds), and generators are lent from
     a free list: a solve that re-enters ``solve_ik`` (or another thread) gets a generator
     of its own, never one another block still holds.
@@ -191,8 +193,9 @@ class start_generator:  # noqa: N801 (used as a function: ``with start_generator
         if state is None:
             if len(_PCG64_STATES) >= _MAX_STATES:
                 _PCG64_STATES.clear()
-            state = _PCG64_STATES[seed] = np.random.PCG64(starts_sequence(seed)).state
+            state = _PCG64_STATES[seed] = _seeded(seed)
         self._state = state
+
 
     def __enter__(self) -> np.random.Generator:
         try:
@@ -208,3 +211,20 @@ class start_generator:  # noqa: N801 (used as a function: ``with start_generator
 
 DEFAULT_OPTIONS = SearchOptions()
 """The options of a call that changes none (validated once)."""
+
+
+_COMPILED_SEEDING: list[bool] = []  # [whether the compiled seeding equals numpy's], once
+
+
+def _seeded(seed: int) -> dict[str, Any]:
+    """``PCG64(starts_sequence(seed)).state``: compiled
+    (:func:`~moik.solver.start_streams.seed_state`), checked against numpy's on the first
+    seed of the process (should numpy ever seed otherwise, numpy's is used)."""
+    from moik.solver.start_streams import seed_state  # compiled: loaded at the first solve
+
+    if not _COMPILED_SEEDING:
+        _COMPILED_SEEDING.append(
+            seed_state(seed, STARTS_KEY) == np.random.PCG64(starts_sequence(seed)).state)
+    if _COMPILED_SEEDING[0]:
+        return seed_state(seed, STARTS_KEY)
+    return np.random.PCG64(starts_sequence(seed)).state

@@ -8,6 +8,7 @@ from moik.solver.options import STARTS_KEY
 from moik.solver.start_streams import (
     draw_rows,
     numpy_state,
+    seed_state,
     start_streams,
     streams,
     uint32_words,
@@ -35,6 +36,14 @@ def test_streams_equal_numpy_generators(ent, key, pool, stream_key, k, dof):
         if i in (1, 3):
             assert np.array_equal(then[(i - 1) // 2],
                                   lower + (upper - lower) * g.random((k + 1, dof)))
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.integers(0, 2**130), st.sampled_from([STARTS_KEY, 0, 1, 2**32 - 1, 2**33 + 5]))
+def test_seed_state_equals_numpy_pcg64(seed, key):
+    """solve_ik's starts generator seeded in compiled code, bit for bit as numpy seeds it."""
+    expected = np.random.PCG64(np.random.SeedSequence(seed, spawn_key=(key,))).state
+    assert seed_state(seed, key) == expected
 
 
 def test_seeding_equals_numpy_and_is_checked():

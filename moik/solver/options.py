@@ -216,7 +216,7 @@ DEFAULT_OPTIONS = SearchOptions()
 _COMPILED_SEEDING: list[bool] = []  # [whether the compiled seeding equals numpy's], once
 
 
-def _seeded(seed: int) -> dict[str, Any]:
+def _seeded(seed: int) -> Any:
     """``PCG64(starts_sequence(seed)).state``: compiled
     (:func:`~moik.solver.start_streams.seed_state`), checked against numpy's on the first
     seed of the process (should numpy ever seed otherwise, numpy's is used)."""

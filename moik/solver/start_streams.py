@@ -21,8 +21,8 @@ from __future__ import annotations
 
 from typing import Any
 
+import numba
 import numpy as np
-from numba.core.config import DISABLE_JIT as JIT_DISABLED
 
 from moik._jit import jit
 
@@ -194,7 +194,7 @@ def seed_state(seed: int, key: int) -> dict[str, Any]:
     entropy[:len(words)] = words
     entropy[n_run:] = spawn
     state = np.empty(4, dtype=np.uint64)
-    if JIT_DISABLED:  # the Python fallback computes modulo 2**64 too, without warnings
+    if getattr(numba.config, "DISABLE_JIT", False):  # plain Python: modulo 2**64, no warning
         with np.errstate(over="ignore"):
             _seed_state(entropy, POOL_SIZE, state)
     else:

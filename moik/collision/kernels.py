@@ -191,6 +191,15 @@ def min_distances(cs, Q, dmin, which):
         dmin[i], which[i] = min_distance_of(cs, Q[i], scratch)
 
 
+@jit(nogil=True)
+def distances_below(cs, Q, limit, out):
+    """:func:`distance_below` of every row of ``Q (n, dof)`` into ``out (n,)`` (the clearance
+    test of a batch's answers; releases the GIL as :func:`min_distances`)."""
+    scratch = distance_scratch(cs)
+    for i in range(Q.shape[0]):
+        out[i] = distance_below(cs, Q[i], scratch, limit)[0]
+
+
 @jit
 def min_distance_of(cs, q, scratch):
     """Smallest pair distance of one joint vector and the pair attaining it (``inf``, -1:

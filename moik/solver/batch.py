@@ -19,7 +19,7 @@ import copy
 import dataclasses
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -59,7 +59,11 @@ class IKBatchResult:
         n_eval: ``(n,)`` FK evaluations spent on each target.
         time: Wall time of the whole call (s).
         min_distance: With a collision check, ``(n,)`` smallest signed distance of each
-            ``q`` (recomputed at the end); ``None`` without one.
+            ``q``; ``None`` without one. Each answer's clearance is re-checked at the end
+            of the call (the verdict); the exact distances of the answers that keep it
+            (a full measure of every pair, most of a mesh arm's cost) are computed at the
+            first read of this attribute, once.
+        distances: The record behind :attr:`min_distance` (:class:`BatchDistances`).
     """
 
     q: np.ndarray
@@ -69,7 +73,34 @@ class IKBatchResult:
     success: np.ndarray
     n_eval: np.ndarray
     time: float
-    min_distance: np.ndarray | None = None
+    distances: BatchDistances | None = field(default=None, repr=False, compare=False)
+
+    @property
+    def min_distance(self) -> np.ndarray | None:
+        """See the class docstring (``None`` without a collision check)."""
+        return None if self.distances is None else self.distances.values()
+
+
+class BatchDistances:
+    """The smallest signed distance of each answer of a batch, exact at the first read.
+
+    ``known`` rows hold exact values (the hard tail's, from ``solve_ik``, and the answers
+    below the clearance); the others hold what the clearance test measured (a number at
+    least the clearance, :func:`~moik.collision.kernels.distance_below`) until
+    :meth:`values` measures them in full (:meth:`CollisionGuard.distances`).
+    """
+
+    def __init__(self, guard: CollisionGuard, q: np.ndarray, values: np.ndarray,
+                 known: np.ndarray) -> None:
+        self._guard, self._q, self._values, self._known = guard, q, values, known
+
+    def values(self) -> np.ndarray:
+        """``(n,)`` exact smallest signed distances (measured once)."""
+        rows = np.flatnonzero(~self._known)
+        if len(rows):
+            self._values[rows] = self._guard.distances(self._q[rows])
+            self._known[rows] = True
+        return self._values
 
 
 def child_seeds(seed, n: int) -> list[np.random.SeedSequence]:
@@ -171,11 +202,12 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=No
         rows = _on_client(parallel.check_client(client), job, progress)
     else:
         rows = solve_rows(job, workers=n_workers, progress=progress)
-    q, status, pos, ori, success, n_evals, dist = rows
+    q, status, pos, ori, success, n_evals, dist, known = rows
     return IKBatchResult(q=q, status=status.astype(str), position_error=pos,
                          orientation_error=ori, success=success, n_eval=n_evals,
                          time=time.perf_counter() - t0,
-                         min_distance=None if guard is None else dist)
+                         distances=None if guard is None else BatchDistances(guard, q, dist,
+                                                                              known))
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -213,7 +245,8 @@ def _portable(guard) -> dict[str, Any]:
             "collision": checker.model, "clearance": guard.clearance}
 
 
-Rows = tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]
+Rows = tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray,
+             np.ndarray]
 
 
 def _on_client(client, job: BatchJob, progress) -> Rows:
@@ -224,7 +257,7 @@ def _on_client(client, job: BatchJob, progress) -> Rows:
     parts = parallel.map_client(client, _solve_chunk, [job.rows(lo, hi) for lo, hi in bounds],
                                 progress=done)
     return tuple(np.concatenate([part[k] for part in parts])  # type: ignore[return-value]
-                 for k in range(7))
+                 for k in range(8))
 
 
 def _solve_chunk(job: BatchJob) -> Rows:
@@ -234,8 +267,10 @@ def _solve_chunk(job: BatchJob) -> Rows:
 
 def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
     """The answers of the job's targets (seeds ``first + i``): ``(q, status, position error,
-    orientation error, success, n_eval, min distance)``, the first stage on ``workers``
-    threads, the hard tail on as many processes."""
+    orientation error, success, n_eval, min distance, whether that distance is exact)``, the
+    first stage on ``workers`` threads, the hard tail on as many processes. A first-stage
+    answer's distance is its clearance test's (:meth:`CollisionGuard.below`: exact below
+    the clearance, else a number at least it); :class:`BatchDistances` completes them."""
     robot, n = job.robot, len(job.positions)
     opts = search_options("solve_ik_batch", job.options)
     guard = collision_guard(robot, **job.collision)
@@ -244,6 +279,7 @@ def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
     out_Q, solved = np.empty((n, robot.dof)), np.zeros(n, dtype=np.bool_)
     n_evals = np.zeros(n, dtype=np.int64)
     pos, ori, dist = np.zeros(n), np.zeros(n), np.full(n, np.nan)
+    known = np.zeros(n, dtype=np.bool_)  # rows whose distance is exact (the tail's)
     if opts.polish and (qc is not None or opts.starts):
         def chunk(lo: int, hi: int) -> None:  # a thread's rows: compiled calls, GIL released
             own = None if guard is None else _own_guard(guard)
@@ -254,8 +290,8 @@ def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
             done = lo + np.flatnonzero(solved[lo:hi])
             if qc is not None and len(done):
                 out_Q[done] = nearest_copies(robot, out_Q[done], qc[done])
-            if own is not None and len(done):  # the re-check's distances (below)
-                dist[done] = own.distances(out_Q[done])
+            if own is not None and len(done):  # the re-check's clearance test (below)
+                dist[done] = own.below(out_Q[done])
             if progress is not None:
                 progress(len(done))
 
@@ -266,7 +302,7 @@ def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
         p_k, o_k = pose_errors(robot, (positions[k], None if rotations is None
                                        else rotations[k]), out_Q[k])
         ok = tolerance.certifies(p_k, o_k)
-        if guard is not None:  # each q's distance, recomputed by its chunk's thread
+        if guard is not None:  # each q's clearance, tested again by its chunk's thread
             ok &= guard.keeps(dist[k])
         pos[k], ori[k], solved[k] = p_k, o_k, ok
         status[k[ok]] = "solved"
@@ -275,9 +311,10 @@ def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
     for i, (q, st, p, o, ne, ok, d) in zip(tail, answers, strict=True):
         out_Q[i], status[i], pos[i], ori[i], n_evals[i], solved[i], dist[i] = q, st, p, o, ne, \
             ok, d
+    known[tail] = True
     if progress is not None and len(tail):
         progress(len(tail))
-    return out_Q, status, pos, ori, solved, n_evals, dist
+    return out_Q, status, pos, ori, solved, n_evals, dist, known
 
 
 def _own_guard(guard: CollisionGuard) -> CollisionGuard:

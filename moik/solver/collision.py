@@ -82,6 +82,15 @@ class CollisionGuard:
         """Smallest signed distance of each row of ``Q`` (``(n,)``; ``inf``: no pair)."""
         return self.checker.min_distance_batch(np.atleast_2d(np.asarray(Q, dtype=float)))
 
+    def below(self, Q: np.ndarray) -> np.ndarray:
+        """The clearance test of each row of ``Q`` (``(n,)``): its smallest signed distance
+        when below the clearance, else a number at least the clearance (only the pairs that
+        come close are measured, :func:`~moik.collision.kernels.distance_below`)."""
+        Q2 = self.checker.robot.kernel_batch(np.atleast_2d(np.asarray(Q, dtype=float)))
+        out = np.empty(Q2.shape[0])
+        collision_kernels.distances_below(self.checker.compiled, Q2, self.clearance, out)
+        return out
+
     def keeps(self, distances):
         """Whether signed distances keep the clearance
         (:func:`~moik.collision.model.keeps_clearance`)."""

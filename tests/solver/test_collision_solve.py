@@ -120,6 +120,25 @@ def test_batch_verdicts_equal_solve_ik(world):
     assert forced.status[0] == "collides" and not forced.success[0]
 
 
+def test_batch_distances_are_exact_when_read(world):
+    """The batch tests each answer's clearance at the end and measures its exact distance
+    at the first read of min_distance: the values solve_ik reports, coal's within the
+    hulls' margin, and the full measure runs once."""
+    model, scene, checker, T = world
+    b = solve_ik_batch(model.robot, T[:6], seed=5, scene=scene, self_collision=True)
+    assert b.distances is not None and not b.distances._known.all()  # not measured yet
+    d = b.min_distance
+    assert d is b.min_distance and b.distances._known.all()  # measured once, kept
+    guard = collision_guard(model.robot, scene=scene, self_collision=True)
+    np.testing.assert_array_equal(d, guard.distances(b.q))
+    for i, s in enumerate(child_seeds(5, 6)):
+        r = solve_ik(model.robot, T[i], seed=s, scene=scene, self_collision=True)
+        assert r.min_distance == d[i]
+        assert 0.0 <= d[i] <= coal_min(checker, b.q[i]) + 1e-9  # the hulls hold the meshes
+    below = guard.below(b.q)  # the clearance test: at least the clearance, not measured
+    assert np.all(below >= 0.0)
+
+
 def test_path_waypoints_collision_free(world):
     model, scene, checker, T = world
     res = solve_path(model.robot, list(T[:3]), scene=scene, self_collision=True,

@@ -39,6 +39,9 @@ CHUNKS_PER_WORKER = 4  # chunks per thread: a chunk of hard targets does not lea
 POOL_MIN_TASKS = 2  # fewer per-item tasks run in this process (a pool costs a fork each)
 POOL_AFTER_S = 0.25  # per-item tasks run here first; a pool takes the rest after this long
 # (starting one costs ~0.05-0.1 s: a cheap tail, e.g. targets proven out of reach, ends first)
+POOL_START_S = 0.1  # or sooner: once the items left, at the pace so far, would take longer
+# here than this (the cost of a pool's start) times workers / (workers - 1), the idle cores'
+# share: a tail of slow items goes to the pool after its first item
 SPAWN_MIN_TASKS = 8  # where processes are spawned (each imports moik and loads its kernels)
 TASK_RETRIES = 2  # a Dask task that raised is run again this often
 
@@ -103,8 +106,10 @@ def map_processes(fn: Callable[[Any, Any], Any], shared: Any, items: Iterable,
 
     ``fn`` must be a module-level function; ``shared`` is handed to each worker once
     (inherited with ``fork``, pickled otherwise), each item is sent to whichever worker is
-    free. The items run in this process for the first :data:`POOL_AFTER_S` seconds; a pool
-    takes the rest only if at least :data:`POOL_MIN_TASKS` remain then
+    free. The items run in this process for the first :data:`POOL_AFTER_S` seconds, or
+    until the pace so far says the rest would outlast a pool's start
+    (:data:`POOL_START_S`); a pool takes the rest only if at least :data:`POOL_MIN_TASKS`
+    remain then
     (:data:`SPAWN_MIN_TASKS` where processes cannot be forked: a spawned one imports moik
     and loads its kernels first). All in this process for one worker or inside a
     daemonic process.
@@ -116,9 +121,12 @@ def map_processes(fn: Callable[[Any, Any], Any], shared: Any, items: Iterable,
     out: list = []
     t0 = time.perf_counter()
     for item in items:  # here first: a tail that ends within POOL_AFTER_S needs no pool
-        if (not serial and len(items) - len(out) >= least
-                and time.perf_counter() - t0 > POOL_AFTER_S):
-            break
+        left = len(items) - len(out)
+        if not serial and left >= least:
+            spent = time.perf_counter() - t0
+            if spent > POOL_AFTER_S or (out and spent / len(out) * left
+                                        > POOL_START_S * workers / (workers - 1)):
+                break
         out.append(fn(shared, item))
     rest = items[len(out):]
     if not rest:

@@ -69,6 +69,23 @@ def test_a_tail_that_ends_soon_needs_no_pool_a_long_one_gets_one(monkeypatch):
     assert out[0][1] == os.getpid() and all(pid != os.getpid() for _, pid in out[1:])
 
 
+def _steady(shared, item):
+    time.sleep(shared)
+    return item, os.getpid()
+
+
+def test_a_tail_of_slow_items_gets_a_pool_after_its_first(monkeypatch):
+    """At the first item's pace the 7 left would take 0.35 s here, more than a pool's start
+    (0.1 s x 2 / 1): the pool takes them at once, long before POOL_AFTER_S; a tail of quick
+    items at the same count stays here."""
+    monkeypatch.setattr(parallel, "POOL_AFTER_S", 10.0)
+    out = parallel.map_processes(_steady, 0.05, list(range(8)), 2)
+    assert [v for v, _ in out] == list(range(8))
+    assert out[0][1] == os.getpid() and all(pid != os.getpid() for _, pid in out[1:])
+    out = parallel.map_processes(_steady, 0.001, list(range(8)), 2)
+    assert all(pid == os.getpid() for _, pid in out)
+
+
 def test_small_or_single_worker_pools_stay_here():
     for items, workers in (([4], 4), ([1, 2, 3], 1)):
         out = parallel.map_processes(_square_plus, 0, items, workers)

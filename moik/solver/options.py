@@ -180,9 +180,9 @@ class start_generator:  # noqa: N801 (used as a function: ``with start_generator
     """``Generator(PCG64(starts_sequence(seed)))`` for an integer ``seed`` >= 0, bit for
     bit, held for the ``with`` block.
 
-    Seeding a PCG64 through numpy's SeedSequence costs about 10 us, a sixth of a
-    first-stage solve, the compiled seeding (:func:`_seeded`) about 3 us; loading a kept
-    state into an existing generator about 1.5 us. So the initial
+    Seeding a PCG64 through numpy's SeedSequence costs a sixth of a first-stage solve,
+    the compiled seeding (:func:`_seeded`) a third of that, loading a kept state into an
+    existing generator less. So the initial
     state of each seed is kept (up to ``_MAX_STATES`` seeds), and generators are lent from
     a free list: a solve that re-enters ``solve_ik`` (or another thread) gets a generator
     of its own, never one another block still holds.

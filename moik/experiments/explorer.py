@@ -28,13 +28,13 @@ from moik.experiments.figures import (
     objective_label,
     orientation_unit,
 )
+from moik.experiments.kinds.ik_robot import arm
 from moik.experiments.report import FOLDER_ERRORS, damaged_warning, result_folders
 from moik.experiments.store import ResultStore
 from moik.experiments.tables import Results
 from moik.metrics.compromise import closest_to_utopia
 from moik.plotting.explorer import CurvePanel, Front, FrontPanel, TablePanel, write_explorer
 from moik.problems.targets import Target
-from moik.robots import get_robot
 
 
 def _target(t: dict):
@@ -56,7 +56,7 @@ def front_panels(res: Results, *, posture_runs: int | None = 3) -> list[FrontPan
     kind = cfg["problem"]["kind"]
     if kind not in ("bi-objective", "moo-benchmark"):
         return []  # single-objective trials store no front
-    robot = get_robot(cfg["robot"]) if kind == "bi-objective" else None
+    robot = arm(res.robot) if kind == "bi-objective" else None
     unit = robot.unit if robot is not None else ""
     metric_note = []
     if robot is not None:
@@ -117,7 +117,7 @@ def folder_panels(store: ResultStore, *, posture_runs: int | None = 3) -> list:
     if curves:
         ylabel = "mean best objective"
         if kind in ("position", "pose"):
-            unit = get_robot(res.config["robot"]).unit
+            unit = arm(res.robot).unit
             ylabel += f" ({objective_label(res.config['problem'], unit)[0]})"
         panels.append(CurvePanel(f"{res.config['name']}: mean convergence curves", curves,
                                  ylabel=ylabel, notes=["Mean over every target and run, as "

@@ -3,6 +3,8 @@
 Layout (format ``moik-results/1``)::
 
     OUT/meta.json         experiment name, config (as run) and its fingerprint, quick flag,
+                          the URDF arm it ran on (``robot``: the file's absolute path and
+                          SHA-256, :mod:`moik.experiments.kinds.ik_robot`; catalog arms: none),
                           versions (moik, pymoo, numpy, scipy, python), git commit, machine,
                           targets, every planned trial with its seeds, one entry per session
                           (start, executor, versions, git commit; at its end: finish time,
@@ -220,6 +222,7 @@ class ResultStore:
         meta = {"format": FORMAT, "experiment": config.name, "quick": config.is_quick,
                 "config_path": config.path, "config": config.raw,
                 "config_fingerprint": config.fingerprint(), "algorithms": config.labels,
+                **({"robot": config.robot} if isinstance(config.robot, dict) else {}),
                 "skipped_algorithms": list(config.skipped), "created": _now(), **env,
                 "sessions": [entry], "targets": targets, "trials": trials,
                 **({"adopted": {"at": _now(), "why": problem, "notes": notes}} if notes else {})}

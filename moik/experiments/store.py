@@ -62,6 +62,7 @@ from moik.experiments.files import (
     read_npz,
     remove_stale_temporaries,
 )
+from moik.experiments.kinds.ik_robot import config_folder
 from moik.experiments.lock import RunLock
 from moik.experiments.records import read_lines
 from moik.experiments.recovery import adopt, meta_problem, repair_meta
@@ -147,7 +148,8 @@ class ResultStore:
             raise ResultsError(f"{folder}/meta.json {why}")
         try:  # the stored config is checked as a config file is (the report reads it)
             ExperimentConfig.from_dict(meta["config"], path=f"{folder}/meta.json: config",
-                                       is_quick=bool(meta.get("quick")))
+                                       is_quick=bool(meta.get("quick")),
+                                       folder=config_folder(meta))
         except MoikError as exc:
             raise ResultsError(f"{folder}/meta.json holds an invalid config: {exc}") from None
         store = cls(folder, meta)

@@ -212,6 +212,20 @@ def stored_robot(meta: Mapping) -> Any:
     return stored
 
 
+def config_folder(meta: Mapping) -> Path | None:
+    """The folder a results folder's config read its relative paths from: what the recorded
+    URDF path (``meta["robot"]``) holds before the path the config names; None for a catalog
+    robot or a path recorded otherwise."""
+    value, stored = meta["config"].get("robot"), meta.get("robot")
+    if not isinstance(value, Mapping) or not isinstance(stored, Mapping):
+        return None
+    rel, full = Path(str(value.get("urdf"))), Path(str(stored.get("urdf")))
+    n = len(rel.parts)
+    if rel.is_absolute() or full.parts[-n:] != rel.parts or len(full.parts) <= n:
+        return None
+    return Path(*full.parts[:-n])
+
+
 def describe(value: Any) -> str:
     """The config's ``robot`` value in words, for a report: the URDF as the config names it
     (no path of this machine, unless the config wrote one) and its digest."""

@@ -9,9 +9,10 @@ variant of another experiment). The keys:
 - ``problem`` and, for IK experiments, ``robot`` and ``targets``: their keys
   depend on the experiment kind, chosen once from ``problem.kind``
   (:mod:`moik.experiments.kinds`): ``"position"``, ``"pose"``,
-  ``"bi-objective"`` are IK problems on a catalog robot
-  (:mod:`moik.experiments.kinds.ik`); ``"benchmark"`` lists test functions
-  and design problems, with no robot and no targets
+  ``"bi-objective"`` are IK problems on a catalog robot or a URDF arm
+  (:mod:`moik.experiments.kinds.ik`; ``robot = {urdf = "FILE", ...}``, paths read from
+  the config file's folder: :mod:`moik.experiments.kinds.ik_robot`); ``"benchmark"``
+  lists test functions and design problems, with no robot and no targets
   (:mod:`moik.experiments.kinds.functions`; ``requires`` lists its optional
   extras); ``"moo-benchmark"`` lists ZDT/DTLZ problems with analytic fronts
   (:mod:`moik.experiments.kinds.moo_functions`);
@@ -57,6 +58,7 @@ from moik.experiments.checks import check_keys, flag, integer, number
 from moik.experiments.config_files import merge, name_of, read_config
 from moik.experiments.kinds import KINDS, MULTI_OBJECTIVE_PROBLEMS, baselines, kind_of
 from moik.experiments.kinds.functions import EXTRAS
+from moik.experiments.kinds.ik_robot import resolve
 
 ANALYSES = ("summary", "ranksum", "friedman-hv", "joint-motion", "compromise", "signed-rank",
             "per-target", "per-target-ranksum", "branches", "dh-fit", "solution-rank",
@@ -150,6 +152,8 @@ class ExperimentConfig:
         skipped: Optional algorithms left out because they are not registered.
         is_quick: Whether this is the quick size.
         path: The file it came from, if any.
+        folder: The folder the config's relative paths are read from (absolute: the
+            file's folder, else the current folder when the config was validated).
     """
 
     name: str
@@ -161,11 +165,19 @@ class ExperimentConfig:
     skipped: tuple[str, ...] = ()
     is_quick: bool = False
     path: str | None = None
+    folder: Path = field(default_factory=Path.cwd, compare=False)
 
     @classmethod
-    def from_dict(cls, data: Mapping, *, path: str | None = None,
-                  is_quick: bool = False) -> ExperimentConfig:
+    def from_dict(cls, data: Mapping, *, path: str | None = None, is_quick: bool = False,
+                  folder: str | Path | None = None) -> ExperimentConfig:
         """Validate ``data`` (a config file's keys) and build the config.
+
+        Args:
+            data: The keys.
+            path: The file they came from.
+            is_quick: Whether ``data`` is the quick size.
+            folder: Where relative paths of ``data`` are read from (default: the folder
+                of ``path``, else the current folder).
 
         Raises:
             ConfigError: Naming the key and what was expected.
@@ -189,7 +201,9 @@ class ExperimentConfig:
         integer(f"{where}: iterations", cfg["iterations"], 1)
         integer(f"{where}: runs", cfg["runs"], 1)
         integer(f"{where}: seed", cfg["seed"], 0)
-        cfg["problem"], targets = KINDS[kind].check_config(where, cfg)
+        folder = Path(folder if folder is not None else Path(path).parent if path
+                      else Path()).absolute()
+        cfg["problem"], targets = KINDS[kind].check_config(where, cfg, folder)
         problem = cfg["problem"]
         want_mo = problem["kind"] in MULTI_OBJECTIVE_PROBLEMS
         algorithms, skipped = _algorithms(f"{where}: algorithms", cfg["algorithms"], cfg, kind,
@@ -201,17 +215,24 @@ class ExperimentConfig:
                                   f"is {problem['kind']!r}")
         _check_rest(where, cfg, algorithms, want_mo)
         return cls(name=name, raw=cfg, quick_overrides=quick, algorithms=algorithms, kind=kind,
-                   targets=targets, skipped=skipped, is_quick=is_quick, path=path)
+                   targets=targets, skipped=skipped, is_quick=is_quick, path=path,
+                   folder=folder)
 
     def quick(self) -> ExperimentConfig:
         """The quick (smoke-test) size: ``raw`` with the ``quick`` overrides merged."""
         if self.is_quick:
             return self
         return ExperimentConfig.from_dict(merge(self.raw, self.quick_overrides), path=self.path,
-                                          is_quick=True)
+                                          is_quick=True, folder=self.folder)
 
     def __getitem__(self, key: str) -> Any:
         return self.raw.get(key)
+
+    @property
+    def robot(self) -> Any:
+        """The robot the trials load: a catalog name, a URDF arm with absolute paths and its
+        file's digest (:func:`~moik.experiments.kinds.ik_robot.resolve`), or None."""
+        return resolve(self.raw.get("robot"), self.folder)
 
     @property
     def labels(self) -> list[str]:

@@ -27,8 +27,9 @@ from scipy.optimize import least_squares
 
 from moik._validate import choice, integer
 from moik.exceptions import ConfigError
+from moik.experiments.kinds.ik_robot import arm
 from moik.experiments.tables import Results, Table, fmt
-from moik.robots import Robot, get_robot
+from moik.robots import Robot
 
 
 @dataclass(frozen=True)
@@ -116,7 +117,7 @@ def dh_fit_table(res: Results) -> list[Table]:
     spec = res.paper.get("dh_fit")
     if not spec:
         return []
-    robot = get_robot(res.config["robot"])
+    robot = arm(res.robot)
     sols, printed = _solutions(res, spec, robot), spec["targets"]
     fit_names = spec["fit_targets"]
     fit = fit_dh_lengths(robot, spec["lengths"], spec["start"], [sols[n] for n in fit_names],

@@ -3,7 +3,10 @@
 Per results folder (as :func:`moik.experiments.report.result_folders` finds them):
 the fronts of every algorithm and run at each target, linked to the postures behind
 their points (multi-objective IK experiments store each trial's ``front_F`` and
-``front_X``; a multi-objective benchmark's fronts have no posture); the mean
+``front_X``; a multi-objective benchmark's fronts have no posture), with a collision
+experiment's obstacles and the arm's collision shapes at each posture, the geometry its
+trials checked (:func:`moik.experiments.kinds.ik_collision.checker_of`: a compound as its
+convex parts); the mean
 convergence curves the report's figures draw (single-objective experiments store a
 ``convergence`` array per trial: IK ones pooled as the report's ``_curves``,
 benchmark-function ones one panel per problem as
@@ -28,13 +31,15 @@ from moik.experiments.figures import (
     objective_label,
     orientation_unit,
 )
+from moik.experiments.kinds.ik_collision import checker_of, is_checked
+from moik.experiments.kinds.ik_robot import arm
 from moik.experiments.report import FOLDER_ERRORS, damaged_warning, result_folders
 from moik.experiments.store import ResultStore
 from moik.experiments.tables import Results
 from moik.metrics.compromise import closest_to_utopia
 from moik.plotting.explorer import CurvePanel, Front, FrontPanel, TablePanel, write_explorer
+from moik.plotting.geometry import robot_meshes, scene_traces
 from moik.problems.targets import Target
-from moik.robots import get_robot
 
 
 def _target(t: dict):
@@ -56,7 +61,7 @@ def front_panels(res: Results, *, posture_runs: int | None = 3) -> list[FrontPan
     kind = cfg["problem"]["kind"]
     if kind not in ("bi-objective", "moo-benchmark"):
         return []  # single-objective trials store no front
-    robot = get_robot(cfg["robot"]) if kind == "bi-objective" else None
+    robot = arm(res.robot) if kind == "bi-objective" else None
     unit = robot.unit if robot is not None else ""
     metric_note = []
     if robot is not None:
@@ -70,6 +75,13 @@ def front_panels(res: Results, *, posture_runs: int | None = 3) -> list[FrontPan
                            "frames."]
         axes = [f"position error ({unit})", f"{metric} orientation error "
                 f"({orientation_unit(metric)})"]
+    obstacles: list[dict] = []
+    shapes: list[dict] = []
+    if robot is not None and is_checked(cfg["problem"]):
+        checker = checker_of(robot, cfg["problem"])
+        shapes = robot_meshes(checker.model)
+        if checker.scene is not None:
+            obstacles = scene_traces(checker.scene, span=robot.reach)
     panels = []
     for ti, t in enumerate(res.meta["targets"]):
         fronts = []
@@ -92,7 +104,8 @@ def front_panels(res: Results, *, posture_runs: int | None = 3) -> list[FrontPan
             title=f"{cfg['name']}: fronts at {t['name']} (one trace per algorithm and run)",
             fronts=fronts, objectives=names, robot=robot,
             target=_target(t) if robot is not None else None,
-            initial=(0, closest_to_utopia(fronts[0].F)),
+            initial=(0, closest_to_utopia(fronts[0].F)), obstacles=obstacles,
+            robot_shapes=shapes,
             notes=[f"{len(fronts)} fronts; run 0 of each algorithm shown, the others in the "
                    f"legend; postures embedded for {kept}. The member shown first is the "
                    f"compromise (closest to the utopia point) of {fronts[0].name}.",
@@ -117,7 +130,7 @@ def folder_panels(store: ResultStore, *, posture_runs: int | None = 3) -> list:
     if curves:
         ylabel = "mean best objective"
         if kind in ("position", "pose"):
-            unit = get_robot(res.config["robot"]).unit
+            unit = arm(res.robot).unit
             ylabel += f" ({objective_label(res.config['problem'], unit)[0]})"
         panels.append(CurvePanel(f"{res.config['name']}: mean convergence curves", curves,
                                  ylabel=ylabel, notes=["Mean over every target and run, as "

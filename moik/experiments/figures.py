@@ -32,9 +32,9 @@ import numpy as np
 import moik.plotting as mp
 from moik._paths import file_name, inside
 from moik.exceptions import MoikError
+from moik.experiments.kinds.ik_robot import arm
 from moik.experiments.tables import Results
 from moik.metrics import ranksum_pvalues
-from moik.robots import get_robot
 
 
 def _curves(res: Results, labels) -> dict[str, np.ndarray]:
@@ -147,7 +147,7 @@ def _plans(res: Results) -> list[tuple[str, str, Callable]]:
     plans: list[tuple[str, str, Callable]] = []
     if cfg["problem"]["kind"] == "benchmark":
         return _benchmark_plans(res)
-    robot = get_robot(cfg["robot"])
+    robot = arm(res.robot)
     unit = robot.unit
     proposed = cfg.get("proposed") or (res.meta.get("algorithms") or [None])[0]
     units, formula = objective_label(cfg["problem"], unit)

@@ -18,13 +18,12 @@ from moik.experiments.consistency import FUNCTIONS as CONSISTENCY_FUNCTIONS
 from moik.experiments.dh_fit import FUNCTIONS as DH_FIT_FUNCTIONS
 from moik.experiments.front_quality import HEADLINES as FRONT_HEADLINES
 from moik.experiments.front_shares import HEADLINES as SHARES_HEADLINES
-from moik.experiments.kinds.ik import experiment_robot
+from moik.experiments.kinds.ik_robot import arm, experiment_robot
 from moik.experiments.per_target import cluster_solutions
 from moik.experiments.reference_fronts import FUNCTIONS as REFERENCE_FUNCTIONS
 from moik.experiments.solution_sets import FUNCTIONS as RANK_FUNCTIONS
 from moik.experiments.tables import Results, fmt
 from moik.metrics import ranksum_pvalues, signed_rank, success_rate, summarize
-from moik.robots import get_robot
 
 
 def focus(res: Results) -> str | None:
@@ -78,7 +77,7 @@ def ranksum_lines(res: Results) -> list[str]:
 
 def compromise_lines(res: Results) -> list[str]:
     """Mean (median) position and orientation error of the selected solutions."""
-    unit = get_robot(res.config["robot"]).unit
+    unit = arm(res.robot).unit
     paper = _paper(res, "compromise")
     lines = []
     for lab in res.labels:
@@ -220,7 +219,7 @@ def branches_lines(res: Results) -> list[str]:
     if not res.labels:
         return []
     lab, thr = res.labels[0], res.config.get("success_threshold", 1e-6)
-    robot = experiment_robot(res.config["robot"], res.config.get("problem", {}))
+    robot = experiment_robot(res.robot, res.config.get("problem", {}))
     parts = []
     for ti, target in enumerate(res.meta["targets"]):
         recs = [r for r in res.by_label[lab] if r["target"] == ti]

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from moik.experiments.kinds.ik import experiment_robot
+from moik.experiments.kinds.ik_robot import experiment_robot
 from moik.experiments.tables import Results, Table, fmt
 from moik.kinematics.criteria import joint_distance
 from moik.metrics import ranksum_pvalues, summarize
@@ -172,7 +172,7 @@ def branches_table(res: Results) -> list[Table]:
     if not res.labels:
         return []
     lab, thr = res.labels[0], res.config.get("success_threshold", 1e-6)
-    robot = experiment_robot(res.config["robot"], res.config.get("problem", {}))
+    robot = experiment_robot(res.robot, res.config.get("problem", {}))
     paper = res.paper.get("branches", {})
     rows, notes, gaps, n_ref = [], [], [], 0
     for ti, target in enumerate(res.meta["targets"]):

@@ -49,7 +49,7 @@ def repair_meta(meta: dict) -> list[str]:
 
 META_KEYS = ("format", "experiment", "quick", "config_path", "config", "config_fingerprint",
              "algorithms", "skipped_algorithms", "created", "versions", "git_commit", "machine",
-             "sessions", "targets", "trials", "adopted")
+             "sessions", "targets", "trials", "adopted", "robot")
 """Every key moik writes in ``meta.json`` (any other is refused, naming the nearest)."""
 READ_REQUIRED = {"experiment": str, "config": dict, "targets": list}
 """The ``meta.json`` fields every reader needs (the fingerprint and sessions are repairable)."""
@@ -87,7 +87,7 @@ def meta_problem(meta: dict, *, reading: bool = False) -> str | None:
 
 OPTIONAL_TYPES = {"quick": bool, "versions": dict, "machine": dict, "sessions": list,
                   "trials": list, "algorithms": list, "skipped_algorithms": list,
-                  "config_fingerprint": str}
+                  "config_fingerprint": str, "robot": dict}
 """The types of the other ``meta.json`` fields, where present."""
 
 

@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 from pymoo.indicators.igd_plus import IGDPlus
 
-from moik.experiments.kinds.ik import experiment_robot
+from moik.experiments.kinds.ik_robot import experiment_robot
 from moik.experiments.tables import Results, Table, fmt
 from moik.metrics import hypervolume
 from moik.problems import BiObjectiveIK
@@ -25,7 +25,7 @@ def _front(res: Results, target: dict) -> np.ndarray | None:
     if problem.get("kind") != "bi-objective" or target.get("rotation") is None or \
             problem.get("displacement_weight", 0.0):
         return None
-    robot = experiment_robot(target.get("robot") or res.config["robot"], problem)
+    robot = experiment_robot(target.get("robot") or res.robot, problem)
     ik = BiObjectiveIK(robot, (np.asarray(target["position"]), np.asarray(target["rotation"])),
                        orientation=problem.get("orientation", "geodesic"))
     return ik.pareto_front()

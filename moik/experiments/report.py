@@ -29,6 +29,7 @@ from moik.exceptions import MoikError, ResultsError
 from moik.experiments.analysis import analyze
 from moik.experiments.figures import make_figures
 from moik.experiments.files import atomic_write_bytes
+from moik.experiments.kinds.ik_robot import describe
 from moik.experiments.records import read_lines
 from moik.experiments.registry import experiment_files
 from moik.experiments.store import ResultStore
@@ -112,7 +113,7 @@ def experiment_section(store: ResultStore, *, figures: bool, link: Callable[[Pat
               + (f"{cfg['problem']['evaluations']} evaluations per run, "
                  if cfg["problem"].get("evaluations") else "")
               if cfg["problem"]["kind"] in ("benchmark", "moo-benchmark") else
-              f"- robot `{cfg['robot']}`, problem `{cfg['problem']['kind']}`"
+              f"- robot {describe(cfg['robot'])}, problem `{cfg['problem']['kind']}`"
               + ("" if cfg["problem"]["kind"] == "position" else
                  f" (orientation `{cfg['problem'].get('orientation')}`)") + ", ")
              + f"{len(meta['targets'])} target(s), runs per target {cfg['runs']}, "

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from moik.experiments.kinds.ik import experiment_robot
+from moik.experiments.kinds.ik_robot import experiment_robot
 from moik.experiments.tables import Results, Table, fmt
 from moik.kinematics.jacobian import jacobian
 from moik.robots import Robot
@@ -84,7 +84,7 @@ def solution_rank_table(res: Results) -> list[Table]:
     problem = res.config["problem"]
     rows = []
     for ti, target in enumerate(res.meta["targets"]):
-        robot = experiment_robot(target.get("robot") or res.config["robot"], problem)
+        robot = experiment_robot(target.get("robot") or res.robot, problem)
         recs = [r for lab in res.labels for r in res.by_label[lab] if r["target"] == ti]
         solved = [r["best_x"] for r in recs if r.get("best_f") is not None and r["best_f"] < thr
                   and r.get("best_x") is not None]

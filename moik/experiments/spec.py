@@ -43,7 +43,9 @@ class TrialSpec:
         run: Run index per (algorithm, target).
         entropy: Root entropy (the config seed); ``spawn_key`` the child's key.
         seed: Integer seed handed to pymoo (first word of the child's state).
-        robot: Robot name (None for benchmark functions); ``problem`` the problem
+        robot: Robot name, or a URDF arm resolved
+            (:func:`moik.experiments.kinds.ik_robot.resolve`; None for benchmark
+            functions); ``problem`` the problem
             dict; ``iterations`` the update iterations after the initial population
             (the papers' Max_t; pymoo's termination is ``("n_gen", iterations + 1)``).
         protocol: ``{"threshold", "max_failures"}`` or None.
@@ -63,7 +65,7 @@ class TrialSpec:
     entropy: int
     spawn_key: tuple[int, ...]
     seed: int
-    robot: str | None
+    robot: str | dict | None
     problem: dict
     iterations: int
     protocol: dict | None

@@ -3,6 +3,8 @@
 Layout (format ``moik-results/1``)::
 
     OUT/meta.json         experiment name, config (as run) and its fingerprint, quick flag,
+                          the URDF arm it ran on (``robot``: the file's absolute path and
+                          SHA-256, :mod:`moik.experiments.kinds.ik_robot`; catalog arms: none),
                           versions (moik, pymoo, numpy, scipy, python), git commit, machine,
                           targets, every planned trial with its seeds, one entry per session
                           (start, executor, versions, git commit; at its end: finish time,
@@ -60,6 +62,7 @@ from moik.experiments.files import (
     read_npz,
     remove_stale_temporaries,
 )
+from moik.experiments.kinds.ik_robot import config_folder
 from moik.experiments.lock import RunLock
 from moik.experiments.records import read_lines
 from moik.experiments.recovery import adopt, meta_problem, repair_meta
@@ -145,7 +148,8 @@ class ResultStore:
             raise ResultsError(f"{folder}/meta.json {why}")
         try:  # the stored config is checked as a config file is (the report reads it)
             ExperimentConfig.from_dict(meta["config"], path=f"{folder}/meta.json: config",
-                                       is_quick=bool(meta.get("quick")))
+                                       is_quick=bool(meta.get("quick")),
+                                       folder=config_folder(meta))
         except MoikError as exc:
             raise ResultsError(f"{folder}/meta.json holds an invalid config: {exc}") from None
         store = cls(folder, meta)
@@ -220,6 +224,7 @@ class ResultStore:
         meta = {"format": FORMAT, "experiment": config.name, "quick": config.is_quick,
                 "config_path": config.path, "config": config.raw,
                 "config_fingerprint": config.fingerprint(), "algorithms": config.labels,
+                **({"robot": config.robot} if isinstance(config.robot, dict) else {}),
                 "skipped_algorithms": list(config.skipped), "created": _now(), **env,
                 "sessions": [entry], "targets": targets, "trials": trials,
                 **({"adopted": {"at": _now(), "why": problem, "notes": notes}} if notes else {})}

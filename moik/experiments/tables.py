@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from moik.experiments.config_files import budget_of, budget_text
+from moik.experiments.kinds.ik_robot import stored_robot
 from moik.experiments.store import ResultStore, planned_ids
 
 
@@ -45,6 +46,8 @@ class Results:
         self.store = store
         self.meta = store.meta
         self.config = store.meta["config"]
+        # the robot as the trials loaded it (a URDF arm: its file, checked unchanged)
+        self.robot = stored_robot(store.meta) if "robot" in self.config else None
         self.paper = self.config.get("paper", {})
         self.citation, self.source = "paper", "moik"
         cite = self.paper.get("citation")

@@ -39,7 +39,7 @@ def build_trials(config, targets: list[TrialTarget] | None = None) -> list[Trial
                     algorithm=alg.name, params=dict(alg.params), target_index=ti, target=target,
                     run=r, entropy=int(child.entropy), spawn_key=tuple(child.spawn_key),
                     seed=int(child.generate_state(1, dtype=np.uint32)[0]),
-                    robot=getattr(target, "robot", None) or config["robot"],
+                    robot=getattr(target, "robot", None) or config.robot,
                     problem=dict(config["problem"]),
                     iterations=config["iterations"], protocol=config["protocol"],
                     record_history="joint-motion" in (config["analyses"] or [])))

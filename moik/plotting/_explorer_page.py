@@ -5,7 +5,8 @@ installed plotly package, nothing fetched), the panels' figures and posture data
 as one JSON block, and :data:`SCRIPT`, which draws every figure and, when a point
 of a front is clicked, draws that member's posture in 3-D (links through the
 frame origins, the joints numbered, every joint frame's axes, the target and its
-frame, the scene's obstacles) and lists its joint values and errors. The script
+frame, the scene's obstacles, the arm's collision shapes placed by that posture's frames)
+and lists its joint values and errors. The script
 exposes ``window.moikExplorer`` (``select(panel, curve, index)``, ``state``) and
 sets ``document.body.dataset.ready`` once every figure is drawn, for the tests.
 """
@@ -59,6 +60,21 @@ SCRIPT = r"""
     return out;
   }
 
+  function shapes(panel, P, i) {  // each body's mesh moved by this posture's frame
+    return (panel.robot_shapes || []).map((s) => {
+      const R = P.rotations[i][s.frame], o = P.origins[i][s.frame];
+      const w = [[], [], []];
+      for (let v = 0; v < s.x.length; v++) {
+        for (let r = 0; r < 3; r++) {
+          w[r].push(o[r] + R[r][0] * s.x[v] + R[r][1] * s.y[v] + R[r][2] * s.z[v]);
+        }
+      }
+      return {type: 'mesh3d', name: s.name, x: w[0], y: w[1], z: w[2], i: s.i, j: s.j,
+              k: s.k, color: '#1f77b4', opacity: 0.3, hoverinfo: 'name', showlegend: false,
+              flatshading: true};
+    });
+  }
+
   function postureTraces(panel, P, i) {
     const o = P.origins[i], col = (k) => o.map((p) => p[k]);
     const J = P.joints[i], len = 0.08 * panel.scale;
@@ -81,7 +97,7 @@ SCRIPT = r"""
                    marker: {size: 7, symbol: 'diamond', color: 'red'}, hoverinfo: 'name'});
       if (t.rotation) traces.push(...axes([t.position], [t.rotation], 1.5 * len, true, 'target'));
     }
-    return traces.concat(panel.obstacles || []);
+    return traces.concat(panel.obstacles || [], shapes(panel, P, i));
   }
 
   function details(panel, ti, i) {

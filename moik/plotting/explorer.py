@@ -27,6 +27,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from moik._paths import atomic_write_bytes
+from moik.collision.model import CollisionChecker, CollisionModel
 from moik.exceptions import ParameterError, ShapeError
 from moik.plotting._explorer_page import page
 from moik.plotting.explorer_panels import (
@@ -38,7 +39,7 @@ from moik.plotting.explorer_panels import (
     front_panel_data,
     plotly_modules,
 )
-from moik.plotting.geometry import scene_traces
+from moik.plotting.geometry import robot_meshes, scene_traces
 from moik.plotting.pareto import UNITS
 from moik.robots.chain import Robot
 
@@ -112,9 +113,26 @@ def _as_front(name: str, result, unit: str) -> tuple[Front, list[str], int]:
                          f"got {type(result).__name__}")
 
 
+def _collision_model(collision, robot: Robot) -> CollisionModel | None:
+    """The :class:`~moik.collision.CollisionModel` of ``collision`` (a model, a checker or
+    None), checked to be ``robot``'s."""
+    if collision is None:
+        return None
+    model = collision.model if isinstance(collision, CollisionChecker) else collision
+    if not isinstance(model, CollisionModel):
+        raise ParameterError(f"collision must be a CollisionModel or a CollisionChecker, got "
+                             f"{type(collision).__name__}")
+    if model.robot is not robot and (model.robot.name != robot.name
+                                     or model.robot.dof != robot.dof):
+        raise ParameterError(f"collision is the geometry of robot {model.robot.name!r}, the "
+                             f"explorer draws {robot.name!r}")
+    return model
+
+
 def pareto_explorer(result, robot: Robot, path: str | Path, *, target=None,
                     title: str | None = None, scene: Scene | None = None,
-                    obstacles: Sequence[dict] = ()) -> Path:
+                    obstacles: Sequence[dict] = (),
+                    collision: CollisionChecker | CollisionModel | None = None) -> Path:
     """Write the explorer of one or several Pareto sets of IK solutions.
 
     Args:
@@ -133,14 +151,24 @@ def pareto_explorer(result, robot: Robot, path: str | Path, *, target=None,
             patch of its plane the size of the robot's reach).
         obstacles: More plotly 3-D trace dicts (e.g. ``{"type": "mesh3d", ...}``) drawn
             in every posture.
+        collision: The geometry the answers were checked against: a
+            :class:`~moik.collision.CollisionModel` of ``robot`` or a
+            :class:`~moik.collision.CollisionChecker` (its scene's obstacles are drawn too
+            when ``scene`` is not given). Its robot shapes are drawn at each posture, a
+            compound as its convex parts (:func:`moik.plotting.geometry.robot_meshes`);
+            ``solve_ik``'s own is ``moik.solver.collision.default_model(robot)``.
 
     Returns:
         The path written.
 
     Raises:
-        ParameterError: plotly is missing, or ``result`` is none of the above.
+        ParameterError: plotly is missing, ``result`` is none of the above, or
+            ``collision`` is not a model or checker of ``robot``.
         ShapeError: Arrays of inconsistent shapes.
     """
+    model = _collision_model(collision, robot)
+    if scene is None and isinstance(collision, CollisionChecker):
+        scene = collision.scene
     several = isinstance(result, Mapping) and "F" not in result
     single = "error front" if hasattr(result, "front_q") else "Pareto set"
     items = list(result.items()) if several else [(single, result)]
@@ -158,6 +186,7 @@ def pareto_explorer(result, robot: Robot, path: str | Path, *, target=None,
                        initial=(0, first),
                        obstacles=(*([] if scene is None else
                                     scene_traces(scene, span=robot.reach)), *obstacles),
+                       robot_shapes=() if model is None else robot_meshes(model),
                        notes=["The ring marks the member shown; the first member shown is "
                               "the compromise (closest to the utopia point) when the result "
                               "has one. Joint numbers shared by several joints mark joints "

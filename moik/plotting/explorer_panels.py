@@ -55,6 +55,9 @@ class FrontPanel:
         initial: ``(trace, member)`` shown when the page opens.
         obstacles: plotly trace dicts drawn in every posture (the hook for collision
             scenes).
+        robot_shapes: The arm's collision shapes as triangle meshes in their bodies'
+            frames (:func:`moik.plotting.geometry.robot_meshes`), drawn at each posture
+            where that posture's frames put them.
         notes: Lines printed under the panel.
     """
 
@@ -65,6 +68,7 @@ class FrontPanel:
     target: object = None
     initial: tuple[int, int] = (0, 0)
     obstacles: Sequence[dict] = ()
+    robot_shapes: Sequence[dict] = ()
     notes: Sequence[str] = ()
 
 
@@ -137,9 +141,11 @@ def _joint_labels(joints: list, scale: float) -> list[str]:
     return labels
 
 
-def _scene(robot: Robot, postures: list, target, obstacles: bool = False) -> dict:
+def _scene(robot: Robot, postures: list, target, obstacles: bool = False,
+           shapes: bool = False) -> dict:
     """A fixed cube around every embedded posture and the target (switching keeps the scale);
-    the caption says what is drawn (``obstacles``: grey surfaces too)."""
+    the caption says what is drawn (``obstacles``: grey surfaces too; ``shapes``: the arm's
+    collision shapes, blue)."""
     pts = [np.reshape(p["origins"], (-1, 3)) for p in postures if p]
     p_t, _ = target_pose(target)
     if p_t is not None:
@@ -151,7 +157,8 @@ def _scene(robot: Robot, postures: list, target, obstacles: bool = False) -> dic
             "title": {"text": f"posture ({unit}): links through the joint frames, joints "
                               "numbered,<br>frame axes x red, y green, z blue; target: red "
                               "diamond, its frame dashed"
-                              + ("; obstacles grey" if obstacles else ""),
+                              + ("; obstacles grey" if obstacles else "")
+                              + ("; collision shapes blue" if shapes else ""),
                       "font": {"size": 12}, "x": 0.02,
                       "xanchor": "left", "y": 0.97},
             "scene": {"aspectmode": "cube", **{
@@ -204,7 +211,7 @@ def front_panel_data(panel: FrontPanel, go) -> dict:
     out: dict[str, Any] = {
            "kind": "front", "title": panel.title, "figure": _plain(fig), "traces": traces,
            "objectives": names, "notes": list(panel.notes), "initial": list(panel.initial),
-           "obstacles": list(panel.obstacles),
+           "obstacles": list(panel.obstacles), "robot_shapes": list(panel.robot_shapes),
            "no_posture": "no joint vectors stored for this front"}
     if panel.robot is None or not any(postures):
         out["postures"] = None
@@ -216,7 +223,8 @@ def front_panel_data(panel: FrontPanel, go) -> dict:
                joint_names=list(robot.joint_names) or [f"q{j + 1}" for j in range(robot.dof)],
                target=None if p_t is None else {
                    "position": p_t.tolist(), "rotation": None if R_t is None else R_t.tolist()},
-               scene_layout=_scene(robot, postures, panel.target, bool(panel.obstacles)))
+               scene_layout=_scene(robot, postures, panel.target, bool(panel.obstacles),
+                                   bool(panel.robot_shapes)))
     return out
 
 

@@ -7,14 +7,17 @@ Called by :func:`moik.plotting.robot.plot_robot` with ``collision=`` (a
 :class:`~moik.collision.model.CollisionChecker`): the robot's shapes at the first
 configuration (blue) and the scene's obstacles (grey). :func:`scene_traces` gives a
 scene's obstacles as plotly ``mesh3d`` traces, for the interactive explorer
-(:func:`moik.plotting.explorer.pareto_explorer`, ``scene=``).
+(:func:`moik.plotting.explorer.pareto_explorer`, ``scene=``), and :func:`robot_meshes`
+the robot's shapes as triangle meshes in their bodies' frames, which the explorer's page
+places at each posture it draws (``collision=``). Both draw a compound as its convex
+parts, as :func:`draw_shape` does.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from moik.collision.model import CollisionChecker, Scene
+from moik.collision.model import CollisionChecker, CollisionModel, Scene
 from moik.collision.shapes import Box, Capsule, Compound, ConvexHull, HalfSpace, Shape, Sphere
 
 ROBOT_COLOR, OBSTACLE_COLOR = "tab:blue", "0.45"
@@ -91,7 +94,8 @@ def draw_collision(ax, checker: CollisionChecker, q: np.ndarray, *, span: float)
 
 
 def _mesh(shape: Shape, span: float) -> tuple[np.ndarray, np.ndarray]:
-    """World vertices ``(v, 3)`` and triangles ``(t, 3)`` of one shape's surface."""
+    """Vertices ``(v, 3)`` and triangles ``(t, 3)`` of one shape's surface, in the frame its
+    pose is given in (the world for an obstacle, its body's frame for a robot shape)."""
     R, p = shape.pose[:3, :3], shape.pose[:3, 3]
     if isinstance(shape, (Capsule, Sphere)):
         n = 12
@@ -109,9 +113,42 @@ def _mesh(shape: Shape, span: float) -> tuple[np.ndarray, np.ndarray]:
     elif isinstance(shape, ConvexHull):
         P, hull_tri = _hull_triangles(shape)
         tri = [tuple(t) for t in hull_tri]
+    elif isinstance(shape, Compound):  # its parts, each placed by its own pose
+        meshes = [_mesh(part, span) for part in shape.parts]
+        return _joined(meshes)
     else:
         raise TypeError(f"no surface for {type(shape).__name__}")
-    return P @ R.T + p, np.array(tri, dtype=np.int64)
+    return P @ R.T + p, np.array(tri, dtype=np.int64).reshape(-1, 3)
+
+
+def _joined(meshes: list[tuple[np.ndarray, np.ndarray]]) -> tuple[np.ndarray, np.ndarray]:
+    """Several meshes as one: the vertices stacked, the triangles renumbered."""
+    offsets = np.cumsum([0] + [len(V) for V, _ in meshes[:-1]])
+    return (np.vstack([V for V, _ in meshes]),
+            np.vstack([T.reshape(-1, 3) + k for (_, T), k in zip(meshes, offsets, strict=True)]))
+
+
+def _mesh_dict(V: np.ndarray, T: np.ndarray, digits: int) -> dict:
+    V = np.round(V, digits)
+    return {"x": V[:, 0].tolist(), "y": V[:, 1].tolist(), "z": V[:, 2].tolist(),
+            "i": T[:, 0].tolist(), "j": T[:, 1].tolist(), "k": T[:, 2].tolist()}
+
+
+def robot_meshes(model: CollisionModel, *, digits: int = 6) -> list[dict]:
+    """The robot's shapes of ``model`` as one triangle mesh per body, in that body's frame.
+
+    Each entry is ``{"name": body, "frame": body index (the frame of
+    :meth:`moik.robots.Robot.frames` it moves with), "x", "y", "z": vertices (rounded to
+    ``digits`` decimals), "i", "j", "k": triangles}``; a compound is its convex parts (the
+    geometry the check measures, not its bound), a capsule or sphere a 12 x 12 grid.
+    """
+    out = []
+    for body, name in enumerate(model.links):
+        shapes = [s for b, s in model.items if b == body]
+        if shapes:
+            V, T = _joined([_mesh(s, 0.0) for s in shapes])
+            out.append({"name": name, "frame": body, **_mesh_dict(V, T, digits)})
+    return out
 
 
 def scene_traces(scene: Scene, span: float) -> list[dict]:

@@ -138,3 +138,30 @@ def test_multi_objective_benchmarks_show_fronts_without_postures(tmp_path):
     assert len(fronts) == 2 and all(p["postures"] is None for p in fronts)
     assert fronts[1]["objectives"] == ["f1", "f2", "f3"]
     assert [t["name"] for t in fronts[0]["traces"]] == ["nsga2 run 0", "mogwo run 0"]
+
+
+def test_a_collision_experiment_draws_the_geometry_its_trials_checked(tmp_path):
+    """The obstacles and the arm's collision shapes: panda's compounds, the geometry
+    solve_ik and the experiment's checker use (not the shipped capsules)."""
+    from moik.collision.io import load_scene
+    from moik.plotting.geometry import robot_meshes, scene_traces
+    from moik.solver.collision import default_model
+
+    scene = {"obstacles": [{"name": "shelf", "type": "box", "size": [0.3, 0.7, 0.02],
+                            "xyz": [0.55, 0, 0.35]}]}
+    cfg = ExperimentConfig.from_dict({
+        "name": "tiny-collision", "title": "tiny collision experiment", "source": "test",
+        "robot": "panda",
+        "problem": {"kind": "bi-objective", "self_collision": True, "scene": scene},
+        "targets": {"kind": "fixed", "points": [
+            {"name": "T", "fk_q_deg": [0, -20, 0, -120, 0, 100, 45],
+             "hv_ref_point": [1.5, 3.2]}]},
+        "algorithms": [{"name": "nsga2"}], "pop_size": 8, "archive_size": 8,
+        "iterations": 2, "runs": 1, "seed": 3, "analyses": ["collision"]})
+    out = tmp_path / "tiny-collision"
+    run_experiment(cfg, out=out, workers=1, progress=False)
+    [front] = [p for p in data(report_explorer(out, tmp_path / "r.html"))["panels"]
+               if p["kind"] == "front"]
+    robot = get_robot("panda")
+    assert front["robot_shapes"] == robot_meshes(default_model(robot))
+    assert front["obstacles"] == scene_traces(load_scene(scene), span=robot.reach)

@@ -168,3 +168,32 @@ def test_the_joint_limits_carry_their_units(tmp_path):
     page = pareto_explorer({"F": F, "X": X}, robot, tmp_path / "p.html").read_text()
     assert "<th>lower limit</th><th>upper limit</th>" in page
     assert "fmt(v) + unit" in page and "' deg)'" in page
+
+
+def test_the_collision_geometry_is_drawn_at_every_posture(tmp_path, panda, members):
+    """collision= a checker: the arm's shapes (panda's compounds, as their convex parts) in
+    their bodies' frames, which the page moves by each posture's frames, and the checker's
+    obstacles; a model of another arm, or not a model, is refused."""
+    from moik.collision import Box, CollisionChecker, Scene
+    from moik.plotting.geometry import robot_meshes, scene_traces
+    from moik.solver.collision import default_model
+
+    X, F = members
+    model = default_model(panda)
+    checker = CollisionChecker(model=model, scene=Scene({"shelf": Box(size=(0.3, 0.7, 0.02))}),
+                               self_collision=True)
+    panel = page_data(pareto_explorer({"X": X, "F": F}, panda, tmp_path / "p.html",
+                                      collision=checker))["panels"][0]
+    assert panel["robot_shapes"] == robot_meshes(model)
+    assert {s["frame"] for s in panel["robot_shapes"]} == {b for b, _ in model.items}
+    assert panel["obstacles"] == scene_traces(checker.scene, span=panda.reach)
+    assert "collision shapes blue" in panel["scene_layout"]["title"]["text"]
+    alone = page_data(pareto_explorer({"X": X, "F": F}, panda, tmp_path / "q.html",
+                                      collision=model))["panels"][0]
+    assert alone["robot_shapes"] == panel["robot_shapes"] and alone["obstacles"] == []
+    with pytest.raises(ParameterError, match="geometry of robot 'ur5'"):
+        pareto_explorer({"X": X, "F": F}, panda, tmp_path / "r.html",
+                        collision=default_model(get_robot("ur5")))
+    with pytest.raises(ParameterError, match="collision must be a CollisionModel or a "
+                                             "CollisionChecker, got str"):
+        pareto_explorer({"X": X, "F": F}, panda, tmp_path / "r.html", collision="panda")

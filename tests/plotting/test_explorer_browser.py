@@ -204,3 +204,40 @@ def test_a_screenshot_shows_the_drawn_page(driver, scene, loaded):
     if out:  # keep the picture to look at
         shutil.os.makedirs(out, exist_ok=True)
         Path(out, "explorer-test.png").write_bytes(base64.b64decode(shot["data"]))
+
+
+def test_the_arms_collision_geometry_follows_the_selected_posture(driver, tmp_path):
+    """The panda's compounds (its URDF meshes' convex parts, what a collision check measures)
+    drawn as mesh3d surfaces moved by the shown member's frames: for the first member and
+    after selecting another, each body's drawn vertices are its parts' at that posture."""
+    from moik.plotting.geometry import robot_meshes
+    from moik.solver.collision import default_model
+
+    robot = get_robot("panda")
+    model = default_model(robot)
+    X = robot.random_q(4, rng=np.random.default_rng(11))
+    F = np.column_stack([np.linspace(0, 1, 4), np.linspace(1, 0, 4)])
+    panel = FrontPanel("fronts", [Front("alg run 0", F, X)], ["a", "b"], robot=robot,
+                       robot_shapes=robot_meshes(model))
+    path = write_explorer(tmp_path / "shapes.html", [panel], title="collision shapes")
+    driver.get_log("browser")
+    open_page(driver, path)
+
+    def drawn() -> dict:
+        return driver.execute_script(
+            "return document.getElementById('posture-0').data.filter(t => t.type === 'mesh3d')"
+            ".map(t => [t.name, t.x, t.y, t.z, t.i.length]);")
+
+    for k in (0, 2):
+        if k:
+            assert driver.execute_script(f"return window.moikExplorer.select(0, 0, {k});")
+        frames = robot.frames(X[k])
+        shapes = drawn()
+        assert [s[0] for s in shapes] == [m["name"] for m in panel.robot_shapes]
+        for (_, x, y, z, n_tri), mesh in zip(shapes, panel.robot_shapes, strict=True):
+            T = frames[mesh["frame"]]
+            parts = [p.moved(T) for b, s in model.items if b == mesh["frame"] for p in s.parts]
+            want = np.vstack([p.points @ p.pose[:3, :3].T + p.pose[:3, 3] for p in parts])
+            np.testing.assert_allclose(np.column_stack([x, y, z]), want, atol=2e-5)
+            assert n_tri == len(mesh["i"]) > 0
+    assert not [e for e in driver.get_log("browser") if e["level"] == "SEVERE"]

@@ -58,3 +58,54 @@ def test_scene_traces_are_the_obstacles_surfaces():
     dist = np.linalg.norm(V - np.column_stack([np.full(len(V), 0.3), np.full(len(V), -0.2),
                                                along]), axis=1)
     np.testing.assert_allclose(dist, 0.04, atol=1e-12)
+
+
+def _vertices(mesh: dict) -> np.ndarray:
+    return np.column_stack([mesh["x"], mesh["y"], mesh["z"]])
+
+
+def test_robot_meshes_are_the_parts_of_each_compound_in_its_bodys_frame():
+    """The explorer's robot shapes (panda: its URDF meshes as compounds) are the convex parts
+    the check measures, not the bound: moved by the body's frame they are the parts' vertices
+    at that configuration, and every triangle is a face of its part's hull."""
+    from moik.collision.shapes import Compound
+    from moik.plotting.geometry import robot_meshes
+    from moik.solver.collision import default_model
+
+    robot = get_robot("panda")
+    model = default_model(robot)
+    meshes = robot_meshes(model, digits=12)
+    bodies = sorted({b for b, _ in model.items})  # one mesh per body (panda_link7: 2 shapes)
+    assert [(m["name"], m["frame"]) for m in meshes] == [(model.links[b], b) for b in bodies]
+    q = robot.random_q(1, rng=np.random.default_rng(4))[0]
+    frames = robot.frames(q)
+    for mesh in meshes:
+        shapes = [s for b, s in model.items if b == mesh["frame"]]
+        assert all(isinstance(s, Compound) for s in shapes)
+        T = frames[mesh["frame"]]
+        world = _vertices(mesh) @ T[:3, :3].T + T[:3, 3]
+        parts = [p.moved(T) for s in shapes for p in s.parts]
+        want = np.vstack([p.points @ p.pose[:3, :3].T + p.pose[:3, 3] for p in parts])
+        np.testing.assert_allclose(world, want, atol=1e-9)  # the parts, not the bound
+        tri = np.column_stack([mesh["i"], mesh["j"], mesh["k"]])
+        ends = np.cumsum([len(p.points) for p in parts])
+        for a, b, c in tri[:: max(1, len(tri) // 40)]:  # a face of one part's hull
+            k = int(np.searchsorted(ends, a, side="right"))
+            assert ends[k] > max(a, b, c) and (k == 0 or min(a, b, c) >= ends[k - 1])
+            P = world[(0 if k == 0 else ends[k - 1]):ends[k]]
+            n = np.cross(world[b] - world[a], world[c] - world[a])
+            side = (P - world[a]) @ n
+            assert side.min() >= -1e-9 * np.abs(side).max() or \
+                side.max() <= 1e-9 * np.abs(side).max()
+
+
+def test_a_compound_obstacle_is_drawn_as_its_parts():
+    from moik.plotting.geometry import scene_traces
+    from moik.solver.collision import default_model
+
+    [(_, compound), *_] = default_model(get_robot("ur5")).items
+    [trace] = scene_traces(Scene({"base": compound}), span=1.0)
+    V = np.column_stack([trace["x"], trace["y"], trace["z"]])
+    want = np.vstack([p.points @ p.pose[:3, :3].T + p.pose[:3, 3] for p in compound.parts])
+    np.testing.assert_allclose(V, want, atol=1e-12)
+    assert max(trace["i"] + trace["j"] + trace["k"]) == len(V) - 1

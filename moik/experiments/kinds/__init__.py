@@ -1,8 +1,9 @@
 """The experiment kinds: IK problems on robot arms, and benchmark functions.
 
 A kind is a module with ``PROBLEM_KINDS`` (the ``problem.kind`` values it
-takes), ``check_config(where, cfg)`` (validates its part of a config by
-building it; returns the problem dict and the targets) and
+takes), ``check_config(where, cfg, folder)`` (validates its part of a config by
+building it, relative paths read from ``folder``; returns the problem dict and the
+targets, and may put a key's checked form back into ``cfg``) and
 ``run_trial(spec, record, arrays)``; optionally ``MULTI_OBJECTIVE`` (those of
 its problem kinds that take multi-objective algorithms) and ``BASELINES``
 (algorithm names it runs itself, beside the registry's, each with the keywords
@@ -10,7 +11,8 @@ it takes). The kind of an experiment is chosen once,
 from its ``problem.kind``, when the config is validated
 (:func:`kind_of`); its name travels in every :class:`~moik.experiments.spec.TrialSpec`.
 
-- ``"ik"`` (:mod:`moik.experiments.kinds.ik`): ``position``, ``pose``, ``bi-objective``;
+- ``"ik"`` (:mod:`moik.experiments.kinds.ik`): ``position``, ``pose``, ``bi-objective``
+  (the robot: :mod:`moik.experiments.kinds.ik_robot`);
 - ``"functions"`` (:mod:`moik.experiments.kinds.functions`): ``benchmark``;
 - ``"moo-functions"`` (:mod:`moik.experiments.kinds.moo_functions`): ``moo-benchmark``
   (ZDT/DTLZ problems with analytic fronts, and the ``random-search`` baseline).

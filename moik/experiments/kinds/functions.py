@@ -32,6 +32,7 @@ import inspect
 import time
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -85,7 +86,8 @@ def _entry(where: str, raw: Any, common: Mapping) -> dict:
     return {"name": name, "label": label, "params": params}
 
 
-def check_config(where: str, cfg: Mapping) -> tuple[dict, tuple[BenchmarkTarget, ...]]:
+def check_config(where: str, cfg: Mapping, folder: Path
+                 ) -> tuple[dict, tuple[BenchmarkTarget, ...]]:
     """Validate a benchmark experiment's ``problem`` (and absence of robot/targets).
 
     Returns:

@@ -1,8 +1,9 @@
-"""IK experiments: inverse kinematics of a catalog robot at a set of targets.
+"""IK experiments: inverse kinematics of a catalog or URDF robot at a set of targets.
 
 Config keys (see :mod:`moik.experiments.config` for the others):
 
-- ``robot``: catalog name;
+- ``robot``: catalog name, or a URDF arm ``{urdf = "FILE", package_dirs = [...],
+  base_link = "...", tip_link = "..."}`` (:mod:`moik.experiments.kinds.ik_robot`);
 - ``problem``: ``{"kind": "position" | "pose" | "bi-objective", "orientation":
   metric, "weights": [w1, w2], "displacement_weight": w, "q_start_deg": [...],
   "locked_joints_deg": [...], "joint_limits_deg": [[lo, hi], ...]}``; the kinds map
@@ -19,8 +20,9 @@ uses the named metric ``"zyx-euler-free-gamma"`` of :mod:`moik.kinematics.orient
 ``locked_joints_deg`` (one entry per joint, ``"free"`` (or ``None``) for a free joint) fixes
 joints with :meth:`~moik.robots.Robot.with_locked_joints` (I-BES Table 9 solves
 the Puma 560 position with joints 4-6 at 0); a fixed target point may name its
-own ``robot`` (I-BES Table 8: one target per arm), else the experiment's is used.
-``joint_limits_deg`` (one ``[lower, upper]`` pair per joint) replaces the catalog
+own ``robot`` (a catalog name; I-BES Table 8: one target per arm), else the experiment's
+is used.
+``joint_limits_deg`` (one ``[lower, upper]`` pair per joint) replaces the
 arm's limits before any joint is locked (MO-m-PSO Section 4.4 run with and without
 Table 1's servo ranges). Random targets take FK poses of random joint vectors
 (``"orientation": "reachable"``, the default) or FK positions with rotations drawn
@@ -43,9 +45,10 @@ start configuration) for single-objective problems; the compromise's errors,
 
 from __future__ import annotations
 
-import dataclasses
+import json
 import time
 from collections.abc import Mapping
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -56,35 +59,20 @@ from moik.exceptions import ConfigError, MoikError
 from moik.experiments.checks import check_keys, number, numbers
 from moik.experiments.convergence import algorithm_factory, convergence_curve
 from moik.experiments.kinds.ik_collision import COLLISION_KEYS, feasibility, with_collision
+from moik.experiments.kinds.ik_robot import arm, check_robot, experiment_robot, locked, resolve
 from moik.experiments.kinds.ik_targets import NamedTarget, build_targets
 from moik.experiments.protocol import solve_until_success
 from moik.experiments.spec import TrialSpec
 from moik.kinematics.orientation import orientation_metric
 from moik.metrics import closest_to_utopia, hypervolume
 from moik.problems import BiObjectiveIK, PoseIK, PositionIK
-from moik.robots import Robot, get_robot
+from moik.robots import Robot
 
 PROBLEM_KINDS = ("position", "pose", "bi-objective")
 MULTI_OBJECTIVE = ("bi-objective",)
 """The problem kinds of this module whose algorithms are multi-objective."""
 _PROBLEM_KEYS = {"kind", "orientation", "weights", "displacement_weight", "q_start_deg",
                  "locked_joints_deg", "joint_limits_deg", *COLLISION_KEYS}
-def experiment_robot(name: str, problem: Mapping) -> Robot:
-    """The catalog robot ``name`` with the problem's ``locked_joints_deg`` applied."""
-    return _locked(get_robot(name), problem)
-
-
-def _locked(robot: Robot, problem: Mapping) -> Robot:
-    limits = problem.get("joint_limits_deg")
-    if limits:
-        lower, upper = np.radians(np.asarray(limits, dtype=float)).T
-        robot = dataclasses.replace(robot, name=f"{robot.name}[limits]", lower=lower, upper=upper,
-                                    source=f"{robot.source}; limits {limits} deg")
-    locked = problem.get("locked_joints_deg")
-    if locked:
-        robot = robot.with_locked_joints({i: float(np.radians(v)) for i, v in enumerate(locked)
-                                          if v is not None})
-    return robot
 
 
 def build_problem(robot: Robot, problem: Mapping, target: NamedTarget):
@@ -103,8 +91,12 @@ def build_problem(robot: Robot, problem: Mapping, target: NamedTarget):
     return with_collision(ik, problem)
 
 
-def check_config(where: str, cfg: Mapping) -> tuple[dict, tuple[NamedTarget, ...]]:
+def check_config(where: str, cfg: dict, folder: Path) -> tuple[dict, tuple[NamedTarget, ...]]:
     """Validate an IK experiment's robot, problem and targets by building them.
+
+    ``cfg["robot"]`` is replaced by its checked form (a URDF robot gains its ``sha256``:
+    :func:`~moik.experiments.kinds.ik_robot.check_robot`; its paths are read from
+    ``folder``).
 
     Returns:
         The problem dict (``orientation`` defaulted to ``"geodesic"``) and the targets.
@@ -119,17 +111,22 @@ def check_config(where: str, cfg: Mapping) -> tuple[dict, tuple[NamedTarget, ...
     if isinstance(problem.get("locked_joints_deg"), list):  # TOML has no null: "free"
         problem["locked_joints_deg"] = [None if v == "free" else v
                                         for v in problem["locked_joints_deg"]]
-    robots: dict[str, Robot] = {}  # name -> the arm with the locked joints, built once
+    cfg["robot"] = check_robot(f"{where}: robot", cfg["robot"], folder)
+    robots: dict[str, Robot] = {}  # the robot value -> the arm with the locked joints, built once
 
-    def robot_of(name: Any, key: str) -> Robot:
-        try:
-            arm = get_robot(name)
-        except MoikError as exc:
-            raise ConfigError(f"{key}: {exc}") from None
+    def robot_of(value: Any, key: str) -> Robot:
+        if isinstance(value, Mapping) and value is not cfg["robot"]:
+            raise ConfigError(f"{key} must be a catalog robot's name (a URDF arm is the "
+                              f"experiment's robot), got a table")
+        name = json.dumps(value, sort_keys=True)
         if name not in robots:
-            _check_locked_joints(f"{where}: problem", problem, arm.dof)
             try:
-                robots[name] = _locked(arm, problem)
+                loaded = arm(resolve(value, folder))
+            except MoikError as exc:
+                raise ConfigError(f"{key}: {exc}") from None
+            _check_locked_joints(f"{where}: problem", problem, loaded.dof)
+            try:
+                robots[name] = locked(loaded, problem)
             except MoikError as exc:
                 key = "locked_joints_deg" if "locked_joints_deg" in problem else "joint_limits_deg"
                 raise ConfigError(f"{where}: problem.{key}: {exc}") from None
@@ -141,7 +138,7 @@ def check_config(where: str, cfg: Mapping) -> tuple[dict, tuple[NamedTarget, ...
     targets = build_targets(f"{where}: targets", cfg["targets"], problem, robot, robot_of)
     for t in targets:
         try:
-            build_problem(robots[t.robot or cfg["robot"]], problem, t)
+            build_problem(robot_of(t.robot or cfg["robot"], f"{where}: robot"), problem, t)
         except MoikError as exc:
             raise ConfigError(f"{where}: problem (at target {t.name!r}): {exc}") from None
     return problem, tuple(targets)

@@ -7,10 +7,15 @@
 - ``collision_groups``: ``"min"`` (one aggregate constraint) or ``"links"`` (one per body).
 
 With a ``scene`` (or ``self_collision`` true and no scene) the problem is wrapped in
-:class:`~moik.problems.collision_ik.CollisionIK` with the arm's shipped capsule model; a
-multi-objective trial then records ``n_feasible`` (returned members whose recomputed
-minimum distance is >= the clearance) and ``min_distance`` (the smallest over the
-returned members), and its HV counts the feasible members only.
+:class:`~moik.problems.collision_ik.CollisionIK` with the geometry ``solve_ik`` checks by
+default (:func:`moik.solver.collision.default_model`: the ``<collision>`` geometry of the
+URDF the arm was loaded from, its meshes as compounds, for a URDF robot of the config
+and the catalog's panda, ur5 and iiwa14; the shipped capsule model of another catalog
+arm), so an experiment's "collision-free" means what a solve's does. A check with no
+pair to evaluate is refused, as the solver refuses it. A multi-objective trial then
+records ``n_feasible`` (returned members whose recomputed minimum distance is >= the
+clearance) and ``min_distance`` (the smallest over the returned members), and its HV
+counts the feasible members only.
 """
 
 from __future__ import annotations
@@ -19,22 +24,46 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from moik.collision.catalog import collision_model
 from moik.collision.io import load_scene
 from moik.collision.model import CollisionChecker
+from moik.exceptions import GeometryError
 from moik.problems.collision_ik import CollisionIK
+from moik.robots import Robot
+from moik.solver.collision import default_model
 
 COLLISION_KEYS = ("scene", "clearance", "self_collision", "collision_groups")
 
 
+def is_checked(problem: Mapping) -> bool:
+    """Whether ``problem`` (the config dict) asks for a collision check."""
+    return "scene" in problem or bool(problem.get("self_collision", False))
+
+
+def checker_of(robot: Robot, problem: Mapping) -> CollisionChecker:
+    """The checker of ``problem``'s collision keys on ``robot``, with the geometry a solve
+    checks by default (:func:`~moik.solver.collision.default_model`).
+
+    Raises:
+        GeometryError: Nothing to check (no robot shape, or every pair allowed).
+    """
+    scene = load_scene(problem["scene"]) if "scene" in problem else None
+    model = default_model(robot)
+    checker = CollisionChecker(model=model, scene=scene,
+                               self_collision=problem.get("self_collision", False))
+    if checker.n_pairs == 0:
+        raise GeometryError(f"nothing to check: the collision geometry of {robot.name!r} "
+                            f"({model.source or 'no source'}) gives no pair to evaluate with "
+                            "this scene and self_collision; a collision-free answer would "
+                            "mean nothing")
+    return checker
+
+
 def with_collision(ik, problem: Mapping):
     """``ik`` wrapped with the collision constraints of ``problem``, or ``ik`` itself."""
-    if "scene" not in problem and not problem.get("self_collision", False):
+    if not is_checked(problem):
         return ik
-    scene = load_scene(problem["scene"]) if "scene" in problem else None
-    checker = CollisionChecker(model=collision_model(ik.robot), scene=scene,
-                               self_collision=problem.get("self_collision", False))
-    return CollisionIK(ik, checker=checker, clearance=problem.get("clearance", 0.0),
+    return CollisionIK(ik, checker=checker_of(ik.robot, problem),
+                       clearance=problem.get("clearance", 0.0),
                        groups=problem.get("collision_groups", "min"))
 
 

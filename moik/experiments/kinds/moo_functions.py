@@ -49,6 +49,7 @@ from __future__ import annotations
 import time
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -171,7 +172,8 @@ def _entry(where: str, raw: Any) -> dict:
     return {"name": name, "label": label, "params": params}
 
 
-def check_config(where: str, cfg: Mapping) -> tuple[dict, tuple[MooTarget, ...]]:
+def check_config(where: str, cfg: Mapping, folder: Path
+                 ) -> tuple[dict, tuple[MooTarget, ...]]:
     """Validate a multi-objective benchmark experiment's ``problem``.
 
     Returns:

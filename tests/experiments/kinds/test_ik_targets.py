@@ -1,5 +1,7 @@
 """Targets of IK experiments (moik.experiments.kinds.ik_targets), through the config."""
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -35,9 +37,10 @@ def test_random_targets_are_reachable_positions(tiny_config):
 def test_independent_random_orientations_keep_the_reachable_positions():
     base = {"robot": "rokbani5", "problem": {"kind": "bi-objective"},
             "targets": {"kind": "random", "n": 4, "seed": 3}}
-    _, reachable = check_config("x", base)
+    _, reachable = check_config("x", dict(base), Path())
     _, independent = check_config("x", {**base, "targets": {**base["targets"],
-                                                           "orientation": "independent"}})
+                                                           "orientation": "independent"}},
+                                 Path())
     arm = get_robot("rokbani5")
     for r, i in zip(reachable, independent, strict=True):
         np.testing.assert_array_equal(r.position, i.position)
@@ -46,4 +49,4 @@ def test_independent_random_orientations_keep_the_reachable_positions():
         assert not np.allclose(r.rotation, i.rotation)
         np.testing.assert_allclose(i.rotation @ i.rotation.T, np.eye(3), atol=1e-12)
     with pytest.raises(ConfigError, match="orientation must be one of reachable, independent"):
-        check_config("x", {**base, "targets": {**base["targets"], "orientation": "fk"}})
+        check_config("x", {**base, "targets": {**base["targets"], "orientation": "fk"}}, Path())

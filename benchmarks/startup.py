@@ -26,7 +26,8 @@ the process compiles every kernel itself), and prints the ratios of the pairs: w
 background compiles save.
 
 ``--first-runs`` times only what a newcomer runs first (:data:`FIRST_RUNS`: the README's
-main job, a first ``--pareto`` and collision-aware solve, ``moik compile``), each with an
+main job, a first ``--pareto`` solve, a first plain and a first collision-aware solve
+of panda and their ratio, ``moik compile``), each with an
 empty kernel cache; its table (docs/results/first-runs.txt) is the one the README's
 first-run times are generated from (``python tests/docs_blocks.py --update README.md``).
 
@@ -73,10 +74,15 @@ FIRST_RUNS = {  # what a newcomer runs first, each with an empty kernel cache (-
         ["solve", "eosma7", "--target", "-24.748737", "100.961941", "50", "--euler", "135",
          "0", "-90", "--deg", "--n-solutions", "3"],
     "a first --pareto solve (moik solve iiwa14 ... --pareto)": COLD["first solve --pareto"][0],
+    "a first plain solve of the same arm (moik solve panda ...)":
+        ["solve", "panda", "--target", "0.4", "0.2", "0.5"],
     "a first collision-aware solve (moik solve panda ... --self-collision)":
         ["solve", "panda", "--target", "0.4", "0.2", "0.5", "--self-collision"],
     "moik compile (every kernel, once)": ["compile"],
 }
+
+SAME_ARM = tuple(what for what in FIRST_RUNS if "moik solve panda" in what)
+"""The first plain and collision-aware solves of one arm (issue 39: aware <= 1.5 x plain)."""
 
 # the cold times of commit 62ac347 on the machine that set the goals (the issue that set
 # them measured its first --pareto solve there: 20.3 s); with --baseline 62ac347 the ratio
@@ -149,6 +155,9 @@ def first_runs(n: int) -> None:
         walls, cpus = np.array(samples[what]).T
         print(f"{what}: median {np.median(walls):.1f} s wall ({walls.min():.1f}-"
               f"{walls.max():.1f}), {np.median(cpus):.1f} s CPU")
+    plain, aware = (np.median(np.array(samples[what])[:, 0]) for what in SAME_ARM)
+    print(f"collision-aware / plain first solve of panda (medians of wall): {aware / plain:.2f} "
+          "(goal <= 1.5)")
 
 
 def checkout(rev: str, into: str) -> str:

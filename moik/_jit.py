@@ -148,6 +148,8 @@ def jit(func: Callable | None = None, *, inline: bool = False, nogil: bool = Fal
     if nogil:
         options["nogil"] = True
     dispatcher = numba.njit(cache=False, **options)(func)
+    if hasattr(dispatcher, "get_call_template"):  # not a plain function (NUMBA_DISABLE_JIT)
+        dispatcher.get_call_template = _plain_call_template(dispatcher.get_call_template)
     try:
         # what cache=True does, with our key (numba's types omit the private _cache)
         dispatcher._cache = KernelCache(func)
@@ -155,6 +157,29 @@ def jit(func: Callable | None = None, *, inline: bool = False, nogil: bool = Fal
         if "no locator available" not in str(exc):
             raise
     return dispatcher
+
+
+def _plain_call_template(resolve: Callable) -> Callable:
+    """A kernel's ``get_call_template`` (how numba types a call of it from compiled code)
+    that compiles it for the argument types without their literal values.
+
+    numba types a constant argument as a literal (``Literal[int](0)``) and compiles the
+    callee once per literal value, and once for a value a caller's type inference saw only
+    in passing (a variable set to ``-1`` before a loop sets it): every such version is a
+    module of its own, linked and optimised again into each caller (seconds of a first
+    run; no kernel of moik needs a literal argument). The results are the same: LLVM
+    inlines the constant into the callee's code where it pays. Where the plain types do
+    not type (a callee that needs the literal), numba's own resolution is used.
+    """
+    def get_call_template(args: Sequence[Any], kws: dict[str, Any]) -> Any:
+        plain = tuple(nb_types.unliteral(a) for a in args)
+        plain_kws = {k: nb_types.unliteral(v) for k, v in kws.items()}
+        if plain != tuple(args) or plain_kws != kws:
+            with contextlib.suppress(numba.core.errors.TypingError):
+                return resolve(plain, plain_kws)
+        return resolve(args, kws)
+
+    return get_call_template
 
 
 def is_cached(dispatcher: Any) -> bool:

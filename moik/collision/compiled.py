@@ -118,13 +118,13 @@ def _checks_pairs(cs):
     return lambda cs: cs.pairs.shape[0] > 0
 
 
-@jit
+@jit(inline=True)
 def set_scratch(cs):
     """Scratch of :func:`set_distance_below` for ``cs``."""
     return distance_scratch(cs)
 
 
-@jit
+@jit(inline=True)
 def set_distance_below(cs, q, scratch, limit):
     """:func:`~moik.collision.kernels.distance_below` of ``q``: the distance (``inf``: no
     pair)."""

@@ -31,6 +31,16 @@ from moik.robots.fk_kernels import compose, move_joint, pose_state, store_pose
 from moik.robots.transforms import PRISMATIC
 
 
+@jit(inline=True)
+def _copy_pose(T, out, k):
+    """``out[k] = T`` for a ``(4, 4)`` pose, element by element: an array assignment would
+    compile numba's shape-mismatch error message (string formatting, seconds of a first
+    run) into every kernel that places shapes."""
+    for r in range(4):
+        for c in range(4):
+            out[k, r, c] = T[r, c]
+
+
 @jit
 def world_frames(chain, q, frames, axes):
     """Frames ``(dof + 1, 4, 4)`` (frame 0 = the base) and joint axes ``(dof, 6)`` of ``q``
@@ -39,7 +49,7 @@ def world_frames(chain, q, frames, axes):
     ``axes[j] = (o_j, z_j)``: the point and direction of joint ``j + 1``'s axis.
     """
     F, P, types = chain.origins, chain.link_frames, chain.joint_types
-    frames[0] = chain.base
+    _copy_pose(chain.base, frames, 0)
     t = pose_state(F[0])
     for j in range(types.size):
         axes[j, 0], axes[j, 1], axes[j, 2] = t[9], t[10], t[11]
@@ -54,7 +64,7 @@ def place_shapes(frames, body, local, W):
     """World poses ``W (m, 4, 4)`` of shapes on bodies (``body < 0``: already in the world)."""
     for k in range(body.size):
         if body[k] < 0:
-            W[k] = local[k]
+            _copy_pose(local[k], W, k)
             continue
         A, L = frames[body[k]], local[k]
         for r in range(3):
@@ -200,7 +210,7 @@ def distances_below(cs, Q, limit, out):
         out[i] = distance_below(cs, Q[i], scratch, limit)[0]
 
 
-@jit
+@jit(inline=True)
 def min_distance_of(cs, q, scratch):
     """Smallest pair distance of one joint vector and the pair attaining it (``inf``, -1:
     no pair); ``scratch`` from :func:`distance_scratch`."""

@@ -264,3 +264,19 @@ def known_keys(where: str, given: Mapping[Any, Any], accepted: Iterable[str], *,
     message = unknown_keys_message(where, given, accepted)
     if message is not None:
         raise error(message)
+
+
+def named_numbers(where: str, given: object, limits: Mapping[str, tuple[float, float]], *,
+                  error: type[MoikError] = ParameterError) -> dict[str, float]:
+    """``given`` (a mapping name -> number) as ``{name: float}``, each name one of
+    ``limits`` and each value a finite number within its ``(lower, upper)``.
+
+    Raises:
+        error: ``given`` is not a mapping, a name is not in ``limits`` (listing them), a
+            value is not a finite number in its interval (naming it and the interval).
+    """
+    if not isinstance(given, Mapping):
+        raise error(f"{where} must be a mapping {{name: value}}, got {_short(given)}")
+    known_keys(where, given, limits, error=error)
+    return {name: interval(f"{where}[{name!r}]", value, *limits[name], error=error)
+            for name, value in given.items()}

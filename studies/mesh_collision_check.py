@@ -1,9 +1,10 @@
 """Soundness and tightness of the collision models against coal on the URDFs' own meshes.
 
-For each arm (the shipped panda, ur5, iiwa14 URDFs with the collision meshes moik ships
-in ``moik/robots/data/packages``; UR10 and KUKA KR16-2, which moik does not ship, from
-``tests/data/urdf``), ``N`` random configurations within the limits (seed 1: not the
-samples the allowed-collision matrix was drawn from) are checked for self-collision:
+For each arm (the shipped panda, also with its fingers open, ur5, iiwa14 URDFs with the
+collision meshes moik ships in ``moik/robots/data/packages``; UR10 and KUKA KR16-2,
+which moik does not ship, from ``tests/data/urdf``), ``N`` random configurations within
+the limits (seed 1: not the samples the allowed-collision matrix was drawn from) are
+checked for self-collision:
 
 * moik: the model's smallest signed distance over its checked pairs, free when >= 0: the
   mesh-true model :func:`moik.collision.urdf.model_from_urdf` (each link's meshes a
@@ -11,9 +12,14 @@ samples the allowed-collision matrix was drawn from) are checked for self-collis
   hulls where the capsules come close, compiled GJK; with its sampled allowed-collision
   matrix), the same model with its capsules alone (the bounds, no hulls), and for the
   catalog arms the shipped capsule model, ``moik/collision/data``;
-* coal: ``coal.collide`` of the meshes of every pair of bodies that are not chain
-  neighbours, *whether or not the allowed-collision matrix checks the pair* (a pair it
-  never checks must never touch), touching when any pair collides.
+* coal: ``coal.collide`` of the collision geometry (meshes and primitives) of every pair
+  of links on bodies that are not chain neighbours, *whether or not the allowed-collision
+  matrix checks the pair* (a pair it never checks must never touch), touching when any
+  pair collides. The links are placed by :mod:`studies.urdf_oracle`, not by moik: its
+  own URDF forward kinematics, the links behind off-chain joints (panda's fingers)
+  included at the same joint values as the model (their zero clipped into their limits,
+  or the values given: the "fingers open" row passes ``panda_finger_joint1 = 0.04`` to
+  both). It also counts configurations where such a link touches the neighbouring body.
 
 Printed per arm and model: configurations called free where the meshes touch (must be
 0), and the percentage of mesh-free configurations the model rejects (its
@@ -36,58 +42,32 @@ import numpy as np
 
 from moik import get_robot, load_urdf, solve_ik
 from moik.collision import CollisionChecker, collision_model
-from moik.collision.meshes import read_mesh, resolve_mesh
 from moik.collision.model import CollisionModel
 from moik.collision.shapes import Compound
 from moik.collision.urdf import robot_model
-from moik.robots.urdf_geometry import mesh_geometry
+from studies.urdf_oracle import URDFOracle
 
 ROOT = Path(__file__).resolve().parents[1]
 CHECK_SEED = 1  # not moik.collision.urdf.ACM_SEED (0): the matrix is checked on other samples
 SOLVE_SEED = 2
 PACKAGES = [ROOT / "moik" / "robots" / "data" / "packages", ROOT / "tests" / "data" / "urdf"
             / "packages"]
-ARMS = {  # name: (URDF, tip link, catalog name or None)
-    "panda": (ROOT / "moik/robots/data/panda.urdf", "panda_hand_tcp", "panda"),
-    "ur5": (ROOT / "moik/robots/data/ur5_robot.urdf", "tool0", "ur5"),
-    "iiwa14": (ROOT / "moik/robots/data/lbr_iiwa_14_r820.urdf", "tool0", "iiwa14"),
-    "ur10": (ROOT / "tests/data/urdf/ur10_robot.urdf", "tool0", None),
-    "kr16": (ROOT / "tests/data/urdf/kr16_2.urdf", "tool0", None),
+PANDA = ROOT / "moik/robots/data/panda.urdf"
+ARMS = {  # name: (URDF, tip link, catalog name or None, off-chain joint values or None)
+    "panda": (PANDA, "panda_hand_tcp", "panda", None),
+    "panda, fingers open": (PANDA, "panda_hand_tcp", None, {"panda_finger_joint1": 0.04}),
+    "ur5": (ROOT / "moik/robots/data/ur5_robot.urdf", "tool0", "ur5", None),
+    "iiwa14": (ROOT / "moik/robots/data/lbr_iiwa_14_r820.urdf", "tool0", "iiwa14", None),
+    "ur10": (ROOT / "tests/data/urdf/ur10_robot.urdf", "tool0", None, None),
+    "kr16": (ROOT / "tests/data/urdf/kr16_2.urdf", "tool0", None, None),
 }
 
 
-def body_meshes(urdf: Path, robot) -> dict[int, list]:
-    """coal BVH models of each body's collision meshes, in the body's frame."""
-    _, items = mesh_geometry(urdf, robot, "collision")
-    out: dict[int, list] = {}
-    for item in items:
-        path = resolve_mesh(item["filename"], link=item["link"], urdf_dir=urdf.parent,
-                            package_dirs=PACKAGES)
-        mesh = read_mesh(path, link=item["link"], scale=item["scale"])
-        P = mesh.vertices @ item["pose"][:3, :3].T + item["pose"][:3, 3]
-        bvh = coal.BVHModelOBBRSS()
-        bvh.beginModel(len(mesh.faces), len(P))
-        bvh.addVertices(np.ascontiguousarray(P))
-        bvh.addTriangles(np.ascontiguousarray(mesh.faces, dtype=np.int64))
-        bvh.endModel()
-        out.setdefault(item["body"], []).append(bvh)
-    return out
-
-
-def meshes_touch(robot, meshes: dict[int, list], Q: np.ndarray) -> np.ndarray:
-    """Per row of ``Q``: whether the meshes of two non-neighbouring bodies collide."""
-    bodies = sorted(meshes)
-    pairs = [(i, j) for i in bodies for j in bodies if j > i + 1]
-    req, out = coal.CollisionRequest(), np.zeros(len(Q), dtype=bool)
-    for k, q in enumerate(Q):
-        F = robot.frames(q)
-        tf = {b: coal.Transform3s(F[b][:3, :3], F[b][:3, 3]) for b in bodies}
-        for i, j in pairs:
-            if any(coal.collide(a, tf[i], b, tf[j], req, coal.CollisionResult())
-                   for a in meshes[i] for b in meshes[j]):
-                out[k] = True
-                break
-    return out
+def oracle(name: str, robot) -> URDFOracle:
+    """coal on the arm's own collision geometry (meshes and primitives, the links behind
+    off-chain joints included), placed by :mod:`studies.urdf_oracle`, not by moik."""
+    urdf, _, _, values = ARMS[name]
+    return URDFOracle(urdf, robot.joint_names, PACKAGES, joint_values=values)
 
 
 def bounds_only(model: CollisionModel) -> CollisionModel:
@@ -143,20 +123,24 @@ def report(n: int) -> None:
     print("| arm: model | shapes | checked body pairs | allowed pairs | called free where the "
           "meshes touch | mesh-free configurations rejected | us per configuration |")
     print("|---|---|---|---|---|---|---|")
-    for name, (urdf, tip, catalog) in ARMS.items():
+    for name, (urdf, tip, catalog, values) in ARMS.items():
         robot = load_urdf(urdf, tip_link=tip, package_dirs=PACKAGES)
         t0 = time.perf_counter()
-        model = robot_model(robot)
+        model = robot_model(robot, joint_values=values)
         built = time.perf_counter() - t0
         Q = robot.random_q(n, rng=np.random.default_rng(CHECK_SEED))
-        touch = meshes_touch(robot, body_meshes(urdf, robot), Q)
+        truth = oracle(name, robot)
+        touch = truth.touching(Q)
+        beside = (f"; links behind off-chain joints ({', '.join(truth.values)}) touch the "
+                  f"neighbouring body in {int(truth.offchain_touch_neighbour(Q).sum())} "
+                  "(a pair no body-level model checks)" if truth.values else "")
         print(row(f"{name}: fitted capsules alone", bounds_only(model), Q, touch))
         print(row(f"{name}: capsules, then the hulls where they come close", model, Q, touch))
         if catalog is not None:
             shipped = collision_model(get_robot(catalog))
             print(row(f"{name}: shipped capsule model", shipped, Q, touch))
         print(f"| {name}: meshes touch in {100 * touch.mean():.1f} % of the configurations; "
-              f"model built in {built:.1f} s | | | | | | |")
+              f"model built in {built:.1f} s{beside} | | | | | | |")
 
 
 def solves(n: int) -> None:
@@ -167,18 +151,19 @@ def solves(n: int) -> None:
           f"configurations (seed {SOLVE_SEED}); the URDF model\n")
     print("| arm | solved | collides | other | answers whose meshes touch (coal) |")
     print("|---|---|---|---|---|")
-    for name, (urdf, tip, _) in ARMS.items():
+    for name, (urdf, tip, _, values) in ARMS.items():
         robot = load_urdf(urdf, tip_link=tip, package_dirs=PACKAGES)
-        meshes = body_meshes(urdf, robot)
+        truth = oracle(name, robot)
+        model = robot_model(robot, joint_values=values)
         Q = robot.random_q(4 * n, rng=np.random.default_rng(SOLVE_SEED))
-        Q = Q[~meshes_touch(robot, meshes, Q)][:n]
+        Q = Q[~truth.touching(Q)][:n]
         status: dict[str, int] = {}
         answers = []
         for q in Q:
-            res = solve_ik(robot, robot.fk(q), self_collision=True, seed=0)
+            res = solve_ik(robot, robot.fk(q), self_collision=True, collision=model, seed=0)
             status[res.status] = status.get(res.status, 0) + 1
             answers += list(res.solutions)
-        touching = int(meshes_touch(robot, meshes, np.array(answers)).sum()) if answers else 0
+        touching = int(truth.touching(np.array(answers)).sum()) if answers else 0
         other = len(Q) - status.get("solved", 0) - status.get("collides", 0)
         print(f"| {name} | {status.get('solved', 0)} of {len(Q)} | {status.get('collides', 0)} "
               f"| {other} | {touching} of {len(answers)} |")

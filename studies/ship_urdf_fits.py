@@ -2,7 +2,8 @@
 ``moik/collision/data/urdf`` (read before the user's cache by
 :func:`moik.collision.mesh_fit.load_cached`), so that a first collision-aware solve of
 ``load_urdf(<shipped URDF>, package_dirs=<shipped packages>)`` or of a catalog arm's
-``robot_model`` neither fits nor samples (nor compiles the exact stage to sample).
+``robot_model`` neither fits nor samples (nor compiles the exact stage to sample); the
+panda with its fingers open (``joint_values={"panda_finger_joint1": 0.04}``) too.
 
 The files are named by the digest of what they depend on (mesh bytes, poses, settings),
 so a change of any input is simply not found there and computed as for any URDF.
@@ -29,6 +30,8 @@ def main() -> None:
         mesh_fit.SHIPPED = Path(tmp, "none")  # nothing read from the shipped folder: all anew
         for name in ("panda", "ur5", "iiwa14"):
             robot_model(get_robot(name))
+        # the panda's fingers open as well as closed (their default): its two placements
+        robot_model(get_robot("panda"), joint_values={"panda_finger_joint1": 0.04})
         out.mkdir(parents=True, exist_ok=True)
         for old in out.glob("*.json"):
             old.unlink()

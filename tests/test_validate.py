@@ -119,3 +119,15 @@ def test_real_array_normalises_without_checking_finiteness():
     frozen = np.zeros(2)
     frozen.flags.writeable = False
     assert v.real_array("q", frozen).flags.writeable  # a copy
+
+
+def test_named_numbers_checks_names_and_each_interval():
+    limits = {"a": (0.0, 1.0), "b": (-np.inf, np.inf)}
+    assert v.named_numbers("vals", {"a": 1, "b": -5.5}, limits) == {"a": 1.0, "b": -5.5}
+    for bad, what in [({"c": 0.0}, r"unknown key\(s\) c; expected some of: a, b"),
+                      ({"a": 1.5}, r"vals\['a'\] must be a number in \[0.0, 1.0\], got 1.5"),
+                      ({"b": np.nan}, r"vals\['b'\] must be a number"),
+                      ({"a": True}, r"vals\['a'\] must be a number"),
+                      ([1.0], "vals must be a mapping")]:
+        with pytest.raises(ConfigError, match=what):
+            v.named_numbers("vals", bad, limits, error=ConfigError)

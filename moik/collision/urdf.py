@@ -1,5 +1,11 @@
 """A :class:`CollisionModel` from a URDF's ``<collision>`` geometry: primitives and meshes.
 
+The geometry of every link below the chain's base is used: links behind movable joints
+outside the chain (a gripper's fingers) ride on the body of the chain link they hang
+from, at the joint values the caller gives or their zero clipped into their limits
+(``joint_values=``, :mod:`moik.robots.urdf_joints`; the model's ``source`` says where
+each was placed, and the caches below are keyed by those values too).
+
 Boxes, spheres and capsules are taken as they are; cylinders become their enclosing
 capsules (:func:`moik.collision.shapes.cylinder`); meshes (``package://``, ``file://`` or
 file paths, :mod:`moik.collision.meshes`) are read and each link's become one
@@ -41,7 +47,7 @@ from moik.collision.model import CollisionChecker, CollisionModel
 from moik.collision.shapes import Box, Capsule, Compound, ConvexHull, Shape, Sphere, cylinder
 from moik.exceptions import GeometryError
 from moik.robots.chain import Robot
-from moik.robots.urdf_geometry import collision_geometry, mesh_geometry
+from moik.robots.urdf_geometry import collision_geometry, mesh_geometry, offchain_placement
 
 MISSING = ("error", "ignore")
 ACM_SEED = 0
@@ -78,16 +84,18 @@ def hull_pieces(vertices: np.ndarray, faces: np.ndarray, pieces: int) -> list[np
 
 
 def mesh_shapes(source: Any, robot: Robot, *, package_dirs: Any = None,
-                use_cache: bool = True) -> dict[str, Compound]:
+                use_cache: bool = True, joint_values: Any = None) -> dict[str, Compound]:
     """Every URDF link with ``<collision>`` meshes as a :class:`Compound` in the frame of the
     body the link is on: a capsule fitted to its triangles holding the hulls of
-    :data:`HULL_PIECES` slabs of them, ``{link: Compound}``.
+    :data:`HULL_PIECES` slabs of them, ``{link: Compound}``. Links behind off-chain joints
+    are placed at ``joint_values`` (:mod:`moik.robots.urdf_joints`): their pose on the body
+    is part of the fit's cache key, so another placement is fitted anew.
 
     Raises:
         GeometryError: A mesh not found (the message says where it was looked for),
             unreadable, empty, non-finite, or of an absurd size.
     """
-    _, items = mesh_geometry(source, robot, "collision")
+    _, items = mesh_geometry(source, robot, "collision", joint_values=joint_values)
     folder = _urdf_dir(source)
     by_link: dict[str, list[dict[str, Any]]] = {}
     for item in items:
@@ -129,13 +137,15 @@ def sample_never(model: CollisionModel, samples: int) -> list[tuple[str, str]]:
     return [(model.links[i], model.links[j]) for (i, j), h in hit.items() if not h]
 
 
-def _cached_allowed(model: CollisionModel, samples: int, use_cache: bool) -> CollisionModel:
+def _cached_allowed(model: CollisionModel, samples: int, use_cache: bool,
+                    placement: dict[str, float]) -> CollisionModel:
     """The model with :func:`sample_never`'s pairs allowed, read from the disk cache
-    when there (keyed by the chain, the shapes, their hulls and the settings)."""
+    when there (keyed by the chain, the off-chain joints' values, the shapes, their hulls
+    and the settings)."""
     robot = model.robot
     chain = robot.kinematic_chain
     parts: list[Any] = [{"samples": samples, "seed": ACM_SEED, "links": list(model.links),
-                         "rule": "never, on the hulls"},
+                         "rule": "never, on the hulls"}, placement,
                         chain.origins, chain.joint_types.astype(float), robot.lower, robot.upper]
     for body, shape in model.items:
         parts += [body, type(shape).__name__, shape.pose, np.array(shape.sizes),
@@ -153,7 +163,7 @@ def _cached_allowed(model: CollisionModel, samples: int, use_cache: bool) -> Col
 
 def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
                     missing: str = "error", samples: int = DEFAULT_SAMPLES,
-                    use_cache: bool = True) -> CollisionModel:
+                    use_cache: bool = True, joint_values: Any = None) -> CollisionModel:
     """The URDF's collision geometry on ``robot``, with its sampled allowed-collision matrix.
 
     Args:
@@ -166,19 +176,31 @@ def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
         samples: Random configurations of the allowed-collision matrix (0: none
             sampled; only adjacent links are skipped).
         use_cache: Read and write the fits and the matrix in the disk cache.
+        joint_values: ``{joint: value}`` for movable joints outside ``robot``'s chain
+            (e.g. ``{"panda_finger_joint1": 0.04}``, fingers open): the links behind them
+            are on the body of the chain link they hang from, placed there; a joint not
+            given is at its zero clipped into its limits, a ``<mimic>`` joint follows its
+            leader (:mod:`moik.robots.urdf_joints`). The model's ``source`` says where
+            each was placed.
 
     Raises:
-        URDFError: The URDF is not ``robot``'s. GeometryError: A mesh that cannot be used
-            (see :func:`mesh_shapes`), a body without geometry (``missing="error"``).
+        ParameterError: ``joint_values`` names a joint that is not an off-chain joint of
+            the URDF, or a value that is not finite or outside the joint's limits.
+        URDFError: The URDF is not ``robot``'s; an off-chain joint that cannot be placed
+            (a mimic of a chain joint, a floating joint with links behind it).
+        GeometryError: A mesh that cannot be used (see :func:`mesh_shapes`), a body
+            without geometry (``missing="error"``).
     """
     missing = choice("missing", missing, MISSING)
     samples = integer("samples", samples, minimum=0)
-    names, items = collision_geometry(source, robot)
+    placement = offchain_placement(source, robot, joint_values)
+    names, items = collision_geometry(source, robot, joint_values=joint_values)
     shapes: dict[str, list[Shape]] = {}
     for item in items:
         if not item.get("skipped"):
             shapes.setdefault(names[item["body"]], []).append(_shape(item))
-    fitted = mesh_shapes(source, robot, package_dirs=package_dirs, use_cache=use_cache)
+    fitted = mesh_shapes(source, robot, package_dirs=package_dirs, use_cache=use_cache,
+                         joint_values=joint_values)
     body_of = {item["link"]: item["body"] for item in items}
     for link, compound in fitted.items():
         shapes.setdefault(names[body_of[link]], []).append(compound)
@@ -191,14 +213,21 @@ def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
                             "or pass missing='ignore' to leave them unchecked")
     source_text = (f"<collision> geometry of {label} (meshes: {HULL_PIECES} convex hulls per "
                    "link in a fitted enclosing capsule)")
+    if placement:
+        source_text += ("; off-chain joints placed at "
+                        + ", ".join(p.describe(n) for n, p in placement.items()))
     if bare:
         source_text += f"; bodies without geometry, NOT checked: {', '.join(bare)}"
     model = CollisionModel(robot=robot, shapes=shapes, links=tuple(names), source=source_text)
-    return _cached_allowed(model, samples, use_cache) if samples else model
+    values = {n: p.value for n, p in placement.items()}
+    return _cached_allowed(model, samples, use_cache, values) if samples else model
 
 
-def robot_model(robot: Robot, *, missing: str = "error") -> CollisionModel:
-    """:func:`model_from_urdf` of the URDF ``robot`` was loaded from (``robot.description``).
+def robot_model(robot: Robot, *, missing: str = "error", joint_values: Any = None
+                ) -> CollisionModel:
+    """:func:`model_from_urdf` of the URDF ``robot`` was loaded from (``robot.description``),
+    its off-chain joints at ``joint_values`` (as there; a solve's default model has them
+    at their defaults: pass ``collision=robot_model(robot, joint_values=...)`` for others).
 
     Raises:
         GeometryError: ``robot`` was not loaded from a URDF.
@@ -207,4 +236,5 @@ def robot_model(robot: Robot, *, missing: str = "error") -> CollisionModel:
     if desc is None:
         raise GeometryError(f"robot {robot.name!r} was not loaded from a URDF: it has no collision "
                             "geometry of its own; pass collision= a CollisionModel")
-    return model_from_urdf(desc.source, robot, package_dirs=desc.package_dirs, missing=missing)
+    return model_from_urdf(desc.source, robot, package_dirs=desc.package_dirs, missing=missing,
+                           joint_values=joint_values)

@@ -1,15 +1,17 @@
 """The ``<collision>`` primitives of a URDF, placed on the bodies of its loaded chain.
 
 Beside :func:`moik.robots.urdf.load_urdf` (reusing its parser, not changing it): for a
-robot loaded from a URDF, every link whose path from ``base_link`` passes only through
-fixed joints and the robot's own joints belongs to body ``b`` = the number of the
-robot's joints on that path (body ``b`` is frame ``b`` of :meth:`Robot.frames`). Each
-such link's ``<collision>`` elements with a primitive geometry (``box``, ``cylinder``,
-``sphere``, ``capsule``) are returned with their pose in that body's frame; meshes are
-marked ``skipped`` there. :func:`mesh_geometry` lists the mesh references themselves
-(file name, scale, pose on the body), which :mod:`moik.collision.urdf` reads and fits;
-nothing here reads a mesh. Plain data (dicts): the shapes are
-built by :mod:`moik.collision.urdf`.
+robot loaded from a URDF, every link below ``base_link`` belongs to body ``b`` = the
+number of the robot's joints on its path (body ``b`` is frame ``b`` of
+:meth:`Robot.frames`); a movable joint outside the chain on that path (a gripper's
+fingers) is placed at a stated value (:mod:`moik.robots.urdf_joints`), so the links
+behind it ride on the body of the chain link they hang from. Each such link's
+``<collision>`` elements with a primitive geometry (``box``, ``cylinder``, ``sphere``,
+``capsule``) are returned with their pose in that body's frame; meshes are marked
+``skipped`` there. :func:`mesh_geometry` lists the mesh references themselves (file
+name, scale, pose on the body), which :mod:`moik.collision.urdf` reads and fits;
+nothing here reads a mesh. Plain data (dicts): the shapes are built by
+:mod:`moik.collision.urdf`.
 """
 
 from __future__ import annotations
@@ -22,6 +24,7 @@ import numpy as np
 from moik.exceptions import URDFError
 from moik.robots.chain import Robot
 from moik.robots.urdf import _child, _floats, _link, _origin, _parse, _read
+from moik.robots.urdf_joints import JointPlacement, place_joints
 
 PRIMITIVES = ("box", "cylinder", "sphere", "capsule")
 
@@ -37,17 +40,33 @@ def _axis_rotation(axis: np.ndarray, q: float, prismatic: bool) -> np.ndarray:
     return T
 
 
-def link_placements(source: Any, robot: Robot, q: Any = None
+def link_placements(source: Any, robot: Robot, q: Any = None, joint_values: Any = None
                     ) -> tuple[list[str], dict[str, tuple[int, np.ndarray]]]:
     """Each URDF link on ``robot``'s bodies: ``{link: (body, pose in the body's frame)}``.
 
     Also returns the URDF name of each body (``dof + 1``: the base link, then each
     joint's child link). ``q`` is where the link poses are compared with the robot's
     frames (default: the middle of the limits; the result does not depend on it).
+    Links behind movable joints outside the chain are on the body of the chain link they
+    hang from, placed at ``joint_values`` (:mod:`moik.robots.urdf_joints`).
 
     Raises:
-        URDFError: the URDF does not contain the robot's joints.
+        URDFError: the URDF does not contain the robot's joints; an off-chain joint that
+            cannot be placed. ParameterError: bad ``joint_values``.
     """
+    body_names, placed, _ = _walk(source, robot, q, joint_values)
+    return body_names, placed
+
+
+def offchain_placement(source: Any, robot: Robot, joint_values: Any = None
+                       ) -> dict[str, JointPlacement]:
+    """The off-chain joints with links behind them on ``robot``'s bodies, and where each is
+    placed (:func:`moik.robots.urdf_joints.place_joints`), in the URDF's order."""
+    return _walk(source, robot, None, joint_values)[2]
+
+
+def _walk(source: Any, robot: Robot, q: Any, joint_values: Any
+          ) -> tuple[list[str], dict[str, tuple[int, np.ndarray]], dict[str, JointPlacement]]:
     root, label = _read(source)
     links, joints = _parse(root, label)
     names = list(robot.joint_names)
@@ -60,41 +79,57 @@ def link_placements(source: Any, robot: Robot, q: Any = None
     if base is None:
         childs = {_child(el) for el in joints.values()}
         base = sorted(links - childs)[0]
+    off = place_joints(joints, tuple(names), joint_values)
     qv = (robot.lower + robot.upper) / 2 if q is None else np.asarray(q, dtype=float)
     values = dict(zip(names, qv, strict=True))
+    values.update({n: p.value for n, p in off.items()})
     children: dict[str, list] = {}
     for el in joints.values():
         children.setdefault(_link(el, "parent"), []).append(el)
     frames = robot.frames(qv)
     placed: dict[str, tuple[int, np.ndarray]] = {}
+    reached: dict[str, JointPlacement] = {}
     body_names = [base] + [""] * len(names)
     stack = [(base, np.eye(4), 0, 0)]
     while stack:
         link, T, body, nxt = stack.pop()
         placed[link] = (body, np.linalg.inv(frames[body]) @ T)
         for el in children.get(link, []):
-            jname, jtype = el.get("name"), el.get("type")
-            Tj = T @ _origin(el, str(jname))
+            jname, jtype = str(el.get("name")), el.get("type")
+            Tj = T @ _origin(el, jname)
             if jtype == "fixed":
                 stack.append((_child(el), Tj, body, nxt))
-            elif nxt < len(names) and jname == names[nxt]:
-                axis_el = el.find("axis")
-                axis = _floats(None if axis_el is None else axis_el.get("xyz"), (1, 0, 0),
-                               f"joint {jname!r} axis")
-                Tj = Tj @ _axis_rotation(axis, values[jname], jtype == "prismatic")
+                continue
+            chained = nxt < len(names) and jname == names[nxt]
+            if not chained and jname not in off:
+                raise URDFError(f"joint {jname!r} is {jtype!r}: the links behind it "
+                                f"({_child(el)!r}) cannot be placed on the arm at one value; "
+                                "expected revolute, continuous or prismatic")
+            axis_el = el.find("axis")
+            axis = _floats(None if axis_el is None else axis_el.get("xyz"), (1, 0, 0),
+                           f"joint {jname!r} axis")
+            if not np.any(axis):
+                raise URDFError(f"joint {jname!r} axis must be non-zero, got {axis.tolist()}")
+            Tj = Tj @ _axis_rotation(axis, values[jname], jtype == "prismatic")
+            if chained:
                 body_names[body + 1] = _child(el)
                 stack.append((_child(el), Tj, body + 1, nxt + 1))
-    return body_names, placed
+            else:
+                reached[jname] = off[jname]
+                stack.append((_child(el), Tj, body, nxt))
+    order = list(joints)
+    reached = {n: reached[n] for n in sorted(reached, key=order.index)}
+    return body_names, placed, reached
 
 
-def collision_geometry(source: Any, robot: Robot, q: Any = None
+def collision_geometry(source: Any, robot: Robot, q: Any = None, joint_values: Any = None
                        ) -> tuple[list[str], list[dict[str, Any]]]:
     """The primitive collision geometry of a URDF on ``robot``'s bodies.
 
     Args:
         source: The URDF file path or text ``robot`` was loaded from.
         robot: The robot :func:`load_urdf` returned for it.
-        q: As in :func:`link_placements`.
+        q, joint_values: As in :func:`link_placements`.
 
     Returns:
         The body names of :func:`link_placements`, and one dict per primitive:
@@ -102,7 +137,7 @@ def collision_geometry(source: Any, robot: Robot, q: Any = None
         ``pose`` (4x4 list, in body ``body``'s frame); and one dict
         ``{"link", "body", "type": "mesh", "skipped": True}`` per mesh.
     """
-    body_names, placed = link_placements(source, robot, q)
+    body_names, placed = link_placements(source, robot, q, joint_values)
     root, _ = _read(source)
     link_el = {el.get("name"): el for el in root.findall("link")}
     out: list[dict[str, Any]] = []
@@ -140,13 +175,13 @@ def _primitives(col: Any, link: str, body: int, offset: np.ndarray) -> list[dict
     return out
 
 
-def mesh_geometry(source: Any, robot: Robot, element: str = "collision", q: Any = None
-                  ) -> tuple[list[str], list[dict[str, Any]]]:
+def mesh_geometry(source: Any, robot: Robot, element: str = "collision", q: Any = None,
+                  joint_values: Any = None) -> tuple[list[str], list[dict[str, Any]]]:
     """The ``<mesh>`` references of a URDF's ``<collision>`` (or ``<visual>``) elements on
     ``robot``'s bodies; no mesh is read.
 
     Args:
-        source, robot, q: As in :func:`collision_geometry`.
+        source, robot, q, joint_values: As in :func:`collision_geometry`.
         element: ``"collision"`` or ``"visual"``.
 
     Returns:
@@ -157,7 +192,7 @@ def mesh_geometry(source: Any, robot: Robot, element: str = "collision", q: Any 
     """
     if element not in ("collision", "visual"):
         raise URDFError(f"element must be 'collision' or 'visual', got {element!r}")
-    body_names, placed = link_placements(source, robot, q)
+    body_names, placed = link_placements(source, robot, q, joint_values)
     root, _ = _read(source)
     link_el = {el.get("name"): el for el in root.findall("link")}
     out: list[dict[str, Any]] = []

@@ -157,4 +157,5 @@ def test_the_shipped_arms_fits_ship(tmp_path, monkeypatch):
     for name in ("panda", "ur5", "iiwa14"):
         model = robot_model(moik.get_robot(name))
         assert model.allowed and set(model.shapes) <= set(model.links)
+    robot_model(moik.get_robot("panda"), joint_values={"panda_finger_joint1": 0.04})
     assert not list(tmp_path.rglob("*.json"))

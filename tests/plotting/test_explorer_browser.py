@@ -206,10 +206,22 @@ def test_a_screenshot_shows_the_drawn_page(driver, scene, loaded):
         Path(out, "explorer-test.png").write_bytes(base64.b64decode(shot["data"]))
 
 
+def _body_vertices(shape) -> list[np.ndarray]:
+    """A robot shape's vertices in its body's frame: a compound's convex parts' points, a
+    box's 8 corners (the fingers' boxes, on the hand)."""
+    if hasattr(shape, "parts"):
+        return [p.points @ p.pose[:3, :3].T + p.pose[:3, 3] for p in shape.parts]
+    h = np.asarray(shape.size) / 2
+    corners = np.array([[a, b, c] for a in (-h[0], h[0]) for b in (-h[1], h[1])
+                        for c in (-h[2], h[2])])
+    return [corners @ shape.pose[:3, :3].T + shape.pose[:3, 3]]
+
+
 def test_the_arms_collision_geometry_follows_the_selected_posture(driver, tmp_path):
     """The panda's compounds (its URDF meshes' convex parts, what a collision check measures)
-    drawn as mesh3d surfaces moved by the shown member's frames: for the first member and
-    after selecting another, each body's drawn vertices are its parts' at that posture."""
+    and its fingers' boxes drawn as mesh3d surfaces moved by the shown member's frames: for
+    the first member and after selecting another, each body's drawn vertices are its parts'
+    at that posture."""
     from moik.plotting.geometry import robot_meshes
     from moik.solver.collision import default_model
 
@@ -236,8 +248,9 @@ def test_the_arms_collision_geometry_follows_the_selected_posture(driver, tmp_pa
         assert [s[0] for s in shapes] == [m["name"] for m in panel.robot_shapes]
         for (_, x, y, z, n_tri), mesh in zip(shapes, panel.robot_shapes, strict=True):
             T = frames[mesh["frame"]]
-            parts = [p.moved(T) for b, s in model.items if b == mesh["frame"] for p in s.parts]
-            want = np.vstack([p.points @ p.pose[:3, :3].T + p.pose[:3, 3] for p in parts])
+            local = np.vstack([v for b, s in model.items if b == mesh["frame"]
+                               for v in _body_vertices(s)])
+            want = local @ T[:3, :3].T + T[:3, 3]
             np.testing.assert_allclose(np.column_stack([x, y, z]), want, atol=2e-5)
             assert n_tri == len(mesh["i"]) > 0
     assert not [e for e in driver.get_log("browser") if e["level"] == "SEVERE"]

@@ -68,12 +68,15 @@ def test_robot_meshes_are_the_parts_of_each_compound_in_its_bodys_frame():
     """The explorer's robot shapes (panda: its URDF meshes as compounds) are the convex parts
     the check measures, not the bound: moved by the body's frame they are the parts' vertices
     at that configuration, and every triangle is a face of its part's hull."""
+    from moik.collision.model import CollisionModel
     from moik.collision.shapes import Compound
     from moik.plotting.geometry import robot_meshes
     from moik.solver.collision import default_model
 
     robot = get_robot("panda")
-    model = default_model(robot)
+    full = default_model(robot)  # its compounds; the fingers' boxes (on the hand) left out
+    model = CollisionModel(robot=robot, links=full.links, shapes={
+        link: [s for s in items if isinstance(s, Compound)] for link, items in full.shapes.items()})
     meshes = robot_meshes(model, digits=12)
     bodies = sorted({b for b, _ in model.items})  # one mesh per body (panda_link7: 2 shapes)
     assert [(m["name"], m["frame"]) for m in meshes] == [(model.links[b], b) for b in bodies]

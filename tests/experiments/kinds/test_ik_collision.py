@@ -30,10 +30,10 @@ def test_wrapped_only_with_a_scene_and_feasibility_recorded():
 
 def test_the_geometry_is_the_one_solve_ik_checks():
     """One rule: the experiment's checker has the solver's default geometry (panda: its URDF's
-    collision meshes as compounds, not the shipped capsule model), and nothing to check is
-    refused as the solver refuses it."""
+    collision meshes as compounds and its fingers' boxes, not the shipped capsule model), and
+    nothing to check is refused as the solver refuses it."""
     from moik.collision.catalog import collision_model
-    from moik.collision.shapes import Compound
+    from moik.collision.shapes import Box, Compound
     from moik.exceptions import GeometryError
     from moik.experiments.kinds.ik_collision import checker_of
     from moik.solver.collision import collision_guard, default_model
@@ -41,7 +41,8 @@ def test_the_geometry_is_the_one_solve_ik_checks():
     robot = get_robot("panda")
     checker = checker_of(robot, {"scene": SCENE, "self_collision": True})
     assert checker.model is default_model(robot)
-    assert all(isinstance(s, Compound) for _, s in checker.model.items)
+    kinds = {type(s) for _, s in checker.model.items}  # the fingers' boxes beside the meshes
+    assert Compound in kinds and kinds <= {Compound, Box}
     guard = collision_guard(robot, scene=checker.scene, self_collision=True)
     X = robot.random_q(100, rng=np.random.default_rng(5))
     np.testing.assert_array_equal(checker.min_distance_batch(X), guard.distances(X))

@@ -19,6 +19,7 @@ from moik._validate import choice, flag, integer, keywords, optional_integer, po
 from moik._validate import seed as check_seed
 from moik.exceptions import ParameterError
 from moik.kinematics.orientation import available_metrics
+from moik.solver.start_streams import seed_state
 
 DEFAULT_POP_SIZES = (20, 40)  # search population: one solution wanted, several
 
@@ -220,7 +221,7 @@ def _seeded(seed: int) -> Any:
     """``PCG64(starts_sequence(seed)).state``: compiled
     (:func:`~moik.solver.start_streams.seed_state`), checked against numpy's on the first
     seed of the process (should numpy ever seed otherwise, numpy's is used)."""
-    from moik.solver.start_streams import seed_state  # compiled: loaded at the first solve
+
 
     if not _COMPILED_SEEDING:
         _COMPILED_SEEDING.append(

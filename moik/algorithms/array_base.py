@@ -264,7 +264,7 @@ class ArrayStateAlgorithm(Algorithm):
         """One iteration's batches through the array fast path: ``_generation()``, each
         yielded batch sent its ``_evaluate`` result (a subclass with a faster path for some
         problems overrides this and calls it for the others)."""
-        step = self._generation()
+        step = self._iteration()
         X = next(step)
         while True:
             try:
@@ -275,7 +275,7 @@ class ArrayStateAlgorithm(Algorithm):
     def _infill(self) -> Population:
         if self._step is None:
             self._begin_iteration()
-            self._step = self._generation()
+            self._step = self._iteration()
             self._pending = next(self._step)
         assert self._pending is not None  # a batch is pending while an iteration is open
         n = budget_left(self._max_evals, self.evaluator.n_eval, len(self._pending))
@@ -438,3 +438,8 @@ class ArrayStateAlgorithm(Algorithm):
     def _generation(self) -> Step:
         """One iteration: yield candidate arrays, receive ``(F, CV)`` for each."""
         raise NotImplementedError("abstract hook: subclasses implement it")
+
+    def _iteration(self) -> Step:
+        """The batches of one iteration: the algorithm's ``_generation()`` (the MO base adds
+        its feasibility search after it)."""
+        return self._generation()

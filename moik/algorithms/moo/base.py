@@ -28,6 +28,14 @@ least infeasible ones, which ``res.opt`` carries with their ``CV`` so that pymoo
 Schedules and budgets follow the one rule of the array-state base
 (:mod:`moik.algorithms.array_base`).
 
+Feasibility search (a moik extension, :mod:`moik.algorithms.moo.feasibility_search`):
+on a constrained problem whose initial population holds no feasible point, every
+iteration is followed by DE generations (about as many evaluations as the iteration's) of a
+companion population that minimises the
+violation alone, its trials offered to the archive, until the archive holds a feasible
+member; then the method runs as published. Unconstrained runs, and constrained runs that
+start with a feasible point, never start it.
+
 ``verbose=True`` prints pymoo's ``MultiObjectiveOutput`` columns (n_nds = archive
 size, cv_min/cv_avg with constraints, igd/gd/hv when the problem knows its front,
 else eps/indicator).
@@ -55,6 +63,7 @@ from moik.algorithms.moo.dominance import (
     dominates,
     pareto_memory,
 )
+from moik.algorithms.moo.feasibility_search import FeasibilitySearch, start_search
 from moik.exceptions import NonFiniteError, ParameterError
 
 __all__ = ["DEFAULT_SCHEDULE_LENGTH", "MOArrayAlgorithm", "MOArrayOutput", "Step",
@@ -125,7 +134,27 @@ class MOArrayAlgorithm(ArrayStateAlgorithm):
         offered to the archive first."""
         return rank_and_crowding_rows(F, CV, self._n_initial())
 
+    def _iteration(self) -> Step:
+        """The method's iteration, then one generation of the feasibility search while the
+        run has found nothing feasible (module doc)."""
+        yield from self._generation()
+        search: FeasibilitySearch | None = self.__dict__.get("_feasibility")
+        if search is None:
+            return
+        rounds = max(1, round(self._evals_per_iteration() / len(search.X)))
+        for _ in range(rounds):  # about as many evaluations as the method's iteration
+            CV = self.pareto_archive.CV
+            if CV is None or bool(np.any(CV <= 0)) or bool(np.any(search.CV <= 0)):
+                self._feasibility = None  # found: the method runs as published from here on
+                break
+            U = search.trials(self.xl, self.xu, self.random_state)
+            _, CVU = yield U
+            search.select(U, CVU)
+        self._plans.clear()  # T planned again from the evaluations left
+        self._planned_for = None
+
     def _check_start(self) -> None:
+        self._feasibility = start_search(self.X, self.CV, self.pop_size)
         if len(self.pareto_archive) == 0:
             raise NonFiniteError(
                 f"{type(self.problem).__name__} returned NaN or infinite values at every one of "

@@ -37,7 +37,8 @@ Readings and deviations:
 
 Constraints: a moik extension (the paper and the authors' code have none), the shared one
 of docs/algorithms.md "Constraints" (constraint-domination in the archive and the leaders;
-the least infeasible rows kept while none is feasible; docs/results/constrained-moo.md).
+the least infeasible rows kept while none is feasible, and the feasibility search of
+:mod:`moik.algorithms.moo.feasibility_search` until one is; docs/results/constrained-moo.md).
 """
 
 from __future__ import annotations

@@ -59,7 +59,9 @@ The archive that reports the result: while no feasible point was seen, it keeps 
 capacity of least infeasible rows (a moik extension,
 :mod:`moik.algorithms.archive.base`; a strict constraint-domination filter would keep
 only the least infeasible row, and every leader would be it). Infeasible output on
-pymoo's MW and CTP problems, method or handling: docs/results/constrained-moo.md
+pymoo's MW and CTP problems, and the feasibility search that reaches the feasible
+region until one feasible point is found (a moik extension,
+:mod:`moik.algorithms.moo.feasibility_search`): docs/results/constrained-moo.md
 (``studies/constrained_moo.py``).
 """
 

@@ -18,7 +18,12 @@ its constrained test problems:
   before pymoo's crowding-distance truncation;
 - the personal best is replaced by a new position that constraint-dominates
   it, kept if it constraint-dominates the new one, and otherwise decided by
-  pymoo's crowding rule.
+  pymoo's crowding rule;
+- while the archive holds no feasible point (and the initial swarm had none), each
+  iteration is followed by one generation of the feasibility search
+  (:mod:`moik.algorithms.moo.feasibility_search`, a moik extension: a companion DE
+  population minimising the violation, its trials added to the archive), within the
+  evaluation budget.
 
 Seeding. pymoo's MOPSO-CD keeps its swarm archive in ``self.archive``, the name
 pymoo's ``Algorithm`` uses for its optional archive of every evaluated point: after
@@ -59,10 +64,16 @@ from pymoo.util.archive import MultiObjectiveArchive, Truncation
 
 from moik._validate import integer, number, positive
 from moik.algorithms.archive import constrained_nondominated_mask
-from moik.algorithms.array_state import GivenPoints, refuse_unknown_keywords
+from moik.algorithms.array_state import (
+    GivenPoints,
+    budget_left,
+    find_limit,
+    refuse_unknown_keywords,
+)
 from moik.algorithms.initial_survival import rank_and_crowding_rows
 from moik.algorithms.meta import setup_through_wrapper
 from moik.algorithms.moo.dominance import constrained_dominates
+from moik.algorithms.moo.feasibility_search import start_search
 
 
 class SeededTruncation(Truncation):
@@ -143,11 +154,35 @@ class MOPSOCD(MOPSO_CD):
         (the other points are offered to the archive)."""
         if infills is None or len(infills) <= self.pop_size:
             super()._initialize_advance(infills, **kwargs)
+        else:
+            kept = rank_and_crowding_rows(infills.get("F"), infills.get("CV")[:, 0],
+                                          self.pop_size)
+            rest = np.setdiff1d(np.arange(len(infills)), kept)
+            super()._initialize_advance(infills[kept], **kwargs)
+            self.archive = self._update_archive(infills[rest])
+        CV = infills.get("CV")[:, 0] if self.problem.has_constraints() else None
+        self._feasibility = start_search(infills.get("X"), CV, self.pop_size)
+
+    def _advance(self, infills=None, **kwargs):
+        """pymoo's iteration, then one generation of the feasibility search while the
+        archive holds no feasible member (module doc)."""
+        super()._advance(infills, **kwargs)
+        search = self.__dict__.get("_feasibility")
+        if search is None:
             return
-        kept = rank_and_crowding_rows(infills.get("F"), infills.get("CV")[:, 0], self.pop_size)
-        rest = np.setdiff1d(np.arange(len(infills)), kept)
-        super()._initialize_advance(infills[kept], **kwargs)
-        self.archive = self._update_archive(infills[rest])
+        if bool(np.any(self.archive.get("CV")[:, 0] <= 0)) or bool(np.any(search.CV <= 0)):
+            self._feasibility = None
+            return
+        U = search.trials(self.problem.xl, self.problem.xu, self.random_state)
+        n = budget_left(find_limit(self.termination, "n_max_evals"), self.evaluator.n_eval,
+                        len(U))
+        pop = Population.new("X", U[:n])
+        if n:
+            self.evaluator.eval(self.problem, pop, algorithm=self)
+            self.archive = self._update_archive(pop)
+        CV = np.full(len(U), np.inf)
+        CV[:n] = np.where(finite_rows(pop, True), pop.get("CV")[:, 0], np.inf) if n else []
+        search.select(U, CV)
 
     def _update_archive(self, pop):
         constrained = self.problem.has_constraints()

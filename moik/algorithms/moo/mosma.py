@@ -56,7 +56,9 @@ Deviations and readings:
 While no feasible point was seen, the archive keeps its capacity of least infeasible
 rows (a moik extension, :mod:`moik.algorithms.archive.base`; a strict
 constraint-domination filter would keep only the least infeasible row, and every leader
-would be it). Infeasible output on pymoo's MW and CTP problems, method or handling:
+would be it), and until a feasible point is found a companion DE population searches
+for one (a moik extension, :mod:`moik.algorithms.moo.feasibility_search`). Infeasible
+output on pymoo's MW and CTP problems with and without it, method or handling:
 docs/results/constrained-moo.md (``studies/constrained_moo.py``).
 """
 

@@ -26,7 +26,9 @@ This module holds the mechanics those four methods share, once:
 
 Constraints (not in the paper): the memory and the swarm bests compare
 feasibility first (:func:`~moik.algorithms.mechanics.is_better` on the swarm's
-objective and the total violation), the shared archive uses constraint-domination.
+objective and the total violation), the shared archive uses constraint-domination,
+and until a feasible point is found the feasibility search of the multi-objective base
+runs beside the swarms (a moik extension, :mod:`moik.algorithms.moo.feasibility_search`).
 
 Evaluations: M * pop_size for the initial population and, by default, per iteration.
 """

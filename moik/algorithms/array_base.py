@@ -222,6 +222,11 @@ class ArrayStateAlgorithm(Algorithm):
                                    per_iteration=self._evals_per_iteration(), plans=self._plans)
             self.max_iter = int(T) if math.isfinite(T) else max(DEFAULT_SCHEDULE_LENGTH, t)
 
+    def _plan_again(self) -> None:
+        """Plan T afresh before the next iteration (the evaluations per iteration changed)."""
+        self._plans.clear()
+        self.__dict__.pop("_planned_for", None)
+
     def _begin_iteration(self) -> None:
         """Before an iteration's first batch: t and the planned schedule."""
         self.t = self.n_iter - 1

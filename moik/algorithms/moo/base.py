@@ -105,6 +105,7 @@ class MOArrayAlgorithm(ArrayStateAlgorithm):
     """
 
     incumbent: ParetoIncumbent
+    _feasibility: FeasibilitySearch | None
 
     def __init__(self, *, pop_size: int = 100, archive_size: int | None = None,
                  X0: np.ndarray | None = None, max_iter: int | None = None, **kwargs):
@@ -138,7 +139,7 @@ class MOArrayAlgorithm(ArrayStateAlgorithm):
         """The method's iteration, then one generation of the feasibility search while the
         run has found nothing feasible (module doc)."""
         yield from self._generation()
-        search: FeasibilitySearch | None = self.__dict__.get("_feasibility")
+        search = self.__dict__.get("_feasibility")
         if search is None:
             return
         rounds = max(1, round(self._evals_per_iteration() / len(search.X)))
@@ -150,8 +151,7 @@ class MOArrayAlgorithm(ArrayStateAlgorithm):
             U = search.trials(self.xl, self.xu, self.random_state)
             _, CVU = yield U
             search.select(U, CVU)
-        self._plans.clear()  # T planned again from the evaluations left
-        self._planned_for = None
+        self._plan_again()  # T from the evaluations left
 
     def _check_start(self) -> None:
         self._feasibility = start_search(self.X, self.CV, self.pop_size)

@@ -4,8 +4,13 @@ Targets: the FK poses of random configurations of panda (seeded); with the scene
 configurations free of collision (self pairs, and the table + shelf + side wall scene of
 ``benchmarks/collision_ik.py``), solved with ``scene=..., self_collision=True``. Rows:
 ``workers`` = 1, 2, 4, ... up to the CPUs this process may use (and that number itself),
-then a Dask ``LocalCluster`` of that many single-threaded worker processes
-(``client=``). Each row's time is the median of ``--repeats`` calls, the rows of one
+and ``machine``: the machine's own ceiling, a compiled loop with no moik in it (the same
+work split over that many threads, ``nogil``), timed interleaved with the others; its
+speed-up is what the cores give to code that shares nothing (a host that places two
+virtual CPUs on one physical core gives less than their number). Then, in a phase of its
+own (a live cluster's processes take CPU time from the rows above), a Dask
+``LocalCluster`` of that many single-threaded worker processes (``client=``) beside
+workers=1 again. Each row's time is the median of ``--repeats`` calls, the rows of one
 repeat run one after another (interleaved: load on the machine hits every row alike);
 the speed-up column is workers=1's median time over the row's, cpu/wall the CPU seconds
 of this process over the wall seconds of its calls (how many cores the row really got;
@@ -22,7 +27,9 @@ from __future__ import annotations
 
 import argparse
 import time
+from concurrent.futures import ThreadPoolExecutor
 
+import numba
 import numpy as np
 from _output import OUT_HELP, table_output
 
@@ -32,6 +39,27 @@ from moik.collision.io import rpy_pose
 from moik.robots import get_robot
 from moik.solver import solve_ik_batch
 from moik.solver.parallel import available_cores
+
+CEILING_N = 5_000_000  # iterations of the machine-ceiling loop per call (about 0.1 s on one core)
+
+
+@numba.njit(nogil=True, cache=False)
+def _loop(n: int) -> float:
+    s = 0.0
+    for i in range(n):
+        s += np.sin(i * 1e-3) * np.cos(i * 2e-3)
+    return s
+
+
+def ceiling(workers: int) -> None:
+    """The machine row: ``CEILING_N`` iterations of a compiled loop, split over ``workers``
+    threads (the same work for every row, nothing shared)."""
+    parts = [CEILING_N // workers] * workers
+    if workers == 1:
+        _loop(parts[0])
+        return
+    with ThreadPoolExecutor(workers) as pool:
+        list(pool.map(_loop, parts))
 
 FIELDS = ("q", "status", "position_error", "orientation_error", "n_eval", "min_distance")
 
@@ -65,17 +93,23 @@ def same(a, b) -> bool:
     return True
 
 
-def table(title: str, robot, poses, kw: dict, rows: list, repeats: int) -> list[str]:
-    """One block: solutions/s per row (``rows``: (label, extra keywords))."""
-    first = {label: solve_ik_batch(robot, poses, seed=0, **kw, **extra)  # untimed
+def table(title: str, robot, poses, kw: dict, rows: list, repeats: int,
+          machine: int = 0) -> list[str]:
+    """One block: solutions/s per row (``rows``: (label, extra keywords)); with ``machine``,
+    the ceiling row on that many threads, timed interleaved with them."""
+    solve = {label: (lambda extra=extra: solve_ik_batch(robot, poses, seed=0, **kw, **extra))
              for label, extra in rows}
-    times: dict[str, list[float]] = {label: [] for label, _ in rows}
-    cpu: dict[str, list[float]] = {label: [] for label, _ in rows}
+    if machine:
+        solve[f"machine {machine}"] = lambda: ceiling(machine)
+        solve["machine 1"] = lambda: ceiling(1)
+    first = {label: fn() for label, fn in solve.items()}  # untimed
+    times: dict[str, list[float]] = {label: [] for label in solve}
+    cpu: dict[str, list[float]] = {label: [] for label in solve}
     results = {}
     for _ in range(repeats):
-        for label, extra in rows:
+        for label, fn in solve.items():
             c0, t0 = time.process_time(), time.perf_counter()
-            results[label] = solve_ik_batch(robot, poses, seed=0, **kw, **extra)
+            results[label] = fn()
             times[label].append(time.perf_counter() - t0)
             cpu[label].append(time.process_time() - c0)
     ref_label = rows[0][0]
@@ -95,6 +129,13 @@ def table(title: str, robot, poses, kw: dict, rows: list, repeats: int) -> list[
         lines.append(f"{label:>14s} {np.median(t):9.3f} {t.min():7.3f}-{t.max():7.3f} "
                      f"{solved / np.median(t):12.0f} {t_ref / np.median(t):8.2f}x {cpu_s:>7s} "
                      f"{busy:>9s} {solved:7d} {'yes' if ok else 'NO':>5s}")
+    if machine:
+        t1, tw = np.median(times["machine 1"]), np.median(times[f"machine {machine}"])
+        label = f"machine {machine}"
+        busy = np.sum(cpu[label]) / np.sum(times[label])
+        lines.append(f"{'machine':>14s} {tw:9.3f} {'':>15s} {'':>12s} {t1 / tw:8.2f}x "
+                     f"{np.median(cpu[label]):7.3f} {busy:9.2f}   (a compiled loop on "
+                     f"{machine} threads against 1: the cores' ceiling)")
     return lines
 
 
@@ -117,31 +158,36 @@ def main() -> None:
     scene_poses = robot.fk(free)
     cores = available_cores()
     rows: list = [(f"workers={w}", {"workers": w}) for w in worker_counts(cores)]
-    client = cluster = None
-    if not args.no_dask:
+    blocks = [(f"\nplain: {len(poses)} random reachable poses", poses, {}),
+              (f"\nwith a scene (table, shelf, side wall) and self pairs: {len(scene_poses)} "
+               f"collision-free reachable poses", scene_poses,
+               {"scene": scene, "self_collision": True})]
+    with table_output(args.out):
+        print(f"solve_ik_batch on panda, tol 1e-9, {cores} CPUs; medians of {args.repeats} "
+              "interleaved calls; speed-up: workers=1's time over the row's; cpu s: "
+              "median CPU seconds of this process per call (the work, whatever the "
+              "cores; forked tail processes not counted); cpu/wall: "
+              "this process's CPU seconds over wall seconds (the cores the row got: a "
+              "busy machine gives fewer than the workers); same: answers equal to "
+              "workers=1's bit for bit; machine: the cores' own ceiling (module doc)")
+        for title, targets, kw in blocks:
+            print("\n".join(table(title, robot, targets, kw, rows, args.repeats,
+                                   machine=cores)))
+        if args.no_dask:
+            return
         import distributed
 
         cluster = distributed.LocalCluster(n_workers=cores, threads_per_worker=1,
                                            processes=True, dashboard_address=None)
         client = distributed.Client(cluster)
-        rows.append((f"dask {cores}x1", {"client": client}))
-    try:
-        with table_output(args.out):
-            print(f"solve_ik_batch on panda, tol 1e-9, {cores} CPUs; medians of {args.repeats} "
-                  "interleaved calls; speed-up: workers=1's time over the row's; cpu s: "
-                  "median CPU seconds of this process per call (the work, whatever the "
-                  "cores; forked tail processes not counted); cpu/wall: "
-                  "this process's CPU seconds over wall seconds (the cores the row got: a "
-                  "busy machine gives fewer than the workers); same: answers equal to "
-                  "workers=1's bit for bit")
-            print("\n".join(table(f"\nplain: {len(poses)} random reachable poses", robot,
-                                  poses, {}, rows, args.repeats)))
-            print("\n".join(table(f"\nwith a scene (table, shelf, side wall) and self pairs: "
-                                  f"{len(scene_poses)} collision-free reachable poses", robot,
-                                  scene_poses, {"scene": scene, "self_collision": True}, rows,
-                                  args.repeats)))
-    finally:
-        if client is not None:
+        try:
+            print(f"\nDask: a LocalCluster of {cores} single-threaded worker processes, beside "
+                  "workers=1 with the cluster up")
+            for title, targets, kw in blocks:
+                print("\n".join(table(title, robot, targets, kw,
+                                       [rows[0], (f"dask {cores}x1", {"client": client})],
+                                       args.repeats)))
+        finally:
             client.close()
             cluster.close()
 

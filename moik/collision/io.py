@@ -32,7 +32,7 @@ from typing import Any
 
 import numpy as np
 
-from moik import _reading
+from moik._reading import depth_problem, read_json
 from moik._validate import finite_array, known_keys
 from moik.collision.model import CollisionModel, Scene
 from moik.collision.shapes import Box, Capsule, HalfSpace, Shape, Sphere, cylinder
@@ -141,14 +141,14 @@ def _build(kind: str, d: Mapping, sizes: dict[str, Any], what: str) -> Shape:
 def _read_json(source: Any, what: str) -> Any:
     if isinstance(source, Mapping):
         value = source
-        why = _reading.depth_problem(dict(source))
+        why = depth_problem(dict(source))
         if why is not None:
             raise GeometryError(f"a {what} holds {why}")
         return value
     if not isinstance(source, (str, Path)) or (isinstance(source, str) and not source):
         raise GeometryError(f"a {what} must be a JSON file path or a dict, got "
                             f"{_short(source)}")
-    return _reading.read_json(source, what, GeometryError, limit=MAX_FILE_BYTES)
+    return read_json(source, what, GeometryError, limit=MAX_FILE_BYTES)
 
 
 MAX_FILE_BYTES = 64 * 2**20

@@ -32,7 +32,8 @@ from pathlib import Path
 
 import numpy as np
 
-from moik import _reading
+from moik._reading import read_bytes
+from moik._reading import text as decoded_text
 from moik.exceptions import MoikError, UnknownNameError, URDFError
 from moik.robots.chain import Robot
 from moik.robots.description import URDFDescription
@@ -103,8 +104,8 @@ def _read(source) -> tuple[ET.Element, str]:
         if path.suffix == ".xacro":
             raise URDFError(f"{label!r} is a xacro file: run xacro first "
                             f"(`xacro {path.name} > {path.stem}.urdf`) and load the URDF")
-        text = _reading.text(_reading.read_bytes(path, "URDF", URDFError, limit=MAX_URDF_BYTES),
-                             f"URDF {label!r}", URDFError)
+        text = decoded_text(read_bytes(path, "URDF", URDFError, limit=MAX_URDF_BYTES),
+                            f"URDF {label!r}", URDFError)
     try:
         root = ET.fromstring(text)
     except ET.ParseError as exc:

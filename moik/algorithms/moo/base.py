@@ -30,10 +30,9 @@ Schedules and budgets follow the one rule of the array-state base
 
 Feasibility search (a moik extension, :mod:`moik.algorithms.moo.feasibility_search`):
 on a constrained problem whose initial population holds no feasible point, every
-iteration is followed by DE generations (about as many evaluations as the iteration's) of a
-companion population that minimises the
-violation alone, its trials offered to the archive, until the archive holds a feasible
-member; then the method runs as published. Unconstrained runs, and constrained runs that
+iteration is followed by DE generations (about as many evaluations as the iteration's) of
+a companion population that minimises the violation alone, its trials offered to the
+archive, until the archive holds a feasible member; then the method runs as published. Unconstrained runs, and constrained runs that
 start with a feasible point, never start it.
 
 ``verbose=True`` prints pymoo's ``MultiObjectiveOutput`` columns (n_nds = archive
@@ -136,8 +135,8 @@ class MOArrayAlgorithm(ArrayStateAlgorithm):
         return rank_and_crowding_rows(F, CV, self._n_initial())
 
     def _iteration(self) -> Step:
-        """The method's iteration, then one generation of the feasibility search while the
-        run has found nothing feasible (module doc)."""
+        """The method's iteration, then generations of the feasibility search while the run
+        has found nothing feasible (module doc)."""
         yield from self._generation()
         search = self.__dict__.get("_feasibility")
         if search is None:

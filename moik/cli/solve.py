@@ -24,6 +24,7 @@ from moik.problems.targets import Target
 from moik.robots import Robot
 from moik.solver import solve_ik
 from moik.solver.session import pose_errors
+from moik.warmup.beside import beside_solve
 
 PLOT_FORMATS = (".png", ".pdf", ".svg")
 
@@ -69,6 +70,8 @@ def cmd_solve(args: argparse.Namespace) -> int:
     q_current = (None if args.q_current is None
                  else joint_values(arm, args.q_current, args.deg, "--q-current"))
     check = collision.checker(args, arm)
+    if check is None:
+        beside_solve(arm)  # on a cold first run: the start loop's leaf kernels
     with library_call(SOLVE_OPTIONS), compiling() as compiled:
         res = solve_ik(arm, goal, q_current=q_current, **search,
                        **collision.solver_options(check))

@@ -1,6 +1,15 @@
 """Background families: kernels a child process compiles beside a cold first use
 (:mod:`moik.warmup.background`), each named by a string (:data:`BESIDE`).
 
+``"solve-leaves"``: a cold first :func:`~moik.solver.solve_ik.solve_ik` compiles the start
+loop (:func:`~moik.solver.starts.run_starts`) as one tree, one kernel at a time, each
+kernel's callees before it: first the FK and residual kernels, then the other leaves.
+:func:`beside_solve` has a child compile those other leaves at the same time, each
+called on a context and workspace of the numba types of the solve's: the damped step, the
+re-check, the batch FK of the final check and the compiled seeding of the
+random starts (:func:`~moik.solver.start_streams.seed_state`). The ``moik`` command starts
+it before a plain ``solve`` (a collision check makes the context another numba type).
+
 ``"pareto-search"``: a cold first Pareto solve of a redundant arm
 (:func:`~moik.solver.pareto.solve_ik_pareto`) compiles two independent families one
 after the other: the kinematic kernels (the Levenberg-Marquardt start loop of its
@@ -34,12 +43,19 @@ from moik.algorithms.registry import accepted_parameters
 from moik.kinematics.criteria import CRITERIA, joint_distance
 from moik.kinematics.jacobian import parts_and_jacobian
 from moik.problems.pareto_ik import ParetoIK
-from moik.problems.targets import as_target
+from moik.problems.targets import Target, as_target
 from moik.robots import Robot
+from moik.solver.context import ik_context, lm_workspace
+from moik.solver.lm import LAMBDA0, damped_step
+from moik.solver.options import STARTS_KEY
 from moik.solver.pareto import solve_ik_pareto
+from moik.solver.start_streams import seed_state
+from moik.solver.starts import recheck
 from moik.warmup import background
 
 ARCHIVE_PROBE = "moik.algorithms.archive.fronts:front_mask_2d"  # two criteria (or one)
+LEAF_PROBES = ("moik.solver.starts:run_starts", "moik.solver.lm:damped_step")
+"""The start loop and a leaf the ``"solve-leaves"`` child writes: both cached, no child."""
 METHOD_PROBES = {"moeosma": "moik.algorithms.moo.moeosma_kernels:generation_draws"}
 """A kernel of each algorithm whose compiled kernels the child writes (``module:name``):
 a family all of whose probes are cached starts no child."""
@@ -128,5 +144,28 @@ def pareto_search(robot: Robot, target, m: int, criteria: list[str], q_current, 
                  rotation=rotation).natural(Q)
 
 
-BESIDE: dict[str, Callable[..., None]] = {"pareto-search": pareto_search}
+def beside_solve(robot: Robot) -> background.Background | None:
+    """Start the ``"solve-leaves"`` child for a first plain solve of ``robot`` (module
+    docstring), or return None where it cannot help (the leaves are cached, a switch or a
+    single CPU: :mod:`moik.warmup.background`)."""
+    if not isinstance(robot, Robot):
+        return None
+    return background.start("solve-leaves", {"robot": robot},
+                            [kernel(path) for path in LEAF_PROBES])
+
+
+def solve_leaves(robot: Robot) -> None:
+    """The ``"solve-leaves"`` child: each leaf called once, in the order a solve needs them."""
+    ctx = ik_context(robot, Target(np.zeros(3), np.eye(3)), stop=(0.0, 0.0), tol=(0.0, 0.0),
+                     distinct=0.1)
+    ws = lm_workspace(robot.dof)
+    q = np.ascontiguousarray((robot.lower + robot.upper) / 2.0, dtype=np.float64)
+    damped_step(ctx, ws, LAMBDA0, q)
+    recheck(ctx, ws, q)
+    robot.fk_parts(q[None])
+    seed_state(0, STARTS_KEY)
+
+
+BESIDE: dict[str, Callable[..., None]] = {"pareto-search": pareto_search,
+                                          "solve-leaves": solve_leaves}
 """Each background family's child workload, by name (run by ``python -m moik.warmup``)."""

@@ -1,6 +1,7 @@
 """moik/warmup/beside.py: the ``"pareto-search"`` child of a cold first Pareto solve (when it
 starts, what it is given, its stand-in criteria, and that a cold first Pareto solve after
-it compiles none of the algorithm's kernels and gives the same result)."""
+it compiles none of the algorithm's kernels and gives the same result), and the
+``"solve-leaves"`` child of a cold first plain solve (the same checks)."""
 
 import json
 import os
@@ -18,7 +19,7 @@ from moik.algorithms.archive.fronts import nondominated_mask
 from moik.kinematics.criteria import Criterion
 from moik.robots import get_robot
 from moik.warmup import background, beside
-from moik.warmup.beside import StandInCriteria, beside_pareto, stand_in
+from moik.warmup.beside import StandInCriteria, beside_pareto, beside_solve, stand_in
 
 TARGET = np.array([0.4, 0.2, 0.5])
 SEARCH = {"objectives": ("manipulability", "limit_margin"), "n_solutions": 5, "starts": 8,
@@ -136,4 +137,64 @@ def test_a_cold_first_pareto_solve_loads_the_algorithm_kernels_the_child_compile
 
 
 def test_every_background_family_has_a_child_workload():
-    assert set(beside.BESIDE) == {"pareto-search"}
+    assert set(beside.BESIDE) == {"pareto-search", "solve-leaves"}
+
+
+def test_starts_the_solve_leaves_child_for_the_arm(fake_popen):
+    assert beside_solve(get_robot("puma560")) is not None
+    family, arguments = pickle.loads(fake_popen.started[0].written)
+    assert family == "solve-leaves" and arguments["robot"].name == "puma560"
+
+
+def test_starts_no_solve_leaves_child_when_they_are_cached(fake_popen, monkeypatch):
+    probed = []
+    monkeypatch.setattr(_jit, "is_cached", lambda kernel: probed.append(kernel) or True)
+    assert beside_solve(get_robot("puma560")) is None
+    assert not fake_popen.started
+    assert {k.__name__ for k in probed} == {"run_starts", "damped_step"}
+    assert beside_solve("puma560") is None  # a name, not a Robot: the solve says what it is
+
+
+COLD_SOLVE = """
+import json, pickle, subprocess, sys, numpy as np, moik
+from numba.core import event
+from moik.warmup.beside import beside_solve
+from moik.warmup import background
+captured = []
+background.start = lambda family, arguments, probes: captured.append((family, arguments))
+robot = moik.get_robot("puma560")
+beside_solve(robot)
+child = subprocess.run([sys.executable, "-m", "moik.warmup"], input=pickle.dumps(captured[0]))
+assert child.returncode == 0
+compiled = []
+class Recorder(event.Listener):
+    def on_start(self, ev):
+        f = ev.data["dispatcher"].py_func
+        compiled.append(f"{f.__module__}.{f.__qualname__}")
+    def on_end(self, ev):
+        pass
+event.register("numba:compile", Recorder())
+res = moik.solve_ik(robot, np.array([0.4, 0.2, 0.3]))
+print(json.dumps({"q": res.q.tolist(), "kernels": sorted(set(compiled))}))
+"""
+
+
+def test_a_cold_first_solve_loads_the_leaves_the_child_compiled(tmp_path):
+    """In a fresh interpreter on an empty cache the child runs to its end first; the solve
+    then compiles its start loop but none of the leaves the child wrote (its numba types
+    are the solve's), and its answer is the warm one."""
+    root = Path(moik.__file__).parent
+    env = {k: v for k, v in os.environ.items()
+           if not k.startswith(("NUMBA_", "MOIK_")) and k != "PYTHONPATH"}
+    env.update(NUMBA_CACHE_DIR=str(tmp_path / "cache"), PYTHONPATH=str(root.parent),
+               **{background.ENV_SWITCH: "0"})
+    out = subprocess.run([sys.executable, "-c", COLD_SOLVE], capture_output=True, text=True,
+                         env=env, cwd=tmp_path, timeout=900)
+    assert out.returncode == 0, out.stderr
+    cold = json.loads(out.stdout.splitlines()[-1])
+    assert "moik.solver.starts.run_starts" in cold["kernels"]  # the cache was cold
+    leaves = {"moik.solver.lm.damped_step", "moik.solver.starts.recheck",
+              "moik.solver.start_streams._seed_state"}
+    assert not leaves & set(cold["kernels"]), cold["kernels"]
+    warm = moik.solve_ik("puma560", np.array([0.4, 0.2, 0.3]))
+    np.testing.assert_array_equal(np.array(cold["q"]), warm.q)

@@ -32,8 +32,8 @@ Feasibility search (a moik extension, :mod:`moik.algorithms.moo.feasibility_sear
 on a constrained problem whose initial population holds no feasible point, every
 iteration is followed by DE generations (about as many evaluations as the iteration's) of
 a companion population that minimises the violation alone, its trials offered to the
-archive, until the archive holds a feasible member; then the method runs as published. Unconstrained runs, and constrained runs that
-start with a feasible point, never start it.
+archive, until the archive holds a feasible member; then the method runs as published.
+Unconstrained runs, and constrained runs that start with a feasible point, never start it.
 
 ``verbose=True`` prints pymoo's ``MultiObjectiveOutput`` columns (n_nds = archive
 size, cv_min/cv_avg with constraints, igd/gd/hv when the problem knows its front,

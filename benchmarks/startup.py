@@ -135,6 +135,11 @@ def main() -> None:
         baseline = None
         if args.baseline:
             baseline = (args.baseline, checkout(args.baseline, tree))
+            # this tree byte-compiled too (PYTHONDONTWRITEBYTECODE may have left it without:
+            # its processes would then compile every module's bytecode, the baseline's not)
+            root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+            subprocess.run([sys.executable, "-m", "compileall", "-q",
+                            os.path.join(root, "moik")], check=True, stdout=subprocess.DEVNULL)
         measure(args.n, cold=args.cold, cold_n=args.cold_n, baseline=baseline,
                 without_background=args.without_background)
 
@@ -168,7 +173,7 @@ def checkout(rev: str, into: str) -> str:
                              capture_output=True).stdout
     subprocess.run(["tar", "-x", "-C", into], input=archive, check=True)
     subprocess.run([sys.executable, "-m", "compileall", "-q", into], check=True,
-                   stdout=subprocess.DEVNULL)  # its bytecode, as the current tree has
+                   stdout=subprocess.DEVNULL)  # its bytecode, as main() gives the current tree
     return into
 
 

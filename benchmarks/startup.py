@@ -199,10 +199,12 @@ def measure(n: int, *, cold: bool, cold_n: int = 5,
           f"(goal <= 0.5 s); moik above the floor: {np.median(moik) - np.median(floor):.3f} s")
     if not cold:
         return
+    forced = without_background or bool(baseline)  # a baseline may have no load rule: both
+    # start their background compiles wherever one applies, whatever this process's load
     versions: dict[str, dict[str, str]] = {
-        "": {"MOIK_BACKGROUND_COMPILE": "1"} if without_background else {}}
+        "": {"MOIK_BACKGROUND_COMPILE": "1"} if forced else {}}
     if baseline:
-        versions["base"] = {"PYTHONPATH": baseline[1]}
+        versions["base"] = {"PYTHONPATH": baseline[1], "MOIK_BACKGROUND_COMPILE": "1"}
     if without_background:
         versions["alone"] = {"MOIK_BACKGROUND_COMPILE": "0"}
     samples: dict[tuple[str, str], list[tuple[float, float]]] = {
@@ -219,8 +221,7 @@ def measure(n: int, *, cold: bool, cold_n: int = 5,
     print(f"cold first uses: {cold_n} samples of each, interleaved, each with an empty "
           f"kernel cache; load average before them: median {np.median(loads):.1f} "
           f"({min(loads):.1f}-{max(loads):.1f})"
-          + ("; first with background compiles forced (MOIK_BACKGROUND_COMPILE=1)"
-             if without_background else ""))
+          + ("; background compiles forced (MOIK_BACKGROUND_COMPILE=1)" if forced else ""))
     for what, (_argv, goal) in COLD.items():
         walls, cpus = np.array(samples[what, ""]).T
         print(f"cold {what} (empty kernel cache): median {np.median(walls):.1f} s wall "

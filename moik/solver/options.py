@@ -197,7 +197,6 @@ class start_generator:  # noqa: N801 (used as a function: ``with start_generator
             state = _PCG64_STATES[seed] = _seeded(seed)
         self._state = state
 
-
     def __enter__(self) -> np.random.Generator:
         try:
             self._generator = _FREE.pop()
@@ -214,18 +213,20 @@ DEFAULT_OPTIONS = SearchOptions()
 """The options of a call that changes none (validated once)."""
 
 
-_COMPILED_SEEDING: list[bool] = []  # [whether the compiled seeding equals numpy's], once
+_SEEDING: dict[str, bool] = {}  # "first": a seed was given; "compiled": equals numpy's
 
 
 def _seeded(seed: int) -> Any:
-    """``PCG64(starts_sequence(seed)).state``: compiled
-    (:func:`~moik.solver.start_streams.seed_state`), checked against numpy's on the first
-    seed of the process (should numpy ever seed otherwise, numpy's is used)."""
-
-
-    if not _COMPILED_SEEDING:
-        _COMPILED_SEEDING.append(
-            seed_state(seed, STARTS_KEY) == np.random.PCG64(starts_sequence(seed)).state)
-    if _COMPILED_SEEDING[0]:
+    """``PCG64(starts_sequence(seed)).state``: numpy's for the first seed of the process (a
+    process that solves once never compiles the seeding), then compiled
+    (:func:`~moik.solver.start_streams.seed_state`), checked against numpy's on the second
+    seed (should numpy ever seed otherwise, numpy's is used)."""
+    if "compiled" not in _SEEDING:
+        state = np.random.PCG64(starts_sequence(seed)).state
+        if "first" in _SEEDING:
+            _SEEDING["compiled"] = seed_state(seed, STARTS_KEY) == state
+        _SEEDING["first"] = True
+        return state
+    if _SEEDING["compiled"]:
         return seed_state(seed, STARTS_KEY)
     return np.random.PCG64(starts_sequence(seed)).state

@@ -65,7 +65,7 @@ def recheck(ctx, ws, q):
 
 
 @jit
-def _keep(ctx, ws, found, n_found, q):
+def keep_found(ctx, ws, found, n_found, q):
     """Append ``q`` (its re-checked errors from ``ws.err``) to ``found`` if new; the count."""
     if not is_new(ctx, found, n_found, q):
         return n_found
@@ -76,7 +76,7 @@ def _keep(ctx, ws, found, n_found, q):
 
 
 @jit
-def _improve(ctx, ws, best, q):
+def improve_best(ctx, ws, best, q):
     """``best = [scaled error, q]`` replaced by ``q`` when its re-checked (``ws.err``)
     error ``pos / L + ori`` is smaller."""
     scaled = ws.err[0] * ctx.chain.inv_reach + ws.err[1]
@@ -158,9 +158,9 @@ def run_starts(ctx, starts, policy, found, best, ends):
         if not check:
             ws.err[0], ws.err[1] = np.nan, np.nan
         n_before = n_found
-        n_found = _keep(ctx, ws, found, n_found, q)
+        n_found = keep_found(ctx, ws, found, n_found, q)
         if check and n_found > n_before:
-            _improve(ctx, ws, best, q)
+            improve_best(ctx, ws, best, q)
     if low < 0:
         return n_found, n_eval, used
     if not check:
@@ -169,7 +169,7 @@ def run_starts(ctx, starts, policy, found, best, ends):
             copy_into(starts[low], best[1:])
     elif n_found == n_known:
         recheck(ctx, ws, starts[low])
-        _improve(ctx, ws, best, starts[low])
+        improve_best(ctx, ws, best, starts[low])
     return n_found, n_eval, used
 
 

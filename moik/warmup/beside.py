@@ -6,9 +6,10 @@ loop (:func:`~moik.solver.starts.run_starts`) as one tree, one kernel at a time,
 kernel's callees before it: first the FK and residual kernels, then the other leaves.
 :func:`beside_solve` has a child compile those other leaves at the same time, each
 called on a context and workspace of the numba types of the solve's: the damped step, the
-re-check, the batch FK of the final check and the compiled seeding of the
-random starts (:func:`~moik.solver.start_streams.seed_state`). The ``moik`` command starts
-it before a plain ``solve`` (a collision check makes the context another numba type).
+re-check, the bookkeeping of found solutions and of the best candidate, the batch FK of
+the final check and the compiled seeding of the random starts
+(:func:`~moik.solver.start_streams.seed_state`). The ``moik`` command starts it before a
+plain ``solve`` (a collision check makes the context another numba type).
 
 ``"pareto-search"``: a cold first Pareto solve of a redundant arm
 (:func:`~moik.solver.pareto.solve_ik_pareto`) compiles two independent families one
@@ -50,7 +51,7 @@ from moik.solver.lm import LAMBDA0, damped_step
 from moik.solver.options import STARTS_KEY
 from moik.solver.pareto import solve_ik_pareto
 from moik.solver.start_streams import seed_state
-from moik.solver.starts import recheck
+from moik.solver.starts import improve_best, keep_found, recheck
 from moik.warmup import background
 
 ARCHIVE_PROBE = "moik.algorithms.archive.fronts:front_mask_2d"  # two criteria (or one)
@@ -162,6 +163,8 @@ def solve_leaves(robot: Robot) -> None:
     q = np.ascontiguousarray((robot.lower + robot.upper) / 2.0, dtype=np.float64)
     damped_step(ctx, ws, LAMBDA0, q)
     recheck(ctx, ws, q)
+    keep_found(ctx, ws, np.full((1, robot.dof + 2), np.nan), 0, q)
+    improve_best(ctx, ws, np.full(robot.dof + 1, np.inf), q)
     robot.fk_parts(q[None])
     seed_state(0, STARTS_KEY)
 

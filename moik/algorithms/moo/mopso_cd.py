@@ -176,12 +176,12 @@ class MOPSOCD(MOPSO_CD):
         U = search.trials(self.problem.xl, self.problem.xu, self.random_state)
         n = budget_left(find_limit(self.termination, "n_max_evals"), self.evaluator.n_eval,
                         len(U))
-        pop = Population.new("X", U[:n])
+        CV = np.full(len(U), np.inf)  # rows past the budget: unevaluated, they lose
         if n:
+            pop = Population.new("X", U[:n])
             self.evaluator.eval(self.problem, pop, algorithm=self)
             self.archive = self._update_archive(pop)
-        CV = np.full(len(U), np.inf)
-        CV[:n] = np.where(finite_rows(pop, True), pop.get("CV")[:, 0], np.inf) if n else []
+            CV[:n] = np.where(finite_rows(pop, True), pop.get("CV")[:, 0], np.inf)
         search.select(U, CV)
 
     def _update_archive(self, pop):

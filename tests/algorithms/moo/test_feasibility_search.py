@@ -76,7 +76,7 @@ def test_start_only_for_a_constrained_start_with_nothing_feasible():
 
 class SmallBall(Problem):
     """ZDT1's objectives on 10 variables with the feasible region a ball of radius 0.1
-    around x_1..x_9 = 0.9 (a share of about 1e-8 of the box: the initial population and
+    around x_1..x_9 = 0.9 (a share of about 3e-9 of the box: the initial population and
     plain sampling never hit it; the front is ZDT1's with g = 1 + 9 * 0.9)."""
 
     def __init__(self) -> None:

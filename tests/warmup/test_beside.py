@@ -115,19 +115,25 @@ print(json.dumps({"X": res.X.tolist(), "modules": sorted(set(compiled))}))
 """
 
 
-def test_a_cold_first_pareto_solve_loads_the_algorithm_kernels_the_child_compiled(tmp_path):
-    """In a fresh interpreter on an empty cache the child runs to its end first; the solve
-    then compiles its LM kernels and none of the algorithm's or archive's (the child's
-    numba types are the solve's), and its result is the warm one."""
+def _run_cold(code: str, tmp_path) -> dict:
+    """``code`` in a fresh interpreter of this moik on an empty kernel cache (no background
+    child of its own); the JSON its last line prints."""
     root = Path(moik.__file__).parent
     env = {k: v for k, v in os.environ.items()
            if not k.startswith(("NUMBA_", "MOIK_")) and k != "PYTHONPATH"}
     env.update(NUMBA_CACHE_DIR=str(tmp_path / "cache"), PYTHONPATH=str(root.parent),
                **{background.ENV_SWITCH: "0"})
-    out = subprocess.run([sys.executable, "-c", COLD], capture_output=True, text=True,
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          env=env, cwd=tmp_path, timeout=900)
     assert out.returncode == 0, out.stderr
-    cold = json.loads(out.stdout.splitlines()[-1])
+    return json.loads(out.stdout.splitlines()[-1])
+
+
+def test_a_cold_first_pareto_solve_loads_the_algorithm_kernels_the_child_compiled(tmp_path):
+    """In a fresh interpreter on an empty cache the child runs to its end first; the solve
+    then compiles its LM kernels and none of the algorithm's or archive's (the child's
+    numba types are the solve's), and its result is the warm one."""
+    cold = _run_cold(COLD, tmp_path)
     assert "moik.solver.lm" in cold["modules"]  # the cache was cold: LM compiled here
     assert not [m for m in cold["modules"] if m.startswith("moik.algorithms")], cold["modules"]
     assert not {"moik.kinematics.criteria_kernels", "moik.kinematics.jacobian"} & set(
@@ -183,15 +189,7 @@ def test_a_cold_first_solve_loads_the_leaves_the_child_compiled(tmp_path):
     """In a fresh interpreter on an empty cache the child runs to its end first; the solve
     then compiles its start loop but none of the leaves the child wrote (its numba types
     are the solve's), and its answer is the warm one."""
-    root = Path(moik.__file__).parent
-    env = {k: v for k, v in os.environ.items()
-           if not k.startswith(("NUMBA_", "MOIK_")) and k != "PYTHONPATH"}
-    env.update(NUMBA_CACHE_DIR=str(tmp_path / "cache"), PYTHONPATH=str(root.parent),
-               **{background.ENV_SWITCH: "0"})
-    out = subprocess.run([sys.executable, "-c", COLD_SOLVE], capture_output=True, text=True,
-                         env=env, cwd=tmp_path, timeout=900)
-    assert out.returncode == 0, out.stderr
-    cold = json.loads(out.stdout.splitlines()[-1])
+    cold = _run_cold(COLD_SOLVE, tmp_path)
     assert "moik.solver.starts.run_starts" in cold["kernels"]  # the cache was cold
     leaves = {"moik.solver.lm.damped_step", "moik.solver.starts.recheck",
               "moik.solver.starts.keep_found", "moik.solver.starts.improve_best",

@@ -71,7 +71,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
                  else joint_values(arm, args.q_current, args.deg, "--q-current"))
     check = collision.checker(args, arm)
     if check is None:
-        beside_solve(arm)  # on a cold first run: the start loop's leaf kernels
+        beside_solve(arm, goal)  # on a cold first run: the leaf kernels of its path
     with library_call(SOLVE_OPTIONS), compiling() as compiled:
         res = solve_ik(arm, goal, q_current=q_current, **search,
                        **collision.solver_options(check))

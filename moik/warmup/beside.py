@@ -11,6 +11,13 @@ the final check and the compiled seeding of the random starts
 (:func:`~moik.solver.start_streams.seed_state`). The ``moik`` command starts it before a
 plain ``solve`` (a collision check makes the context another numba type).
 
+``"front-leaves"``: a target proven out of reach (:func:`~moik.solver.front.reach_excess`)
+runs no start loop: its cold first solve compiles the weighted-sum front
+(:func:`~moik.solver.starts.lm_front`), then the batch FK of its polish and the joint
+check of the answer. :func:`beside_solve` given such a target has the child compile only
+the damped step, that batch FK and that check: on two CPUs a child compiling kernels the
+parent never needs takes CPU time from it.
+
 ``"pareto-search"``: a cold first Pareto solve of a redundant arm
 (:func:`~moik.solver.pareto.solve_ik_pareto`) compiles two independent families one
 after the other: the kinematic kernels (the Levenberg-Marquardt start loop of its
@@ -47,6 +54,7 @@ from moik.problems.pareto_ik import ParetoIK
 from moik.problems.targets import Target, as_target
 from moik.robots import Robot
 from moik.solver.context import ik_context, lm_workspace
+from moik.solver.front import reach_excess
 from moik.solver.lm import LAMBDA0, damped_step
 from moik.solver.options import STARTS_KEY
 from moik.solver.pareto import solve_ik_pareto
@@ -57,6 +65,8 @@ from moik.warmup import background
 ARCHIVE_PROBE = "moik.algorithms.archive.fronts:front_mask_2d"  # two criteria (or one)
 LEAF_PROBES = ("moik.solver.starts:run_starts", "moik.solver.lm:damped_step")
 """The start loop and a leaf the ``"solve-leaves"`` child writes: both cached, no child."""
+FRONT_PROBES = ("moik.solver.starts:lm_front", "moik.solver.lm:damped_step")
+"""The front's loop and a leaf the ``"front-leaves"`` child writes."""
 METHOD_PROBES = {"moeosma": "moik.algorithms.moo.moeosma_kernels:generation_draws"}
 """A kernel of each algorithm whose compiled kernels the child writes (``module:name``):
 a family all of whose probes are cached starts no child."""
@@ -145,14 +155,19 @@ def pareto_search(robot: Robot, target, m: int, criteria: list[str], q_current, 
                  rotation=rotation).natural(Q)
 
 
-def beside_solve(robot: Robot) -> background.Background | None:
-    """Start the ``"solve-leaves"`` child for a first plain solve of ``robot`` (module
-    docstring), or return None where it cannot help (the leaves are cached, a switch or a
-    single CPU: :mod:`moik.warmup.background`)."""
+def beside_solve(robot: Robot, target=None) -> background.Background | None:
+    """Start the child for a first plain solve of ``robot`` (module docstring):
+    ``"front-leaves"`` for a ``target`` proven out of reach, else ``"solve-leaves"``; or
+    return None where it cannot help (the leaves are cached, a switch or a single CPU:
+    :mod:`moik.warmup.background`). A target the solve would refuse starts no child."""
     if not isinstance(robot, Robot):
         return None
-    return background.start("solve-leaves", {"robot": robot},
-                            [kernel(path) for path in LEAF_PROBES])
+    try:
+        beyond = target is not None and reach_excess(robot, as_target(target)) > 0
+    except Exception:  # noqa: BLE001 - the solve says what is wrong with it
+        return None
+    family, probes = ("front-leaves", FRONT_PROBES) if beyond else ("solve-leaves", LEAF_PROBES)
+    return background.start(family, {"robot": robot}, [kernel(path) for path in probes])
 
 
 def solve_leaves(robot: Robot) -> None:
@@ -169,6 +184,18 @@ def solve_leaves(robot: Robot) -> None:
     seed_state(0, STARTS_KEY)
 
 
-BESIDE: dict[str, Callable[..., None]] = {"pareto-search": pareto_search,
+def front_leaves(robot: Robot) -> None:
+    """The ``"front-leaves"`` child: the damped step on a context of the front's numba
+    types, the batch FK of its polish and the answer's joint check."""
+    ctx = ik_context(robot, Target(np.zeros(3), np.eye(3)), stop=(0.0, 0.0), tol=(0.0, 0.0),
+                     distinct=0.1)
+    q = np.ascontiguousarray((robot.lower + robot.upper) / 2.0, dtype=np.float64)
+    damped_step(ctx, lm_workspace(robot.dof), LAMBDA0, q)
+    robot.fk_parts(q[None])
+    robot.check_q(q)
+
+
+BESIDE: dict[str, Callable[..., None]] = {"front-leaves": front_leaves,
+                                          "pareto-search": pareto_search,
                                           "solve-leaves": solve_leaves}
 """Each background family's child workload, by name (run by ``python -m moik.warmup``)."""

@@ -143,13 +143,28 @@ def test_a_cold_first_pareto_solve_loads_the_algorithm_kernels_the_child_compile
 
 
 def test_every_background_family_has_a_child_workload():
-    assert set(beside.BESIDE) == {"pareto-search", "solve-leaves"}
+    assert set(beside.BESIDE) == {"front-leaves", "pareto-search", "solve-leaves"}
 
 
 def test_starts_the_solve_leaves_child_for_the_arm(fake_popen):
     assert beside_solve(get_robot("puma560")) is not None
     family, arguments = pickle.loads(fake_popen.started[0].written)
     assert family == "solve-leaves" and arguments["robot"].name == "puma560"
+
+
+@pytest.mark.parametrize("target, family", [
+    ((0.4, 0.2, 0.3), "solve-leaves"), ((2.0, 0.0, 0.0), "front-leaves"),
+    (np.eye(4), "solve-leaves"), (None, "solve-leaves")])
+def test_the_child_compiles_the_leaves_of_the_targets_path(fake_popen, target, family):
+    """A target beyond puma560's reach (0.9 m) runs the front, not the start loop."""
+    assert beside_solve(get_robot("puma560"), target) is not None
+    assert pickle.loads(fake_popen.started[0].written)[0] == family
+
+
+def test_a_target_the_solve_refuses_starts_no_child(fake_popen):
+    assert beside_solve(get_robot("puma560"), np.array([np.nan, 0.0, 0.0])) is None
+    assert beside_solve(get_robot("puma560"), "no target") is None
+    assert not fake_popen.started
 
 
 def test_starts_no_solve_leaves_child_when_they_are_cached(fake_popen, monkeypatch):
@@ -196,4 +211,21 @@ def test_a_cold_first_solve_loads_the_leaves_the_child_compiled(tmp_path):
               "moik.solver.start_streams._seed_state"}
     assert not leaves & set(cold["kernels"]), cold["kernels"]
     warm = moik.solve_ik("puma560", np.array([0.4, 0.2, 0.3]))
+    np.testing.assert_array_equal(np.array(cold["q"]), warm.q)
+
+
+COLD_FRONT = COLD_SOLVE.replace("beside_solve(robot)", "beside_solve(robot, [2.0, 0.0, 0.0])"
+                                ).replace("[0.4, 0.2, 0.3]", "[2.0, 0.0, 0.0]")
+
+
+def test_a_cold_first_unreachable_solve_loads_the_leaves_the_child_compiled(tmp_path):
+    """The ``"front-leaves"`` child's kernels are those of the front's path (its numba
+    types are the solve's): the solve compiles its front loop but not them."""
+    cold = _run_cold(COLD_FRONT, tmp_path)
+    assert "moik.solver.starts.lm_front" in cold["kernels"]  # the cache was cold
+    leaves = {"moik.solver.lm.damped_step", "moik.robots.fk_kernels.fk_rotations_positions",
+              "moik.robots.fk_kernels.joint_screen"}
+    assert not leaves & set(cold["kernels"]), cold["kernels"]
+    assert "moik.solver.starts.run_starts" not in cold["kernels"]  # no start loop: none needed
+    warm = moik.solve_ik("puma560", np.array([2.0, 0.0, 0.0]))
     np.testing.assert_array_equal(np.array(cold["q"]), warm.q)

@@ -31,9 +31,9 @@ from typing import Any
 import numpy as np
 
 from moik._validate import finite_array
-from moik.collision.kernels import world_frames
 from moik.exceptions import GeometryError, MoikError
 from moik.robots.chain import Robot
+from moik.robots.fk_kernels import world_frames
 from moik.robots.urdf_geometry import mesh_geometry
 
 

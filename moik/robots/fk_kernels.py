@@ -293,6 +293,34 @@ def fk_frames(F, P, types, Q, out):
         fk_frames_into(F, P, types, Q[i], out[i])
 
 
+@jit(inline=True)
+def copy_pose(T, out, k):
+    """``out[k] = T`` for a ``(4, 4)`` pose, element by element: an array assignment would
+    compile numba's shape-mismatch error message (string formatting, seconds of a first
+    run) into every kernel that places shapes."""
+    for r in range(4):
+        for c in range(4):
+            out[k, r, c] = T[r, c]
+
+
+@jit
+def world_frames(chain, q, frames, axes):
+    """Frames ``(dof + 1, 4, 4)`` (frame 0 = the base) and joint axes ``(dof, 6)`` of ``q``
+    (``chain``: a :class:`~moik.robots.chain_model.ChainModel`).
+
+    ``axes[j] = (o_j, z_j)``: the point and direction of joint ``j + 1``'s axis.
+    """
+    F, P, types = chain.origins, chain.link_frames, chain.joint_types
+    copy_pose(chain.base, frames, 0)
+    t = pose_state(F[0])
+    for j in range(types.size):
+        axes[j, 0], axes[j, 1], axes[j, 2] = t[9], t[10], t[11]
+        axes[j, 3], axes[j, 4], axes[j, 5] = t[2], t[5], t[8]
+        t = move_joint(t, types[j], q[j])
+        store_pose(compose(t, pose_state(P[j])), frames[j + 1])
+        t = compose(t, pose_state(F[j + 1]))
+
+
 def fk_reference(a, alpha, d, theta, prismatic, convention: str, Q: np.ndarray) -> np.ndarray:
     """Straightforward FK: one 4x4 matrix per joint, multiplied in turn (test oracle).
 

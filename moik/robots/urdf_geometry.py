@@ -23,6 +23,7 @@ import numpy as np
 
 from moik.exceptions import URDFError
 from moik.robots.chain import Robot
+from moik.robots.fk_kernels import world_frames
 from moik.robots.urdf import _child, _floats, _link, _origin, _parse, _read
 from moik.robots.urdf_joints import JointPlacement, place_joints
 
@@ -65,6 +66,16 @@ def offchain_placement(source: Any, robot: Robot, joint_values: Any = None
     return _walk(source, robot, None, joint_values)[2]
 
 
+def joint_frames(robot: Robot, q: Any) -> np.ndarray:
+    """:meth:`Robot.frames` of one joint vector ``q`` (``(dof + 1, 4, 4)``, the same
+    values), by :func:`~moik.robots.fk_kernels.world_frames`: the kernel a collision check
+    compiles anyway, so that reading an arm's geometry compiles no FK kernel of its own."""
+    qv = robot.kernel_batch(robot.check_q(q)[None])[0]
+    frames, axes = np.empty((robot.dof + 1, 4, 4)), np.empty((robot.dof, 6))
+    world_frames(robot.chain_model, qv, frames, axes)
+    return frames
+
+
 def _walk(source: Any, robot: Robot, q: Any, joint_values: Any
           ) -> tuple[list[str], dict[str, tuple[int, np.ndarray]], dict[str, JointPlacement]]:
     root, label = _read(source)
@@ -86,7 +97,7 @@ def _walk(source: Any, robot: Robot, q: Any, joint_values: Any
     children: dict[str, list] = {}
     for el in joints.values():
         children.setdefault(_link(el, "parent"), []).append(el)
-    frames = robot.frames(qv)
+    frames = joint_frames(robot, qv)
     placed: dict[str, tuple[int, np.ndarray]] = {}
     reached: dict[str, JointPlacement] = {}
     body_names = [base] + [""] * len(names)

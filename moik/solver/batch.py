@@ -268,7 +268,8 @@ def _solve_chunk(job: BatchJob) -> Rows:
 def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
     """The answers of the job's targets (seeds ``first + i``): ``(q, status, position error,
     orientation error, success, n_eval, min distance, whether that distance is exact)``, the
-    first stage on ``workers`` threads, the hard tail on as many processes. A first-stage
+    first stage on ``workers`` threads, the hard tail on as many processes (the tail of a
+    chunk that has ended in this thread while other chunks still run). A first-stage
     answer's distance is its clearance test's (:meth:`CollisionGuard.below`: exact below
     the clearance, else a number at least it); :class:`BatchDistances` completes them."""
     robot, n = job.robot, len(job.positions)
@@ -280,6 +281,24 @@ def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
     n_evals = np.zeros(n, dtype=np.int64)
     pos, ori, dist = np.zeros(n), np.zeros(n), np.full(n, np.nan)
     known = np.zeros(n, dtype=np.bool_)  # rows whose distance is exact (the tail's)
+    status = np.full(n, "not-converged", dtype=object)
+    early: dict[int, tuple] = {}  # tail answers found while chunks still ran
+
+    def settle(lo: int, hi: int, busy) -> None:  # this thread, as each chunk ends
+        k = lo + np.flatnonzero(solved[lo:hi])
+        if len(k):  # the honest re-check, as solve_ik does it
+            p_k, o_k = pose_errors(robot, (positions[k], None if rotations is None
+                                           else rotations[k]), out_Q[k])
+            ok = tolerance.certifies(p_k, o_k)
+            if guard is not None:  # each q's clearance, tested again by its chunk's thread
+                ok &= guard.keeps(dist[k])
+            pos[k], ori[k], solved[k] = p_k, o_k, ok
+            status[k[ok]] = "solved"
+        for i in lo + np.flatnonzero(~solved[lo:hi]):  # its tail, beside the chunks left
+            if not busy():
+                break
+            early[int(i)] = _tail_target(job, int(i))
+
     if opts.polish and (qc is not None or opts.starts):
         def chunk(lo: int, hi: int) -> None:  # a thread's rows: compiled calls, GIL released
             own = None if guard is None else _own_guard(guard)
@@ -295,20 +314,13 @@ def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
             if progress is not None:
                 progress(len(done))
 
-        parallel.map_chunks(chunk, n, workers)
-    status = np.full(n, "not-converged", dtype=object)
-    if solved.any():  # the honest re-check, as solve_ik does it
-        k = np.flatnonzero(solved)
-        p_k, o_k = pose_errors(robot, (positions[k], None if rotations is None
-                                       else rotations[k]), out_Q[k])
-        ok = tolerance.certifies(p_k, o_k)
-        if guard is not None:  # each q's clearance, tested again by its chunk's thread
-            ok &= guard.keeps(dist[k])
-        pos[k], ori[k], solved[k] = p_k, o_k, ok
-        status[k[ok]] = "solved"
+        parallel.map_chunks(chunk, n, workers, then=settle)
     tail = np.flatnonzero(~solved)  # the hard tail: the whole of solve_ik
-    answers = parallel.map_processes(_tail_target, job, [int(i) for i in tail], workers)
-    for i, (q, st, p, o, ne, ok, d) in zip(tail, answers, strict=True):
+    rest = [int(i) for i in tail if i not in early]
+    answers = dict(zip(rest, parallel.map_processes(_tail_target, job, rest, workers),
+                       strict=True))
+    for i in map(int, tail):
+        q, st, p, o, ne, ok, d = early[i] if i in early else answers[i]
         out_Q[i], status[i], pos[i], ori[i], n_evals[i], solved[i], dist[i] = q, st, p, o, ne, \
             ok, d
     known[tail] = True

@@ -4,10 +4,11 @@ Three ways to spread independent work, each used by
 :func:`~moik.solver.batch.solve_ik_batch` and each leaving every answer as the serial
 run gives it (an answer depends on its target and its own seed only):
 
-- :func:`map_chunks`: threads over contiguous chunks of a batch, for a stage whose
-  chunk is a few compiled calls that release the GIL (numba ``nogil``): the Python
-  glue is per chunk, never per item, and nothing is shared between chunks but read-only
-  arrays, so there is no lock to wait on.
+- :func:`map_chunks`: threads over contiguous (guided) chunks of a batch, for a stage
+  whose chunk is a few compiled calls that release the GIL (numba ``nogil``): the
+  Python glue is per chunk, never per item, and nothing is shared between chunks but
+  read-only arrays, so there is no lock to wait on; the calling thread, idle otherwise,
+  may work on each chunk's result as it ends (``then``).
 - :func:`map_processes`: a process pool for per-item Python work (the hard tail: the
   whole of ``solve_ik``, search and polish, which holds the GIL). ``fork`` where the
   platform has it, so the children inherit this process's compiled kernels instead of
@@ -27,7 +28,7 @@ import os
 import signal
 import time
 from collections.abc import Callable, Iterable, Sequence
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import ThreadPoolExecutor, as_completed
 from typing import Any
 
 from moik._validate import integer
@@ -35,7 +36,7 @@ from moik.exceptions import ParameterError
 
 MIN_CHUNK = 128  # items per chunk at least: its Python glue (~0.05 ms, under the GIL) stays
 # about 1 % of a chunk of easy targets (~0.04 ms each), so 16 threads leave the GIL mostly free
-CHUNKS_PER_WORKER = 4  # chunks per thread: a chunk of hard targets does not leave others idle
+GUIDE = 2  # a chunk takes 1 / (GUIDE x workers) of the rows left (guided chunks, below)
 POOL_MIN_TASKS = 2  # fewer per-item tasks run in this process (a pool costs a fork each)
 POOL_AFTER_S = 0.25  # per-item tasks run here first; a pool takes the rest after this long
 # (starting one costs ~0.05-0.1 s: a cheap tail, e.g. targets proven out of reach, ends first)
@@ -62,27 +63,54 @@ def worker_count(workers: Any) -> int:
 
 
 def chunk_bounds(n: int, workers: int, *, min_chunk: int = MIN_CHUNK,
-                 per_worker: int = CHUNKS_PER_WORKER) -> list[tuple[int, int]]:
-    """Contiguous ``(lo, hi)`` chunks of ``range(n)``: one for one worker, else about
-    ``per_worker`` per worker of at least ``min_chunk`` items."""
+                 guide: int = GUIDE) -> list[tuple[int, int]]:
+    """Contiguous ``(lo, hi)`` chunks of ``range(n)``: one for one worker, else guided
+    chunks (OpenMP's ``schedule(guided)``): each takes ``1 / (guide x workers)`` of the
+    rows left, at least ``min_chunk`` (a remainder smaller than that joins the last). The
+    first chunks are large (little glue per row) and the last small, so a thread that
+    ends early finds small chunks left: the threads end close together."""
     if workers <= 1 or n <= min_chunk:
         return [(0, n)]
-    size = max(min_chunk, math.ceil(n / (workers * per_worker)))
-    return [(lo, min(n, lo + size)) for lo in range(0, n, size)]
+    bounds, lo = [], 0
+    while lo < n:
+        hi = lo + max(min_chunk, math.ceil((n - lo) / (guide * workers)))
+        if n - hi < min_chunk:
+            hi = n
+        bounds.append((lo, hi))
+        lo = hi
+    return bounds
 
 
-def map_chunks(fn: Callable[[int, int], None], n: int, workers: int) -> None:
+def map_chunks(fn: Callable[[int, int], None], n: int, workers: int,
+               then: Callable[[int, int, Callable[[], bool]], None] | None = None) -> None:
     """``fn(lo, hi)`` for the chunks of ``range(n)`` (:func:`chunk_bounds`) on ``workers``
     threads (in this thread when there is one chunk). ``fn`` writes its chunk's rows of
     arrays the caller owns; it should spend its time in compiled code that releases the
-    GIL. The first exception of a chunk is raised once all chunks have ended."""
+    GIL. The first exception of a chunk is raised once all chunks have ended.
+
+    ``then(lo, hi, busy)``, if given, runs in this thread as each chunk ends (in the order
+    they end, while the others go on; after ``fn`` for one chunk), ``busy()`` telling
+    whether chunks are still running: per-row work that needs the chunk's result (and the
+    GIL) overlaps the chunks left instead of following them all. Not called once a chunk
+    has raised.
+    """
     bounds = chunk_bounds(n, workers)
     if len(bounds) == 1:
         fn(0, n)
+        if then is not None:
+            then(0, n, lambda: False)
         return
     with ThreadPoolExecutor(max_workers=min(workers, len(bounds)),
                             thread_name_prefix="moik-batch") as pool:
-        futures = [pool.submit(fn, lo, hi) for lo, hi in bounds]
+        futures = {pool.submit(fn, lo, hi): (lo, hi) for lo, hi in bounds}
+        if then is not None:
+            def busy() -> bool:
+                return not all(future.done() for future in futures)
+
+            for future in as_completed(futures):
+                if future.exception() is not None:
+                    break
+                then(*futures[future], busy)
     for future in futures:
         future.result()
 

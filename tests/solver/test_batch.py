@@ -13,7 +13,7 @@ from moik.collision import CollisionChecker, HalfSpace, Scene
 from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetError
 from moik.problems import random_reachable_targets
 from moik.robots import get_robot
-from moik.solver import parallel
+from moik.solver import batch, parallel
 from moik.solver.batch import child_seeds
 from moik.solver.collision import default_model
 
@@ -119,6 +119,33 @@ def test_answers_are_the_same_for_every_worker_count(monkeypatch):
     seeds = child_seeds(2, len(poses))
     for i in (0, 7, 200, 297):  # and each as solve_ik answers it alone
         np.testing.assert_array_equal(one.q[i], solve_ik(robot, poses[i], seed=seeds[i]).q)
+
+
+def test_a_tail_solved_beside_the_chunks_gives_the_same_answers(monkeypatch):
+    """Tail targets solved in this thread while chunks still run (``busy`` forced: all of
+    them) are answered as the tail after the chunks answers them."""
+    robot = get_robot("panda")
+    poses = _mixed_batch(robot, 300, 5)
+    one = solve_ik_batch(robot, poses, seed=2, workers=1)
+    run, early = parallel.map_chunks, []
+
+    def always_busy(fn, n, workers, then=None):
+        def then_busy(lo, hi, busy):
+            early.append((lo, hi))
+            then(lo, hi, lambda: True)
+        run(fn, n, workers, then=then_busy)
+
+    monkeypatch.setattr(parallel, "map_chunks", always_busy)
+    monkeypatch.setattr(batch, "_tail_target", _counted(batch._tail_target, tails := []))
+    assert_same(one, solve_ik_batch(robot, poses, seed=2, workers=2))
+    assert len(early) > 1 and sorted(tails) == [7, 297]  # each tail target solved once
+
+
+def _counted(fn, calls):
+    def counted(job, i):
+        calls.append(i)
+        return fn(job, i)
+    return counted
 
 
 def test_collision_aware_answers_are_the_same_for_every_worker_count(monkeypatch):

@@ -20,7 +20,56 @@ def test_chunks_cover_the_range_once_in_order():
             if workers == 1 or n <= parallel.MIN_CHUNK:
                 assert bounds == [(0, n)]
             else:
-                assert all(hi - lo >= parallel.MIN_CHUNK for lo, hi in bounds[:-1])
+                sizes = [hi - lo for lo, hi in bounds]
+                assert min(sizes) >= parallel.MIN_CHUNK
+                # guided: each takes its share of the rows left (the last: the remainder too)
+                left = n - np.concatenate([[0], np.cumsum(sizes)])[:-1]
+                share = np.maximum(parallel.MIN_CHUNK,
+                                   np.ceil(left / (parallel.GUIDE * workers)))
+                assert (sizes[:-1] == share[:-1]).all()
+                assert share[-1] <= sizes[-1] < share[-1] + parallel.MIN_CHUNK
+
+
+def test_guided_chunks_shrink_to_the_end():
+    sizes = [hi - lo for lo, hi in parallel.chunk_bounds(48000, 16)]
+    assert sizes[0] == 48000 // (parallel.GUIDE * 16)
+    assert sizes[:-1] == sorted(sizes[:-1], reverse=True)
+    assert sizes[-2] == parallel.MIN_CHUNK
+
+
+def test_then_runs_here_as_each_chunk_ends():
+    """``then`` runs in the calling thread once per chunk, after the chunk, and ``busy``
+    says whether chunks are still running."""
+    import threading
+
+    here, out, seen = threading.get_ident(), np.zeros(1000), []
+
+    def fill(lo, hi):
+        time.sleep(0.01 * (lo > 0))
+        out[lo:hi] = 1.0
+
+    def then(lo, hi, busy):
+        assert threading.get_ident() == here and (out[lo:hi] == 1.0).all()
+        seen.append(((lo, hi), busy()))
+
+    parallel.map_chunks(fill, 1000, 2, then=then)
+    assert sorted(b for b, _ in seen) == parallel.chunk_bounds(1000, 2)
+    assert seen[-1][1] is False  # none left running after the last
+    assert seen[0][0] == (0, parallel.chunk_bounds(1000, 2)[0][1]) and seen[0][1] is True
+    seen.clear()
+    parallel.map_chunks(fill, 100, 2, then=then)  # one chunk: here, nothing else running
+    assert seen == [((0, 100), False)]
+
+
+def test_then_is_not_called_after_a_chunk_failed():
+    calls = []
+
+    def fail(lo, hi):
+        raise ValueError(f"chunk {lo}")
+
+    with pytest.raises(ValueError, match="chunk 0"):
+        parallel.map_chunks(fail, 1000, 2, then=lambda lo, hi, busy: calls.append(lo))
+    assert calls == []
 
 
 def test_threads_write_their_chunks():

@@ -68,11 +68,13 @@ define_struct(IKContext, IKContextType, FIELDS)
 @jit
 def _new_context(chain, target, stops, accept, collision, sizes):
     """The compiled constructor (cached; the proxy's own would compile in every process).
-    ``target = (position, rotation, has_rotation)`` becomes the context's
+    ``target = (position, rotation, has_rotation, angles)`` becomes the context's
     :class:`~moik.kinematics.target_spec.TargetSpec` here, in the same call (the solver
-    compares rotations by its own residual: no metric). ``collision`` is an argument of its
-    own: numba types a StructRef inside a tuple argument in Python, one on its own in C."""
-    spec = TargetSpec(target[0], target[1], target[2], NO_METRIC, np.zeros(3))
+    compares rotations by its own residual: no metric; ``angles`` comes allocated: an
+    ``np.zeros`` here would compile numba's own before every cold first solve).
+    ``collision`` is an argument of its own: numba types a StructRef inside a tuple
+    argument in Python, one on its own in C."""
+    spec = TargetSpec(target[0], target[1], target[2], NO_METRIC, target[3])
     return IKContext(chain, spec, stops[0], stops[1], accept[0], accept[1], sizes[0],
                      sizes[1], collision, accept[2])
 
@@ -108,7 +110,8 @@ def ik_context(robot: Robot, target: Target, *, stop: tuple[float, float],
         chain: The arm's compiled record (default ``robot.chain_model``; a thread passes
             one of its own, :meth:`~moik.robots.chain.Robot.new_chain_model`).
     """
-    return _new_context(robot.chain_model if chain is None else chain, solver_target(target),
+    return _new_context(robot.chain_model if chain is None else chain,
+                        (*solver_target(target), np.zeros(3)),
                         (float(stop[0]), float(stop[1])),
                         (float(tol[0]), float(tol[1]), float(clearance)),
                         collision,

@@ -27,7 +27,8 @@ kernels) and those of its multi-objective algorithm and archive (:mod:`moik.algo
 generations, numbers of joints and criteria: the same kernels and argument types) on
 stand-in criteria of plain numpy (:func:`stand_in`: no kinematic kernel), and the
 archive's front masks; then the local search's joint distances and Jacobians and the
-built-in criteria, which the parent needs last. ``benchmarks/startup.py`` times the cold
+built-in criteria, which the parent needs last (and first, being small, the joint check
+of the members). ``benchmarks/startup.py`` times the cold
 first ``--pareto`` solve with and without it.
 
 The child draws nothing from the caller's seeds and never calls a user's criterion
@@ -136,9 +137,11 @@ def beside_pareto(robot: Robot, target, **options: Any) -> background.Background
 
 def pareto_search(robot: Robot, target, m: int, criteria: list[str], q_current, rotation,
                   method: str, pop_size: int, generations: int) -> None:
-    """The ``"pareto-search"`` child: ``method`` on :class:`StandInCriteria`, the archive's
-    masks, then the local search's distances and Jacobians and the built-in ``criteria``."""
+    """The ``"pareto-search"`` child: the joint check, ``method`` on
+    :class:`StandInCriteria`, the archive's masks, then the local search's distances and
+    Jacobians and the built-in ``criteria``."""
     X0 = robot.random_q(pop_size, rng=np.random.default_rng(0))
+    robot.check_q(X0)  # the members' joint check (a small kernel, needed last: ready early)
     params: dict[str, Any] = {"pop_size": pop_size}
     if "X0" in accepted_parameters(method):
         params["X0"] = X0

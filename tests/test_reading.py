@@ -1,9 +1,9 @@
-"""Bounded reading of JSON and TOML from elsewhere (moik/_reading.py): size, nesting, numbers,
-UTF-8, and only regular files."""
+"""Bounded reading of JSON and TOML from elsewhere (moik/_validate/reading.py): size,
+nesting, numbers, UTF-8, and only regular files."""
 
 import pytest
 
-from moik import _reading
+from moik._validate import reading as _reading
 from moik.exceptions import ConfigError, GeometryError
 
 

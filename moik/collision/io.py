@@ -32,8 +32,8 @@ from typing import Any
 
 import numpy as np
 
-from moik._reading import depth_problem, read_json
 from moik._validate import finite_array, known_keys
+from moik._validate.reading import depth_problem, read_json
 from moik.collision.model import CollisionModel, Scene
 from moik.collision.shapes import Box, Capsule, HalfSpace, Shape, Sphere, cylinder
 from moik.exceptions import GeometryError, UnknownNameError

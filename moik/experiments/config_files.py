@@ -20,8 +20,8 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
-from moik import _reading
 from moik._paths import file_name
+from moik._validate import reading as _reading
 from moik.exceptions import ConfigError
 
 SUFFIX = ".toml"

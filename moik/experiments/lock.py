@@ -25,7 +25,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from moik import _reading
+from moik._validate import reading as _reading
 from moik.exceptions import MoikError, ResultsError
 
 LOCK_NAME = "run.lock"

@@ -13,7 +13,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from moik import _paths, _reading
+from moik import _paths
+from moik._validate import reading as _reading
 from moik.exceptions import MoikError, ResultsError
 
 REQUIRED = {"trial": str, "status": str, "algorithm": str, "target": int, "run": int}

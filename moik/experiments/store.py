@@ -51,8 +51,9 @@ from pathlib import Path
 
 import numpy as np
 
-from moik import _paths, _reading
+from moik import _paths
 from moik._validate import flag
+from moik._validate import reading as _reading
 from moik.exceptions import MoikError, ResultsError
 from moik.experiments.config import ExperimentConfig
 from moik.experiments.files import (

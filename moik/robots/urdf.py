@@ -32,8 +32,8 @@ from pathlib import Path
 
 import numpy as np
 
-from moik._reading import read_bytes
-from moik._reading import text as decoded_text
+from moik._validate.reading import read_bytes
+from moik._validate.reading import text as decoded_text
 from moik.exceptions import MoikError, UnknownNameError, URDFError
 from moik.robots.chain import Robot
 from moik.robots.description import URDFDescription

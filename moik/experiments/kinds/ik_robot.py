@@ -39,7 +39,7 @@ from typing import Any
 
 import numpy as np
 
-from moik import _reading
+from moik._validate import reading as _reading
 from moik.exceptions import ConfigError, MoikError, ResultsError
 from moik.robots import Robot, get_robot
 from moik.robots.urdf import MAX_URDF_BYTES, load_urdf

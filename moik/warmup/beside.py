@@ -173,12 +173,18 @@ def beside_solve(robot: Robot, target=None) -> background.Background | None:
     return background.start(family, {"robot": robot}, [kernel(path) for path in probes])
 
 
-def solve_leaves(robot: Robot) -> None:
-    """The ``"solve-leaves"`` child: each leaf called once, in the order a solve needs them."""
+def _stand_in_start(robot: Robot) -> tuple[Any, Any, np.ndarray]:
+    """A context and workspace of the numba types a plain solve's have (any target: the
+    types do not depend on it), and a joint vector to call the leaves at."""
     ctx = ik_context(robot, Target(np.zeros(3), np.eye(3)), stop=(0.0, 0.0), tol=(0.0, 0.0),
                      distinct=0.1)
-    ws = lm_workspace(robot.dof)
     q = np.ascontiguousarray((robot.lower + robot.upper) / 2.0, dtype=np.float64)
+    return ctx, lm_workspace(robot.dof), q
+
+
+def solve_leaves(robot: Robot) -> None:
+    """The ``"solve-leaves"`` child: each leaf called once, in the order a solve needs them."""
+    ctx, ws, q = _stand_in_start(robot)
     damped_step(ctx, ws, LAMBDA0, q)
     recheck(ctx, ws, q)
     keep_found(ctx, ws, np.full((1, robot.dof + 2), np.nan), 0, q)
@@ -190,10 +196,8 @@ def solve_leaves(robot: Robot) -> None:
 def front_leaves(robot: Robot) -> None:
     """The ``"front-leaves"`` child: the damped step on a context of the front's numba
     types, the batch FK of its polish and the answer's joint check."""
-    ctx = ik_context(robot, Target(np.zeros(3), np.eye(3)), stop=(0.0, 0.0), tol=(0.0, 0.0),
-                     distinct=0.1)
-    q = np.ascontiguousarray((robot.lower + robot.upper) / 2.0, dtype=np.float64)
-    damped_step(ctx, lm_workspace(robot.dof), LAMBDA0, q)
+    ctx, ws, q = _stand_in_start(robot)
+    damped_step(ctx, ws, LAMBDA0, q)
     robot.fk_parts(q[None])
     robot.check_q(q)
 

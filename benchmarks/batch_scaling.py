@@ -40,7 +40,10 @@ from moik.robots import get_robot
 from moik.solver import solve_ik_batch
 from moik.solver.parallel import available_cores
 
-CEILING_N = 5_000_000  # iterations of the machine-ceiling loop per call (about 0.1 s on one core)
+CEILING_PER_CPU = 2_500_000  # iterations of the machine-ceiling loop per call and CPU (about
+# 0.05 s on one core): each of 16 threads still runs for about 0.05 s, long enough that thread
+# start-up and wake-up latencies do not set the row (5M iterations in all gave a 16-CPU host
+# 0.01 s per thread, and a ceiling of 7-9x from those latencies, not from its cores)
 
 
 @numba.njit(nogil=True, cache=False)
@@ -51,10 +54,10 @@ def _loop(n: int) -> float:
     return s
 
 
-def ceiling(workers: int) -> None:
-    """The machine row: ``CEILING_N`` iterations of a compiled loop, split over ``workers``
-    threads (the same work for every row, nothing shared)."""
-    parts = [CEILING_N // workers] * workers
+def ceiling(workers: int, cpus: int) -> None:
+    """The machine row: ``CEILING_PER_CPU x cpus`` iterations of a compiled loop, split over
+    ``workers`` threads (the same work for every row, nothing shared)."""
+    parts = [CEILING_PER_CPU * cpus // workers] * workers
     if workers == 1:
         _loop(parts[0])
         return
@@ -100,8 +103,8 @@ def table(title: str, robot, poses, kw: dict, rows: list, repeats: int,
     solve = {label: (lambda extra=extra: solve_ik_batch(robot, poses, seed=0, **kw, **extra))
              for label, extra in rows}
     if machine:
-        solve[f"machine {machine}"] = lambda: ceiling(machine)
-        solve["machine 1"] = lambda: ceiling(1)
+        solve[f"machine {machine}"] = lambda: ceiling(machine, machine)
+        solve["machine 1"] = lambda: ceiling(1, machine)
     first = {label: fn() for label, fn in solve.items()}  # untimed
     times: dict[str, list[float]] = {label: [] for label in solve}
     cpu: dict[str, list[float]] = {label: [] for label in solve}

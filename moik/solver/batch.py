@@ -15,6 +15,7 @@ with the answers of the serial run.
 
 from __future__ import annotations
 
+import contextlib
 import copy
 import dataclasses
 import time
@@ -265,11 +266,23 @@ def _solve_chunk(job: BatchJob) -> Rows:
     return solve_rows(job, workers=1)
 
 
+TAIL_HERE_MAX_WORKERS = 3
+"""Up to this many workers, this thread solves each ended chunk's hard tail while the other
+chunks run (one core's worth more of the batch's work: faster at 2 workers with a
+collision check, docs/batch.md); with more, its Python would hold the GIL that every chunk
+thread needs back from each compiled call (each waits up to the interpreter's switch
+interval), and the tail goes to processes instead: with a collision check (a tail is
+expected: targets whose every start ends in collision) to a
+:class:`~moik.solver.parallel.TaskPool` started before the chunks, chunk by chunk as they
+end; else after the chunks (:func:`~moik.solver.parallel.map_processes`)."""
+
+
 def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
     """The answers of the job's targets (seeds ``first + i``): ``(q, status, position error,
     orientation error, success, n_eval, min distance, whether that distance is exact)``, the
-    first stage on ``workers`` threads, the hard tail on as many processes (the tail of a
-    chunk that has ended in this thread while other chunks still run). A first-stage
+    first stage on ``workers`` threads, the hard tail on as many processes (or, up to
+    :data:`TAIL_HERE_MAX_WORKERS`, the tail of a chunk that has ended in this thread while
+    other chunks still run). A first-stage
     answer's distance is its clearance test's (:meth:`CollisionGuard.below`: exact below
     the clearance, else a number at least it); :class:`BatchDistances` completes them."""
     robot, n = job.robot, len(job.positions)
@@ -283,6 +296,11 @@ def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
     known = np.zeros(n, dtype=np.bool_)  # rows whose distance is exact (the tail's)
     status = np.full(n, "not-converged", dtype=object)
     early: dict[int, tuple] = {}  # tail answers found while chunks still ran
+    chunked = workers > 1 and n > parallel.MIN_CHUNK and opts.polish and (
+        qc is not None or opts.starts)
+    here = workers <= TAIL_HERE_MAX_WORKERS  # the tail beside the chunks in this thread
+    pool = (parallel.TaskPool(_tail_target, job, workers)  # before the chunks' threads
+            if chunked and not here and guard is not None and parallel.can_fork() else None)
 
     def settle(lo: int, hi: int, busy) -> None:  # this thread, as each chunk ends
         k = lo + np.flatnonzero(solved[lo:hi])
@@ -294,27 +312,33 @@ def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
                 ok &= guard.keeps(dist[k])
             pos[k], ori[k], solved[k] = p_k, o_k, ok
             status[k[ok]] = "solved"
+        if pool is not None:  # its tail, to the processes, beside the chunks left
+            pool.submit(map(int, lo + np.flatnonzero(~solved[lo:hi])))
+            return
         for i in lo + np.flatnonzero(~solved[lo:hi]):  # its tail, beside the chunks left
-            if not busy():
+            if not (here and busy()):
                 break
             early[int(i)] = _tail_target(job, int(i))
 
-    if opts.polish and (qc is not None or opts.starts):
-        def chunk(lo: int, hi: int) -> None:  # a thread's rows: compiled calls, GIL released
-            own = None if guard is None else _own_guard(guard)
-            _first_stage(robot, (positions[lo:hi], None if rotations is None
-                                 else rotations[lo:hi]), None if qc is None else qc[lo:hi],
-                         opts, tolerance, (job.root, job.first + lo), own,
-                         (out_Q[lo:hi], solved[lo:hi], n_evals[lo:hi]))
-            done = lo + np.flatnonzero(solved[lo:hi])
-            if qc is not None and len(done):
-                out_Q[done] = nearest_copies(robot, out_Q[done], qc[done])
-            if own is not None and len(done):  # the re-check's clearance test (below)
-                dist[done] = own.below(out_Q[done])
-            if progress is not None:
-                progress(len(done))
+    with pool or contextlib.nullcontext():
+        if opts.polish and (qc is not None or opts.starts):
+            def chunk(lo: int, hi: int) -> None:  # a thread's rows: compiled calls, no GIL
+                own = None if guard is None else _own_guard(guard)
+                _first_stage(robot, (positions[lo:hi], None if rotations is None
+                                     else rotations[lo:hi]), None if qc is None else qc[lo:hi],
+                             opts, tolerance, (job.root, job.first + lo), own,
+                             (out_Q[lo:hi], solved[lo:hi], n_evals[lo:hi]))
+                done = lo + np.flatnonzero(solved[lo:hi])
+                if qc is not None and len(done):
+                    out_Q[done] = nearest_copies(robot, out_Q[done], qc[done])
+                if own is not None and len(done):  # the re-check's clearance test (below)
+                    dist[done] = own.below(out_Q[done])
+                if progress is not None:
+                    progress(len(done))
 
-        parallel.map_chunks(chunk, n, workers, then=settle)
+            parallel.map_chunks(chunk, n, workers, then=settle)
+        if pool is not None:
+            early = pool.results()
     tail = np.flatnonzero(~solved)  # the hard tail: the whole of solve_ik
     rest = [int(i) for i in tail if i not in early]
     answers = dict(zip(rest, parallel.map_processes(_tail_target, job, rest, workers),

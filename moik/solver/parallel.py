@@ -166,6 +166,50 @@ def map_processes(fn: Callable[[Any, Any], Any], shared: Any, items: Iterable,
     return out + [done[item] for item in rest]
 
 
+def can_fork() -> bool:
+    """Whether :class:`TaskPool` can start here: ``fork`` exists and this process is not a
+    pool's own (daemonic) worker."""
+    return ("fork" in multiprocessing.get_all_start_methods()
+            and not multiprocessing.current_process().daemon)
+
+
+class TaskPool:
+    """``fn(shared, item)`` for items handed in while other work runs, in ``workers`` forked
+    processes started now: before the caller starts any thread (a process forked while
+    threads run may inherit a lock one of them holds). The per-item work of a batch (the
+    hard tail, Python under the GIL) then runs beside its threaded chunks without taking
+    this process's GIL from them: a thread returning from compiled code waits for the GIL
+    while this process runs Python (up to the interpreter's switch interval each time), so
+    per-item Python work in this process would stall every chunk thread.
+
+    Use as a context manager (the processes end with it); :meth:`submit` items as they are
+    known, :meth:`results` once all are submitted. Only where :func:`can_fork`.
+    """
+
+    def __init__(self, fn: Callable[[Any, Any], Any], shared: Any, workers: int):
+        ctx = multiprocessing.get_context("fork")
+        self._pool = ctx.Pool(workers, initializer=_init_pool_worker, initargs=(fn, shared))
+        self._pending: list = []
+
+    def submit(self, items: Iterable) -> None:
+        """Hand ``items`` to the processes (each to whichever is free); returns at once."""
+        items = list(items)
+        if items:
+            self._pending.append(self._pool.map_async(_run_task, items, chunksize=1))
+
+    def results(self) -> dict:
+        """``{item: fn(shared, item)}`` of every item submitted (waits for them; raises the
+        first error of an item)."""
+        return dict(pair for pending in self._pending for pair in pending.get())
+
+    def __enter__(self) -> TaskPool:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self._pool.terminate()
+        self._pool.join()
+
+
 def check_client(client: Any) -> Any:
     """``client`` if it looks like a ``dask.distributed.Client`` (``map``, ``gather``)."""
     if not (callable(getattr(client, "map", None)) and callable(getattr(client, "gather", None))

@@ -163,6 +163,20 @@ def test_collision_aware_answers_are_the_same_for_every_worker_count(monkeypatch
     one = solve_ik_batch(robot, poses, workers=1, **kw)
     assert one.min_distance is not None and (one.status == "collides").any()
     assert_same(one, solve_ik_batch(robot, poses, workers=2, **kw))
+    if parallel.can_fork():  # more workers: the tail in processes started before the chunks
+        submitted: list = []
+
+        class Recorded(parallel.TaskPool):
+            def submit(self, items):
+                items = list(items)
+                submitted.extend(items)
+                super().submit(items)
+
+        monkeypatch.setattr(parallel, "TaskPool", Recorded)
+        four = solve_ik_batch(robot, poses, workers=4, **kw)
+        assert_same(one, four)
+        tail = np.flatnonzero(one.status != "solved")
+        assert len(submitted) == len(set(submitted)) and set(tail) <= set(submitted) != set()
 
 
 def test_a_dask_cluster_gives_the_same_answers():

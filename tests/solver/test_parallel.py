@@ -135,6 +135,27 @@ def test_a_tail_of_slow_items_gets_a_pool_after_its_first(monkeypatch):
     assert all(pid == os.getpid() for _, pid in out)
 
 
+def _fail_on_three(shared, item):
+    if item == 3:
+        raise ValueError("item three")
+    return item + shared, os.getpid()
+
+
+@pytest.mark.skipif(not parallel.can_fork(), reason="TaskPool forks")
+def test_a_task_pool_takes_items_as_they_come_and_answers_each_once():
+    with parallel.TaskPool(_square_plus, 1, 2) as pool:
+        pool.submit([4, 2])
+        pool.submit([])
+        pool.submit(np.array([7]))  # numpy integers too
+        out = pool.results()
+    assert {k: v for k, (v, _) in out.items()} == {4: 17, 2: 5, 7: 50}
+    assert all(pid != os.getpid() for _, pid in out.values())
+    with parallel.TaskPool(_fail_on_three, 0, 2) as pool:
+        pool.submit([1, 3])
+        with pytest.raises(ValueError, match="item three"):
+            pool.results()
+
+
 def test_small_or_single_worker_pools_stay_here():
     for items, workers in (([4], 4), ([1, 2, 3], 1)):
         out = parallel.map_processes(_square_plus, 0, items, workers)

@@ -21,11 +21,13 @@ from __future__ import annotations
 
 import argparse
 import csv
+import io
 import sys
 from pathlib import Path
 
 import numpy as np
 
+from moik._paths import atomic_write_bytes
 from moik._validate import integer
 from moik.cli import collision
 from moik.cli.common import SOLVE_OPTIONS, library_call, robot, tolerance
@@ -124,27 +126,46 @@ def _read_csv(file: Path, degrees: bool) -> np.ndarray:
             raise ShapeError(f"targets file {str(file)!r} line {number}: expected {want} "
                              f"numbers, got {len(values)}")
         rows.append(values)
-    arr = np.array(rows, dtype=np.float64).reshape(len(rows), -1)
-    if arr.shape[1] == 3 or not len(arr):
-        return arr.reshape(-1, 3) if len(arr) else np.zeros((0, 3))
+    if not rows:
+        return np.zeros((0, 3))  # refused by read_targets: no target
+    arr = np.array(rows, dtype=np.float64)
+    if arr.shape[1] == 3:
+        return arr
+    finite = np.isfinite(arr).all(axis=1)
+    if not finite.all():
+        raise NonFiniteError(f"targets file {str(file)!r}: target "
+                             f"{int(np.flatnonzero(~finite)[0])} holds NaN or inf")
+    if not degrees and (np.abs(arr[:, 3:]) > 2 * np.pi + 1e-9).any():
+        row = int(np.flatnonzero((np.abs(arr[:, 3:]) > 2 * np.pi + 1e-9).any(axis=1))[0])
+        raise TargetError(f"targets file {str(file)!r}: target {row} has angles "
+                          f"{arr[row, 3:].tolist()} beyond 2 pi in magnitude; they are "
+                          "radians: add --deg to give degrees")
     angles = np.radians(arr[:, 3:]) if degrees else arr[:, 3:]
     poses = np.tile(np.eye(4), (len(arr), 1, 1))
     poses[:, :3, 3] = arr[:, :3]
-    if np.all(np.isfinite(angles)):
-        poses[:, :3, :3] = [rotation_from_zyx(y, p, r) for r, p, y in angles]
-    else:
-        poses[:, 0, 0] = np.nan  # refused by read_targets as NaN
+    poses[:, :3, :3] = [rotation_from_zyx(y, p, r) for r, p, y in angles]
     return poses
 
 
-def result_file(spec: str) -> Path:
-    """``--out``, checked before solving: ``.npz`` or ``.csv`` in an existing folder."""
+def result_file(spec: str, targets: str | None = None) -> Path:
+    """``--out``, checked before solving: ``.npz`` or ``.csv`` in an existing folder, a new
+    name or a regular file (not a link, a folder, a FIFO or a device), not the targets
+    file itself."""
     path = Path(spec)
     if path.suffix.lower() not in RESULT_FORMATS:
         raise ParameterError(f"--out must end in {' or '.join(RESULT_FORMATS)}, got {spec!r}")
     if not path.parent.is_dir():
         raise ParameterError(f"--out folder {str(path.parent)!r} does not exist (create it "
                              "first)")
+    if path.is_symlink():
+        raise ParameterError(f"--out {spec!r} is a symbolic link; moik does not write "
+                             "through links: remove it or name another file")
+    if path.exists() and not path.is_file():
+        raise ParameterError(f"--out {spec!r} exists and is not a regular file (a folder, "
+                             "FIFO or device): name a new file")
+    if targets is not None and path.exists() and Path(targets).exists() \
+            and path.samefile(targets):
+        raise ParameterError(f"--out {spec!r} is the targets file: name another file")
     return path
 
 
@@ -155,17 +176,21 @@ def write_results(path: Path, arm: Robot, res) -> None:
                "orientation_error": res.orientation_error, "n_eval": res.n_eval}
     if res.min_distance is not None:
         columns["min_distance"] = res.min_distance
+    buffer = io.BytesIO()
     if path.suffix.lower() == ".npz":
-        with path.open("wb") as f:
-            np.savez(f, q=res.q, **columns)
-        return
-    names = list(arm.joint_names) or [f"q{j + 1}" for j in range(arm.dof)]
-    with path.open("w", newline="", encoding="utf-8") as f:
-        out = csv.writer(f)
+        np.savez(buffer, q=res.q, **columns)
+    else:
+        names = list(arm.joint_names) or [f"q{j + 1}" for j in range(arm.dof)]
+        text = io.StringIO(newline="")
+        out = csv.writer(text)
         out.writerow(names + list(columns))
         for i in range(len(res.q)):
             out.writerow([repr(float(v)) for v in res.q[i]]
                          + [_cell(columns[c][i]) for c in columns])
+        buffer.write(text.getvalue().encode("utf-8"))
+    # a new file beside it, then renamed: never through a link planted since the check,
+    # and a file interrupted mid-write never takes the result's name
+    atomic_write_bytes(path, buffer.getvalue())
 
 
 def _cell(value) -> str:
@@ -223,7 +248,7 @@ def cmd_batch(args: argparse.Namespace) -> int:
         integer("--seed", search["seed"], minimum=0)
     if "tol" in search:
         search["tol"] = tolerance(search["tol"])
-    out = result_file(args.out)
+    out = result_file(args.out, args.targets)
     arm = robot(args)
     targets = read_targets(args.targets, degrees=args.deg)
     check = collision.checker(args, arm)

@@ -30,9 +30,9 @@ from moik._validate import finite_array
 from moik.collision.compiled import collision_set
 from moik.exceptions import ParameterError, ShapeError, TargetError
 from moik.kinematics.criteria import nearest_copies
-from moik.kinematics.orientation import check_rotation
+from moik.kinematics.orientation import ROTATION_ATOL, _all_rotations, check_rotation
 from moik.kinematics.tolerance import Tolerance
-from moik.problems.targets import Target
+from moik.problems.targets import UNIT_RANGE_FACTOR, Target
 from moik.robots.catalog import as_robot
 from moik.robots.chain import Robot
 from moik.solver import parallel
@@ -124,8 +124,7 @@ def _targets(targets) -> tuple[np.ndarray, np.ndarray | None]:
             bad = int(np.flatnonzero(np.any(np.abs(arr[:, 3] - (0, 0, 0, 1)) > 1e-8, 1))[0])
             raise TargetError(f"targets[{bad}]: pose last row must be [0, 0, 0, 1], got "
                               f"{arr[bad, 3]}")
-        positions, rotations = arr[:, :3, 3].copy(), check_rotation(
-            np.ascontiguousarray(arr[:, :3, :3]), "target rotations", batch=True)
+        positions, rotations = arr[:, :3, 3].copy(), _rotations(arr[:, :3, :3])
     elif arr.ndim == 2 and arr.shape[1] == 3:
         positions, rotations = arr, None
     else:
@@ -134,6 +133,30 @@ def _targets(targets) -> tuple[np.ndarray, np.ndarray | None]:
     if len(positions) == 0:
         raise ShapeError("targets is an empty batch: give at least one target")
     return positions, rotations
+
+
+def _rotations(R: np.ndarray) -> np.ndarray:
+    """The batch's rotations, checked; the first that is not one is named."""
+    R = np.ascontiguousarray(R)
+    try:
+        return check_rotation(R, "target rotations", batch=True)
+    except TargetError:
+        bad = next(i for i in range(len(R)) if not _all_rotations(R[i:i + 1], ROTATION_ATOL))
+        raise TargetError(f"targets[{bad}]: rotation must be a rotation matrix (orthonormal, "
+                          f"det +1), got {R[bad].tolist()}") from None
+
+
+def _check_reach(robot: Robot, positions: np.ndarray) -> None:
+    """Each target within :data:`~moik.problems.targets.UNIT_RANGE_FACTOR` times the reach
+    (as ``solve_ik`` checks one, here before any is solved), the first beyond it named."""
+    dist = np.linalg.norm(positions, axis=1)
+    far = np.flatnonzero(dist > UNIT_RANGE_FACTOR * robot.reach)
+    if len(far):
+        i = int(far[0])
+        raise TargetError(f"targets[{i}]: position {positions[i]} is {dist[i]:.4g} "
+                          f"{robot.unit} from the base of {robot.name!r}, more than "
+                          f"{UNIT_RANGE_FACTOR:g}x its reach ({robot.reach:.4g} {robot.unit}); "
+                          f"expected positions in {robot.unit}")
 
 
 def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=None,
@@ -187,6 +210,7 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=No
     guard = collision_guard(robot, **collision_args)  # validated before the targets
     Tolerance.of(tol, robot.reach)
     positions, rotations = _targets(targets)
+    _check_reach(robot, positions)
     n = len(positions)
     qc = None
     if q_current is not None:

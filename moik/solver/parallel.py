@@ -119,8 +119,12 @@ _TASK: dict[str, Any] = {}  # a pool worker's function and its common argument
 
 
 def _init_pool_worker(fn: Callable, common: Any) -> None:
-    """A pool worker: Ctrl-C reaches only the parent (which ends the pool)."""
+    """A pool worker: Ctrl-C reaches only the parent (which ends the pool), and SIGTERM
+    (the pool's end) ends it at once: a handler inherited from the parent (``moik``'s
+    command raises on SIGTERM) would raise inside the pool's queue locks instead, print
+    a traceback and could leave the parent waiting for a worker that never exits."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
     _TASK["fn"], _TASK["common"] = fn, common
 
 

@@ -2,6 +2,7 @@
 
 import csv
 import json
+import os
 import re
 
 import numpy as np
@@ -83,10 +84,15 @@ def test_unsolved_targets_exit_1(tmp_path, poses, capsys):
     (b"garbage", "not a numpy .npy file"),
     ("a,b,c\n1,2\n", "line 2: expected 3"),
     ("1,2,x\n", "line 1: expected numbers"),
+    ("x,y,z\n# only a header and a comment\n", "holds no target"),
+    ("0.3,0.1,0.5,0,0,0\n0.3,0.1,0.5,0,nan,0\n", "target 1 holds NaN"),
+    ("0.3,0.1,0.5,0,0,0\n0.3,0.1,0.5,90,0,45\n", "target 1 has angles .* add --deg"),
+    ("0.3,0.1,0.5\n20,0,0\n", r"targets\[1\]: position .* more than 10x its reach"),
     (None, "does not exist"),
 ])
 def test_bad_files_exit_2_with_one_line(tmp_path, poses, capsys, content, match):
-    path = tmp_path / ("t.csv" if isinstance(content, str) and "," in content else "t.npy")
+    path = tmp_path / ("t.csv" if isinstance(content, str) and content[0] in "0123456789xa"
+                       else "t.npy")
     if isinstance(content, np.ndarray):
         np.save(path, content)
     elif content == "not-a-rotation":
@@ -111,3 +117,27 @@ def test_bad_out_and_options(tmp_path, poses, capsys):
                          "--clearance was given but nothing is checked")):
         assert main(["batch", "panda", str(tmp_path / "t.npy"), *argv]) == 2
         assert match in capsys.readouterr().err
+
+
+def test_out_is_a_new_name_or_a_regular_file_checked_before_solving(tmp_path, poses, capsys,
+                                                                     monkeypatch):
+    """A link, a folder, a FIFO or the targets file itself as --out: refused before any
+    target is solved (exit 2, one line); what a link points to is never written."""
+    np.save(tmp_path / "t.npy", poses[:2])
+    (tmp_path / "victim.txt").write_text("keep")
+    (tmp_path / "link.npz").symlink_to(tmp_path / "victim.txt")
+    (tmp_path / "dir.npz").mkdir()
+    (tmp_path / "t.csv").write_text("0.3,0.1,0.5\n")
+    cases = [(["t.npy", "--out", "link.npz"], "symbolic link"),
+             (["t.npy", "--out", "dir.npz"], "not a regular file"),
+             (["t.csv", "--out", "t.csv"], "is the targets file")]
+    if hasattr(os, "mkfifo"):
+        os.mkfifo(tmp_path / "fifo.npz")
+        cases.append((["t.npy", "--out", "fifo.npz"], "not a regular file"))
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr(batch, "solve_ik_batch", None)  # never reached
+    for argv, match in cases:
+        assert main(["batch", "panda", *argv]) == 2
+        err = capsys.readouterr().err
+        assert match in err and err.count("\n") == 1, err
+    assert (tmp_path / "victim.txt").read_text() == "keep"

@@ -65,6 +65,10 @@ def test_positions_q_current_and_the_hard_tail():
     (np.array([[0.0, np.nan, 1.0]]), NonFiniteError, "finite"),
     (np.ones((2, 4, 4)), TargetError, "last row"),
     ([["a", "b", "c"]], ShapeError, "array of real numbers"),
+    (np.array([np.eye(4), np.diag([1.0, 1.0, -1.0, 1.0])]), TargetError,
+     r"targets\[1\]: rotation must be a rotation matrix"),
+    (np.array([[0.3, 0.0, 0.5], [0.3, 0.0, 0.5], [40.0, 0.0, 0.0]]), TargetError,
+     r"targets\[2\]: position .* more than 10x its reach"),
 ])
 def test_bad_batches_raise_clear_errors(targets, error, match):
     with pytest.raises(error, match=match):

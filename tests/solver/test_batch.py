@@ -67,7 +67,7 @@ def test_positions_q_current_and_the_hard_tail():
     ([["a", "b", "c"]], ShapeError, "array of real numbers"),
     (np.array([np.eye(4), np.diag([1.0, 1.0, -1.0, 1.0])]), TargetError,
      r"targets\[1\]: rotation must be a rotation matrix"),
-    (np.array([[0.3, 0.0, 0.5], [0.3, 0.0, 0.5], [40.0, 0.0, 0.0]]), TargetError,
+    (np.array([[30.0, 0.0, 50.0], [30.0, 0.0, 50.0], [4000.0, 0.0, 0.0]]), TargetError,
      r"targets\[2\]: position .* more than 10x its reach"),
 ])
 def test_bad_batches_raise_clear_errors(targets, error, match):

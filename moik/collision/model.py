@@ -64,9 +64,12 @@ class CollisionModel:
         allowed: Pairs of link names whose collisions are not checked (besides a link
             with itself and its chain neighbours).
         source: Where the geometry comes from.
+        aliases: ``{other link name: one of links}``: a URDF's links fixed to a body (its
+            root above the base, ``tool0``, ...), accepted wherever a link is named
+            (``allowed``, a scene's allowed pairs) as the body they are on.
 
     Raises:
-        UnknownNameError: A link name that is not one of ``links``.
+        UnknownNameError: A link name that is not one of ``links`` (or ``aliases``).
         GeometryError: A half-space on a link, a wrong number of link names, not shapes.
     """
 
@@ -75,6 +78,7 @@ class CollisionModel:
     links: tuple[str, ...] = ()
     allowed: frozenset[frozenset[str]] = field(default_factory=frozenset)
     source: str = ""
+    aliases: Mapping[str, str] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         if not isinstance(self.robot, Robot):
@@ -97,14 +101,28 @@ class CollisionModel:
                                     "of a robot; use a box")
             checked[link] = items
         object.__setattr__(self, "shapes", checked)
-        pairs = set()
-        for pair in self.allowed:
-            names = tuple(pair)
-            for name in names:
-                if name not in links:
-                    raise UnknownNameError(f"link of robot {self.robot.name!r}", name, links)
-            pairs.add(frozenset(names))
-        object.__setattr__(self, "allowed", frozenset(pairs))
+        if not isinstance(self.aliases, Mapping) or any(
+                not isinstance(k, str) or k in links or v not in links
+                for k, v in self.aliases.items()):
+            raise GeometryError("aliases must map other link names to names of links, got "
+                                f"{self.aliases!r:.200}")
+        object.__setattr__(self, "aliases", dict(self.aliases))
+        object.__setattr__(self, "allowed", frozenset(
+            frozenset(self.body_name(name) for name in pair) for pair in self.allowed))
+
+    def body_name(self, name: str) -> str:
+        """The link (body) ``name`` is on: itself, or for a URDF link fixed to a body
+        (:attr:`aliases`, e.g. ``base_link`` under ``world``) that body's name.
+
+        Raises:
+            UnknownNameError: ``name`` is neither.
+        """
+        if name in self.links:
+            return name
+        if isinstance(name, str) and name in self.aliases:
+            return self.aliases[name]
+        raise UnknownNameError(f"link of robot {self.robot.name!r}", name,
+                               [*self.links, *self.aliases])
 
     @property
     def items(self) -> list[tuple[int, Shape]]:
@@ -127,7 +145,7 @@ class CollisionModel:
         """The model with ``pairs`` added to the allowed-collision matrix."""
         return CollisionModel(robot=self.robot, shapes=self.shapes, links=self.links,
                               allowed=self.allowed | {frozenset(p) for p in pairs},
-                              source=self.source)
+                              source=self.source, aliases=self.aliases)
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -210,7 +228,6 @@ class CollisionChecker:
         if scene is None and not self.self_collision:
             raise ParameterError("a CollisionChecker with nothing to check: pass scene= and/or "
                                  "self_collision=True")
-        robot = model.robot
         items = model.items
         tops = [s for _, s in items] + list(() if scene is None else scene.obstacles.values())
         top_bodies = [b for b, _ in items] + [-1] * (len(tops) - len(items))
@@ -223,10 +240,8 @@ class CollisionChecker:
             checked = set(model.checked_body_pairs())
             pairs += [(a, b) for a in range(len(items)) for b in range(a + 1, len(items))
                       if tuple(sorted((top_bodies[a], top_bodies[b]))) in checked]
-        for _, link in (() if scene is None else scene.allowed):
-            if link not in model.links:
-                raise UnknownNameError(f"link of robot {robot.name!r}", link, model.links)
-        skip = frozenset() if scene is None else scene.allowed
+        skip = frozenset() if scene is None else frozenset(
+            (obstacle, model.body_name(link)) for obstacle, link in scene.allowed)
         obstacles = {} if scene is None else scene.obstacles
         pairs += [(a, len(items) + o) for a in range(len(items))
                   for o, obstacle in enumerate(obstacles)

@@ -47,7 +47,12 @@ from moik.collision.model import CollisionChecker, CollisionModel
 from moik.collision.shapes import Box, Capsule, Compound, ConvexHull, Shape, Sphere, cylinder
 from moik.exceptions import GeometryError
 from moik.robots.chain import Robot
-from moik.robots.urdf_geometry import collision_geometry, mesh_geometry, offchain_placement
+from moik.robots.urdf_geometry import (
+    collision_geometry,
+    link_placements,
+    mesh_geometry,
+    offchain_placement,
+)
 
 MISSING = ("error", "ignore")
 ACM_SEED = 0
@@ -218,7 +223,10 @@ def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
                         + ", ".join(p.describe(n) for n, p in placement.items()))
     if bare:
         source_text += f"; bodies without geometry, NOT checked: {', '.join(bare)}"
-    model = CollisionModel(robot=robot, shapes=shapes, links=tuple(names), source=source_text)
+    _, placed = link_placements(source, robot, joint_values=joint_values)
+    aliases = {link: names[body] for link, (body, _) in placed.items() if link not in names}
+    model = CollisionModel(robot=robot, shapes=shapes, links=tuple(names), source=source_text,
+                           aliases=aliases)
     values = {n: p.value for n, p in placement.items()}
     return _cached_allowed(model, samples, use_cache, values) if samples else model
 

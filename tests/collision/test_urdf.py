@@ -159,3 +159,24 @@ def test_the_shipped_arms_fits_ship(tmp_path, monkeypatch):
         assert model.allowed and set(model.shapes) <= set(model.links)
     robot_model(moik.get_robot("panda"), joint_values={"panda_finger_joint1": 0.04})
     assert not list(tmp_path.rglob("*.json"))
+
+
+def test_links_fixed_to_a_body_are_named_as_that_body():
+    """A URDF link joined by a fixed joint (a mount plate under the base, a tool flange) is
+    accepted wherever a link is named, as the body it is on: a scene's allowed pair naming
+    it skips the same pairs as one naming the body."""
+    fixed = PRIMITIVES.replace('<link name="base">', '<link name="plate"/>\n  <link name="base">'
+                               ).replace('<joint name="j1"', '<joint name="mount" type="fixed">'
+                                         '<parent link="plate"/><child link="base"/></joint>\n'
+                                         '  <joint name="j1"')
+    robot = load_urdf(fixed)
+    model = model_from_urdf(fixed, robot, samples=0)
+    assert model.links[0] == "plate" and model.body_name("base") == "plate"
+    table = Box(size=(1.0, 1.0, 0.1), pose=np.eye(4))
+    by_alias = CollisionChecker(model=model, scene=Scene({"t": table}, allowed={("t", "base")}))
+    by_body = CollisionChecker(model=model, scene=Scene({"t": table}, allowed={("t", "plate")}))
+    assert by_alias.pair_names == by_body.pair_names
+    assert len(by_alias.pair_names) == len(CollisionChecker(
+        model=model, scene=Scene({"t": table})).pair_names) - 1
+    with pytest.raises(moik.exceptions.UnknownNameError, match="'base_link'.*base"):
+        CollisionChecker(model=model, scene=Scene({"t": table}, allowed={("t", "base_link")}))

@@ -89,6 +89,8 @@ def cmd_solve(args: argparse.Namespace) -> int:
         solutions.print_solve(arm, goal, res, Q, errors, plots, compiled=compiled)
         if near is not None:
             collision.print_distances(near, arm.unit)
+        if res.unchecked_links:
+            print(f"not checked (no collision geometry): {', '.join(res.unchecked_links)}")
     if html is not None:
         _explore(arm, goal, res, html, quiet=args.json)
     return 0 if res.success else 1

@@ -110,6 +110,12 @@ class CollisionModel:
         object.__setattr__(self, "allowed", frozenset(
             frozenset(self.body_name(name) for name in pair) for pair in self.allowed))
 
+    @property
+    def unchecked_links(self) -> tuple[str, ...]:
+        """The links (bodies) with no geometry: never checked (a URDF model built with
+        ``missing="ignore"``, or a model that leaves them out)."""
+        return tuple(name for name in self.links if name not in self.shapes)
+
     def body_name(self, name: str) -> str:
         """The link (body) ``name`` is on: itself, or for a URDF link fixed to a body
         (:attr:`aliases`, e.g. ``base_link`` under ``world``) that body's name.

@@ -54,6 +54,9 @@ class IKResult:
             no pair is checked); ``None`` without one.
         distances: With a collision check, that distance for each row of
             ``solutions`` (all >= the clearance); ``None`` without one.
+        unchecked_links: With a collision check, the arm's links that have no geometry
+            and so were not checked (a model built with ``missing="ignore"``); empty
+            otherwise. "Collision-free" says nothing about these links.
     """
 
     q: np.ndarray
@@ -70,6 +73,7 @@ class IKResult:
     detail: str = ""
     min_distance: float | None = None
     distances: np.ndarray | None = field(default=None, repr=False)
+    unchecked_links: tuple[str, ...] = ()
 
     @property
     def fewer_solutions(self) -> bool:
@@ -182,4 +186,5 @@ def ik_result(session: SolveSession, q_current, t0: float, searched_out: bool, f
                     success=v.status == "solved", status=v.status, n_eval=session.n_eval,
                     time=time.perf_counter() - t0, solutions=v.solutions, front=v.front,
                     front_q=v.front_q, n_requested=session.wanted, detail=detail,
-                    min_distance=v.min_distance, distances=distances)
+                    min_distance=v.min_distance, distances=distances,
+                    unchecked_links=() if guard is None else guard.checker.model.unchecked_links)

@@ -80,6 +80,14 @@ def test_a_body_without_geometry_is_an_error_or_an_explicit_choice():
         model_from_urdf(bare, robot, samples=0)
     model = model_from_urdf(bare, robot, samples=0, missing="ignore")
     assert "fore" not in model.shapes and "NOT checked: fore" in model.source
+    assert model.unchecked_links == ("fore",)
+    far = np.eye(4)
+    far[:3, 3] = (2.0, 2.0, 2.0)
+    scene = Scene({"ball": Sphere(radius=0.05, pose=far)})
+    res = solve_ik(robot, robot.fk(np.array([0.3, 0.4])), scene=scene, collision=model)
+    assert res.status == "solved" and res.unchecked_links == ("fore",)  # the result says so
+    whole = load_urdf(PRIMITIVES)
+    assert solve_ik(whole, whole.fk(np.array([0.3, 0.4])), scene=scene).unchecked_links == ()
 
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "urdf"

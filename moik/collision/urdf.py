@@ -42,10 +42,10 @@ from moik._validate import choice, integer
 from moik.collision.acm import DEFAULT_SAMPLES
 from moik.collision.fit import body_axes
 from moik.collision.mesh_fit import cached_link_fit, digest, load_cached, store_cached
-from moik.collision.meshes import read_mesh, resolve_mesh
+from moik.collision.meshes import LARGEST_SIZE, read_mesh, resolve_mesh
 from moik.collision.model import CollisionChecker, CollisionModel
 from moik.collision.shapes import Box, Capsule, Compound, ConvexHull, Shape, Sphere, cylinder
-from moik.exceptions import GeometryError
+from moik.exceptions import GeometryError, MoikError
 from moik.robots.chain import Robot
 from moik.robots.urdf_geometry import (
     collision_geometry,
@@ -59,14 +59,28 @@ ACM_SEED = 0
 HULL_PIECES = 12  # convex hulls per link (slabs of its triangles) inside its capsule
 
 
-def _shape(item: dict[str, Any]) -> Shape:
+def _shape(item: dict[str, Any], label: str) -> Shape:
+    """The primitive of a URDF ``<collision>`` item; its sizes within the sizes a mesh may
+    have (:data:`~moik.collision.meshes.LARGEST_SIZE`: metres), an error naming the link."""
     kind, pose = item["type"], item["pose"]
-    if kind == "box":
-        return Box(size=item["size"], pose=pose)
-    if kind == "sphere":
-        return Sphere(radius=item["radius"], pose=pose)
-    build = Capsule if kind == "capsule" else cylinder
-    return build(radius=item["radius"], length=item["length"], pose=pose)
+    what = f"{label}: <{'cylinder' if kind == 'cylinder' else kind}> of link {item['link']!r}"
+    sizes = {"box": ("size",), "sphere": ("radius",)}.get(kind, ("radius", "length"))
+    for key in sizes:
+        value = np.asarray(item.get(key, np.nan), dtype=float)
+        if not np.all(np.isfinite(value)):
+            raise GeometryError(f"{what} needs a finite {key}=, got {item.get(key)}")
+        if np.any(value <= 0) or np.any(value > LARGEST_SIZE):
+            raise GeometryError(f"{what}: {key} must be in (0, {LARGEST_SIZE:g}] m (a URDF's "
+                                f"unit is the metre), got {value.tolist()}")
+    try:
+        if kind == "box":
+            return Box(size=item["size"], pose=pose)
+        if kind == "sphere":
+            return Sphere(radius=item["radius"], pose=pose)
+        build = Capsule if kind == "capsule" else cylinder
+        return build(radius=item["radius"], length=item["length"], pose=pose)
+    except MoikError as exc:
+        raise GeometryError(f"{what}: {exc}") from None
 
 
 def _urdf_dir(source: Any) -> Path | None:
@@ -203,7 +217,8 @@ def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
     shapes: dict[str, list[Shape]] = {}
     for item in items:
         if not item.get("skipped"):
-            shapes.setdefault(names[item["body"]], []).append(_shape(item))
+            shapes.setdefault(names[item["body"]], []).append(
+                _shape(item, robot.source or robot.name))
     fitted = mesh_shapes(source, robot, package_dirs=package_dirs, use_cache=use_cache,
                          joint_values=joint_values)
     body_of = {item["link"]: item["body"] for item in items}

@@ -188,3 +188,20 @@ def test_links_fixed_to_a_body_are_named_as_that_body():
         model=model, scene=Scene({"t": table})).pair_names) - 1
     with pytest.raises(moik.exceptions.UnknownNameError, match="'base_link'.*base"):
         CollisionChecker(model=model, scene=Scene({"t": table}, allowed={("t", "base_link")}))
+
+
+@pytest.mark.parametrize(("old", "new", "match"), [
+    ('<box size="0.2 0.2 0.1"/>', '<box size="1e300 0.2 0.1"/>',
+     r"<box> of link 'base': size must be in \(0, 100\] m"),
+    ('<box size="0.2 0.2 0.1"/>', '<box size="0.2 -0.2 0.1"/>', "<box> of link 'base'"),
+    ('<sphere radius="0.05"/>', '<sphere radius="nan"/>',
+     "<sphere> of link 'fore' needs a finite radius="),
+    ('<cylinder radius="0.04" length="0.5"/>', '<cylinder radius="0.04"/>',
+     "<cylinder> of link 'upper' needs a finite length="),
+])
+def test_a_bad_primitive_names_its_link(old, new, match):
+    """A URDF primitive of no size, a negative or absurd one (a unit mistake: the URDF's
+    unit is the metre, as for meshes) is refused, naming the link, never an overflow."""
+    bad = PRIMITIVES.replace(old, new)
+    with pytest.raises(GeometryError, match=match):
+        model_from_urdf(bad, load_urdf(bad), samples=0)

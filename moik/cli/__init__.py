@@ -21,8 +21,10 @@ name the chain's first and last links). Joint values on the command line are
 radians, or degrees with ``--deg`` (prismatic joints always in the robot's unit).
 
 ``--json`` (robots, algorithms, fk, solve, solve --pareto) prints one JSON object on
-stdout for scripts; lengths are in the robot's unit, angles and revolute joint values
-in radians, prismatic joint values in the robot's unit. ``fk``, ``solve`` and
+stdout for scripts (strict JSON: a number that is not finite, e.g. the ``min_distance``
+of an answer with no pair near anything, ``inf``, is ``null``); lengths are in the
+robot's unit, angles and revolute joint values in radians, prismatic joint values in
+the robot's unit. ``fk``, ``solve`` and
 ``solve --pareto`` share one schema family: every document has ``"command"``,
 ``"robot"``, ``"unit"``, ``"joint_names"`` and ``"q"`` (the joint vector the command
 is about), and the solving ones ``"target"``, ``"status"``, ``"success"``, ``"n_eval"``,

@@ -14,6 +14,7 @@ pose printed by ``moik fk`` can be pasted into ``moik solve``.
 from __future__ import annotations
 
 import json
+import math
 from collections.abc import Collection
 from typing import TYPE_CHECKING
 
@@ -41,8 +42,24 @@ def q_units(robot: Robot) -> str:
 
 
 def print_json(obj) -> None:
-    """``obj`` as one line of JSON (floats in full precision)."""
-    print(json.dumps(obj))
+    """``obj`` as one line of strict JSON (floats in full precision, a non-finite one as
+    ``null``: ``Infinity`` and ``NaN`` are not JSON)."""
+    print(json.dumps(json_ready(obj), allow_nan=False))
+
+
+def json_ready(value):
+    """``value`` with numpy scalars and arrays as Python values, non-finite floats as None."""
+    if isinstance(value, dict):
+        return {k: json_ready(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [json_ready(v) for v in value]
+    if isinstance(value, np.ndarray):
+        return json_ready(value.tolist())
+    if isinstance(value, np.integer | np.bool_):
+        return value.item()
+    if isinstance(value, float | np.floating):
+        return float(value) if math.isfinite(value) else None
+    return value
 
 
 def floats(values) -> str:

@@ -14,13 +14,13 @@ status 0 when an exact solution was found, 1 otherwise.
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
 
 import numpy as np
 
 from moik.cli import collision
 from moik.cli.common import PARETO_OPTIONS, joint_values, library_call, tolerance
+from moik.cli.output import print_json
 from moik.cli.parser import given
 from moik.cli.solutions import euler_angles
 from moik.cli.solutions import target as target_of
@@ -78,7 +78,7 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
     near = None if check is None else collision.distances(check, res.X)
     clearance = None if check is None else check.clearance
     if args.json:
-        print(json.dumps(as_json(robot, target, res, index, plots, near, clearance)))
+        print_json(as_json(robot, target, res, index, plots, near, clearance))
     else:
         print(format_result(robot, target, res, index, clearance, compiled=compiled))
         if near:

@@ -546,3 +546,18 @@ def test_empty_paths_and_lists_are_refused(argv, capsys):
     err = capsys.readouterr().err
     assert err.startswith("moik: error: ") and err.count("\n") == 1
     assert "expected a non-empty value" in err
+
+
+def test_json_output_is_strict(capsys):
+    """``--json`` documents are strict JSON: a non-finite number (an ``inf`` distance) is
+    ``null``, never ``Infinity``, which strict parsers refuse."""
+    import json as _json
+
+    import numpy as _np
+
+    from moik.cli.output import print_json
+    print_json({"d": float("inf"), "q": _np.array([1.0, _np.nan]), "n": _np.int64(3),
+                "rows": [{"x": _np.float64(-_np.inf)}]})
+    text = capsys.readouterr().out
+    assert "Infinity" not in text and "NaN" not in text
+    assert _json.loads(text) == {"d": None, "q": [1.0, None], "n": 3, "rows": [{"x": None}]}

@@ -28,13 +28,15 @@ Rules:
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
+from collections.abc import Mapping, Sequence
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
 from moik._validate.reading import read_bytes
 from moik._validate.reading import text as decoded_text
-from moik.exceptions import MoikError, UnknownNameError, URDFError
+from moik.exceptions import MoikError, ParameterError, UnknownNameError, URDFError
 from moik.robots.chain import Robot
 from moik.robots.description import URDFDescription
 from moik.robots.transforms import rot_x, translation
@@ -241,10 +243,13 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
         The chain with ``joint_names`` the URDF names of its movable joints.
 
     Raises:
+        ParameterError: ``package_dirs`` not one of those, or naming a folder that does
+            not exist.
         URDFError: malformed file (not a tree, undeclared link, duplicate joint
             name, xacro), unsupported or mimic joint, branching chain without tip.
         UnknownNameError: a link name not in the file (lists the links).
     """
+    check_package_dirs(package_dirs)
     root, label = _read(source)
     links, joints = _parse(root, label)
     for given in (base_link, tip_link):
@@ -337,3 +342,31 @@ def _limits(el: ET.Element, name: str, jtype: str) -> tuple[float, float]:
                         f"lower={lo}, upper={hi}; an unlimited revolute joint is "
                         "type=\"continuous\"")
     return values
+
+
+def check_package_dirs(package_dirs: Any) -> None:
+    """``package_dirs`` as :func:`load_urdf` takes it: ``None``, a folder, a sequence of
+    folders or ``{package name: folder}``, each folder (str or Path) existing.
+
+    Raises:
+        ParameterError: Anything else, named.
+    """
+    if package_dirs is None:
+        return
+    if isinstance(package_dirs, Mapping):
+        entries = list(package_dirs.items())
+    elif isinstance(package_dirs, str | Path):
+        entries = [(None, package_dirs)]
+    elif isinstance(package_dirs, Sequence) and not isinstance(package_dirs, bytes | bytearray):
+        entries = [(None, folder) for folder in package_dirs]
+    else:
+        raise ParameterError("package_dirs must be a folder, a list of folders or "
+                             f"{{package name: folder}}, got {type(package_dirs).__name__}")
+    for name, folder in entries:
+        if (name is not None and not isinstance(name, str)) or not isinstance(folder, str | Path):
+            given = f"{name!r}: {folder!r:.80}" if name is not None else f"{folder!r:.80}"
+            raise ParameterError("package_dirs entries must be folders (str or Path), keyed "
+                                 f"by package name (str) in a mapping; got {given}")
+        if not Path(folder).expanduser().is_dir():
+            raise ParameterError(f"package_dirs: {str(folder)!r} is not a folder"
+                                 f"{f' (package {name!r})' if name is not None else ''}")

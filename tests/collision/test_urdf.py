@@ -65,6 +65,7 @@ def test_not_this_robots_urdf():
 def test_an_unresolvable_mesh_names_link_file_and_folders(tmp_path):
     path = tmp_path / "two.urdf"
     path.write_text(URDF)
+    (tmp_path / "pkgs").mkdir()  # a package folder without package x
     robot = load_urdf(path, package_dirs=[tmp_path / "pkgs"])
     with pytest.raises(GeometryError, match=r"link 'fore'.*package://x/fore\.stl.*not found.*"
                        r"pkgs/x/fore\.stl"):

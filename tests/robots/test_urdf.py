@@ -236,3 +236,15 @@ def test_a_limit_beyond_any_physical_one_is_refused():
     assert "-1e308" in joint
     with pytest.raises(URDFError, match="limits must lie within"):
         load_urdf(_chain(joint, _joint("j2", "b", "c")))
+
+
+@pytest.mark.parametrize(("package_dirs", "match"), [
+    (5, "got int"), (b"/tmp", "got bytes"), ("/no/such/folder", "is not a folder"),
+    ({"arm": 3}, "'arm': 3"), ({"arm": "/no/such/folder"}, r"not a folder \(package 'arm'\)"),
+    (["/tmp", 4], "got 4"),
+])
+def test_package_dirs_are_checked_when_given(package_dirs, match):
+    """A wrong package_dirs is named at load_urdf, not at the first collision-aware solve."""
+    from moik.exceptions import ParameterError
+    with pytest.raises(ParameterError, match=match):
+        load_urdf(_eosma_urdf(), package_dirs=package_dirs)

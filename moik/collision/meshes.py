@@ -139,7 +139,13 @@ def resolve_mesh(filename: str, *, link: str, urdf_dir: Path | None,
         looked.append(path)
         if path.is_file():
             return path
-    where = ", ".join(str(p) for p in looked) or "nowhere (no package folder given)"
+        if path.exists():  # a folder, a FIFO, a device: never opened (a FIFO would block)
+            raise GeometryError(f"link {link!r}: mesh {filename!r} is {str(path)!r}, which is "
+                                "not a regular file (a folder, FIFO or device)")
+    where = ", ".join(str(os.path.normpath(p)) for p in looked)
+    if not where:
+        where = ("nowhere: package_dirs names no package of that name" if package_dirs
+                 else "nowhere (no package folder given)")
     raise GeometryError(f"link {link!r}: mesh {filename!r} not found; looked for {where}; {hint}")
 
 

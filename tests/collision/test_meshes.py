@@ -1,5 +1,6 @@
 """Finding and reading a URDF's mesh files (moik/collision/meshes.py)."""
 
+import os
 import sys
 
 import numpy as np
@@ -98,3 +99,16 @@ def test_without_trimesh_the_error_says_what_to_install(package, monkeypatch):
     monkeypatch.setitem(sys.modules, "trimesh", None)
     with pytest.raises(MoikError, match="needs trimesh.*pip install"):
         read_mesh(mesh, link="l")
+
+
+def test_a_mesh_path_that_is_not_a_regular_file_is_named_so(tmp_path):
+    """A folder (or a FIFO, which would block a read) where a mesh should be: refused as not
+    a regular file, not 'not found' (it exists)."""
+    (tmp_path / "m").mkdir()
+    (tmp_path / "m" / "link.stl").mkdir()
+    with pytest.raises(GeometryError, match="not a regular file"):
+        resolve_mesh("m/link.stl", link="l1", urdf_dir=tmp_path)
+    if hasattr(os, "mkfifo"):
+        os.mkfifo(tmp_path / "m" / "pipe.stl")
+        with pytest.raises(GeometryError, match="not a regular file"):
+            resolve_mesh("m/pipe.stl", link="l1", urdf_dir=tmp_path)

@@ -109,15 +109,20 @@ def _read_csv(file: Path, degrees: bool) -> np.ndarray:
     except (OSError, UnicodeDecodeError) as exc:
         raise ParameterError(f"cannot read targets file {str(file)!r}: {exc}") from None
     rows: list[list[float]] = []
-    for number, line in enumerate(text.splitlines(), start=1):
+    for number, line in enumerate(text.removeprefix("\ufeff").splitlines(), start=1):
         line = line.split("#", 1)[0].strip()
         if not line:
             continue
-        fields = [f for f in line.replace(",", " ").split() if f]
+        fields = _fields(line)
+        if "" in fields:
+            raise ShapeError(f"targets file {str(file)!r} line {number}: an empty field in "
+                             f"{line!r}")
         try:
+            if any("_" in f for f in fields):  # float() reads '1_0' as 10
+                raise ValueError
             values = [float(f) for f in fields]
         except ValueError:
-            if not rows and all(f.replace("_", "").isalpha() for f in fields):
+            if not rows and all(f.strip("\"'").replace("_", "").isalpha() for f in fields):
                 continue  # a header line
             raise ParameterError(f"targets file {str(file)!r} line {number}: expected numbers "
                                  f"(x y z [roll pitch yaw]), got {line!r}") from None
@@ -145,6 +150,14 @@ def _read_csv(file: Path, degrees: bool) -> np.ndarray:
     poses[:, :3, 3] = arr[:, :3]
     poses[:, :3, :3] = [rotation_from_zyx(y, p, r) for r, p, y in angles]
     return poses
+
+
+def _fields(line: str) -> list[str]:
+    """A CSV line's fields: comma-separated (one trailing comma allowed), else blank-separated."""
+    if "," not in line:
+        return line.split()
+    fields = [f.strip() for f in line.split(",")]
+    return fields[:-1] if fields[-1] == "" and len(fields) > 1 else fields
 
 
 def result_file(spec: str, targets: str | None = None) -> Path:
@@ -251,6 +264,9 @@ def cmd_batch(args: argparse.Namespace) -> int:
     out = result_file(args.out, args.targets)
     arm = robot(args)
     targets = read_targets(args.targets, degrees=args.deg)
+    if args.deg and (targets.ndim == 2 or args.targets.lower().endswith(".npy")):
+        raise ParameterError("--deg applies to the angles of a CSV of poses (x y z roll pitch "
+                             "yaw); these targets have none")
     check = collision.checker(args, arm)
     bar = _Bar(len(targets), not args.no_progress and len(targets) >= PROGRESS_MIN)
     try:

@@ -88,6 +88,8 @@ def test_unsolved_targets_exit_1(tmp_path, poses, capsys):
     ("0.3,0.1,0.5,0,0,0\n0.3,0.1,0.5,0,nan,0\n", "target 1 holds NaN"),
     ("0.3,0.1,0.5,0,0,0\n0.3,0.1,0.5,90,0,45\n", "target 1 has angles .* add --deg"),
     ("0.3,0.1,0.5\n20,0,0\n", r"targets\[1\]: position .* more than 10x its reach"),
+    ("0.3,,0.1,0.5\n", "line 1: an empty field"),
+    ("0.3,1_0,0.5\n", "line 1: expected numbers"),
     (None, "does not exist"),
 ])
 def test_bad_files_exit_2_with_one_line(tmp_path, poses, capsys, content, match):
@@ -141,3 +143,14 @@ def test_out_is_a_new_name_or_a_regular_file_checked_before_solving(tmp_path, po
         err = capsys.readouterr().err
         assert match in err and err.count("\n") == 1, err
     assert (tmp_path / "victim.txt").read_text() == "keep"
+
+
+def test_a_bom_header_and_trailing_commas_are_read_deg_without_angles_refused(tmp_path, capsys):
+    """Excel's "CSV UTF-8" (a byte-order mark before the header) and a trailing comma per
+    line read as plain CSV; --deg with targets that have no angles is refused (exit 2)."""
+    path = tmp_path / "t.csv"
+    path.write_text("\ufeffx,y,z,\n0.3,0.1,0.5,\n0.3,0.2,0.5,\n", encoding="utf-8")
+    assert main(["batch", "panda", str(path), "--out", str(tmp_path / "r.npz")]) == 0
+    assert "2/2 solved" in capsys.readouterr().out
+    assert main(["batch", "panda", str(path), "--deg", "--out", str(tmp_path / "r.npz")]) == 2
+    assert "--deg applies to the angles" in capsys.readouterr().err

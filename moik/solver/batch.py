@@ -65,6 +65,8 @@ class IKBatchResult:
             (a full measure of every pair, most of a mesh arm's cost) are computed at the
             first read of this attribute, once.
         distances: The record behind :attr:`min_distance` (:class:`BatchDistances`).
+        unchecked_links: With a collision check, the arm's links without geometry, not
+            checked (as :attr:`IKResult.unchecked_links <moik.solver.result.IKResult>`).
     """
 
     q: np.ndarray
@@ -81,6 +83,11 @@ class IKBatchResult:
         """See the class docstring (``None`` without a collision check)."""
         return None if self.distances is None else self.distances.values()
 
+    @property
+    def unchecked_links(self) -> tuple[str, ...]:
+        """See the class docstring (empty without a collision check)."""
+        return () if self.distances is None else self.distances.unchecked_links
+
 
 class BatchDistances:
     """The smallest signed distance of each answer of a batch, exact at the first read.
@@ -94,6 +101,7 @@ class BatchDistances:
     def __init__(self, guard: CollisionGuard, q: np.ndarray, values: np.ndarray,
                  known: np.ndarray) -> None:
         self._guard, self._q, self._values, self._known = guard, q, values, known
+        self.unchecked_links = guard.checker.model.unchecked_links
 
     def values(self) -> np.ndarray:
         """``(n,)`` exact smallest signed distances (measured once)."""

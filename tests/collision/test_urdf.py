@@ -87,6 +87,9 @@ def test_a_body_without_geometry_is_an_error_or_an_explicit_choice():
     scene = Scene({"ball": Sphere(radius=0.05, pose=far)})
     res = solve_ik(robot, robot.fk(np.array([0.3, 0.4])), scene=scene, collision=model)
     assert res.status == "solved" and res.unchecked_links == ("fore",)  # the result says so
+    batch = moik.solve_ik_batch(robot, robot.fk(np.array([[0.3, 0.4]])), scene=scene,
+                                collision=model)
+    assert batch.unchecked_links == ("fore",)
     whole = load_urdf(PRIMITIVES)
     assert solve_ik(whole, whole.fk(np.array([0.3, 0.4])), scene=scene).unchecked_links == ()
 

@@ -63,32 +63,50 @@ def _circumcentre(p: tuple, q: tuple, s: tuple) -> tuple[float, float] | None:
     return p[0] + (by * a2 - ay * b2) / den, p[1] + (ax * b2 - bx * a2) / den
 
 
+def _first_outside(X: np.ndarray, start: int, stop: int, c: tuple, r2: float,
+                   tol: float) -> int:
+    """The first index in ``[start, stop)`` whose point of ``X`` lies outside the circle
+    (``c``, ``r2``), or ``stop``: scanned in blocks that double, so that a point found
+    early costs little and a long scan few numpy calls."""
+    block = 32
+    while start < stop:
+        end = min(stop, start + block)
+        seg = X[start:end]
+        outside = (seg[:, 0] - c[0]) ** 2 + (seg[:, 1] - c[1]) ** 2 > r2 + tol
+        if outside.any():
+            return start + int(outside.argmax())
+        start, block = end, 2 * block
+    return stop
+
+
 def _smallest_circle_centre(X: np.ndarray) -> tuple[float, float]:
     """The centre of the smallest circle around the 2-D points ``X`` (Welzl, iterative,
-    in a fixed shuffled order). Only the centre is used: the radius is recomputed."""
+    in a fixed shuffled order; each loop's search for the next point outside the
+    current circle is a numpy scan). Only the centre is used: the radius is recomputed."""
     order = np.random.default_rng(0).permutation(len(X))
-    pts = [tuple(p) for p in X[order].tolist()]
-    span = float(np.ptp(X, axis=0).max()) if len(X) else 0.0
+    Xs = np.ascontiguousarray(X[order], dtype=float)
+    n = len(Xs)
+
+    def point(m: int) -> tuple[float, float]:
+        x, y = Xs[m].tolist()
+        return x, y
+
+    span = float(np.ptp(X, axis=0).max()) if n else 0.0
     tol = (1e-12 * span) ** 2
 
-    def out(p: tuple, c: tuple, r2: float) -> bool:
-        return (p[0] - c[0]) ** 2 + (p[1] - c[1]) ** 2 > r2 + tol
-
-    c, r2 = pts[0], 0.0
-    for i, p in enumerate(pts):
-        if not out(p, c, r2):
-            continue
+    c, r2 = point(0), 0.0
+    i = _first_outside(Xs, 0, n, c, r2, tol)
+    while i < n:
+        p = point(i)
         c, r2 = p, 0.0
-        for j in range(i):
-            q = pts[j]
-            if not out(q, c, r2):
-                continue
+        j = _first_outside(Xs, 0, i, c, r2, tol)
+        while j < i:
+            q = point(j)
             c = ((p[0] + q[0]) / 2, (p[1] + q[1]) / 2)
             r2 = (p[0] - c[0]) ** 2 + (p[1] - c[1]) ** 2
-            for k in range(j):
-                s = pts[k]
-                if not out(s, c, r2):
-                    continue
+            k = _first_outside(Xs, 0, j, c, r2, tol)
+            while k < j:
+                s = point(k)
                 cc = _circumcentre(p, q, s)
                 if cc is None:  # collinear: the circle on the farthest pair
                     pair = max(((p, q), (p, s), (q, s)),
@@ -96,6 +114,9 @@ def _smallest_circle_centre(X: np.ndarray) -> tuple[float, float]:
                     cc = ((pair[0][0] + pair[1][0]) / 2, (pair[0][1] + pair[1][1]) / 2)
                 c = cc
                 r2 = max((v[0] - c[0]) ** 2 + (v[1] - c[1]) ** 2 for v in (p, q, s))
+                k = _first_outside(Xs, k + 1, j, c, r2, tol)
+            j = _first_outside(Xs, j + 1, i, c, r2, tol)
+        i = _first_outside(Xs, i + 1, n, c, r2, tol)
     return c
 
 

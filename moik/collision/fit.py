@@ -2,16 +2,17 @@
 
 Used at build time (``studies/fit_capsules.py`` makes the shipped models with it) and
 when a URDF's meshes are loaded (:mod:`moik.collision.mesh_fit`).
-:func:`enclosing_capsule` is pure numpy: the capsule it returns contains every point
-given. :func:`mesh_vertices` reads a mesh file with trimesh, imported only when called;
+:func:`enclosing_capsule` returns a capsule that contains every point given.
+:func:`mesh_vertices` reads a mesh file with trimesh, imported only when called;
 :func:`urdf_mesh_points` and :func:`fit_urdf` put a URDF's mesh vertices on a robot's
 bodies (:func:`moik.robots.urdf_geometry.mesh_geometry`) and fit one capsule per link.
 
 The fit, for one candidate axis direction ``u``: the points' coordinates across ``u``,
-their smallest enclosing circle (Welzl's algorithm) gives the axis line (its centre) and
-the radius ``r`` (the largest distance of a point from that line, recomputed exactly);
-along ``u``, with axial coordinate ``t`` and distance ``rho <= r`` from the line, the
-shortest segment ``[t0, t1]`` that keeps every point within ``r`` of it is
+their smallest enclosing circle (Welzl's algorithm, :mod:`moik.collision.circle`) gives
+the axis line (its centre) and the radius ``r`` (the largest distance of a point from
+that line, recomputed exactly); along ``u``, with axial coordinate ``t`` and distance
+``rho <= r`` from the line, the shortest segment ``[t0, t1]`` that keeps every point
+within ``r`` of it is
 ``t1 = max(t - sqrt(r^2 - rho^2))``, ``t0 = min(t + sqrt(r^2 - rho^2))`` (the farthest
 point has ``rho = r``, so ``t0 <= t1``). The candidates: the three principal axes of the
 points (PCA) and any directions the caller adds (e.g. the body's joint axes); the
@@ -31,6 +32,7 @@ from typing import Any
 import numpy as np
 
 from moik._validate import finite_array
+from moik.collision.circle import smallest_circle_centre
 from moik.exceptions import GeometryError, MoikError
 from moik.robots.chain import Robot
 from moik.robots.fk_kernels import world_frames
@@ -53,73 +55,6 @@ def capsule_excess(points: Any, a: Any, b: Any, radius: float) -> float:
     return float(max(0.0, (dist - radius).max()))
 
 
-def _circumcentre(p: tuple, q: tuple, s: tuple) -> tuple[float, float] | None:
-    ax, ay = q[0] - p[0], q[1] - p[1]
-    bx, by = s[0] - p[0], s[1] - p[1]
-    den = 2.0 * (ax * by - ay * bx)
-    if den == 0.0:
-        return None
-    a2, b2 = ax * ax + ay * ay, bx * bx + by * by
-    return p[0] + (by * a2 - ay * b2) / den, p[1] + (ax * b2 - bx * a2) / den
-
-
-def _first_outside(X: np.ndarray, start: int, stop: int, c: tuple, r2: float,
-                   tol: float) -> int:
-    """The first index in ``[start, stop)`` whose point of ``X`` lies outside the circle
-    (``c``, ``r2``), or ``stop``: scanned in blocks that double, so that a point found
-    early costs little and a long scan few numpy calls."""
-    block = 32
-    while start < stop:
-        end = min(stop, start + block)
-        seg = X[start:end]
-        outside = (seg[:, 0] - c[0]) ** 2 + (seg[:, 1] - c[1]) ** 2 > r2 + tol
-        if outside.any():
-            return start + int(outside.argmax())
-        start, block = end, 2 * block
-    return stop
-
-
-def _smallest_circle_centre(X: np.ndarray) -> tuple[float, float]:
-    """The centre of the smallest circle around the 2-D points ``X`` (Welzl, iterative,
-    in a fixed shuffled order; each loop's search for the next point outside the
-    current circle is a numpy scan). Only the centre is used: the radius is recomputed."""
-    order = np.random.default_rng(0).permutation(len(X))
-    Xs = np.ascontiguousarray(X[order], dtype=float)
-    n = len(Xs)
-
-    def point(m: int) -> tuple[float, float]:
-        x, y = Xs[m].tolist()
-        return x, y
-
-    span = float(np.ptp(X, axis=0).max()) if n else 0.0
-    tol = (1e-12 * span) ** 2
-
-    c, r2 = point(0), 0.0
-    i = _first_outside(Xs, 0, n, c, r2, tol)
-    while i < n:
-        p = point(i)
-        c, r2 = p, 0.0
-        j = _first_outside(Xs, 0, i, c, r2, tol)
-        while j < i:
-            q = point(j)
-            c = ((p[0] + q[0]) / 2, (p[1] + q[1]) / 2)
-            r2 = (p[0] - c[0]) ** 2 + (p[1] - c[1]) ** 2
-            k = _first_outside(Xs, 0, j, c, r2, tol)
-            while k < j:
-                s = point(k)
-                cc = _circumcentre(p, q, s)
-                if cc is None:  # collinear: the circle on the farthest pair
-                    pair = max(((p, q), (p, s), (q, s)),
-                               key=lambda e: (e[0][0] - e[1][0]) ** 2 + (e[0][1] - e[1][1]) ** 2)
-                    cc = ((pair[0][0] + pair[1][0]) / 2, (pair[0][1] + pair[1][1]) / 2)
-                c = cc
-                r2 = max((v[0] - c[0]) ** 2 + (v[1] - c[1]) ** 2 for v in (p, q, s))
-                k = _first_outside(Xs, k + 1, j, c, r2, tol)
-            j = _first_outside(Xs, j + 1, i, c, r2, tol)
-        i = _first_outside(Xs, i + 1, n, c, r2, tol)
-    return c
-
-
 def _perpendicular(u: np.ndarray) -> np.ndarray:
     """Two unit vectors completing ``u`` to an orthonormal basis (as rows)."""
     x, y, z = u
@@ -136,7 +71,7 @@ def _along(P: np.ndarray, u: np.ndarray, H: np.ndarray | None = None
     around ``H`` (``P``'s convex-hull vertices: the same circle, found faster)."""
     E = _perpendicular(u)
     X = P @ E.T
-    centre = np.array(_smallest_circle_centre(X if H is None else H @ E.T))
+    centre = np.array(smallest_circle_centre(X if H is None else H @ E.T))
     rho = np.linalg.norm(X - centre, axis=1)
     r = float(rho.max())
     h = np.sqrt(np.maximum(r * r - rho * rho, 0.0))

@@ -11,7 +11,10 @@ capsules (:func:`moik.collision.shapes.cylinder`); meshes (``package://``, ``fil
 file paths, :mod:`moik.collision.meshes`) are read and each link's become one
 :class:`~moik.collision.shapes.Compound`: a capsule fitted to their triangles
 (:mod:`moik.collision.mesh_fit`: every triangle inside), cached on disk, holding the
-convex hulls of :data:`HULL_PIECES` slabs of the triangles (every triangle in one slab).
+convex hulls of :data:`HULL_PIECES` slabs of the triangles (every triangle in one slab;
+a hull of a high-poly mesh's slab with more than
+:data:`~moik.collision.outer_hull.MAX_EXACT_VERTICES` vertices is replaced by an enclosing
+polytope with fewer, about 0.5 mm outside it: :mod:`moik.collision.outer_hull`).
 The kernels measure a pair on the capsules and, where they come close, on the hulls
 (:mod:`moik.collision.gjk`): the hulls hold the meshes, so a configuration called free
 is free for the meshes, and they follow a link far closer than one capsule. Bodies are
@@ -44,6 +47,7 @@ from moik.collision.fit import body_axes
 from moik.collision.mesh_fit import cached_link_fit, digest, load_cached, store_cached
 from moik.collision.meshes import LARGEST_SIZE, read_mesh, resolve_mesh
 from moik.collision.model import CollisionChecker, CollisionModel
+from moik.collision.outer_hull import enclosing_polytope
 from moik.collision.shapes import Box, Capsule, Compound, ConvexHull, Shape, Sphere, cylinder
 from moik.exceptions import GeometryError, MoikError
 from moik.robots.chain import Robot
@@ -137,7 +141,8 @@ def mesh_shapes(source: Any, robot: Robot, *, package_dirs: Any = None,
         V, F = np.vstack(vertices), np.vstack(faces)
         (a, b, r), = cached_link_fit(V, F, identity=identity, axes=candidates[body], capsules=1,
                                      split_gain=0.85, use_cache=use_cache)
-        parts = tuple(ConvexHull(points=P) for P in hull_pieces(V, F, HULL_PIECES))
+        parts = tuple(ConvexHull(points=enclosing_polytope(P))
+                      for P in hull_pieces(V, F, HULL_PIECES))
         out[link] = Compound(bound=Capsule.between(a.tolist(), b.tolist(), r), parts=parts)
     return out
 

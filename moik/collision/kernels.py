@@ -161,6 +161,20 @@ def pair_distances(cs, Q, out):
             out[i, k] = pair_value(cs, W, k, np.inf)[0]
 
 
+@jit
+def pairs_touching(cs, Q, hit):
+    """Set ``hit[k]`` for every pair ``k`` in collision (distance below 0) in some row of
+    ``Q (n, dof)``; a pair already hit is not measured again, and the others only as far
+    as their sign (limit 0: the parts whose bounds keep apart are skipped)."""
+    scratch = distance_scratch(cs)
+    W = scratch[2]
+    for i in range(Q.shape[0]):
+        place_all(cs, Q[i], scratch)
+        for k in range(cs.pairs.shape[0]):
+            if not hit[k] and pair_value(cs, W, k, 0.0)[0] < 0.0:
+                hit[k] = True
+
+
 @jit(nogil=True)
 def min_distances(cs, Q, dmin, which):
     """Smallest pair distance ``dmin (n,)`` and the pair ``which (n,)`` that attains it.

@@ -44,6 +44,7 @@ import numpy as np
 from moik._validate import choice, integer
 from moik.collision.acm import DEFAULT_SAMPLES
 from moik.collision.fit import body_axes
+from moik.collision.kernels import pairs_touching
 from moik.collision.mesh_fit import cached_link_fit, digest, load_cached, store_cached
 from moik.collision.meshes import LARGEST_SIZE, read_mesh, resolve_mesh
 from moik.collision.model import CollisionChecker, CollisionModel
@@ -154,10 +155,11 @@ def sample_never(model: CollisionModel, samples: int) -> list[tuple[str, str]]:
     if checker.n_pairs == 0:
         return []
     Q = model.robot.random_q(samples, rng=np.random.default_rng(ACM_SEED))
-    D = checker.distances(Q)
+    touching = np.zeros(checker.n_pairs, dtype=np.bool_)
+    pairs_touching(checker.compiled, np.ascontiguousarray(Q), touching)
     hit: dict[tuple[int, int], bool] = {}
     for k, pair in enumerate(checker.pair_bodies):
-        hit[pair] = hit.get(pair, False) or bool(np.any(D[:, k] < 0.0))
+        hit[pair] = hit.get(pair, False) or bool(touching[k])
     return [(model.links[i], model.links[j]) for (i, j), h in hit.items() if not h]
 
 

@@ -209,3 +209,21 @@ def test_a_bad_primitive_names_its_link(old, new, match):
     bad = PRIMITIVES.replace(old, new)
     with pytest.raises(GeometryError, match=match):
         model_from_urdf(bad, load_urdf(bad), samples=0)
+
+
+def test_sample_never_is_the_pairs_never_below_zero():
+    """The allowed-collision sampling (a compiled pass that stops measuring a pair once it
+    touches, and measures the others only to their sign) gives the pairs whose full
+    signed distance is never below 0 on the same random configurations."""
+    from moik.collision.urdf import ACM_SEED, sample_never
+
+    robot = moik.get_robot("ur5")
+    desc = robot.description
+    model = model_from_urdf(desc.source, robot, package_dirs=desc.package_dirs, samples=0)
+    checker = CollisionChecker(model=model, self_collision=True)
+    D = checker.distances(robot.random_q(400, rng=np.random.default_rng(ACM_SEED)))
+    touched = {pair for k, pair in enumerate(checker.pair_bodies) if (D[:, k] < 0).any()}
+    expected = {(model.links[i], model.links[j]) for i, j in checker.pair_bodies
+                if (i, j) not in touched}
+    never = set(sample_never(model, 400))
+    assert never == expected and 0 < len(never) < len(set(checker.pair_bodies))

@@ -26,8 +26,9 @@ def _first_outside(X, start, stop, c, r2):
     return stop
 
 
-@jit(inline=True)
+@jit
 def _d2(ax, ay, bx, by):
+    """The squared distance of two points (a kernel of its own: six call sites)."""
     return (ax - bx) * (ax - bx) + (ay - by) * (ay - by)
 
 

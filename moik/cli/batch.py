@@ -36,7 +36,7 @@ from moik.exceptions import NonFiniteError, ParameterError, ShapeError, TargetEr
 from moik.kinematics.orientation import ROTATION_ATOL, rotation_from_zyx
 from moik.robots import Robot
 from moik.solver import solve_ik_batch
-from moik.solver.parallel import worker_count
+from moik.solver.parallel import chunk_bounds, worker_count
 
 PROGRESS_MIN = 1000  # targets from which the progress bar is shown
 RESULT_FORMATS = (".npz", ".csv")
@@ -237,19 +237,23 @@ class _Bar:
 
 
 def summary(res, n_workers: int, unit: str, path: Path) -> str:
-    """One line: how many solved, the other statuses, time and rate, the largest errors."""
+    """One line: how many solved, the other statuses, time and rate with the workers that
+    ran (one for a batch of one chunk), the largest errors, the links left unchecked."""
     n = len(res.status)
     statuses, counts = np.unique(res.status, return_counts=True)
     others = ", ".join(f"{c} {s}" for s, c in zip(statuses, counts, strict=True)
                        if s != "solved")
     solved = int(res.success.sum())
     line = (f"{solved}/{n} solved{f' ({others})' if others else ''} in {res.time:.2f} s "
-            f"({solved / res.time:.0f} solutions/s, {n_workers} workers)")
+            f"({solved / res.time:.0f} solutions/s, {n_workers} "
+            f"{'worker' if n_workers == 1 else 'workers'})")
     if solved:
         pos = res.position_error[res.success].max()
         ori = res.orientation_error[res.success].max()
         line += f"; largest errors of the solved: position {pos:.3g} {unit}, orientation " \
                 f"{ori:.3g} rad"
+    if getattr(res, "unchecked_links", ()):
+        line += f"; not checked (no collision geometry): {', '.join(res.unchecked_links)}"
     return f"{line}; written to {path}"
 
 
@@ -276,5 +280,6 @@ def cmd_batch(args: argparse.Namespace) -> int:
     finally:
         bar.close()
     write_results(out, arm, res)
-    print(summary(res, worker_count(args.workers), arm.unit, out))
+    workers = worker_count(args.workers)
+    print(summary(res, min(workers, len(chunk_bounds(len(targets), workers))), arm.unit, out))
     return 0 if bool(res.success.all()) else 1

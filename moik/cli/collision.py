@@ -30,7 +30,8 @@ import numpy as np
 
 from moik.cli.parser import given, library_default
 from moik.collision.io import load_scene
-from moik.exceptions import MoikError
+from moik.collision.urdf import robot_model
+from moik.exceptions import MoikError, ParameterError
 from moik.robots import Robot
 from moik.solver.collision import CollisionGuard, collision_guard
 
@@ -41,7 +42,7 @@ _OPTION_NAMES = ((" (or collision=a CollisionChecker)", ""),
                  ("clearance must ", "--clearance must "),
                  ("pass package_dirs=[a folder holding", "give --package-dir [a folder holding"),
                  ("pass missing='ignore' to leave them unchecked",
-                  "use the library's missing='ignore' to leave them unchecked"))
+                  "give --allow-missing-geometry to leave them unchecked"))
 
 
 @contextmanager
@@ -71,10 +72,20 @@ def checker(args: argparse.Namespace, robot: Robot) -> CollisionGuard | None:
     """
     scene = getattr(args, "scene", None)
     clearance = given(args, "clearance").get("clearance", library_default("clearance"))
+    self_collision = getattr(args, "self_collision", False)
     with option_names():
+        model = None
+        if getattr(args, "allow_missing_geometry", False):
+            if scene is None and not self_collision:
+                raise ParameterError("--allow-missing-geometry goes with --scene or "
+                                     "--self-collision: without them nothing is checked")
+            if robot.description is None:
+                raise ParameterError("--allow-missing-geometry is for a URDF arm (a catalog "
+                                     f"arm {robot.name!r} has its shipped collision model)")
+            model = robot_model(robot, missing="ignore")
         return collision_guard(robot, scene=None if scene is None else load_scene(scene),
-                               self_collision=getattr(args, "self_collision", False),
-                               clearance=clearance)
+                               self_collision=self_collision, clearance=clearance,
+                               collision=model)
 
 
 def solver_options(check: CollisionGuard | None) -> dict[str, Any]:

@@ -107,6 +107,10 @@ def _check_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--clearance", type=float, metavar="D",
                    help="with --scene or --self-collision: the smallest accepted distance "
                         "(robot unit, >= 0; default {default})")
+    p.add_argument("--allow-missing-geometry", action="store_true",
+                   help="URDF: check the links that have <collision> geometry and leave those "
+                        "without it unchecked (named in the output); without it such a link is "
+                        "an error")
     p.add_argument("--tol", nargs="+", type=float, metavar="TOL",
                    help="tolerance: one number t (position t*reach, orientation t rad; default "
                         "{default}) or two (position in the robot's unit, orientation in rad)")

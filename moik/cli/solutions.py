@@ -56,7 +56,8 @@ def print_pose(robot: Robot, q: np.ndarray, T: np.ndarray, inside: bool, as_json
 def print_solve_json(robot: Robot, target: Target, res, errors: list, plots: list,
                      n_solutions: int, collision: list | None = None) -> None:
     """The ``solve`` document: status, q, errors, every solution with its errors, front
-    (and with ``--scene`` ``q``'s ``min_distance`` and each solution's ``min_distance``,
+    (and with ``--scene`` ``q``'s ``min_distance``, the ``unchecked_links`` (no geometry,
+    left unchecked by ``--allow-missing-geometry``) and each solution's ``min_distance``,
     ``closest_pair``, ``collides``)."""
     extra = collision or []
     print_json({
@@ -69,7 +70,8 @@ def print_solve_json(robot: Robot, target: Target, res, errors: list, plots: lis
         "detail": res.detail,
         "time_s": res.time, "q": res.q.tolist(), "position_error": res.position_error,
         "orientation_error": res.orientation_error,
-        **({} if res.min_distance is None else {"min_distance": res.min_distance}),
+        **({} if res.min_distance is None else {"min_distance": res.min_distance,
+                                                  "unchecked_links": list(res.unchecked_links)}),
         "solutions": [{"q": q.tolist(), "position_error": p, "orientation_error": o,
                        **(extra[k] if k < len(extra) else {})}
                       for k, (q, (p, o)) in enumerate(zip(res.solutions, errors,

@@ -174,3 +174,40 @@ def test_a_urdf_arm_with_its_meshes(tmp_path, capsys):
     assert main(argv) != 0  # the meshes' package not given: the error says which option
     err = capsys.readouterr().err
     assert "kuka_kr16_support" in err and "give --package-dir" in err
+
+
+BARE = """<robot name="two">
+  <link name="base"><collision><origin xyz="0 0 0.05"/><geometry><box size="0.2 0.2 0.1"/>
+    </geometry></collision></link>
+  <link name="upper"><collision><origin xyz="0 0 0.25"/><geometry>
+    <cylinder radius="0.04" length="0.5"/></geometry></collision></link>
+  <link name="fore"/>
+  <joint name="j1" type="revolute"><parent link="base"/><child link="upper"/>
+    <origin xyz="0 0 0.1"/><axis xyz="0 1 0"/><limit lower="-2" upper="2"/></joint>
+  <joint name="j2" type="revolute"><parent link="upper"/><child link="fore"/>
+    <origin xyz="0 0 0.5"/><axis xyz="0 1 0"/><limit lower="-2" upper="2"/></joint>
+</robot>"""
+
+
+def test_a_link_without_geometry_is_refused_or_explicitly_left_unchecked(tmp_path, capsys):
+    """`fore` has no <collision>: an error naming the option, or, with the option, solved
+    and named as not checked (text and JSON)."""
+    urdf = tmp_path / "two.urdf"
+    urdf.write_text(BARE)
+    scene = tmp_path / "scene.json"
+    scene.write_text(json.dumps({"obstacles": [{"name": "ball", "type": "sphere",
+                                                "radius": 0.1, "xyz": [2, 2, 2]}]}))
+    argv = ["solve", str(urdf), "--target", "0.3", "0.0", "0.5", "--scene", str(scene)]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert "['fore'] have no <collision>" in err and "give --allow-missing-geometry" in err
+    assert main([*argv, "--allow-missing-geometry"]) == 0
+    assert "not checked (no collision geometry): fore" in capsys.readouterr().out
+    assert main([*argv, "--allow-missing-geometry", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["unchecked_links"] == ["fore"]
+    assert main(["solve", str(urdf), "--target", "0.3", "0.0", "0.5",
+                 "--allow-missing-geometry"]) == 2
+    assert "goes with --scene or --self-collision" in capsys.readouterr().err
+    assert main(["solve", "puma560", "--target", "0.3", "0.0", "0.5", "--scene", str(scene),
+                 "--allow-missing-geometry"]) == 2
+    assert "is for a URDF arm" in capsys.readouterr().err

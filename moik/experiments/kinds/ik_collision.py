@@ -4,7 +4,10 @@
   (``{"obstacles": [...]}``);
 - ``clearance``: required distance (robot unit, default 0);
 - ``self_collision``: check the arm against itself (default false, as in ``solve_ik``);
-- ``collision_groups``: ``"min"`` (one aggregate constraint) or ``"links"`` (one per body).
+- ``collision_groups``: ``"min"`` (one aggregate constraint) or ``"links"`` (one per body);
+- ``missing_geometry``: ``"error"`` (default: a link of a URDF arm without ``<collision>``
+  geometry is refused, as in ``solve_ik``) or ``"ignore"`` (such links are left unchecked;
+  each trial records them as ``unchecked_links``).
 
 With a ``scene`` (or ``self_collision`` true and no scene) the problem is wrapped in
 :class:`~moik.problems.collision_ik.CollisionIK` with the geometry ``solve_ik`` checks by
@@ -24,14 +27,18 @@ from collections.abc import Mapping
 
 import numpy as np
 
+from moik._validate import choice
 from moik.collision.io import load_scene
 from moik.collision.model import CollisionChecker
+from moik.collision.urdf import MISSING, robot_model
 from moik.exceptions import GeometryError
 from moik.problems.collision_ik import CollisionIK
 from moik.robots import Robot
 from moik.solver.collision import default_model
 
-COLLISION_KEYS = ("scene", "clearance", "self_collision", "collision_groups")
+COLLISION_KEYS = ("scene", "clearance", "self_collision", "collision_groups", "missing_geometry")
+_MISSING_HINT = ("pass missing='ignore' to leave them unchecked",
+                 'set missing_geometry = "ignore" in the problem to leave them unchecked')
 
 
 def is_checked(problem: Mapping) -> bool:
@@ -47,7 +54,14 @@ def checker_of(robot: Robot, problem: Mapping) -> CollisionChecker:
         GeometryError: Nothing to check (no robot shape, or every pair allowed).
     """
     scene = load_scene(problem["scene"]) if "scene" in problem else None
-    model = default_model(robot)
+    missing = choice("missing_geometry", problem.get("missing_geometry", "error"), MISSING)
+    try:
+        if missing == "ignore" and robot.description is not None:
+            model = robot_model(robot, missing="ignore")
+        else:
+            model = default_model(robot)
+    except GeometryError as exc:
+        raise GeometryError(str(exc).replace(*_MISSING_HINT)) from None
     checker = CollisionChecker(model=model, scene=scene,
                                self_collision=problem.get("self_collision", False))
     if checker.n_pairs == 0:
@@ -74,4 +88,7 @@ def feasibility(problem, X: np.ndarray, record: dict) -> np.ndarray:
     d = problem.min_distance(X)
     ok = problem.keeps(d)
     record.update(n_feasible=int(ok.sum()), min_distance=float(d.min()))
+    unchecked = problem.checker.model.unchecked_links
+    if unchecked:
+        record["unchecked_links"] = list(unchecked)
     return ok

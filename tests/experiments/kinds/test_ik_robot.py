@@ -14,11 +14,13 @@ from moik import load_urdf
 from moik.collision.shapes import Compound
 from moik.exceptions import ConfigError, ResultsError
 from moik.experiments.config import ExperimentConfig, load_config
-from moik.experiments.kinds.ik_collision import checker_of
+from moik.experiments.kinds.ik_collision import checker_of, feasibility
 from moik.experiments.kinds.ik_robot import arm, stored_robot
 from moik.experiments.report import make_report
 from moik.experiments.runner import run_experiment
 from moik.experiments.store import ResultStore
+from moik.problems.collision_ik import CollisionIK
+from moik.problems.ik import BiObjectiveIK
 from moik.solver.collision import collision_guard
 
 DATA = Path(__file__).resolve().parents[3] / "moik" / "robots" / "data"
@@ -205,3 +207,31 @@ def test_a_collision_experiment_checks_the_urdfs_meshes(folder, tmp_path_factory
     d = solver.min_distance_batch(X)
     assert rec["n_feasible"] == int((d >= 0).sum()) and rec["min_distance"] == d.min()
     assert "Collision-free members" in make_report(out, figures=False).path.read_text()
+
+
+def test_a_link_without_geometry_is_refused_or_left_unchecked_by_the_config(folder):
+    """The URDF's forearm_link without its <collision>: refused, naming the config key;
+    with ``missing_geometry = "ignore"`` checked without it, and a trial records it."""
+    urdf = folder / "arms" / "ur5_robot.urdf"
+    text = urdf.read_text()
+    start = text.index("<collision>", text.index('<link name="forearm_link"'))
+    end = text.index("</collision>", start) + len("</collision>")
+    urdf.write_text(text[:start] + text[end:])
+    config = folder / "ur5_scene.toml"
+    with pytest.raises(ConfigError, match=r"\['forearm_link'\] have no <collision>.*"
+                                          r'missing_geometry = "ignore" in the problem'):
+        load_config(config)
+    config.write_text(COLLISION.replace("self_collision = true",
+                                        'self_collision = true\nmissing_geometry = "ignore"'))
+    cfg = load_config(config)
+    robot = arm(cfg.robot)
+    checker = checker_of(robot, cfg["problem"])
+    assert checker.model.unchecked_links == ("forearm_link",)
+    problem = CollisionIK(BiObjectiveIK(robot, robot.fk(np.zeros(6))), checker=checker)
+    record: dict = {}
+    feasibility(problem, np.zeros((2, 6)), record)
+    assert record["unchecked_links"] == ["forearm_link"]
+    config.write_text(COLLISION.replace("self_collision = true",
+                                        'self_collision = true\nmissing_geometry = "skip"'))
+    with pytest.raises(ConfigError, match="missing_geometry"):
+        load_config(config)

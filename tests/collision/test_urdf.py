@@ -227,3 +227,54 @@ def test_sample_never_is_the_pairs_never_below_zero():
                 if (i, j) not in touched}
     never = set(sample_never(model, 400))
     assert never == expected and 0 < len(never) < len(set(checker.pair_bodies))
+
+
+def test_a_high_poly_mesh_is_measured_soundly_and_tightly(tmp_path):
+    """A link whose collision mesh is a 5,120-face ellipsoid (its slab hulls have more than
+    128 vertices, so they become enclosing polytopes): the distance to a ball is never
+    above coal's on the mesh itself, and at most 1 mm below it."""
+    import trimesh
+    from scipy.spatial import ConvexHull
+
+    from moik.collision.outer_hull import MAX_EXACT_VERTICES
+    from moik.collision.urdf import HULL_PIECES, hull_pieces
+    from tests.coal_oracle import coal
+
+    ellipsoid = trimesh.creation.icosphere(subdivisions=4)
+    ellipsoid.vertices *= [0.05, 0.06, 0.2]
+    ellipsoid.vertices[:, 2] += 0.25
+    ellipsoid.export(tmp_path / "fore.stl")
+    urdf = tmp_path / "arm.urdf"
+    urdf.write_text(URDF.replace("package://x/fore.stl", "fore.stl").replace(
+        '<collision><origin xyz="0.2 0 0"/><geometry><sphere radius="0.05"/>\n    </geometry>'
+        '</collision>', ""))
+    robot = load_urdf(urdf)
+    (item,) = mesh_geometry(urdf, robot)[1]
+    mesh = read_mesh(tmp_path / "fore.stl", link="fore", scale=np.ones(3))
+    slabs = hull_pieces(mesh.vertices, mesh.faces, HULL_PIECES)
+    assert max(len(ConvexHull(P).vertices) for P in slabs) > MAX_EXACT_VERTICES
+    rng = np.random.default_rng(5)
+    balls = {f"b{k}": Sphere(radius=0.03, pose=np.block([[np.eye(3), rng.uniform(
+        [-0.1, -0.3, 0.2], [0.9, 0.3, 1.0])[:, None]], [np.zeros((1, 3)), np.ones((1, 1))]]))
+        for k in range(6)}
+    checker = CollisionChecker(model=model_from_urdf(urdf, robot, samples=0),
+                               scene=Scene(balls))
+    fore = [k for k, (a, _) in enumerate(checker.pair_names) if a == "fore"]
+    bvh = coal.BVHModelOBBRSS()
+    bvh.beginModel(len(mesh.faces), len(mesh.vertices))
+    bvh.addVertices(np.ascontiguousarray(mesh.vertices))
+    bvh.addTriangles(np.ascontiguousarray(mesh.faces))
+    bvh.endModel()
+    gaps = []
+    for q in robot.random_q(60, rng=rng):
+        D = checker.distances(q)
+        F = robot.frames(q)[item["body"]] @ item["pose"]
+        for k in fore:
+            ball = balls[checker.pair_names[k][1]]
+            res = coal.DistanceResult()
+            d = coal.distance(bvh, coal.Transform3s(F[:3, :3], F[:3, 3]),
+                              coal.Sphere(0.03), coal.Transform3s(np.eye(3), ball.pose[:3, 3]),
+                              coal.DistanceRequest(), res)
+            if d > 0:
+                gaps.append(d - D[k])
+    assert len(gaps) > 100 and min(gaps) >= -1e-9 and max(gaps) <= 1e-3

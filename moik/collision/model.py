@@ -242,10 +242,14 @@ class CollisionChecker:
         kinds, local, sizes = shape_arrays(shapes)
         hull_points, hull_ranges = hull_arrays(shapes, sizes)
         pairs = []
-        if self.self_collision:
-            checked = set(model.checked_body_pairs())
-            pairs += [(a, b) for a in range(len(items)) for b in range(a + 1, len(items))
-                      if tuple(sorted((top_bodies[a], top_bodies[b]))) in checked]
+        if self.self_collision:  # item pairs a < b on checked body pairs, in that order
+            checked = np.zeros((len(model.links), len(model.links)), dtype=bool)
+            for i, j in model.checked_body_pairs():
+                checked[i, j] = checked[j, i] = True
+            on = np.array(top_bodies[:len(items)], dtype=np.int64)
+            for a in range(len(items)):
+                pairs += [(a, b) for b in (a + 1 + np.flatnonzero(checked[on[a], on[a + 1:]])
+                                           ).tolist()]
         skip = frozenset() if scene is None else frozenset(
             (obstacle, model.body_name(link)) for obstacle, link in scene.allowed)
         obstacles = {} if scene is None else scene.obstacles

@@ -120,3 +120,23 @@ def test_shapes_listed_out_of_body_order_keep_their_pairs():
     checker = CollisionChecker(model=CollisionModel(robot=robot, shapes=shapes),
                                self_collision=True)
     assert sorted(tuple(sorted(p)) for p in checker.pair_bodies) == [(0, 3), (0, 7), (3, 7)]
+
+
+def test_self_pairs_are_every_item_pair_of_a_checked_body_pair_in_order():
+    """The checker's self pairs: each pair of shapes a < b (in the model's item order) whose
+    bodies are a checked pair, every one once and in that order, on a model with several
+    shapes per body and bodies listed out of order."""
+    robot = get_robot("panda")
+    rng = np.random.default_rng(2)
+    names = ["link7", "link0", "link3", "link5", "link1"]
+    shapes = {n: [Sphere(radius=0.02, pose=np.block([[np.eye(3), rng.uniform(-0.05, 0.05, (3, 1))],
+                                                      [np.zeros((1, 3)), np.ones((1, 1))]]))
+                  for _ in range(int(rng.integers(1, 4)))] for n in names}
+    model = CollisionModel(robot=robot, shapes=shapes).with_allowed([("link0", "link5")])
+    checker = CollisionChecker(model=model, self_collision=True)
+    bodies = [b for b, _ in model.items]
+    checked = set(model.checked_body_pairs())
+    want = [(a, b) for a in range(len(bodies)) for b in range(a + 1, len(bodies))
+            if tuple(sorted((bodies[a], bodies[b]))) in checked]
+    got = [tuple(p) for p in checker._shapes["pairs"].tolist()]
+    assert got == want and len(want) > 5

@@ -24,7 +24,7 @@ from moik.problems.targets import Target
 from moik.robots import Robot
 from moik.solver import solve_ik
 from moik.solver.session import pose_errors
-from moik.warmup.beside import beside_solve
+from moik.warmup.beside import beside_collision, beside_solve
 
 PLOT_FORMATS = (".png", ".pdf", ".svg")
 
@@ -72,6 +72,8 @@ def cmd_solve(args: argparse.Namespace) -> int:
     check = collision.checker(args, arm)
     if check is None:
         beside_solve(arm, goal)  # on a cold first run: the leaf kernels of its path
+    else:
+        beside_collision(check.checker)  # on a cold first run: the distance kernels
     with library_call(SOLVE_OPTIONS), compiling() as compiled:
         res = solve_ik(arm, goal, q_current=q_current, **search,
                        **collision.solver_options(check))

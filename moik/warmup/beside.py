@@ -18,6 +18,14 @@ check of the answer. :func:`beside_solve` given such a target has the child comp
 the damped step, that batch FK and that check: on two CPUs a child compiling kernels the
 parent never needs takes CPU time from it.
 
+``"collision-leaves"``: a cold first collision-aware solve compiles the same start loop
+with a collision test of each end, whose distance kernels (the pairs' bounds, GJK on the
+hulls, the box and primitive distances: about half of that solve's compiling) only the
+test calls. :func:`beside_collision` has a child build the solve's own checker (pickled:
+the same collision set, of the same numba type) and call that test once, then the batch
+distance the answer reports, while the parent compiles the FK and LM kernels; the ``moik``
+command starts it before a ``solve`` with ``--scene`` or ``--self-collision``.
+
 ``"pareto-search"``: a cold first Pareto solve of a redundant arm
 (:func:`~moik.solver.pareto.solve_ik_pareto`) compiles two independent families one
 after the other: the kinematic kernels (the Levenberg-Marquardt start loop of its
@@ -68,6 +76,8 @@ LEAF_PROBES = ("moik.solver.starts:run_starts", "moik.solver.lm:damped_step")
 """The start loop and a leaf the ``"solve-leaves"`` child writes: both cached, no child."""
 FRONT_PROBES = ("moik.solver.starts:lm_front", "moik.solver.lm:damped_step")
 """The front's loop and a leaf the ``"front-leaves"`` child writes."""
+COLLISION_PROBES = ("moik.collision.kernels:distance_below",)
+"""The collision test of a start's end, which the ``"collision-leaves"`` child writes."""
 METHOD_PROBES = {"moeosma": "moik.algorithms.moo.moeosma_kernels:generation_draws"}
 """A kernel of each algorithm whose compiled kernels the child writes (``module:name``):
 a family all of whose probes are cached starts no child."""
@@ -173,6 +183,30 @@ def beside_solve(robot: Robot, target=None) -> background.Background | None:
     return background.start(family, {"robot": robot}, [kernel(path) for path in probes])
 
 
+def beside_collision(checker: Any) -> background.Background | None:
+    """Start the ``"collision-leaves"`` child for a first collision-aware solve checked by
+    ``checker`` (a :class:`~moik.collision.CollisionChecker`; module docstring), or return
+    None where it cannot help (:mod:`moik.warmup.background`)."""
+    from moik.collision.model import CollisionChecker
+
+    if not isinstance(checker, CollisionChecker) or checker.n_pairs == 0:
+        return None
+    probes = [kernel(path) for path in COLLISION_PROBES]
+    return background.start("collision-leaves", {"checker": checker}, probes)
+
+
+def collision_leaves(checker: Any) -> None:
+    """The ``"collision-leaves"`` child: the distance test of an end (every distance kernel
+    it calls) on the solve's own collision set, at the middle of the joint ranges, then the
+    smallest distance of a batch (the answer's reported distance, needed last)."""
+    from moik.collision.kernels import distance_below, distance_scratch
+
+    cs = checker.compiled
+    q = np.ascontiguousarray((checker.robot.lower + checker.robot.upper) / 2.0, dtype=np.float64)
+    distance_below(cs, q, distance_scratch(cs), 0.0)
+    checker.min_distance_batch(q[None])
+
+
 def _stand_in_start(robot: Robot) -> tuple[Any, Any, np.ndarray]:
     """A context and workspace of the numba types a plain solve's have (any target: the
     types do not depend on it), and a joint vector to call the leaves at."""
@@ -203,6 +237,7 @@ def front_leaves(robot: Robot) -> None:
 
 
 BESIDE: dict[str, Callable[..., None]] = {"front-leaves": front_leaves,
+                                          "collision-leaves": collision_leaves,
                                           "pareto-search": pareto_search,
                                           "solve-leaves": solve_leaves}
 """Each background family's child workload, by name (run by ``python -m moik.warmup``)."""

@@ -57,6 +57,8 @@ from pymoo.core.problem import Problem
 from moik.algorithms import get_algorithm
 from moik.algorithms.archive.fronts import nondominated_mask
 from moik.algorithms.registry import accepted_parameters
+from moik.collision.kernels import distance_below, distance_scratch
+from moik.collision.model import CollisionChecker
 from moik.kinematics.criteria import CRITERIA, joint_distance
 from moik.kinematics.jacobian import parts_and_jacobian
 from moik.problems.pareto_ik import ParetoIK
@@ -183,24 +185,20 @@ def beside_solve(robot: Robot, target=None) -> background.Background | None:
     return background.start(family, {"robot": robot}, [kernel(path) for path in probes])
 
 
-def beside_collision(checker: Any) -> background.Background | None:
+def beside_collision(checker: CollisionChecker) -> background.Background | None:
     """Start the ``"collision-leaves"`` child for a first collision-aware solve checked by
     ``checker`` (a :class:`~moik.collision.CollisionChecker`; module docstring), or return
     None where it cannot help (:mod:`moik.warmup.background`)."""
-    from moik.collision.model import CollisionChecker
-
     if not isinstance(checker, CollisionChecker) or checker.n_pairs == 0:
         return None
     probes = [kernel(path) for path in COLLISION_PROBES]
     return background.start("collision-leaves", {"checker": checker}, probes)
 
 
-def collision_leaves(checker: Any) -> None:
+def collision_leaves(checker: CollisionChecker) -> None:
     """The ``"collision-leaves"`` child: the distance test of an end (every distance kernel
     it calls) on the solve's own collision set, at the middle of the joint ranges, then the
     smallest distance of a batch (the answer's reported distance, needed last)."""
-    from moik.collision.kernels import distance_below, distance_scratch
-
     cs = checker.compiled
     q = np.ascontiguousarray((checker.robot.lower + checker.robot.upper) / 2.0, dtype=np.float64)
     distance_below(cs, q, distance_scratch(cs), 0.0)

@@ -11,7 +11,7 @@ from moik.collision import CollisionChecker
 from moik.robots import get_robot
 from moik.solver.collision import default_model
 from moik.warmup.beside import beside_collision
-from tests.warmup.test_beside import _run_cold
+from tests.warmup.test_beside import COLD_SOLVE, _run_cold
 
 
 def test_starts_the_collision_leaves_child_with_the_solves_checker(fake_popen):
@@ -26,30 +26,15 @@ def robot_model_of(name: str):
     return default_model(get_robot(name))
 
 
-COLD_COLLISION = """
-import json, pickle, subprocess, sys, numpy as np, moik
-from numba.core import event
-from moik.solver.collision import collision_guard
-from moik.warmup.beside import beside_collision
-from moik.warmup import background
-captured = []
-background.start = lambda family, arguments, probes: captured.append((family, arguments))
-robot = moik.get_robot("panda")
-guard = collision_guard(robot, self_collision=True)
-beside_collision(guard.checker)
-child = subprocess.run([sys.executable, "-m", "moik.warmup"], input=pickle.dumps(captured[0]))
-assert child.returncode == 0
-compiled = []
-class Recorder(event.Listener):
-    def on_start(self, ev):
-        f = ev.data["dispatcher"].py_func
-        compiled.append(f"{f.__module__}.{f.__qualname__}")
-    def on_end(self, ev):
-        pass
-event.register("numba:compile", Recorder())
-res = moik.solve_ik(robot, np.array([0.4, 0.2, 0.5]), collision=guard.checker)
-print(json.dumps({"q": res.q.tolist(), "kernels": sorted(set(compiled))}))
-"""
+COLD_COLLISION = COLD_SOLVE.replace(
+    "from moik.warmup.beside import beside_solve",
+    "from moik.solver.collision import collision_guard\n"
+    "from moik.warmup.beside import beside_collision").replace(
+    'robot = moik.get_robot("puma560")\nbeside_solve(robot)',
+    'robot = moik.get_robot("panda")\nguard = collision_guard(robot, self_collision=True)\n'
+    "beside_collision(guard.checker)").replace(
+    "moik.solve_ik(robot, np.array([0.4, 0.2, 0.3]))",
+    "moik.solve_ik(robot, np.array([0.4, 0.2, 0.5]), collision=guard.checker)")
 
 
 def test_a_cold_first_collision_aware_solve_loads_the_distance_kernels_the_child_compiled(

@@ -132,6 +132,14 @@ def flag(name: str, value: object, *, error: type[MoikError] = ParameterError) -
     return bool(value)
 
 
+def optional_callable(name: str, value: object) -> Any:
+    """``value`` if it is ``None`` or callable (a function to call back), else raise."""
+    if value is not None and not callable(value):
+        raise ParameterError(f"{name} must be a function (or None), got {type(value).__name__} "
+                             f"{value!r}")
+    return value
+
+
 def finite_array(name: str, values: Any, *, shape: tuple[int | None, ...] | None = None,
                  ndim: int | None = None, error: type[MoikError] = ShapeError) -> np.ndarray:
     """``values`` as a contiguous, writeable, finite ``float64`` array.

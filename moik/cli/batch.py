@@ -92,10 +92,18 @@ def _read_npy(file: Path) -> np.ndarray:
     except (ValueError, OSError, EOFError):
         raise ParameterError(f"cannot read targets file {str(file)!r}: not a numpy .npy file "
                              "of numbers") from None
+    except MemoryError:  # a header declaring more than memory holds (damaged, or too large)
+        raise ParameterError(f"cannot read targets file {str(file)!r}: the array its header "
+                             "declares does not fit in memory (a damaged file, or split the "
+                             "targets into several files)") from None
     if not isinstance(arr, np.ndarray) or arr.dtype.kind not in "iuf":
         raise ParameterError(f"targets file {str(file)!r} must hold a real array, got "
                              f"{getattr(arr, 'dtype', type(arr).__name__)}")
-    arr = arr.astype(np.float64)
+    try:
+        arr = arr.astype(np.float64)
+    except MemoryError:
+        raise ParameterError(f"targets file {str(file)!r} is too large to convert to float64 "
+                             "in memory: split the targets into several files") from None
     if arr.size and not ((arr.ndim == 3 and arr.shape[1:] == (4, 4))
                          or (arr.ndim == 2 and arr.shape[1] == 3)):
         raise ShapeError(f"targets file {str(file)!r} must hold poses (n, 4, 4) or positions "

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import math
 import os
 from pathlib import Path
 
@@ -106,6 +107,10 @@ def _optional_problem(meta: dict) -> str | None:
             return f"has a {key!r} entry that is not an object"
     if any(not isinstance(t.get("name"), str) for t in meta["targets"]):
         return "has a target without a name (string)"
+    for target in meta["targets"]:
+        problem = _target_problem(target)
+        if problem is not None:
+            return f"has target {_short(target['name'])} whose {problem}"
     for key in ("algorithms", "skipped_algorithms"):
         if any(not isinstance(a, str) for a in meta.get(key, [])):
             return f"has {key!r} entries that are not names (strings)"
@@ -118,6 +123,32 @@ def _optional_problem(meta: dict) -> str | None:
         if any(not isinstance(v, (str, int, float, type(None))) or isinstance(v, bool)
                for v in meta.get(key, {}).values()):
             return f"has {key!r} values that are not text or numbers"
+    return None
+
+
+def _numbers(value: object, shape: tuple[int, ...]) -> bool:
+    """Whether ``value`` is nested lists of finite numbers (not booleans) of ``shape``."""
+    if not shape:
+        return (isinstance(value, (int, float)) and not isinstance(value, bool)
+                and math.isfinite(value))
+    return (isinstance(value, list) and len(value) == shape[0]
+            and all(_numbers(v, shape[1:]) for v in value))
+
+
+def _target_problem(target: dict) -> str | None:
+    """What makes a ``meta.json`` target entry unreadable (as moik writes it: ``position``
+    3 numbers, ``rotation`` None or 3 x 3 numbers, ``hv_ref_point`` None or numbers), or None."""
+    if "position" not in target:
+        return "'position' is missing"
+    if not _numbers(target["position"], (3,)):
+        return f"'position' is {_short(target['position'])}, expected 3 finite numbers"
+    rotation = target.get("rotation")
+    if rotation is not None and not _numbers(rotation, (3, 3)):
+        return f"'rotation' is {_short(rotation)}, expected null or 3 x 3 finite numbers"
+    ref = target.get("hv_ref_point")
+    if ref is not None and not (isinstance(ref, list) and ref
+                                and all(_numbers(v, ()) for v in ref)):
+        return f"'hv_ref_point' is {_short(ref)}, expected null or finite numbers"
     return None
 
 

@@ -207,6 +207,10 @@ def make_report(folder: str | Path, *, figures: bool = True,
                 output: str | Path | None = None) -> Report:
     """Write the Markdown report of ``folder``; one bad results folder does not stop it.
 
+    A report writes into each results folder (its figures): a sub-folder of ``folder`` that
+    is a symbolic link is not followed (reported as failed), so nothing is written outside
+    the folder given.
+
     Args:
         folder: A results folder or a folder of results folders.
         figures: Draw the figures (needs matplotlib).
@@ -231,6 +235,13 @@ def make_report(folder: str | Path, *, figures: bool = True,
              "papers' times are MATLAB times on theirs.", ""]
     subs = result_folders(base)
     for sub in subs:
+        if sub != base and sub.is_symlink():  # its figures would be written where it points
+            why = "a symbolic link to another folder (not followed: the report writes into it)"
+            report.failed.append(f"{sub}: {why}")
+            print(f"moik: warning: {sub} not reported: {why}", file=sys.stderr)
+            parts.append(md(f"## {sub.name}: not reported") + "\n\n"
+                         + md(f"- `{sub}`: {why}") + "\n")
+            continue
         try:
             store = ResultStore.open(sub, verify=True)
             if store.damaged:

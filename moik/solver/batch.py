@@ -26,7 +26,7 @@ from typing import Any
 import numpy as np
 
 from moik._jit import kernel_array
-from moik._validate import finite_array
+from moik._validate import finite_array, optional_callable
 from moik.collision.compiled import collision_set
 from moik.exceptions import ParameterError, ShapeError, TargetError
 from moik.kinematics.criteria import nearest_copies
@@ -187,7 +187,8 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=No
             ``solve_ik``.
         workers: CPUs to use (default ``None``: every core this process may run on). The
             compiled first stage runs on that many threads over chunks of targets (it
-            releases the GIL), the hard tail on a process pool of that many; a batch too
+            releases the GIL), the hard tail on a process pool of that many (at most one
+            process per CPU this process may run on); a batch too
             small for it to pay runs in this thread. The answers are the same bit for bit
             for every value: each depends on its target and its own seed only. Inside a
             process pool of your own, pass ``workers=1`` (your pool already uses the cores).
@@ -204,7 +205,7 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=No
         ShapeError, NonFiniteError, TargetError: Malformed targets (empty batch,
             wrong shape, NaN, non-rotations) or ``q_current``.
         ParameterError, UnknownNameError: As ``solve_ik`` for its options, or a bad
-            ``workers`` or ``client``.
+            ``workers``, ``client`` or ``progress``.
     """
     t0 = time.perf_counter()
     robot = as_robot(robot)
@@ -213,6 +214,7 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=No
                              "is not an option here (call solve_ik per target for branches)")
     search_options("solve_ik_batch", options)
     n_workers = parallel.worker_count(workers)
+    optional_callable("progress", progress)
     collision_args = {"scene": scene, "self_collision": self_collision, "clearance": clearance,
                       "collision": collision}
     guard = collision_guard(robot, **collision_args)  # validated before the targets
@@ -331,7 +333,7 @@ def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
     chunked = workers > 1 and n > parallel.MIN_CHUNK and opts.polish and (
         qc is not None or opts.starts)
     here = workers <= TAIL_HERE_MAX_WORKERS  # the tail beside the chunks in this thread
-    pool = (parallel.TaskPool(_tail_target, job, workers)  # before the chunks' threads
+    pool = (parallel.TaskPool(_tail_target, job, workers, n)  # before the chunks' threads
             if chunked and not here and guard is not None and parallel.can_fork() else None)
 
     def settle(lo: int, hi: int, busy) -> None:  # this thread, as each chunk ends

@@ -62,6 +62,13 @@ def worker_count(workers: Any) -> int:
     return integer("workers", workers, minimum=1)
 
 
+def process_count(workers: int, items: int) -> int:
+    """Processes for ``items`` per-item tasks asked to run on ``workers``: at most one per
+    item and one per CPU this process may run on (:func:`available_cores`; more would only
+    share the same cores, each costing a fork and its memory)."""
+    return max(1, min(workers, items, available_cores()))
+
+
 def chunk_bounds(n: int, workers: int, *, min_chunk: int = MIN_CHUNK,
                  guide: int = GUIDE) -> list[tuple[int, int]]:
     """Contiguous ``(lo, hi)`` chunks of ``range(n)``: one for one worker, else guided
@@ -134,7 +141,8 @@ def _run_task(item: Any) -> tuple[Any, Any]:
 
 def map_processes(fn: Callable[[Any, Any], Any], shared: Any, items: Iterable,
                   workers: int) -> list:
-    """``[fn(shared, item) for item in items]``, in up to ``workers`` processes.
+    """``[fn(shared, item) for item in items]``, in up to ``workers`` processes (at most
+    one per CPU and per item: :func:`process_count`).
 
     ``fn`` must be a module-level function; ``shared`` is handed to each worker once
     (inherited with ``fork``, pickled otherwise), each item is sent to whichever worker is
@@ -164,7 +172,7 @@ def map_processes(fn: Callable[[Any, Any], Any], shared: Any, items: Iterable,
     if not rest:
         return out
     ctx = multiprocessing.get_context(method)
-    with ctx.Pool(min(workers, len(rest)), initializer=_init_pool_worker,
+    with ctx.Pool(process_count(workers, len(rest)), initializer=_init_pool_worker,
                   initargs=(fn, shared)) as pool:
         done = dict(pool.imap_unordered(_run_task, rest))
     return out + [done[item] for item in rest]
@@ -178,8 +186,9 @@ def can_fork() -> bool:
 
 
 class TaskPool:
-    """``fn(shared, item)`` for items handed in while other work runs, in ``workers`` forked
-    processes started now: before the caller starts any thread (a process forked while
+    """``fn(shared, item)`` for items handed in while other work runs, in forked processes
+    started now (``workers`` of them, at most :func:`process_count` for ``items``, the most
+    that may be handed in): before the caller starts any thread (a process forked while
     threads run may inherit a lock one of them holds). The per-item work of a batch (the
     hard tail, Python under the GIL) then runs beside its threaded chunks without taking
     this process's GIL from them: a thread returning from compiled code waits for the GIL
@@ -190,9 +199,10 @@ class TaskPool:
     known, :meth:`results` once all are submitted. Only where :func:`can_fork`.
     """
 
-    def __init__(self, fn: Callable[[Any, Any], Any], shared: Any, workers: int):
+    def __init__(self, fn: Callable[[Any, Any], Any], shared: Any, workers: int, items: int):
         ctx = multiprocessing.get_context("fork")
-        self._pool = ctx.Pool(workers, initializer=_init_pool_worker, initargs=(fn, shared))
+        self.processes = process_count(workers, items)
+        self._pool = ctx.Pool(self.processes, initializer=_init_pool_worker, initargs=(fn, shared))
         self._pending: list = []
 
     def submit(self, items: Iterable) -> None:

@@ -111,6 +111,20 @@ def test_bad_files_exit_2_with_one_line(tmp_path, poses, capsys, content, match)
     assert re.search(match, err), err
 
 
+def test_a_npy_header_declaring_more_than_memory_is_one_line(tmp_path, capsys):
+    """Before: a truncated .npy whose header says (10**12, 3) ended in numpy's
+    _ArrayMemoryError traceback and exit 1."""
+    path = tmp_path / "t.npy"
+    with open(path, "wb") as f:
+        np.lib.format.write_array_header_1_0(f, {"descr": "<f8", "fortran_order": False,
+                                                 "shape": (10**12, 3)})
+        f.write(np.zeros(6).tobytes())
+    assert main(["batch", "panda", str(path), "--out", str(tmp_path / "r.npz")]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("moik: error:") and err.count("\n") == 1
+    assert "does not fit in memory" in err, err
+
+
 def test_bad_out_and_options(tmp_path, poses, capsys):
     np.save(tmp_path / "t.npy", poses[:2])
     for argv, match in ((["--out", str(tmp_path / "r.txt")], "--out must end in"),

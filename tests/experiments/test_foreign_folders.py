@@ -117,6 +117,54 @@ def test_report_does_not_write_through_links(folder, tmp_path, member):
     assert _files(victim) == (["file"] if member == "report.md" else [])
 
 
+def test_report_of_a_parent_does_not_follow_a_linked_results_folder(folder, tmp_path):
+    """Before: `moik report PARENT` wrote figures/ into the folder a symlinked sub-folder of
+    PARENT points to (overwriting a file there)."""
+    victim = tmp_path / "elsewhere"
+    shutil.copytree(folder, victim)
+    (victim / "figures").mkdir(exist_ok=True)
+    (victim / "figures" / "errors.png").write_text("keep")
+    before = _files(victim)
+    parent = tmp_path / "parent"
+    shutil.copytree(folder, parent / "own")
+    os.symlink(victim, parent / "linked")
+    report = make_report(parent, figures=True)
+    assert [f.split(":")[0] for f in report.failed] == [str(parent / "linked")]
+    assert "symbolic link" in report.failed[0]
+    assert _files(victim) == before and (victim / "figures" / "errors.png").read_text() == "keep"
+    assert (parent / "own" / "figures").is_dir()  # the real sub-folder is reported
+    os.unlink(parent / "linked")
+    os.symlink(victim, tmp_path / "only")
+    (tmp_path / "alone").mkdir()
+    os.symlink(victim, tmp_path / "alone" / "linked")
+    with pytest.raises(ResultsError, match="symbolic link"):
+        make_report(tmp_path / "alone", figures=False)
+    assert _files(victim) == before
+
+
+@pytest.mark.parametrize("field, value, says", [
+    ("position", None, "'position' is missing"),
+    ("position", [1.0, 2.0], "'position' is .*3 finite numbers"),
+    ("position", [1.0, "x", 2.0], "'position'"),
+    ("rotation", [[1, 2], [3]], "'rotation' is .*3 x 3"),
+    ("rotation", [[1, 0, 0], [0, 1, 0], [0, 0, True]], "'rotation'"),
+    ("hv_ref_point", "far", "'hv_ref_point'"),
+])
+def test_a_target_entry_moik_cannot_read_is_named(folder, field, value, says):
+    """Before: a target without 'position' (or with a ragged rotation) in meta.json gave
+    `KeyError: 'position'` (`ValueError: setting an array element...`) from the report."""
+    meta = _meta(folder)
+    if value is None:
+        del meta["targets"][0][field]
+    else:
+        meta["targets"][0][field] = value
+    _set_meta(folder, meta)
+    with pytest.raises(ResultsError, match=f"meta.json has target .* whose {says}"):
+        ResultStore.open(folder)
+    with pytest.raises(ResultsError, match="no results folder could be reported.*ResultsError"):
+        make_report(folder, figures=False)
+
+
 def test_report_html_as_a_link_is_refused(folder, tmp_path):
     pytest.importorskip("plotly")
     from moik.experiments.explorer import report_explorer

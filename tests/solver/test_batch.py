@@ -219,3 +219,10 @@ def test_a_lost_dask_worker_reruns_its_chunk():
         on_dask = batch.result(timeout=120)
         pool.shutdown()
     assert_same(serial, on_dask)
+
+
+def test_progress_must_be_a_function():
+    """Before: progress=5 ran the first chunk, then raised TypeError: 'int' object is not
+    callable."""
+    with pytest.raises(ParameterError, match="progress must be a function"):
+        solve_ik_batch("panda", np.array([[0.4, 0.1, 0.5]]), progress=5)

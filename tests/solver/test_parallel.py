@@ -143,17 +143,56 @@ def _fail_on_three(shared, item):
 
 @pytest.mark.skipif(not parallel.can_fork(), reason="TaskPool forks")
 def test_a_task_pool_takes_items_as_they_come_and_answers_each_once():
-    with parallel.TaskPool(_square_plus, 1, 2) as pool:
+    with parallel.TaskPool(_square_plus, 1, 2, 10) as pool:
         pool.submit([4, 2])
         pool.submit([])
         pool.submit(np.array([7]))  # numpy integers too
         out = pool.results()
     assert {k: v for k, (v, _) in out.items()} == {4: 17, 2: 5, 7: 50}
     assert all(pid != os.getpid() for _, pid in out.values())
-    with parallel.TaskPool(_fail_on_three, 0, 2) as pool:
+    with parallel.TaskPool(_fail_on_three, 0, 2, 10) as pool:
         pool.submit([1, 3])
         with pytest.raises(ValueError, match="item three"):
             pool.results()
+
+
+def test_process_pools_never_exceed_the_cpus_or_the_items(monkeypatch):
+    """Before: a collision-aware batch with workers=1000 asked for Pool(processes=1000)
+    (`moik batch --workers 99999999999999999999` forked that many)."""
+    monkeypatch.setattr(parallel, "available_cores", lambda: 3)
+    assert parallel.process_count(10**20, 50) == 3
+    assert parallel.process_count(10**20, 2) == 2
+    assert parallel.process_count(2, 50) == 2
+    assert parallel.process_count(4, 0) == 1
+    if parallel.can_fork():
+        with parallel.TaskPool(_square_plus, 1, 10**20, 10) as pool:
+            assert pool.processes == 3
+            pool.submit(range(5))
+            assert {k: v for k, (v, _) in pool.results().items()} == {
+                i: i * i + 1 for i in range(5)}
+    sizes = []
+
+    class Pool:  # records the size map_processes asks for, runs the items here
+        def __init__(self, processes, initializer, initargs):
+            sizes.append(processes)
+            initializer(*initargs)
+
+        def __enter__(self):
+            return self
+
+        def __exit__(self, *exc):
+            return False
+
+        def imap_unordered(self, fn, items):
+            return map(fn, items)
+
+    class Context:
+        Pool = staticmethod(lambda n, initializer, initargs: Pool(n, initializer, initargs))
+
+    monkeypatch.setattr(parallel.multiprocessing, "get_context", lambda method: Context())
+    monkeypatch.setattr(parallel, "POOL_AFTER_S", -1.0)  # the pool takes every item
+    out = parallel.map_processes(_square_plus, 0, list(range(8)), 10**20)
+    assert [v for v, _ in out] == [i * i for i in range(8)] and sizes == [3]
 
 
 def test_small_or_single_worker_pools_stay_here():

@@ -27,6 +27,9 @@ from moik._validate import flag
 from moik.collision import kernels
 from moik.collision.compiled import CollisionSet, collision_set
 from moik.collision.shapes import (
+    Box,
+    Compound,
+    ConvexHull,
     HalfSpace,
     Shape,
     expand_compounds,
@@ -65,8 +68,14 @@ class CollisionModel:
             with itself and its chain neighbours).
         source: Where the geometry comes from.
         aliases: ``{other link name: one of links}``: a URDF's links fixed to a body (its
-            root above the base, ``tool0``, ...), accepted wherever a link is named
-            (``allowed``, a scene's allowed pairs) as the body they are on.
+            root above the base, ``tool0``, ...), accepted wherever a link is named. A
+            scene's allowed pair naming one skips only that link's own shapes (see
+            ``origins``); naming the body skips every shape on it. In ``allowed`` (self
+            pairs, checked per body) an alias stands for its body, and is refused where
+            the body also carries other links' shapes (allowing it would skip them too).
+        origins: ``{link: the link each of its shapes belongs to}``: for a body, its own
+            name or an alias (a URDF link fixed to it) per shape, in order (default: every
+            shape the body's own).
 
     Raises:
         UnknownNameError: A link name that is not one of ``links`` (or ``aliases``).
@@ -79,6 +88,7 @@ class CollisionModel:
     allowed: frozenset[frozenset[str]] = field(default_factory=frozenset)
     source: str = ""
     aliases: Mapping[str, str] = field(default_factory=dict)
+    origins: Mapping[str, Sequence[str]] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         if not isinstance(self.robot, Robot):
@@ -107,8 +117,41 @@ class CollisionModel:
             raise GeometryError("aliases must map other link names to names of links, got "
                                 f"{self.aliases!r:.200}")
         object.__setattr__(self, "aliases", dict(self.aliases))
+        object.__setattr__(self, "origins", self._checked_origins())
+        for pair in self.allowed:
+            for name in pair:
+                body = self.body_name(name)
+                others = sorted(set(self.origins.get(body, ())) - {name})
+                if name != body and others:
+                    raise GeometryError(
+                        f"allowed pair {sorted(pair)}: {name!r} is fixed to {body!r}, which also "
+                        f"carries the geometry of {others}; self pairs are checked per body, so "
+                        f"allowing {name!r} would skip that too: name {body!r} to allow the "
+                        "whole body")
         object.__setattr__(self, "allowed", frozenset(
             frozenset(self.body_name(name) for name in pair) for pair in self.allowed))
+
+    def _checked_origins(self) -> dict[str, tuple[str, ...]]:
+        if not isinstance(self.origins, Mapping):
+            raise GeometryError(f"origins must map links to link names, got {self.origins!r:.200}")
+        out = {}
+        for link, shapes in self.shapes.items():
+            given = tuple(self.origins.get(link, (link,) * len(shapes)))
+            if len(given) != len(shapes) or any(
+                    o != link and self.aliases.get(o) != link for o in given):
+                raise GeometryError(f"origins of link {link!r} must name, for each of its "
+                                    f"{len(shapes)} shapes, {link!r} or a link fixed to it "
+                                    f"(aliases), got {list(given)!r:.200}")
+            out[link] = given
+        unknown = set(self.origins) - set(self.shapes)
+        if unknown:
+            raise GeometryError(f"origins name links without shapes: {sorted(unknown)}")
+        return out
+
+    @property
+    def item_origins(self) -> list[str]:
+        """The link each shape of :attr:`items` belongs to (its body or a link fixed to it)."""
+        return [o for link in self.shapes for o in self.origins[link]]
 
     @property
     def unchecked_links(self) -> tuple[str, ...]:
@@ -151,7 +194,7 @@ class CollisionModel:
         """The model with ``pairs`` added to the allowed-collision matrix."""
         return CollisionModel(robot=self.robot, shapes=self.shapes, links=self.links,
                               allowed=self.allowed | {frozenset(p) for p in pairs},
-                              source=self.source, aliases=self.aliases)
+                              source=self.source, aliases=self.aliases, origins=self.origins)
 
 
 @dataclass(frozen=True, eq=False, repr=False)
@@ -189,6 +232,57 @@ class Scene:
         items = ", ".join(f"{name!r}: {shape!r}" for name, shape in self.obstacles.items())
         allowed = f", allowed={sorted(self.allowed)}" if self.allowed else ""
         return f"Scene({{{items}}}{allowed})"
+
+
+SCENE_RANGE_FACTOR = 100.0
+"""An obstacle wholly farther than this many reaches from the arm's base is refused: a scene
+in other units (millimetres for an arm in metres), never a silent "collision-free"."""
+
+
+def _bounding_radius(shape: Shape) -> float | None:
+    """Radius of a sphere about the shape's origin that holds it (None: unbounded)."""
+    if isinstance(shape, HalfSpace):
+        return None
+    if isinstance(shape, ConvexHull):
+        return shape.sizes[1]
+    if isinstance(shape, Compound):
+        return _bounding_radius(shape.bound)  # its pose is the bound's, which holds it
+    if isinstance(shape, Box):
+        return float(np.linalg.norm(shape.sizes))  # half extents: the half diagonal
+    return shape.sizes[0] + shape.sizes[1]  # sphere (r, 0, 0), capsule (r, h, 0)
+
+
+def check_scene_for(model: CollisionModel, scene: Scene) -> None:
+    """Refuse a scene that cannot be meant for ``model``'s arm: an obstacle with the name of
+    one of its links or shapes (a pair ``link - obstacle`` would read as a self pair), or
+    an obstacle larger than :data:`SCENE_RANGE_FACTOR` reaches (its bounding radius) or
+    wholly beyond that many reaches of the base (a scene in other units).
+
+    Raises:
+        GeometryError: Naming the obstacle.
+    """
+    names = set(model.links) | set(shape_names(model))
+    robot = model.robot
+    base = np.asarray(robot.base, dtype=float)[:3, 3]
+    for name, shape in scene.obstacles.items():
+        if name in names:
+            raise GeometryError(f"obstacle {name!r} has the name of a link or shape of "
+                                f"{robot.name!r}: give it another name")
+        radius = _bounding_radius(shape)
+        if radius is None:
+            continue
+        with np.errstate(over="ignore", invalid="ignore"):
+            gap = float(np.linalg.norm(shape.pose[:3, 3] - base)) - radius
+        if not radius <= SCENE_RANGE_FACTOR * robot.reach:
+            raise GeometryError(
+                f"obstacle {name!r} extends {radius:.4g} {robot.unit} from its centre, more "
+                f"than {SCENE_RANGE_FACTOR:g}x the reach of {robot.name!r} ({robot.reach:.4g} "
+                f"{robot.unit}); expected a scene in {robot.unit} (a floor: a half-space)")
+        if not gap <= SCENE_RANGE_FACTOR * robot.reach:
+            raise GeometryError(
+                f"obstacle {name!r} lies {gap:.4g} {robot.unit} from the base of "
+                f"{robot.name!r}, more than {SCENE_RANGE_FACTOR:g}x its reach "
+                f"({robot.reach:.4g} {robot.unit}); expected a scene in {robot.unit}")
 
 
 def shape_names(model: CollisionModel) -> list[str]:
@@ -231,6 +325,8 @@ class CollisionChecker:
             raise GeometryError(f"scene must be a Scene, got {type(scene).__name__}")
         self.model, self.scene = model, scene
         self.self_collision = flag("self_collision", self_collision)
+        if scene is not None:
+            check_scene_for(model, scene)
         if scene is None and not self.self_collision:
             raise ParameterError("a CollisionChecker with nothing to check: pass scene= and/or "
                                  "self_collision=True")
@@ -250,12 +346,15 @@ class CollisionChecker:
             for a in range(len(items)):
                 pairs += [(a, b) for b in (a + 1 + np.flatnonzero(checked[on[a], on[a + 1:]])
                                            ).tolist()]
-        skip = frozenset() if scene is None else frozenset(
-            (obstacle, model.body_name(link)) for obstacle, link in scene.allowed)
+        allowed = frozenset() if scene is None else scene.allowed
+        for _, link in allowed:
+            model.body_name(link)  # a link of the arm (or fixed to one of its bodies)
+        origins = model.item_origins  # a body named skips all its shapes; a link its own
         obstacles = {} if scene is None else scene.obstacles
         pairs += [(a, len(items) + o) for a in range(len(items))
                   for o, obstacle in enumerate(obstacles)
-                  if (obstacle, model.links[top_bodies[a]]) not in skip]
+                  if (obstacle, model.links[top_bodies[a]]) not in allowed
+                  and (obstacle, origins[a]) not in allowed]
         refine = refinements(pairs, parts)
         self._shapes = {"body": np.array(bodies, dtype=np.int64), "local": local,
                         "kinds": kinds, "sizes": sizes,

@@ -107,6 +107,22 @@ def hull_pieces(vertices: np.ndarray, faces: np.ndarray, pieces: int) -> list[np
             for group in np.array_split(order, min(pieces, len(faces)))]
 
 
+MESH_REACH_FACTOR = 10.0
+"""A link's mesh larger than this many reaches of the arm is refused: a unit mistake (a mesh
+in millimetres without ``scale``, or a scale of 1000), never a link left practically
+unchecked inside a capsule of tens of metres."""
+
+
+def _check_against_reach(mesh: Any, robot: Robot, *, link: str, path: Any, scale: Any) -> None:
+    size = float(np.ptp(mesh.vertices, axis=0).max())
+    if size > MESH_REACH_FACTOR * robot.reach:
+        raise GeometryError(
+            f"link {link!r}: mesh {str(path)!r} is {size:.3g} m across after scale "
+            f"{np.asarray(scale, dtype=float).tolist()}, more than {MESH_REACH_FACTOR:g}x the "
+            f"arm's reach ({robot.reach:.3g} m): a URDF's unit is the metre (a mesh in "
+            "millimetres needs scale=\"0.001 0.001 0.001\")")
+
+
 def mesh_shapes(source: Any, robot: Robot, *, package_dirs: Any = None,
                 use_cache: bool = True, joint_values: Any = None) -> dict[str, Compound]:
     """Every URDF link with ``<collision>`` meshes as a :class:`Compound` in the frame of the
@@ -117,7 +133,8 @@ def mesh_shapes(source: Any, robot: Robot, *, package_dirs: Any = None,
 
     Raises:
         GeometryError: A mesh not found (the message says where it was looked for),
-            unreadable, empty, non-finite, or of an absurd size.
+            unreadable, empty, non-finite, or of an absurd size (outside [1 um, 100 m], or
+            more than :data:`MESH_REACH_FACTOR` reaches of the arm).
     """
     _, items = mesh_geometry(source, robot, "collision", joint_values=joint_values)
     folder = _urdf_dir(source)
@@ -134,6 +151,7 @@ def mesh_shapes(source: Any, robot: Robot, *, package_dirs: Any = None,
             path = resolve_mesh(item["filename"], link=link, urdf_dir=folder,
                                 package_dirs=package_dirs)
             mesh = read_mesh(path, link=link, scale=item["scale"])
+            _check_against_reach(mesh, robot, link=link, path=path, scale=item["scale"])
             pose = np.asarray(item["pose"], dtype=float)
             vertices.append(mesh.vertices @ pose[:3, :3].T + pose[:3, 3])
             faces.append(mesh.faces + offset)
@@ -222,15 +240,18 @@ def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
     placement = offchain_placement(source, robot, joint_values)
     names, items = collision_geometry(source, robot, joint_values=joint_values)
     shapes: dict[str, list[Shape]] = {}
+    origins: dict[str, list[str]] = {}  # the URDF link of each shape
     for item in items:
         if not item.get("skipped"):
             shapes.setdefault(names[item["body"]], []).append(
                 _shape(item, robot.source or robot.name))
+            origins.setdefault(names[item["body"]], []).append(item["link"])
     fitted = mesh_shapes(source, robot, package_dirs=package_dirs, use_cache=use_cache,
                          joint_values=joint_values)
     body_of = {item["link"]: item["body"] for item in items}
     for link, compound in fitted.items():
         shapes.setdefault(names[body_of[link]], []).append(compound)
+        origins.setdefault(names[body_of[link]], []).append(link)
     shapes = {name: shapes[name] for name in names if name in shapes}  # in body order
     bare = [name for name in names if name not in shapes]
     label = robot.source or robot.name
@@ -248,7 +269,7 @@ def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
     _, placed = link_placements(source, robot, joint_values=joint_values)
     aliases = {link: names[body] for link, (body, _) in placed.items() if link not in names}
     model = CollisionModel(robot=robot, shapes=shapes, links=tuple(names), source=source_text,
-                           aliases=aliases)
+                           aliases=aliases, origins={n: origins[n] for n in shapes})
     values = {n: p.value for n, p in placement.items()}
     return _cached_allowed(model, samples, use_cache, values) if samples else model
 

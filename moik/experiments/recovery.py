@@ -136,8 +136,11 @@ def _numbers(value: object, shape: tuple[int, ...]) -> bool:
 
 
 def _target_problem(target: dict) -> str | None:
-    """What makes a ``meta.json`` target entry unreadable (as moik writes it: ``position``
-    3 numbers, ``rotation`` None or 3 x 3 numbers, ``hv_ref_point`` None or numbers), or None."""
+    """What makes a ``meta.json`` IK target entry unreadable (as moik writes it: ``position``
+    3 numbers, ``rotation`` None or 3 x 3 numbers, ``hv_ref_point`` None or numbers), or None.
+    A benchmark function's entry (``benchmark``: the functions kinds) has none of these."""
+    if "benchmark" in target:
+        return None
     if "position" not in target:
         return "'position' is missing"
     if not _numbers(target["position"], (3,)):

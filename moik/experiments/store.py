@@ -304,8 +304,9 @@ class ResultStore:
             self._append_line((json.dumps(_clean(record), allow_nan=False) + "\n").encode())
         except OSError as exc:
             raise ResultsError(f"{exc}; trial {record['trial']!r} was not stored (the trials "
-                               f"stored before it are kept): free space, then run the same "
-                               f"command with --resume to continue") from exc
+                               f"stored before it are kept): once it can be written (free "
+                               f"space, a link removed), run the same command with --resume "
+                               f"to continue") from exc
 
     def _append_line(self, line: bytes) -> None:
         """One line at the end of ``results.jsonl``, whole or not at all (then raises)."""

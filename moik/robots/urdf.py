@@ -16,8 +16,9 @@ Rules:
   ``fixed`` joints are folded into the constant transforms. ``floating`` and
   ``planar`` joints are rejected with a hint; a chain through a ``<mimic>`` joint is
   refused (coupled joints are not modelled, never silently made independent).
-* The file must describe a tree: duplicate joint names, undeclared links, a link
-  with two parents and cycles are reported; ``.xacro`` files must be expanded first.
+* The file must describe a tree: duplicate joint names, undeclared, nameless or
+  duplicate links, a link with two parents and cycles are reported; ``.xacro``
+  files must be expanded first.
 * ``<origin xyz rpy>`` (fixed-axis roll-pitch-yaw, ``R = Rz(y) Ry(p) Rx(r)``)
   and ``<axis xyz>`` (any unit vector; default x as the URDF spec says) are
   honoured. Lengths are metres.
@@ -121,7 +122,13 @@ def _read(source) -> tuple[ET.Element, str]:
 
 def _parse(root: ET.Element, label: str) -> tuple[set, dict]:
     """Links and joints of a URDF, checked to form a tree (one parent per link, no cycle)."""
-    links = {el.get("name") for el in root.findall("link")}
+    names = [el.get("name") or "" for el in root.findall("link")]
+    if not all(names):
+        raise URDFError(f"{label!r}: every <link> needs a name=, one has none")
+    twice = sorted({n for n in names if names.count(n) > 1})
+    if twice:
+        raise URDFError(f"{label!r}: links declared more than once: {twice}")
+    links = set(names)
     joints: dict[str, ET.Element] = {}
     parent_of: dict[str, str] = {}
     for el in root.findall("joint"):
@@ -245,8 +252,9 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
     Raises:
         ParameterError: ``package_dirs`` not one of those, or naming a folder that does
             not exist.
-        URDFError: malformed file (not a tree, undeclared link, duplicate joint
-            name, xacro), unsupported or mimic joint, branching chain without tip.
+        URDFError: malformed file (not a tree, undeclared, nameless or duplicate link,
+            duplicate joint name, xacro), unsupported or mimic joint, branching chain
+            without tip.
         UnknownNameError: a link name not in the file (lists the links).
     """
     check_package_dirs(package_dirs)

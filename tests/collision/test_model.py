@@ -140,3 +140,31 @@ def test_self_pairs_are_every_item_pair_of_a_checked_body_pair_in_order():
             if tuple(sorted((bodies[a], bodies[b]))) in checked]
     got = [tuple(p) for p in checker._shapes["pairs"].tolist()]
     assert got == want and len(want) > 5
+
+
+@pytest.mark.parametrize("obstacle, says", [
+    (Sphere(radius=0.1, pose=rpy_pose([400.0, 0.0, 500.0])), "lies .* more than 100x its reach"),
+    (Box(size=[300.0, 300.0, 10.0], pose=rpy_pose([0.0, 0.0, -5.0])), "extends .* from its "
+     "centre, more than 100x the reach"),
+    (Sphere(radius=1e300), "extends 1e\\+300 m"),
+    (Sphere(radius=0.1, pose=rpy_pose([1e308, 1e308, 0.0])), "lies inf m"),
+])
+def test_a_scene_in_other_units_or_absurd_sizes_is_refused(obstacle, says):
+    """Before: a scene written in millimetres for a metre arm solved "collision-free,
+    smallest distance 534.7 m"; a sphere at 1e308 gave "inf (no pair)"."""
+    robot = get_robot("panda")
+    scene = Scene({"thing": obstacle, "table": HalfSpace.plane([0, 0, 1], 0.0)})
+    with pytest.raises(GeometryError, match=f"obstacle 'thing' {says}"):
+        CollisionChecker(model=collision_model(robot), scene=scene)
+    near = Scene({"thing": Sphere(radius=0.1, pose=rpy_pose([0.5 * robot.reach, 0, 0.3])),
+                  "far wall": Box(size=[0.1, 4.0, 2.0], pose=rpy_pose([20 * robot.reach, 0, 1]))})
+    assert CollisionChecker(model=collision_model(robot), scene=near).n_pairs > 0
+
+
+def test_an_obstacle_named_like_a_link_is_refused():
+    """Before: an obstacle 'panda_link3' was accepted and its pairs printed as
+    'panda_link7 - panda_link3', which reads as a self pair."""
+    model = collision_model(get_robot("panda"))
+    for name in (model.links[3], model.links[0]):
+        with pytest.raises(GeometryError, match=f"obstacle '{name}' has the name of a link"):
+            CollisionChecker(model=model, scene=Scene({name: Sphere(radius=0.1)}))

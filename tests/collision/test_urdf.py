@@ -194,6 +194,46 @@ def test_links_fixed_to_a_body_are_named_as_that_body():
         CollisionChecker(model=model, scene=Scene({"t": table}, allowed={("t", "base_link")}))
 
 
+def test_an_allowed_link_fixed_to_a_body_skips_only_its_own_shapes():
+    """Before: a scene's allowed pair naming ur10's ee_link (a 1 cm box fixed to wrist_3_link)
+    skipped every shape of wrist_3_link against that obstacle, its own mesh too (a probe's
+    part 7 mm into the wrist's mesh was called 1.7 mm clear)."""
+    robot = load_urdf(DATA / "ur10_robot.urdf", tip_link="tool0", package_dirs=[DATA / "packages"])
+    model = robot_model(robot)
+    body = model.body_name("ee_link")
+    assert body == "wrist_3_link" and set(model.origins[body]) == {"ee_link", "wrist_3_link"}
+    part = Box(size=(0.02, 0.02, 0.02), pose=np.eye(4))
+
+    def checked(allowed):
+        names = CollisionChecker(model=model, scene=Scene({"part": part}, allowed=allowed)
+                                 ).pair_names
+        return sorted(a for a, b in names if b == "part" and a.startswith(body))
+
+    everything = checked(set())
+    own = [n for n, o in zip(everything, model.origins[body], strict=True) if o == "ee_link"]
+    assert len(everything) == 2 and len(own) == 1
+    assert checked({("part", "ee_link")}) == sorted(set(everything) - set(own))
+    assert checked({("part", body)}) == []  # the body named: every shape on it
+    with pytest.raises(GeometryError, match="'ee_link' is fixed to 'wrist_3_link'.*name "
+                                            "'wrist_3_link' to allow the whole body"):
+        model.with_allowed([("ee_link", "forearm_link")])
+    assert model.with_allowed([(body, "forearm_link")]).allowed >= {
+        frozenset((body, "forearm_link"))}
+
+
+def test_a_mesh_in_millimetres_of_a_small_link_is_refused():
+    """Before: ur10's wrist mesh at scale 1000 (90 m across, under the 100 m bound) was fitted
+    as a 46 m capsule and the solve said "solved": the link practically unchecked."""
+    text = (DATA / "ur10_robot.urdf").read_text()
+    mesh = 'collision/wrist3.stl"/>'
+    assert text.count(mesh) == 1
+    robot = load_urdf(text.replace(mesh, 'collision/wrist3.stl" scale="1000 1000 1000"/>'),
+                      tip_link="tool0", package_dirs=[DATA / "packages"])
+    with pytest.raises(GeometryError, match=r"link 'wrist_3_link': mesh .*wrist3.stl' is 90.* m "
+                                            r"across .* more than 10x the arm's reach"):
+        robot_model(robot)
+
+
 @pytest.mark.parametrize(("old", "new", "match"), [
     ('<box size="0.2 0.2 0.1"/>', '<box size="1e300 0.2 0.1"/>',
      r"<box> of link 'base': size must be in \(0, 100\] m"),

@@ -182,6 +182,16 @@ def test_malformed_trees_get_precise_messages():
     unnamed = _chain(_joint("j1", "a", "b").replace(" name='j1'", ""), links=("a", "b"))
     with pytest.raises(URDFError, match="every <joint> needs a name="):
         load_urdf(unnamed)
+    # before: a <link> without name= raised TypeError from sorting the root links, and a
+    # link declared twice was taken silently (urdfdom refuses both)
+    nameless = _chain(_joint("j1", "a", "b")).replace("</robot>",
+                                                      "<link><collision/></link></robot>")
+    with pytest.raises(URDFError, match="every <link> needs a name="):
+        load_urdf(nameless, tip_link="b")
+    with pytest.raises(URDFError, match="every <link> needs a name="):
+        load_urdf(nameless)
+    with pytest.raises(URDFError, match=r"links declared more than once: \['b'\]"):
+        load_urdf(_chain(_joint("j1", "a", "b"), links=("a", "b", "b")))
 
 
 def test_xacro_floating_and_mimic_are_explained(tmp_path):

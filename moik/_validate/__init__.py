@@ -258,8 +258,8 @@ def unknown_keys_message(where: str, given: Iterable[object], accepted: Iterable
         shown = key if isinstance(key, str) and key.isprintable() and len(key) <= 80 \
             else _short(key)
         named.append(f"{shown}" + (f" (did you mean {near[0]!r}?)" if near else ""))
-    return (f"{where}: unknown key(s) {', '.join(named)}; expected some of: "
-            f"{', '.join(allowed)}")
+    expected = f"expected some of: {', '.join(allowed)}" if allowed else "none is accepted"
+    return f"{where}: unknown key(s) {', '.join(named)}; {expected}"
 
 
 def known_keys(where: str, given: Mapping[Any, Any], accepted: Iterable[str], *,

@@ -19,7 +19,8 @@ with trimesh (a core dependency: most URDF arms describe their collision geometr
 meshes; trimesh's only required dependency is numpy, and it is imported at the first
 mesh read, never by ``import moik``). The file's vertices are checked: at least one
 triangle, finite coordinates, and after ``scale`` a size between 1 micrometre and
-100 m (the unit is metres: a mesh in millimetres without ``scale="0.001"`` is refused).
+100 m (the unit is metres: a mesh in millimetres without ``scale="0.001 0.001 0.001"`` is
+refused).
 """
 
 from __future__ import annotations
@@ -198,9 +199,11 @@ def read_mesh(path: Path, *, link: str, scale: Any = (1.0, 1.0, 1.0)) -> Mesh:
         V = V * s
     size = float(np.ptp(V, axis=0).max()) if len(V) else 0.0
     if not SMALLEST_SIZE <= size <= LARGEST_SIZE:
+        hint = ("a URDF's unit is the metre; a mesh in millimetres needs "
+                "scale=\"0.001 0.001 0.001\"" if size > LARGEST_SIZE else
+                "its triangles have no extent (a point), or the scale is too small")
         raise GeometryError(f"{what} is {size:.3g} m across after scale {s.tolist()}: expected "
-                            f"{SMALLEST_SIZE:g} to {LARGEST_SIZE:g} m (a URDF's unit is the metre; "
-                            "a mesh in millimetres needs scale=\"0.001 0.001 0.001\")")
+                            f"{SMALLEST_SIZE:g} to {LARGEST_SIZE:g} m ({hint})")
     V.flags.writeable = False
     faces.flags.writeable = False
     return Mesh(vertices=V, faces=faces, digest=digest)

@@ -219,7 +219,8 @@ class HalfSpace(Shape):
     def __repr__(self) -> str:
         """As :meth:`plane` takes it: the unit outward normal and the offset along it."""
         n = self.pose[:3, 2]
-        return f"HalfSpace(normal={_short(n.tolist())}, offset={_short(n @ self.pose[:3, 3])})"
+        return (f"HalfSpace.plane(normal={_short(n.tolist())}, "
+                f"offset={_short(n @ self.pose[:3, 3])})")
 
     def _sizes_dict(self) -> dict[str, Any]:
         return {}

@@ -65,10 +65,13 @@ def _floats(text: str | None, default, what: str) -> np.ndarray:
     return vals
 
 
-def _origin(joint: ET.Element, name: str) -> np.ndarray:
+def _origin(joint: ET.Element, name: str, *, owner: str = "") -> np.ndarray:
+    """The ``<origin>`` of an element as a transform; ``name`` a joint's name, or ``owner``
+    what else holds it (e.g. "<collision> of link 'a'") for the messages."""
+    what = owner or f"joint {name!r}"
     el = joint.find("origin")
-    xyz = _floats(None if el is None else el.get("xyz"), (0, 0, 0), f"joint {name!r} origin xyz")
-    rpy = _floats(None if el is None else el.get("rpy"), (0, 0, 0), f"joint {name!r} origin rpy")
+    xyz = _floats(None if el is None else el.get("xyz"), (0, 0, 0), f"{what} origin xyz")
+    rpy = _floats(None if el is None else el.get("rpy"), (0, 0, 0), f"{what} origin rpy")
     T = translation(*xyz)
     if np.any(rpy != 0):  # fixed-axis roll-pitch-yaw: R = Rz(yaw) Ry(pitch) Rx(roll)
         (cr, cp, cy), (sr, sp, sy) = np.cos(rpy), np.sin(rpy)
@@ -257,7 +260,7 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
             without tip.
         UnknownNameError: a link name not in the file (lists the links).
     """
-    check_package_dirs(package_dirs)
+    package_dirs = absolute_package_dirs(package_dirs)
     root, label = _read(source)
     links, joints = _parse(root, label)
     for given in (base_link, tip_link):
@@ -350,6 +353,20 @@ def _limits(el: ET.Element, name: str, jtype: str) -> tuple[float, float]:
                         f"lower={lo}, upper={hi}; an unlimited revolute joint is "
                         "type=\"continuous\"")
     return values
+
+
+def absolute_package_dirs(package_dirs: Any) -> Any:
+    """``package_dirs`` checked (:func:`check_package_dirs`), each folder made absolute (``~``
+    expanded; links kept as named): the robot keeps them, and a later ``os.chdir`` must not
+    change where its meshes are found."""
+    check_package_dirs(package_dirs)
+    if package_dirs is None:
+        return None
+    if isinstance(package_dirs, Mapping):
+        return {name: Path(folder).expanduser().absolute() for name, folder in package_dirs.items()}
+    if isinstance(package_dirs, str | Path):
+        return [Path(package_dirs).expanduser().absolute()]
+    return [Path(folder).expanduser().absolute() for folder in package_dirs]
 
 
 def check_package_dirs(package_dirs: Any) -> None:

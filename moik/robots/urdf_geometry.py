@@ -162,7 +162,7 @@ def _primitives(col: Any, link: str, body: int, offset: np.ndarray) -> list[dict
     geom = col.find("geometry")
     if geom is None or len(geom) == 0:
         raise URDFError(f"link {link!r}: a <collision> needs a <geometry>")
-    pose = offset @ _origin(col, f"collision of link {link!r}")
+    pose = offset @ _origin(col, "", owner=f"<collision> of link {link!r}")
     out = []
     for g in geom:
         if g.tag == "mesh":
@@ -209,7 +209,7 @@ def mesh_geometry(source: Any, robot: Robot, element: str = "collision", q: Any 
     out: list[dict[str, Any]] = []
     for link, (body, offset) in placed.items():
         for el in link_el[link].findall(element):
-            pose = offset @ _origin(el, f"{element} of link {link!r}")
+            pose = offset @ _origin(el, "", owner=f"<{element}> of link {link!r}")
             for m in el.iter("mesh"):
                 filename = m.get("filename")
                 if not filename:

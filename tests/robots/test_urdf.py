@@ -227,7 +227,7 @@ def test_shipped_urdf_arms_are_catalog_robots(name, dof, tip):
     np.testing.assert_allclose(robot.fk(Q), fk_reference(robot, Q), atol=1e-12)
 
 
-def test_the_robot_keeps_its_urdf_and_package_folders(tmp_path):
+def test_the_robot_keeps_its_urdf_and_package_folders(tmp_path, monkeypatch):
     robot = load_urdf(URDF_DIR / "ur5_robot.urdf", tip_link="tool0", package_dirs=[tmp_path])
     assert robot.description.source == (URDF_DIR / "ur5_robot.urdf").resolve()
     assert robot.description.package_dirs == [tmp_path]
@@ -235,6 +235,16 @@ def test_the_robot_keeps_its_urdf_and_package_folders(tmp_path):
     assert load_urdf(text, tip_link="tool0").description.source == text
     assert get_robot("ur5").description.package_dirs == [URDF_DIR / "packages"]
     assert robot.with_locked_joints({0: 0.0}).description is None  # another chain
+    # before: a relative folder was kept as given, and after os.chdir the meshes were "not
+    # found"; kept absolute, as the URDF's own path is
+    monkeypatch.chdir(tmp_path.parent)
+    relative = load_urdf(URDF_DIR / "ur5_robot.urdf", tip_link="tool0",
+                         package_dirs=[tmp_path.name])
+    by_name = load_urdf(URDF_DIR / "ur5_robot.urdf", tip_link="tool0",
+                        package_dirs={"pkg": tmp_path.name})
+    monkeypatch.chdir(URDF_DIR)
+    assert relative.description.package_dirs == [tmp_path]
+    assert by_name.description.package_dirs == {"pkg": tmp_path}
     with pytest.raises(MoikError, match="description must be"):
         type(robot)(name="x", lower=[0.0], upper=[1.0], a=[1.0], alpha=[0.0], d=[0.0],
                     theta=[0.0], description="panda.urdf")

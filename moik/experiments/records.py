@@ -2,7 +2,8 @@
 
 A line is a trial record when it is a JSON object with the fields every trial
 record has (:data:`REQUIRED`: ``trial``, ``status``, ``algorithm`` as strings,
-``target`` and ``run`` as integers). Anything else (``{}``, ``[1, 2, 3]``,
+``target`` and ``run`` as integers), its trial id the one moik writes from them
+(``algorithm/target/run``). Anything else (``{}``, ``[1, 2, 3]``,
 ``"trial": null``, text that is not JSON, a line torn by a crash) is *malformed*:
 it is skipped, and :class:`Lines` says which line and why, so that the caller can
 warn with the file and the line number instead of failing on it.
@@ -53,6 +54,10 @@ def record_problem(record: object) -> str | None:
         _paths.file_name(record["trial"].replace("/", "__"), "its trial id")
     except ResultsError as exc:
         return str(exc)
+    expected = f"{record['algorithm']}/{record['target']}/{record['run']}"
+    if record["trial"] != expected:  # moik writes the id from these three
+        return (f"trial {record['trial']!r} does not match its algorithm, target and run "
+                f"({expected})")
     return None
 
 

@@ -207,7 +207,7 @@ def test_a_meta_without_what_the_report_reads_is_named(folder, drop):
 def test_an_unplanned_trial_line_is_not_counted(folder, capsys):
     """Before: '9 of 8 planned trials finished'."""
     line = json.loads((folder / "results.jsonl").read_text().splitlines()[0])
-    line["trial"] = "eosma/9/9"
+    line["trial"], line["target"], line["run"] = "eosma/9/9", 9, 9
     with open(folder / "results.jsonl", "a") as fh:
         fh.write(json.dumps(line) + "\n")
     res = Results(ResultStore.open(folder))

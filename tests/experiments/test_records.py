@@ -28,3 +28,15 @@ def test_a_missing_file_has_no_lines(tmp_path):
     lines = read_lines(tmp_path / "none.jsonl")
     assert lines.records == [] and lines.malformed == [] and not lines.torn_tail
     assert record_problem(GOOD) is None
+
+
+def test_a_trial_id_must_be_its_algorithm_target_and_run():
+    """Before: a line whose algorithm contradicted its trial id counted as finished and was
+    silently left out of the report's table."""
+    assert record_problem({**GOOD, "algorithm": "other"}) == (
+        "trial 'eosma/0/0' does not match its algorithm, target and run (other/0/0)")
+    assert "does not match" in record_problem({**GOOD, "run": 1})
+    assert "does not match" in record_problem({**GOOD, "target": 2})
+    labelled = {**GOOD, "trial": "eosma-fast/3/1", "algorithm": "eosma-fast", "target": 3,
+                "run": 1}
+    assert record_problem(labelled) is None

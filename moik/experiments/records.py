@@ -67,12 +67,14 @@ class Lines:
 
     Attributes:
         records: The trial records, in file order (repeated trial ids included).
+        numbers: The line number of each record.
         malformed: ``(line number, why)`` of every line that is no trial record
             (line numbers from 1; a torn last line without newline is not included).
         torn_tail: Whether the file ends in a line without newline (a crash mid-append).
     """
 
     records: list[dict] = field(default_factory=list)
+    numbers: list[int] = field(default_factory=list)
     malformed: list[tuple[int, str]] = field(default_factory=list)
     torn_tail: bool = False
 
@@ -115,6 +117,7 @@ def read_lines(path: Path) -> Lines:
         why = record_problem(record)
         if why is None:
             out.records.append(record)
+            out.numbers.append(number)
         else:
             out.malformed.append((number, why))
     return out

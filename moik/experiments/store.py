@@ -357,11 +357,24 @@ class ResultStore:
     def records(self) -> list[dict]:
         """The stored trial records, the last one per trial id, in file order.
 
-        Malformed lines (:mod:`moik.experiments.records`) are skipped, counted in
+        Malformed lines (:mod:`moik.experiments.records`), and records carrying another
+        configuration's fingerprint than ``meta.json``'s, are skipped, counted in
         :attr:`malformed` and named on stderr once. A store opened with
         ``verify=True`` leaves out the trials in :attr:`damaged`.
         """
         lines = read_lines(self.results_path)
+        mine = self.meta.get("config_fingerprint")
+        if isinstance(mine, str):  # a line of another configuration is not this run's trial
+            kept = []
+            for number, rec in zip(lines.numbers, lines.records, strict=True):
+                theirs = rec.get("config_fingerprint")
+                if theirs is not None and theirs != mine:
+                    lines.malformed.append((number, f"trial {rec['trial']!r} was written by "
+                                                    "another configuration (its fingerprint)"))
+                else:
+                    kept.append(rec)
+            lines.malformed.sort()
+            lines.records = kept
         self.malformed = lines.malformed
         if lines.malformed and not self._warned_lines:
             self._warned_lines = True

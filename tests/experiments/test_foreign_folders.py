@@ -215,6 +215,23 @@ def test_an_unplanned_trial_line_is_not_counted(folder, capsys):
     assert "eosma/9/9" in " ".join(res.notes())
 
 
+def test_a_line_of_another_configuration_is_not_counted(folder, capsys):
+    """Before: a line carrying another config fingerprint counted as a finished trial of
+    this one (and --resume kept it)."""
+    lines = (folder / "results.jsonl").read_text().splitlines()
+    first = json.loads(lines[0])
+    first["config_fingerprint"] = "0" * 64
+    (folder / "results.jsonl").write_text("\n".join([json.dumps(first), *lines[1:]]) + "\n")
+    store = ResultStore.open(folder)
+    assert first["trial"] not in store.finished_ids()
+    assert store.malformed == [(1, f"trial {first['trial']!r} was written by another "
+                                   "configuration (its fingerprint)")]
+    assert "another configuration" in capsys.readouterr().err
+    summary = run_experiment(ExperimentConfig.from_dict(copy.deepcopy(TINY)), out=folder,
+                             resume=True)
+    assert summary.ran == 1  # that trial is run again for this configuration
+
+
 @pytest.mark.parametrize("trial", ["a\x00b", "x" * 300, "../../etc/passwd"])
 def test_trial_ids_that_cannot_name_a_file_are_malformed_lines(folder, trial):
     """Before: ValueError (embedded null byte) or OSError (name too long) from the store."""

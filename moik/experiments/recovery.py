@@ -169,11 +169,18 @@ def adopt(folder: Path, config, problem: str, resume: bool) -> list[str]:
 
     Raises:
         ResultsError: Without ``resume``, or when a line was written by another
-            configuration (or by a moik that did not record it): nothing is changed.
+            configuration (or by a moik that did not record it), or when ``results.jsonl``
+            holds lines but no trial record (another program's file): nothing is changed.
     """
     lines = read_lines(folder / "results.jsonl")
     where = str(folder)
     notes = []
+    if not lines.records and (lines.malformed or lines.torn_tail):
+        raise ResultsError(
+            f"{where!r} holds a results.jsonl with no moik trial record "
+            f"({lines.describe(folder / 'results.jsonl', shown=2) or 'one torn line'}) and "
+            f"{problem}: it is not moik's, and moik does not write into it; nothing was "
+            "changed: choose another --out folder, or move results.jsonl away")
     if lines.records:
         what = (f"{where!r} holds {len(lines.records)} trial record(s) in results.jsonl but "
                 f"{problem}; nothing was changed")

@@ -132,3 +132,18 @@ def test_deleted_arrays_folder_is_recreated_on_resume(folder, tiny_config):
     s = run_experiment(tiny_config, out=folder, resume=True, progress=False)
     assert s.ran == 8 and s.rerun_damaged == 8
     assert ResultStore.open(folder, verify=True).damaged == {}
+
+
+@pytest.mark.parametrize("resume", [False, True])
+def test_another_programs_results_jsonl_is_never_written_into(tmp_path, tiny_config, resume):
+    """Before: a folder holding someone else's results.jsonl (no trial record, no meta.json)
+    got a warning, then moik appended its trials to that file."""
+    folder = tmp_path / "theirs"
+    folder.mkdir()
+    theirs = b'{"epoch": 1, "loss": 0.5}\n{"epoch": 2, "loss": 0.25}\n'
+    (folder / "results.jsonl").write_bytes(theirs)
+    with pytest.raises(ResultsError, match="no moik trial record .*not moik's.*nothing was "
+                                           "changed"):
+        run_experiment(tiny_config, out=folder, resume=resume, progress=False)
+    assert (folder / "results.jsonl").read_bytes() == theirs
+    assert sorted(p.name for p in folder.iterdir()) == ["results.jsonl"]

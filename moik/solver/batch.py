@@ -157,7 +157,8 @@ def _rotations(R: np.ndarray) -> np.ndarray:
 def _check_reach(robot: Robot, positions: np.ndarray) -> None:
     """Each target within :data:`~moik.problems.targets.UNIT_RANGE_FACTOR` times the reach
     (as ``solve_ik`` checks one, here before any is solved), the first beyond it named."""
-    dist = np.linalg.norm(positions, axis=1)
+    with np.errstate(over="ignore"):  # 1e300 is simply beyond the reach (inf)
+        dist = np.linalg.norm(positions, axis=1)
     far = np.flatnonzero(dist > UNIT_RANGE_FACTOR * robot.reach)
     if len(far):
         i = int(far[0])

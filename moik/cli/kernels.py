@@ -47,7 +47,8 @@ def cmd_compile(args: argparse.Namespace) -> int:
                 failed += 1
                 print(f"  [{k}/{len(FAMILIES)}] failed: {type(exc).__name__}: {exc}", flush=True)
                 continue
-            print(f"  [{k}/{len(FAMILIES)}] {name}: {seconds:.1f} s ({count} kernels compiled)",
+            kernels = "1 kernel" if count == 1 else f"{count} kernels"
+            print(f"  [{k}/{len(FAMILIES)}] {name}: {seconds:.1f} s ({kernels} compiled)",
                   flush=True)
     print(f"done in {time.perf_counter() - t0:.1f} s" + (f"; {failed} failed" if failed else ""))
     return 1 if failed else 0

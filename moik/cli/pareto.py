@@ -14,6 +14,7 @@ status 0 when an exact solution was found, 1 otherwise.
 from __future__ import annotations
 
 import argparse
+import importlib.util
 from pathlib import Path
 
 import numpy as np
@@ -103,6 +104,10 @@ def html_file(spec: str | None) -> Path | None:
     if not path.parent.is_dir():
         raise ParameterError(f"--html folder {str(path.parent)!r} does not exist (create it "
                              "first)")
+    if importlib.util.find_spec("plotly") is None:  # before the search, not after it
+        raise ParameterError("--html: the explorer needs plotly, which is not installed: pip "
+                             "install -e '.[explorer]' in the moik repository (or pip install "
+                             "plotly)")
     return path
 
 

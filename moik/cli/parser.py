@@ -90,7 +90,8 @@ def _robot_arguments(p: argparse.ArgumentParser, optional: bool = False) -> None
                    type=nonempty,
                    help="URDF: a folder holding the packages its package:// meshes name "
                         "(repeatable; ROS_PACKAGE_PATH is searched too)")
-    p.add_argument("--json", action="store_true", help="print JSON (see `pydoc moik.cli`)")
+    p.add_argument("--json", action="store_true",
+                   help="print JSON (see `python -m pydoc moik.cli`)")
 
 
 def _check_arguments(p: argparse.ArgumentParser) -> None:
@@ -103,7 +104,7 @@ def _check_arguments(p: argparse.ArgumentParser) -> None:
                    help="solve for solutions free of self-collision (a URDF arm's own "
                         "<collision> geometry, its meshes measured on their convex pieces, "
                         "panda, ur5 and iiwa14 included; the shipped capsule models of the "
-                        "other catalog arms)")
+                        "other catalog arms that have one)")
     p.add_argument("--clearance", type=float, metavar="D",
                    help="with --scene or --self-collision: the smallest accepted distance "
                         "(robot unit, >= 0; default {default})")
@@ -148,7 +149,8 @@ def _solve_arguments(p: argparse.ArgumentParser) -> None:
                         "of an unreachable pose; a click on a point shows its posture")
     p.add_argument("--pareto", metavar="CRITERIA", type=nonempty,
                    help="the Pareto set of exact solutions over these comma-separated "
-                        f"criteria ({', '.join(CRITERIA_NAMES)})")
+                        f"criteria ({', '.join(CRITERIA_NAMES)}; clearance with --scene or "
+                        "--self-collision: the smallest distance, maximised)")
     p.add_argument("--preferred-euler", nargs=3, type=float, metavar=("A", "B", "C"),
                    help="with --pareto: preferred orientation of a position target (the "
                         "'orientation' criterion), Euler angles as --euler")
@@ -165,7 +167,8 @@ def _batch_arguments(sub) -> None:
                                    "positions (n, 3)) or a CSV file (x y z [roll pitch yaw]: "
                                    "R = Rz(yaw) Ry(pitch) Rx(roll)) on every core; write the "
                                    "joint vectors, statuses, errors (and distances) to --out. "
-                                   "Exit status 0 when every target is solved, 1 otherwise.")
+                                   "Exit status 0 when every target is solved, 1 otherwise, "
+                                   "2 for bad input (a file, an option).")
     p.add_argument("robot", help="catalog name (see `moik robots`) or URDF file")
     p.add_argument("--base", metavar="LINK", help="URDF: first link of the chain")
     p.add_argument("--tip", metavar="LINK", help="URDF: last link of the chain")
@@ -250,7 +253,7 @@ def build_parser() -> argparse.ArgumentParser:
     """The argument parser of the ``moik`` command."""
     parser = OneLineParser(prog="moik",
                            description="The ``moik`` command line (also ``python -m moik``).",
-                           epilog="JSON schemas and exit codes: pydoc moik.cli")
+                           epilog="JSON schemas and exit codes: python -m pydoc moik.cli")
     parser.add_argument("--version", action="version", version=f"moik {__version__}")
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("robots", help="list the robot catalog, or describe one robot")

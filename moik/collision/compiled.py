@@ -18,6 +18,7 @@ from numba.experimental import structref
 from numba.extending import overload
 
 from moik._jit import StructType, define_struct, jit
+from moik.collision.distance import CAPSULE, HULL
 from moik.collision.kernels import distance_below, distance_scratch
 from moik.collision.shapes import hull_capsule
 from moik.robots.chain_model import ChainModel
@@ -26,6 +27,16 @@ from moik.robots.chain_model import ChainModel
 @structref.register
 class CollisionSetType(StructType):
     """numba type of :class:`CollisionSet` (literal field types widened)."""
+
+    bounds_only = False  # read by moik.collision.kernels.primitive_pair's overload
+
+
+@structref.register
+class CompoundSetType(StructType):
+    """numba type of :class:`CompoundSet`: the same fields, compiled with the pair kernels of
+    compounds' bounds (:func:`moik.collision.kernels.primitive_pair`)."""
+
+    bounds_only = True
 
 
 class CollisionSet(structref.StructRefProxy):
@@ -39,9 +50,19 @@ class CollisionSet(structref.StructRefProxy):
     """
 
 
+class CompoundSet(CollisionSet):
+    """A :class:`CollisionSet` whose every pair of primitives (spheres, capsules, boxes,
+    half-spaces) but capsule-capsule (spheres included) is the bound of a compound
+    (refined on its hulls): such a pair's distance is only a lower bound there, which GJK
+    and the support function give (:func:`moik.collision.kernels.primitive_pair`), so the
+    box and half-space closed forms are not compiled for it (a mesh arm's check: about a
+    third less to compile on its first use). :func:`collision_set` picks it."""
+
+
 FIELDS = ("chain", "body", "local", "kinds", "sizes", "pairs", "refine", "hull_points",
           "hull_ranges", "hull_caps")
 define_struct(CollisionSet, CollisionSetType, FIELDS)
+define_struct(CompoundSet, CompoundSetType, FIELDS)
 
 
 @jit
@@ -49,6 +70,25 @@ def _new_set(chain, shapes, pairs, hulls):
     """The compiled constructor (cached)."""
     return CollisionSet(chain, shapes[0], shapes[1], shapes[2], shapes[3], pairs[0], pairs[1],
                         hulls[0], hulls[1], hulls[2])
+
+
+@jit
+def _new_compound_set(chain, shapes, pairs, hulls):
+    """The compiled constructor of a :class:`CompoundSet` (cached)."""
+    return CompoundSet(chain, shapes[0], shapes[1], shapes[2], shapes[3], pairs[0], pairs[1],
+                       hulls[0], hulls[1], hulls[2])
+
+
+def bounds_only(kinds: np.ndarray, pairs: np.ndarray, refine: np.ndarray) -> bool:
+    """Whether every pair of two primitives but capsule-capsule (spheres included) is refined
+    (a compound's bound, :func:`~moik.collision.shapes.refinements`): the set is then a
+    :class:`CompoundSet`. Pairs with a hull are GJK's in either set; a compound's parts are
+    hulls."""
+    if len(pairs) == 0:
+        return False
+    ka, kb = kinds[pairs[:, 0]], kinds[pairs[:, 1]]
+    exact = (ka != HULL) & (kb != HULL) & ((ka > CAPSULE) | (kb > CAPSULE))
+    return bool(np.all(refine[exact, 1] > 0))
 
 
 def collision_set(*, chain: ChainModel, body: np.ndarray, local: np.ndarray, kinds: np.ndarray,
@@ -61,14 +101,15 @@ def collision_set(*, chain: ChainModel, body: np.ndarray, local: np.ndarray, kin
     ``hull_ranges (h, 2)`` int64, a capsule holding each (``hull_caps (h, 8)``, from
     :func:`~moik.collision.shapes.hull_capsules`; computed when not given), and the
     refinement of each pair (a compound's parts, :func:`~moik.collision.shapes.refinements`:
-    ``refine (p, 4)``; none by default)."""
+    ``refine (p, 4)``; none by default). A :class:`CompoundSet` where :func:`bounds_only`."""
     if refine is None:
         refine = np.zeros((len(pairs), 4), dtype=np.int64)
     if hull_caps is None:
         hull_caps = np.ascontiguousarray(np.array(
             [hull_capsule(hull_points[s:e]) for s, e in hull_ranges]).reshape(-1, 8))
-    return _new_set(chain, (body, local, kinds, sizes), (pairs, refine),
-                    (hull_points, hull_ranges, hull_caps))
+    new = _new_compound_set if bounds_only(kinds, pairs, refine) else _new_set
+    return new(chain, (body, local, kinds, sizes), (pairs, refine),
+               (hull_points, hull_ranges, hull_caps))
 
 
 def end_distance(cs, q, scratch, clearance):

@@ -335,19 +335,25 @@ def hull_capsule_bound(cs, W, a, b):
 
 @jit
 def hull_halfspace(cs, W, a, h):
-    """Signed distance of shape ``a`` (a hull) to half-space ``h``: its deepest vertex's."""
+    """Signed distance of shape ``a`` (a hull; or any other convex shape's core and radius,
+    :func:`support`) to half-space ``h``: its deepest point's, exact."""
     P = W[h]
     nx, ny, nz = P[0, 2], P[1, 2], P[2, 2]
     px, py, pz = support(cs, W, a, -nx, -ny, -nz)
     d = nx * (px - P[0, 3]) + ny * (py - P[1, 3]) + nz * (pz - P[2, 3])
+    r = _radius(cs, a)
+    if r != 0.0:  # a sphere's or capsule's deepest point lies r below its core's
+        px, py, pz, d = px - r * nx, py - r * ny, pz - r * nz, d - r
     return d, -nx, -ny, -nz, px, py, pz, px - d * nx, py - d * ny, pz - d * nz
 
 
 @jit
 def convex_pair(cs, W, a, b, limit):
     """Signed distance, normal (A to B) and witnesses of shapes ``a`` and ``b``, one of them
-    a hull (the module doc). A distance of at least ``limit`` may be returned as a lower
-    bound of the distance, not the distance (GJK stops there)."""
+    a hull (the module doc; for two other convex shapes, their cores' GJK distance less
+    their radii, which the compounds' bounds of a
+    :class:`~moik.collision.compiled.CompoundSet` take). A distance of at least ``limit``
+    may be returned as a lower bound of the distance, not the distance (GJK stops there)."""
     if cs.kinds[b] == HALFSPACE:
         return hull_halfspace(cs, W, a, b)
     if cs.kinds[a] == HALFSPACE:

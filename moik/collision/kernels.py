@@ -22,9 +22,10 @@ theorem); for penetrating box pairs the contact-normal approximation
 from __future__ import annotations
 
 import numpy as np
+from numba.extending import overload
 
 from moik._jit import jit
-from moik.collision.distance import CAPSULE, HULL
+from moik.collision.distance import CAPSULE, HULL, capsule_capsule
 from moik.collision.gjk import convex_pair, hull_capsule_bound, hulls_bound
 from moik.collision.pairs import pair_bound, pair_distance
 from moik.robots.fk_kernels import copy_pose, world_frames
@@ -46,16 +47,42 @@ def place_shapes(frames, body, local, W):
         W[k, 3, 0], W[k, 3, 1], W[k, 3, 2], W[k, 3, 3] = 0.0, 0.0, 0.0, 1.0
 
 
+def primitive_pair(cs, W, a, b, limit):
+    """:func:`shape_pair` of two primitives: their exact kernel
+    (:func:`~moik.collision.pairs.pair_distance`). For a
+    :class:`~moik.collision.compiled.CompoundSet` (every such pair but capsule-capsule is a
+    compound's bound, only a lower bound needed) the overload below compiles capsule-capsule
+    exactly as :func:`~moik.collision.pairs.pair_distance` does it and every other pair
+    through GJK and the support function (:func:`~moik.collision.gjk.convex_pair`: a lower
+    bound), so that the box and half-space closed forms are not compiled for it."""
+    kinds, sizes = cs.kinds, cs.sizes
+    return pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])
+
+
+@overload(primitive_pair)
+def _primitive_pair(cs, W, a, b, limit):
+    if not getattr(cs, "bounds_only", False):
+        return primitive_pair
+
+    def bounds(cs, W, a, b, limit):
+        kinds, sizes = cs.kinds, cs.sizes
+        if kinds[a] > CAPSULE or kinds[b] > CAPSULE:
+            return convex_pair(cs, W, a, b, limit)
+        if kinds[a] <= kinds[b]:  # as pair_distance orders them
+            return capsule_capsule(W[a], sizes[a], W[b], sizes[b])
+        d, nx, ny, nz, bx, by, bz, ax, ay, az = capsule_capsule(W[b], sizes[b], W[a], sizes[a])
+        return d, -nx, -ny, -nz, ax, ay, az, bx, by, bz
+    return bounds
+
+
 @jit
 def shape_pair(cs, W, a, b, limit):
-    """Signed distance, normal and witnesses of shapes ``a`` and ``b`` placed at ``W``: the
-    primitives' exact kernels (:func:`~moik.collision.pairs.pair_distance`), GJK for a
-    pair with a hull (:func:`~moik.collision.gjk.convex_pair`, which may return a lower
-    bound of the distance once it reaches ``limit``)."""
-    kinds, sizes = cs.kinds, cs.sizes
-    if kinds[a] == HULL or kinds[b] == HULL:
+    """Signed distance, normal and witnesses of shapes ``a`` and ``b`` placed at ``W``: GJK
+    for a pair with a hull (:func:`~moik.collision.gjk.convex_pair`, which may return a
+    lower bound of the distance once it reaches ``limit``), else :func:`primitive_pair`."""
+    if cs.kinds[a] == HULL or cs.kinds[b] == HULL:
         return convex_pair(cs, W, a, b, limit)
-    return pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])
+    return primitive_pair(cs, W, a, b, limit)
 
 
 @jit

@@ -267,7 +267,11 @@ def build_criteria(objectives, robot: Robot, *, q_current=None, rotation=None,
         if isinstance(item, Criterion):
             out.append(item)
         elif isinstance(item, str):
-            if choice("criterion", item, CRITERIA) == "orientation" and not position_only:
+            if item.lower() == "clearance":  # a solve's (moik.solver.collision.with_clearance)
+                raise ParameterError("criterion 'clearance' needs geometry to measure: a solve "
+                                     "with scene= and/or self_collision=True")
+            if choice("criterion", item, [*CRITERIA, "clearance"]) == "orientation" \
+                    and not position_only:
                 raise ParameterError("criterion 'orientation' is for position-only targets; "
                                      "a pose target fixes the orientation of every solution")
             out.append(build_criterion(item, robot, q_current=q_current, rotation=rotation,

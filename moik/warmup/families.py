@@ -19,9 +19,11 @@ from pymoo.optimize import minimize
 from moik import _jit
 from moik.algorithms import available, get_algorithm
 from moik.algorithms.registry import is_multi_objective
+from moik.collision import Box, HalfSpace, Scene
 from moik.exceptions import UnknownNameError
 from moik.problems import BiObjectiveIK, PoseIK, random_reachable_targets
 from moik.robots import Robot, get_robot
+from moik.robots.transforms import translation
 from moik.solver import solve_ik
 from moik.solver.batch import solve_ik_batch
 from moik.solver.pareto import solve_ik_pareto
@@ -60,8 +62,14 @@ def _batch_path(arm: Robot, targets) -> None:
 
 
 def _collision(arm: Robot, targets) -> None:  # the start loop with a distance test
-    solve_ik(arm, targets[0].pose, self_collision=True)
-    solve_ik_batch(arm, np.array([t.pose for t in targets]), self_collision=True)
+    # self pairs only: a set of bounds and hulls (CompoundSet); with a box, the exact
+    # primitive kernels too (CollisionSet): the two types a first collision-aware use takes
+    far = Box(size=[0.1, 0.1, 0.1], pose=translation(0.0, 0.0, -2.0 * arm.reach))
+    for scene in (None, Scene({"table": HalfSpace.plane([0, 0, 1], -1.5 * arm.reach),
+                               "box": far})):
+        solve_ik(arm, targets[0].pose, self_collision=True, scene=scene)
+        solve_ik_batch(arm, np.array([t.pose for t in targets]), self_collision=True,
+                       scene=scene)
 
 
 def _on_arms(workload: Callable[[Robot, list], None]) -> Callable[[], None]:

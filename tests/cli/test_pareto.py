@@ -73,3 +73,39 @@ def test_bad_criteria_and_q_current():
     args.q_current = [0.0, 1.0]
     with pytest.raises(ParameterError, match=r"needs 7 joint values, got 2 \(--q-current\)"):
         run_pareto(args)
+
+
+def test_html_without_plotly_stops_before_the_search(capsys, tmp_path, monkeypatch):
+    """Before: the whole search ran and printed its members, then exit 2 for plotly."""
+    import importlib.util
+
+    from moik.cli import main
+
+    real = importlib.util.find_spec
+    monkeypatch.setattr(importlib.util, "find_spec",
+                        lambda name, *a: None if name == "plotly" else real(name, *a))
+    euler = np.degrees(zyx_euler(POSE.rotation))
+    argv = ["solve", "iiwa14", "--target", *map(str, POSE.position), "--euler",
+            *map(str, euler), "--deg", "--pareto", "manipulability,limit_margin",
+            "--html", str(tmp_path / "x.html")]
+    assert main(argv) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and "--html: the explorer needs plotly" in err
+
+
+def test_clearance_is_named_as_a_criterion():
+    """Before: --pareto's help and the unknown-criterion error left out 'clearance'."""
+    from moik.exceptions import UnknownNameError
+    from moik.kinematics.criteria import build_criteria
+
+    assert "clearance with --scene or --self-collision" in _solve_help()
+    with pytest.raises(UnknownNameError, match="expected one of: .*clearance"):
+        build_criteria(("foo",), IIWA)
+    with pytest.raises(ParameterError, match="criterion 'clearance' needs geometry"):
+        build_criteria(("clearance",), IIWA)
+
+
+def _solve_help() -> str:
+    parser = build_parser()
+    sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    return " ".join(sub.choices["solve"].format_help().split())

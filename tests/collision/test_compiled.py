@@ -102,3 +102,70 @@ def test_collision_set_takes_keywords_only():
         collision_set(ARM.chain_model, np.zeros(1, dtype=np.int64), np.eye(4)[None],
                       np.zeros(1, dtype=np.int64), np.zeros((1, 3)),
                       np.zeros((0, 2), dtype=np.int64))
+
+
+def test_a_mesh_arms_set_compiles_bounds_only_and_measures_the_same():
+    """A mesh arm's set (iiwa14: every primitive pair but capsule-capsule a compound's bound) is a
+    CompoundSet, whose bounds of boxes and half-spaces come from GJK and the support
+    function instead of the closed forms: its distances (exact ones from the hulls) are the
+    general set's bit for bit where free (the same verdicts elsewhere), and each bound is at
+    most the exact distance of the bounds."""
+    from moik.collision import Box, HalfSpace
+    from moik.collision.compiled import CollisionSet, CompoundSet, _new_set, bounds_only
+    from moik.collision.io import rpy_pose
+    from moik.collision.kernels import distance_scratch, min_distances, place_all, shape_pair
+    from moik.collision.pairs import pair_distance
+    from moik.collision.urdf import robot_model
+
+    panda = get_robot("iiwa14")
+    scene = Scene({"table": HalfSpace.plane([0, 0, 1], -0.02),
+                   "box": Box(size=[0.3, 0.2, 0.4],
+                              pose=rpy_pose([0.45, 0.1, 0.35], [0.3, 0, 1])),
+                   "ball": Sphere(radius=0.1, pose=rpy_pose([0.1, -0.5, 0.5]))},
+                  allowed={("table", "base_link")})
+    checker = CollisionChecker(model=robot_model(panda), scene=scene, self_collision=True)
+    cs = checker.compiled
+    assert type(cs) is CompoundSet
+    boxed = CollisionChecker(model=robot_model(get_robot("panda")), scene=scene.__class__(
+        scene.obstacles), self_collision=True)  # panda_link7 has box primitives: exact kernels
+    assert type(boxed.compiled) is CollisionSet
+    arrays = checker.compiled_arrays
+    assert bounds_only(arrays["kinds"], arrays["pairs"], arrays["refine"])
+    general = _new_set(panda.chain_model, tuple(arrays[k] for k in ("body", "local", "kinds",
+                                                                     "sizes")),
+                       (arrays["pairs"], arrays["refine"]),
+                       tuple(arrays[k] for k in ("hull_points", "hull_ranges", "hull_caps")))
+    assert type(general) is CollisionSet
+    Q = np.ascontiguousarray(panda.random_q(300, rng=np.random.default_rng(5)))
+    out = []
+    for s in (cs, general):
+        d, which = np.empty(len(Q)), np.empty(len(Q), dtype=np.int64)
+        min_distances(s, Q, d, which)
+        out.append((d, which))
+    (d, which), (d_general, which_general) = out
+    free = d_general >= 0.0
+    assert free.any() and (~free).any()  # both kinds of verdict
+    np.testing.assert_array_equal(d[free], d_general[free])  # a distance: the hulls' own
+    np.testing.assert_array_equal(which[free], which_general[free])
+    # in collision the same verdict; the depth reported is a hull's GJK overlap (an upper
+    # bound of the depth), which the general set's exact bounds may prune to another pair's
+    assert (d[~free] < 0.0).all() and (d[~free] <= d_general[~free]).all()
+    # the bounds: GJK / support against the closed forms, on the tops' pairs with a box or
+    # a half-space
+    kinds, sizes, pairs = arrays["kinds"], arrays["sizes"], arrays["pairs"]
+    tops = [k for k in range(len(pairs)) if 1 < max(kinds[pairs[k]]) < 4]
+    assert tops
+    scratch = distance_scratch(cs)
+    W = scratch[2]
+    compared = 0
+    for q in Q[:60]:
+        place_all(cs, q, scratch)
+        for k in tops:
+            a, b = pairs[k]
+            bound = shape_pair(cs, W, a, b, np.inf)[0]
+            exact = pair_distance(kinds[a], W[a], sizes[a], kinds[b], W[b], sizes[b])[0]
+            assert bound <= exact + 1e-9 * max(1.0, abs(exact))
+            if exact > 0:
+                assert bound >= exact - 1e-8  # separated: GJK's bound is the distance
+            compared += 1
+    assert compared > 100

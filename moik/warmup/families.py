@@ -64,7 +64,7 @@ def _batch_path(arm: Robot, targets) -> None:
 def _collision(arm: Robot, targets) -> None:  # the start loop with a distance test
     # self pairs only: a set of bounds and hulls (CompoundSet); with a box, the exact
     # primitive kernels too (CollisionSet): the two types a first collision-aware use takes
-    far = Box(size=[0.1, 0.1, 0.1], pose=translation(0.0, 0.0, -2.0 * arm.reach))
+    far = Box(size=(0.1, 0.1, 0.1), pose=translation(0.0, 0.0, -2.0 * arm.reach))
     for scene in (None, Scene({"table": HalfSpace.plane([0, 0, 1], -1.5 * arm.reach),
                                "box": far})):
         solve_ik(arm, targets[0].pose, self_collision=True, scene=scene)

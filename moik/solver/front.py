@@ -19,6 +19,8 @@ the solve's orientation metric (errors recomputed by FK).
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from moik.algorithms.archive.fronts import nondominated_mask
@@ -38,7 +40,7 @@ def reach_excess(robot: Robot, target: Target) -> float:
     prismatic strokes: the module docstring's bound, measured from the base origin.
     """
     p = target.position
-    return float(np.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - robot.reach)
+    return math.hypot(float(p[0]), float(p[1]), float(p[2])) - robot.reach  # no overflow
 
 
 def polished_front(robot: Robot, target: Target, orientation: str, starts: np.ndarray,

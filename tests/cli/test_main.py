@@ -277,6 +277,10 @@ def test_solve_errors_are_one_line(capsys):
     assert main(["solve", "eosma7", "--target", "0", "0", "9000"]) == 2
     err = capsys.readouterr().err
     assert err.startswith("moik: error:") and "expected a position in cm" in err
+    # a position whose squared norm overflows: the error alone, no numpy warning before it
+    assert main(["solve", "eosma7", "--target", "0", "1e300", "0"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("moik: error:") and err.count("\n") == 1, err
 
 
 @pytest.mark.parametrize("seed", ["-1", "-7"])

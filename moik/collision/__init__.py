@@ -6,7 +6,9 @@ distances, their minimum and its gradient). ``collision_model(name)``: the shipp
 capsule model of a catalog arm; ``load_scene``/``load_model``: JSON files;
 ``model_from_urdf``: a URDF's ``<collision>`` geometry (primitives, and each link's meshes
 a ``Compound``: a fitted enclosing capsule holding the convex hulls of pieces of the meshes,
-measured by :mod:`moik.collision.gjk` where the capsules come close).
+measured by :mod:`moik.collision.gjk` where the capsules come close). ``cylinder``: a
+cylinder as a ``Compound`` too (its enclosing capsule holding a prism that holds it,
+:mod:`moik.collision.prism`), in URDFs, scene files and capsule-model files alike.
 """
 
 from typing import TYPE_CHECKING
@@ -17,7 +19,8 @@ if TYPE_CHECKING:
     from moik.collision.catalog import collision_model, shipped_models
     from moik.collision.io import load_model, load_scene
     from moik.collision.model import CollisionChecker, CollisionModel, Scene, default_links
-    from moik.collision.shapes import Box, Capsule, ConvexHull, HalfSpace, Shape, Sphere, cylinder
+    from moik.collision.prism import cylinder_compound as cylinder
+    from moik.collision.shapes import Box, Capsule, ConvexHull, HalfSpace, Shape, Sphere
     from moik.collision.urdf import model_from_urdf
 
 _LAZY: dict[str, tuple[str, str | None]] = {
@@ -35,7 +38,7 @@ _LAZY: dict[str, tuple[str, str | None]] = {
     "HalfSpace": ("moik.collision.shapes", "HalfSpace"),
     "Shape": ("moik.collision.shapes", "Shape"),
     "Sphere": ("moik.collision.shapes", "Sphere"),
-    "cylinder": ("moik.collision.shapes", "cylinder"),
+    "cylinder": ("moik.collision.prism", "cylinder_compound"),
     "model_from_urdf": ("moik.collision.urdf", "model_from_urdf"),
 }
 """Public name -> (module, attribute), loaded at first use: the solver's start loop

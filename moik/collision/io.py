@@ -2,7 +2,8 @@
 
 A shape is an object with ``"type"`` (``sphere``, ``capsule``, ``cylinder``, ``box``,
 ``halfspace``), its sizes (``radius``; ``length``; box ``size`` = full side lengths) and
-its placement: ``"pose"`` (a 4x4 matrix) or ``"xyz"`` and ``"rpy"`` (URDF's
+its placement (a cylinder is measured on a prism holding it inside its enclosing capsule:
+:mod:`moik.collision.prism`): ``"pose"`` (a 4x4 matrix) or ``"xyz"`` and ``"rpy"`` (URDF's
 fixed-axis roll-pitch-yaw, ``R = Rz(y) Ry(p) Rx(r)``). A capsule may instead give its
 segment's end points ``"a"`` and ``"b"``; a half-space ``"normal"`` and ``"offset"``
 (``normal . x <= offset``). Lengths are in the robot's unit.
@@ -35,7 +36,8 @@ import numpy as np
 from moik._validate import finite_array, known_keys
 from moik._validate.reading import depth_problem, read_json
 from moik.collision.model import CollisionModel, Scene
-from moik.collision.shapes import Box, Capsule, HalfSpace, Shape, Sphere, cylinder
+from moik.collision.prism import cylinder_compound
+from moik.collision.shapes import Box, Capsule, HalfSpace, Shape, Sphere
 from moik.exceptions import GeometryError, UnknownNameError
 from moik.robots.chain import Robot
 
@@ -126,7 +128,7 @@ def _build(kind: str, d: Mapping, sizes: dict[str, Any], what: str) -> Shape:
         capsule = Capsule.between(d["a"], _get(sizes, "b", what), _get(sizes, "radius", what))
         return capsule.moved(pose) if "pose" in d or "xyz" in d or "rpy" in d else capsule
     if kind in ("capsule", "cylinder"):
-        build = Capsule if kind == "capsule" else cylinder
+        build = Capsule if kind == "capsule" else cylinder_compound
         return build(radius=_get(sizes, "radius", what), length=_get(sizes, "length", what),
                      pose=pose)
     if kind == "box":

@@ -1,4 +1,4 @@
-"""Collision primitives: sphere, capsule, box, half-space (cylinders become capsules).
+"""Collision primitives: sphere, capsule, box, half-space, convex hull, compound.
 
 Each shape is a frozen, validated value with a ``pose`` (``(4, 4)`` rigid transform
 of the shape's own frame in the frame it is attached to: a link frame of a robot, or
@@ -16,9 +16,11 @@ the world for a scene's obstacle) and sizes in the robot's length unit:
 * :class:`Compound` ``(bound, parts)``: convex hulls inside a bounding primitive, measured
   on the parts only where the bounds come close (a collision mesh cut in convex pieces).
 
-A URDF ``<cylinder>`` is modelled by :func:`cylinder`: the capsule of the same radius
-whose segment is the cylinder's axis (it contains the cylinder and extends ``radius``
-beyond each flat end): conservative, never an underestimate of contact.
+:func:`cylinder` is a cylinder's enclosing capsule: the capsule of the same radius whose
+segment is the cylinder's axis (it contains the cylinder and extends ``radius`` beyond
+each flat end). A cylinder of a URDF, a scene file or ``moik.collision.cylinder`` is a
+:class:`Compound` with that capsule as its bound and a prism that holds the cylinder as
+its part (:mod:`moik.collision.prism`).
 
 The compiled kernels take a shape as a kind code, a pose and three sizes
 (:func:`shape_arrays`; :mod:`moik.collision.distance` documents them).
@@ -333,7 +335,8 @@ def hull_vertices(points: np.ndarray) -> np.ndarray:
 
 
 def cylinder(*, radius: float, length: float, pose: Any = None) -> Capsule:
-    """A URDF cylinder (axis z, centred) as its enclosing capsule (see the module doc)."""
+    """The enclosing capsule of a cylinder (axis z, centred; see the module doc): the bound
+    of :func:`moik.collision.prism.cylinder_compound`."""
     return Capsule(radius=radius, length=length, pose=pose)
 
 

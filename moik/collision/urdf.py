@@ -6,8 +6,9 @@ from, at the joint values the caller gives or their zero clipped into their limi
 (``joint_values=``, :mod:`moik.robots.urdf_joints`; the model's ``source`` says where
 each was placed, and the caches below are keyed by those values too).
 
-Boxes, spheres and capsules are taken as they are; cylinders become their enclosing
-capsules (:func:`moik.collision.shapes.cylinder`); meshes (``package://``, ``file://`` or
+Boxes, spheres and capsules are taken as they are; a cylinder becomes a compound: its
+enclosing capsule holding a 32-sided prism that holds the cylinder
+(:mod:`moik.collision.prism`); meshes (``package://``, ``file://`` or
 file paths, :mod:`moik.collision.meshes`) are read and each link's become one
 :class:`~moik.collision.shapes.Compound`: a capsule fitted to their triangles
 (:mod:`moik.collision.mesh_fit`: every triangle inside), cached on disk, holding the
@@ -49,7 +50,8 @@ from moik.collision.mesh_fit import cached_link_fit, digest, load_cached, store_
 from moik.collision.meshes import LARGEST_SIZE, read_mesh, resolve_mesh
 from moik.collision.model import CollisionChecker, CollisionModel
 from moik.collision.outer_hull import enclosing_polytope
-from moik.collision.shapes import Box, Capsule, Compound, ConvexHull, Shape, Sphere, cylinder
+from moik.collision.prism import cylinder_compound
+from moik.collision.shapes import Box, Capsule, Compound, ConvexHull, Shape, Sphere
 from moik.exceptions import GeometryError, MoikError
 from moik.robots.chain import Robot
 from moik.robots.urdf_geometry import (
@@ -82,7 +84,7 @@ def _shape(item: dict[str, Any], label: str) -> Shape:
             return Box(size=item["size"], pose=pose)
         if kind == "sphere":
             return Sphere(radius=item["radius"], pose=pose)
-        build = Capsule if kind == "capsule" else cylinder
+        build = Capsule if kind == "capsule" else cylinder_compound
         return build(radius=item["radius"], length=item["length"], pose=pose)
     except MoikError as exc:
         raise GeometryError(f"{what}: {exc}") from None
@@ -260,7 +262,8 @@ def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
                             "collisions cannot be checked; add <collision> elements to the URDF, "
                             "or pass missing='ignore' to leave them unchecked")
     source_text = (f"<collision> geometry of {label} (meshes: {HULL_PIECES} convex hulls per "
-                   "link in a fitted enclosing capsule)")
+                   "link in a fitted enclosing capsule; cylinders: a prism holding each, in "
+                   "its enclosing capsule)")
     if placement:
         source_text += ("; off-chain joints placed at "
                         + ", ".join(p.describe(n) for n, p in placement.items()))

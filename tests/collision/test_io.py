@@ -102,3 +102,21 @@ def test_deep_and_endless_scene_files_are_refused(tmp_path):
         load_scene("/dev/zero")
     with pytest.raises(GeometryError, match="JSON file path"):
         load_scene("")
+
+
+def test_a_scene_cylinder_is_a_prism_in_its_capsule():
+    """A cylinder of a scene file is the compound of moik.collision.prism (measured on the
+    prism that holds it, tests/collision/test_prism.py), not its enclosing capsule."""
+    from moik.collision import cylinder
+    from moik.collision.io import rpy_pose
+    from moik.collision.shapes import Compound
+
+    scene = load_scene({"obstacles": [{"name": "can", "type": "cylinder", "radius": 0.04,
+                                       "length": 0.12, "xyz": [0.5, 0.0, 0.06]}]})
+    can = scene.obstacles["can"]
+    built = cylinder(radius=0.04, length=0.12, pose=rpy_pose([0.5, 0.0, 0.06]))
+    assert isinstance(can, Compound) and isinstance(can.bound, Capsule)
+    assert (can.bound.radius, can.bound.length) == (0.04, 0.12)
+    np.testing.assert_array_equal(can.pose, built.pose)
+    np.testing.assert_array_equal(can.parts[0].points, built.parts[0].points)
+    np.testing.assert_array_equal(can.parts[0].pose, built.parts[0].pose)

@@ -10,6 +10,7 @@ import moik
 from moik import load_urdf, solve_ik
 from moik.collision import Box, Capsule, CollisionChecker, Scene, Sphere
 from moik.collision.meshes import read_mesh, resolve_mesh
+from moik.collision.shapes import Compound
 from moik.collision.urdf import model_from_urdf, robot_model
 from moik.exceptions import GeometryError, URDFError
 from moik.robots.urdf_geometry import mesh_geometry
@@ -39,7 +40,9 @@ def test_primitives_on_the_bodies():
     model = model_from_urdf(PRIMITIVES, robot, samples=0)
     assert model.links == ("base", "upper", "fore")
     assert isinstance(model.shapes["base"][0], Box)
-    assert isinstance(model.shapes["upper"][0], Capsule)  # the cylinder's enclosing capsule
+    upper = model.shapes["upper"][0]  # the cylinder: a prism in its enclosing capsule
+    assert isinstance(upper, Compound) and isinstance(upper.bound, Capsule)
+    assert (upper.bound.radius, upper.bound.length) == (0.04, 0.5)
     assert isinstance(model.shapes["fore"][0], Sphere)
     checker = CollisionChecker(model=model, self_collision=True)
     for q in ([0.0, 0.0], [0.7, -1.1]):
@@ -54,6 +57,34 @@ def test_primitives_on_the_bodies():
         p_fore = np.array([0, 0, 0.1]) + Ry1 @ ([0, 0, 0.5] + Ry2 @ [0.2, 0, 0])
         np.testing.assert_allclose(placed["fore"].pose[:3, 3], p_fore, atol=1e-12)
     assert checker.n_pairs == 1  # base and fore (upper is adjacent to both)
+
+
+WRIST = """<robot name="wrist">
+  <link name="base"/>
+  <link name="a"><collision><origin xyz="0 0 0.025"/><geometry>
+    <cylinder radius="0.0325" length="0.05"/></geometry></collision></link>
+  <link name="b"/>
+  <link name="c"><collision><origin xyz="0 0 0.025"/><geometry>
+    <cylinder radius="0.0325" length="0.05"/></geometry></collision></link>
+  <joint name="j1" type="revolute"><parent link="base"/><child link="a"/>
+    <axis xyz="0 0 1"/><limit lower="-2" upper="2"/></joint>
+  <joint name="j2" type="revolute"><parent link="a"/><child link="b"/>
+    <origin xyz="0 0 0.05"/><axis xyz="0 0 1"/><limit lower="-2" upper="2"/></joint>
+  <joint name="j3" type="revolute"><parent link="b"/><child link="c"/>
+    <origin xyz="0 0 0.015"/><axis xyz="0 0 1"/><limit lower="-2" upper="2"/></joint>
+</robot>"""
+
+
+def test_cylinders_end_to_end_are_measured_on_their_prisms():
+    """A wrist's two cylinders facing each other 15 mm apart, a link without geometry
+    between them (a Unitree Z1): the pair is checked and 15 mm apart in every
+    configuration; their enclosing capsules alone would overlap by 50 mm in all of them."""
+    robot = load_urdf(WRIST)
+    model = model_from_urdf(WRIST, robot, samples=0, missing="ignore")
+    checker = CollisionChecker(model=model, self_collision=True)
+    assert checker.pair_names == (("a", "c"),)
+    Q = robot.random_q(50, rng=np.random.default_rng(0))
+    np.testing.assert_allclose(checker.min_distance(Q), 0.015, atol=1e-9)
 
 
 def test_not_this_robots_urdf():

@@ -180,14 +180,26 @@ def check_robot(robot) -> Robot:
                          f"{robot!r:.60}")
 
 
+def check_has_reach(robot: Robot) -> None:
+    """Reject a robot of zero reach (every joint and its tool at the base's origin): its
+    tool cannot move, and the solvers scale positions by ``1 / reach``."""
+    if robot.reach == 0.0:
+        raise TargetError(
+            f"robot {robot.name!r} has zero reach (every joint and its tool sit at the base's "
+            "origin, no prismatic stroke): its tool cannot move, so there is no position to "
+            "solve for; expected a chain with at least one non-zero offset")
+
+
 def check_unit_range(target: Target, robot: Robot) -> None:
     """Reject targets far beyond the robot's reach: a length-unit mix-up.
 
     Targets moderately out of reach are legitimate (the solver reports them
     unreachable); one beyond ``UNIT_RANGE_FACTOR`` times the reach is almost
-    surely in the wrong unit (m vs cm vs mm).
+    surely in the wrong unit (m vs cm vs mm). A robot of zero reach is refused
+    (:func:`check_has_reach`).
     """
     robot = check_robot(robot)
+    check_has_reach(robot)
     dist = math.hypot(*target.position.tolist())  # norm of 3 floats (a hot path)
     if dist > UNIT_RANGE_FACTOR * robot.reach:
         raise TargetError(

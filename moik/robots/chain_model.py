@@ -58,11 +58,14 @@ def chain_model(chain: KinematicChain, base: np.ndarray, lower: np.ndarray, uppe
     """The :class:`ChainModel` of a kinematic chain, its base, limits and reach.
 
     Every array is stored read-only and C-contiguous (copied if it is not), so every
-    model has the same numba type and no kernel compiles twice for one.
+    model has the same numba type and no kernel compiles twice for one. A chain of zero
+    reach (its tool fixed at the base's origin; the solvers refuse it,
+    :func:`moik.problems.targets.check_has_reach`) gets the scale 1, so that its frames and
+    collision geometry are still computed.
     """
     arrays = [_read_only(a) for a in (base, lower, upper)]
     return _new_model(chain.origins, chain.link_frames, arrays[0], chain.joint_types,
-                      (arrays[1], arrays[2]), 1.0 / float(reach))
+                      (arrays[1], arrays[2]), 1.0 / float(reach) if reach > 0 else 1.0)
 
 
 def _read_only(values: np.ndarray) -> np.ndarray:

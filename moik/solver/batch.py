@@ -32,7 +32,7 @@ from moik.exceptions import ParameterError, ShapeError, TargetError
 from moik.kinematics.criteria import nearest_copies
 from moik.kinematics.orientation import ROTATION_ATOL, _all_rotations, check_rotation
 from moik.kinematics.tolerance import Tolerance
-from moik.problems.targets import UNIT_RANGE_FACTOR, Target
+from moik.problems.targets import UNIT_RANGE_FACTOR, Target, check_has_reach
 from moik.robots.catalog import as_robot
 from moik.robots.chain import Robot
 from moik.solver import parallel
@@ -157,6 +157,7 @@ def _rotations(R: np.ndarray) -> np.ndarray:
 def _check_reach(robot: Robot, positions: np.ndarray) -> None:
     """Each target within :data:`~moik.problems.targets.UNIT_RANGE_FACTOR` times the reach
     (as ``solve_ik`` checks one, here before any is solved), the first beyond it named."""
+    check_has_reach(robot)
     with np.errstate(over="ignore"):  # 1e300 is simply beyond the reach (inf)
         dist = np.linalg.norm(positions, axis=1)
     far = np.flatnonzero(dist > UNIT_RANGE_FACTOR * robot.reach)

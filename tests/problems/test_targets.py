@@ -85,3 +85,22 @@ def test_pose_fast_path_falls_back_to_the_named_check(where, value, error):
     T[where] = value
     with pytest.raises(error):
         as_target(T)
+
+
+def test_a_robot_of_zero_reach_is_refused_by_every_solver():
+    """Every joint and the tool at the base's origin: FK works (the tool stays at the
+    origin), every solver refuses it with a clear error (it divided by the reach: a raw
+    ZeroDivisionError deep in the solver before)."""
+    from moik import Robot, solve_ik, solve_path
+    from moik.solver import solve_ik_batch, solve_ik_pareto
+
+    robot = Robot(name="wrist", origins=np.broadcast_to(np.eye(4), (4, 4, 4)),
+                  lower=[-1.0] * 3, upper=[1.0] * 3)
+    assert robot.reach == 0.0
+    np.testing.assert_array_equal(robot.fk(np.array([0.3, -0.2, 0.5]))[:3, 3], 0.0)
+    for call in (lambda: solve_ik(robot, np.zeros(3)),
+                 lambda: solve_ik_batch(robot, np.zeros((2, 3))),
+                 lambda: solve_path(robot, np.zeros((2, 3))),
+                 lambda: solve_ik_pareto(robot, np.zeros(3))):
+        with pytest.raises(TargetError, match="zero reach"):
+            call()

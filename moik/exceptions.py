@@ -74,6 +74,11 @@ class CacheWarning(MoikWarning):
     """moik's compiled-kernel cache was damaged (discarded and recompiled) or cannot be written."""
 
 
+class GeometryWarning(MoikWarning):
+    """A collision model can be used but will reject every answer: two of its links are in
+    collision in every sampled configuration (named, with what to do about it)."""
+
+
 class DegreesWarning(MoikWarning):
     """Angles given to moik (joint limits, DH twists or offsets) look like degrees.
 

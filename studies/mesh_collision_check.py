@@ -48,7 +48,7 @@ from moik.collision.urdf import robot_model
 from studies.urdf_oracle import URDFOracle
 
 ROOT = Path(__file__).resolve().parents[1]
-CHECK_SEED = 1  # not moik.collision.urdf.ACM_SEED (0): the matrix is checked on other samples
+CHECK_SEED = 1  # not moik.collision.acm.ACM_SEED (0): the matrix is checked on other samples
 SOLVE_SEED = 2
 PACKAGES = [ROOT / "moik" / "robots" / "data" / "packages", ROOT / "tests" / "data" / "urdf"
             / "packages"]

@@ -189,17 +189,22 @@ def pair_distances(cs, Q, out):
 
 
 @jit
-def pairs_touching(cs, Q, hit):
-    """Set ``hit[k]`` for every pair ``k`` in collision (distance below 0) in some row of
-    ``Q (n, dof)``; a pair already hit is not measured again, and the others only as far
-    as their sign (limit 0: the parts whose bounds keep apart are skipped)."""
+def pair_signs(cs, Q, touching, free):
+    """Set ``touching[k]`` for every pair ``k`` in collision (distance below 0) in some row
+    of ``Q (n, dof)``, and ``free[k]`` for every pair out of collision in some row; a pair
+    with both set is not measured again, and the others only as far as their sign (limit
+    0: the parts whose bounds keep apart are skipped)."""
     scratch = distance_scratch(cs)
     W = scratch[2]
     for i in range(Q.shape[0]):
         place_all(cs, Q[i], scratch)
         for k in range(cs.pairs.shape[0]):
-            if not hit[k] and pair_value(cs, W, k, 0.0)[0] < 0.0:
-                hit[k] = True
+            if touching[k] and free[k]:
+                continue
+            if pair_value(cs, W, k, 0.0)[0] < 0.0:
+                touching[k] = True
+            else:
+                free[k] = True
 
 
 @jit(nogil=True)

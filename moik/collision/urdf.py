@@ -22,13 +22,14 @@ is free for the meshes, and they follow a link far closer than one capsule. Bodi
 named by their URDF links.
 
 The allowed-collision matrix is sampled as MoveIt's setup assistant does
-(:mod:`moik.collision.acm`: adjacent links and the pairs in collision in none of
-``samples`` random configurations are not checked), judged on the meshes' convex hulls
-(:func:`sample_never`: the capsules, and the hulls where they overlap), and cached
-on disk by the chain, the shapes, their hulls and the settings. MoveIt's third rule, pairs
-in collision (nearly) always, is not applied: capsules that always overlap say nothing
-of the meshes inside them, which may touch only sometimes (measured: UR5's base and
-upper arm), and a pair never checked must never touch.
+(:func:`moik.collision.acm.cached_allowed`: adjacent links and the pairs in collision in
+none of ``samples`` random configurations are not checked), judged on the compounds'
+parts (the capsules, and the hulls where they overlap), and cached on disk by the chain,
+the shapes, their hulls and the settings. MoveIt's third rule, pairs in collision (nearly)
+always, is not applied (a pair never checked must never touch, and convex pieces that
+always overlap say nothing of the meshes inside them, which may touch only sometimes):
+such pairs are named in a :class:`~moik.exceptions.GeometryWarning` and the model's
+``source`` instead, since every answer will be rejected for them.
 
 A body of the chain with no collision geometry at all is an error (a check that
 silently skips a link is no check): pass ``missing="ignore"`` to accept it; the
@@ -43,12 +44,11 @@ from typing import Any
 import numpy as np
 
 from moik._validate import choice, integer
-from moik.collision.acm import DEFAULT_SAMPLES
+from moik.collision.acm import DEFAULT_SAMPLES, cached_allowed
 from moik.collision.fit import body_axes
-from moik.collision.kernels import pairs_touching
-from moik.collision.mesh_fit import cached_link_fit, digest, load_cached, store_cached
+from moik.collision.mesh_fit import cached_link_fit
 from moik.collision.meshes import LARGEST_SIZE, read_mesh, resolve_mesh
-from moik.collision.model import CollisionChecker, CollisionModel
+from moik.collision.model import CollisionModel
 from moik.collision.outer_hull import enclosing_polytope
 from moik.collision.prism import cylinder_compound
 from moik.collision.shapes import Box, Capsule, Compound, ConvexHull, Shape, Sphere
@@ -62,7 +62,6 @@ from moik.robots.urdf_geometry import (
 )
 
 MISSING = ("error", "ignore")
-ACM_SEED = 0
 HULL_PIECES = 12  # convex hulls per link (slabs of its triangles) inside its capsule
 
 
@@ -168,45 +167,6 @@ def mesh_shapes(source: Any, robot: Robot, *, package_dirs: Any = None,
     return out
 
 
-def sample_never(model: CollisionModel, samples: int) -> list[tuple[str, str]]:
-    """The body pairs in collision in none of ``samples`` random configurations (seed
-    :data:`ACM_SEED`), judged on the meshes' hulls (the compounds' parts)."""
-    checker = CollisionChecker(model=model, self_collision=True)
-    if checker.n_pairs == 0:
-        return []
-    Q = model.robot.random_q(samples, rng=np.random.default_rng(ACM_SEED))
-    touching = np.zeros(checker.n_pairs, dtype=np.bool_)
-    pairs_touching(checker.compiled, np.ascontiguousarray(Q), touching)
-    hit: dict[tuple[int, int], bool] = {}
-    for k, pair in enumerate(checker.pair_bodies):
-        hit[pair] = hit.get(pair, False) or bool(touching[k])
-    return [(model.links[i], model.links[j]) for (i, j), h in hit.items() if not h]
-
-
-def _cached_allowed(model: CollisionModel, samples: int, use_cache: bool,
-                    placement: dict[str, float]) -> CollisionModel:
-    """The model with :func:`sample_never`'s pairs allowed, read from the disk cache
-    when there (keyed by the chain, the off-chain joints' values, the shapes, their hulls
-    and the settings)."""
-    robot = model.robot
-    chain = robot.kinematic_chain
-    parts: list[Any] = [{"samples": samples, "seed": ACM_SEED, "links": list(model.links),
-                         "rule": "never, on the hulls"}, placement,
-                        chain.origins, chain.joint_types.astype(float), robot.lower, robot.upper]
-    for body, shape in model.items:
-        parts += [body, type(shape).__name__, shape.pose, np.array(shape.sizes),
-                  *([p.points for p in shape.parts] if isinstance(shape, Compound) else [])]
-    key = digest(parts)
-    cached = load_cached("acm", key) if use_cache else None
-    if isinstance(cached, list) and all(isinstance(p, list) and len(p) == 2
-                                        and all(n in model.links for n in p) for p in cached):
-        return model.with_allowed(cached)
-    never = sample_never(model, samples)
-    if use_cache:
-        store_cached("acm", key, sorted(sorted(p) for p in never))
-    return model.with_allowed(never)
-
-
 def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
                     missing: str = "error", samples: int = DEFAULT_SAMPLES,
                     use_cache: bool = True, joint_values: Any = None) -> CollisionModel:
@@ -274,7 +234,7 @@ def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
     model = CollisionModel(robot=robot, shapes=shapes, links=tuple(names), source=source_text,
                            aliases=aliases, origins={n: origins[n] for n in shapes})
     values = {n: p.value for n, p in placement.items()}
-    return _cached_allowed(model, samples, use_cache, values) if samples else model
+    return cached_allowed(model, samples, use_cache, values) if samples else model
 
 
 def robot_model(robot: Robot, *, missing: str = "error", joint_values: Any = None

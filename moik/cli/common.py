@@ -27,14 +27,17 @@ def robot(args: argparse.Namespace) -> Robot:
     """The catalog robot or the URDF chain named by ``args.robot`` (``--base``/``--tip``)."""
     spec, base, tip = args.robot, args.base, args.tip
     packages = getattr(args, "package_dirs", None)
+    srdf = getattr(args, "srdf", None)
     if spec in available_robots():
-        if base is not None or tip is not None or packages:
+        if base is not None or tip is not None or packages or srdf is not None:
             raise ParameterError(f"--base/--tip select links of a URDF file (--package-dir its "
-                                 f"meshes' packages); {spec!r} is a catalog robot")
+                                 f"meshes' packages, --srdf its SRDF); {spec!r} is a catalog "
+                                 "robot")
         return get_robot(spec)
     if Path(spec).suffix.lower() in (".urdf", ".xml") or Path(spec).is_file():
         try:
-            return load_urdf(spec, base_link=base, tip_link=tip, package_dirs=packages)
+            return load_urdf(spec, base_link=base, tip_link=tip, package_dirs=packages,
+                             srdf=srdf)
         except URDFError as exc:  # the library's keywords, in the command's words
             text = str(exc).replace("pass tip_link=", "give --tip").replace(
                 "pass base_link=", "give --base")

@@ -90,6 +90,9 @@ def _robot_arguments(p: argparse.ArgumentParser, optional: bool = False) -> None
                    type=nonempty,
                    help="URDF: a folder holding the packages its package:// meshes name "
                         "(repeatable; ROS_PACKAGE_PATH is searched too)")
+    p.add_argument("--srdf", metavar="FILE", type=nonempty,
+                   help="URDF: the robot's MoveIt SRDF; the link pairs it disables are not "
+                        "checked for self-collision")
     p.add_argument("--json", action="store_true",
                    help="print JSON (see `python -m pydoc moik.cli`)")
 

@@ -126,6 +126,8 @@ def cached_allowed(model: CollisionModel, samples: int, use_cache: bool,
     for body, shape in model.items:
         parts += [body, type(shape).__name__, shape.pose, np.array(shape.sizes),
                   *([p.points for p in shape.parts] if isinstance(shape, Compound) else [])]
+    if model.allowed:  # pairs allowed before (an SRDF's) are not sampled
+        parts.append(sorted(sorted(p) for p in model.allowed))
     key = digest(parts)
     cached = load_cached("acm", key) if use_cache else None
     if (isinstance(cached, dict) and _pair_list(cached.get("never"), model.links)
@@ -144,8 +146,9 @@ def cached_allowed(model: CollisionModel, samples: int, use_cache: bool,
         f"{robot.name}: links {named} are in collision in every one of {samples} random "
         "configurations as the model measures them (the convex pieces that hold their "
         "collision geometry), so every answer will be rejected; the meshes themselves may "
-        "be apart. If they never touch, allow the pair: pass "
-        "collision=model.with_allowed([(a, b)]) to the solvers", GeometryWarning, stacklevel=3)
+        "be apart. If they never touch, give the robot's MoveIt SRDF that disables the pair "
+        "(load_urdf(..., srdf=), --srdf) or pass collision=model.with_allowed([(a, b)])",
+        GeometryWarning, stacklevel=3)
     return CollisionModel(robot=robot, shapes=out.shapes, links=out.links, allowed=out.allowed,
                           source=f"{out.source}; in collision in every sampled configuration "
                                  f"(every answer rejected): {named}",

@@ -52,6 +52,7 @@ from moik.collision.model import CollisionModel
 from moik.collision.outer_hull import enclosing_polytope
 from moik.collision.prism import cylinder_compound
 from moik.collision.shapes import Box, Capsule, Compound, ConvexHull, Shape, Sphere
+from moik.collision.srdf import body_pairs
 from moik.exceptions import GeometryError, MoikError
 from moik.robots.chain import Robot
 from moik.robots.urdf_geometry import (
@@ -59,6 +60,7 @@ from moik.robots.urdf_geometry import (
     link_placements,
     mesh_geometry,
     offchain_placement,
+    urdf_links,
 )
 
 MISSING = ("error", "ignore")
@@ -169,7 +171,8 @@ def mesh_shapes(source: Any, robot: Robot, *, package_dirs: Any = None,
 
 def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
                     missing: str = "error", samples: int = DEFAULT_SAMPLES,
-                    use_cache: bool = True, joint_values: Any = None) -> CollisionModel:
+                    use_cache: bool = True, joint_values: Any = None,
+                    srdf: Any = None) -> CollisionModel:
     """The URDF's collision geometry on ``robot``, with its sampled allowed-collision matrix.
 
     Args:
@@ -188,6 +191,9 @@ def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
             given is at its zero clipped into its limits, a ``<mimic>`` joint follows its
             leader (:mod:`moik.robots.urdf_joints`). The model's ``source`` says where
             each was placed.
+        srdf: A MoveIt SRDF (path or XML text) whose disabled pairs are not checked, a
+            body pair when all its links' pairs are (:mod:`moik.collision.srdf`; named in
+            the model's ``source``); the sampled matrix adds its own.
 
     Raises:
         ParameterError: ``joint_values`` names a joint that is not an off-chain joint of
@@ -195,7 +201,8 @@ def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
         URDFError: The URDF is not ``robot``'s; an off-chain joint that cannot be placed
             (a mimic of a chain joint, a floating joint with links behind it).
         GeometryError: A mesh that cannot be used (see :func:`mesh_shapes`), a body
-            without geometry (``missing="error"``).
+            without geometry (``missing="error"``), an SRDF that cannot be read or names
+            links the URDF does not have.
     """
     missing = choice("missing", missing, MISSING)
     samples = integer("samples", samples, minimum=0)
@@ -233,6 +240,13 @@ def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
     aliases = {link: names[body] for link, (body, _) in placed.items() if link not in names}
     model = CollisionModel(robot=robot, shapes=shapes, links=tuple(names), source=source_text,
                            aliases=aliases, origins={n: origins[n] for n in shapes})
+    if srdf is not None:
+        pairs, srdf_label = body_pairs(model, srdf, urdf_links(source))
+        model = CollisionModel(robot=robot, shapes=shapes, links=tuple(names),
+                               allowed=frozenset(frozenset(p) for p in pairs),
+                               source=f"{source_text}; SRDF {srdf_label}: {len(pairs)} body "
+                                      "pairs not checked",
+                               aliases=aliases, origins=model.origins)
     values = {n: p.value for n, p in placement.items()}
     return cached_allowed(model, samples, use_cache, values) if samples else model
 
@@ -251,4 +265,4 @@ def robot_model(robot: Robot, *, missing: str = "error", joint_values: Any = Non
         raise GeometryError(f"robot {robot.name!r} was not loaded from a URDF: it has no collision "
                             "geometry of its own; pass collision= a CollisionModel")
     return model_from_urdf(desc.source, robot, package_dirs=desc.package_dirs, missing=missing,
-                           joint_values=joint_values)
+                           joint_values=joint_values, srdf=desc.srdf)

@@ -21,7 +21,10 @@ class URDFDescription:
         source: The file path (absolute) or the XML text.
         package_dirs: The ``package_dirs`` given to ``load_urdf`` (``None``: only
             ``ROS_PACKAGE_PATH`` and the URDF's own folder are searched).
+        srdf: The MoveIt SRDF given to ``load_urdf`` (path, absolute, or XML text): its
+            disabled pairs are not checked (:mod:`moik.collision.srdf`); ``None``: none.
     """
 
     source: Path | str
     package_dirs: Any = None
+    srdf: Path | str | None = None

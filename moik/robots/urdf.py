@@ -232,8 +232,20 @@ def _chain_joints(links, joints, base: str, tip: str | None) -> list[ET.Element]
     return chain
 
 
+def _srdf_source(srdf: Any) -> Path | str | None:
+    """``srdf`` kept for the collision model: None, XML text, or an existing file's
+    absolute path (read at first use, as the meshes are)."""
+    if srdf is None or (isinstance(srdf, str) and srdf.lstrip().startswith("<")):
+        return srdf
+    if not isinstance(srdf, (str, Path)) or not str(srdf).strip():
+        raise ParameterError(f"srdf must be an SRDF file path or XML text, got {srdf!r:.80}")
+    if not Path(srdf).is_file():
+        raise ParameterError(f"srdf {str(srdf)!r} is not a file")
+    return Path(srdf).resolve()
+
+
 def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
-              name: str | None = None, *, package_dirs=None) -> Robot:
+              name: str | None = None, *, package_dirs=None, srdf=None) -> Robot:
     """A :class:`Robot` for the serial chain ``base_link -> tip_link`` of a URDF.
 
     Args:
@@ -248,19 +260,23 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
             (:func:`moik.collision.meshes.resolve_mesh`). Nothing is read here: the
             robot keeps the URDF and these folders (``robot.description``), and a
             collision-aware solve reads its ``<collision>`` geometry at first use.
+        srdf: A MoveIt SRDF of the robot (file path or XML text): the link pairs it
+            disables are not checked for self-collision (:mod:`moik.collision.srdf`),
+            read with the geometry at first use; kept in ``robot.description``.
 
     Returns:
         The chain with ``joint_names`` the URDF names of its movable joints.
 
     Raises:
         ParameterError: ``package_dirs`` not one of those, or naming a folder that does
-            not exist.
+            not exist; ``srdf`` neither XML text nor the path of an existing file.
         URDFError: malformed file (not a tree, undeclared, nameless or duplicate link,
             duplicate joint name, xacro), unsupported or mimic joint, branching chain
             without tip.
         UnknownNameError: a link name not in the file (lists the links).
     """
     package_dirs = absolute_package_dirs(package_dirs)
+    srdf = _srdf_source(srdf)
     root, label = _read(source)
     links, joints = _parse(root, label)
     for given in (base_link, tip_link):
@@ -323,7 +339,7 @@ def load_urdf(source, base_link: str | None = None, tip_link: str | None = None,
                      source=f"URDF {Path(label).name}: {base_link} -> {tip}",
                      description=URDFDescription(
                          source=source if label == "<URDF string>" else Path(label).resolve(),
-                         package_dirs=package_dirs))
+                         package_dirs=package_dirs, srdf=srdf))
     except URDFError:
         raise
     except MoikError as exc:  # limits, reach: say which file

@@ -66,6 +66,12 @@ def offchain_placement(source: Any, robot: Robot, joint_values: Any = None
     return _walk(source, robot, None, joint_values)[2]
 
 
+def urdf_links(source: Any) -> set[str]:
+    """The names of every ``<link>`` of a URDF (path or XML text)."""
+    root, label = _read(source)
+    return _parse(root, label)[0]
+
+
 def joint_frames(robot: Robot, q: Any) -> np.ndarray:
     """:meth:`Robot.frames` of one joint vector ``q`` (``(dof + 1, 4, 4)``, the same
     values), by :func:`~moik.robots.fk_kernels.world_frames`: the kernel a collision check

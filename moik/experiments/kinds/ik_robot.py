@@ -12,6 +12,9 @@ URDF file, as ``moik solve ARM.urdf --base B --tip T --package-dir DIR`` does::
   them), a list of folders holding package folders or a table ``{package = folder}``
   (:func:`moik.collision.meshes.resolve_mesh`); relative to the config's folder likewise;
 - ``base_link``, ``tip_link``: the chain, as :func:`moik.robots.load_urdf` takes them;
+- ``srdf``: the robot's MoveIt SRDF, whose disabled pairs a self-collision check leaves out
+  (:mod:`moik.collision.srdf`), relative to the config's folder likewise; its SHA-256 is
+  set as ``srdf_sha256`` and checked as the URDF's is;
 - ``sha256``: the SHA-256 of the file's bytes. Validation adds it to the config as run
   (so the results' ``meta.json`` records which file, and the configuration fingerprint
   changes with its content: ``--resume`` refuses a changed arm as it refuses a changed
@@ -44,14 +47,14 @@ from moik.exceptions import ConfigError, MoikError, ResultsError
 from moik.robots import Robot, get_robot
 from moik.robots.urdf import MAX_URDF_BYTES, load_urdf
 
-URDF_KEYS = ("urdf", "package_dirs", "base_link", "tip_link", "sha256")
+URDF_KEYS = ("urdf", "package_dirs", "base_link", "tip_link", "sha256", "srdf", "srdf_sha256")
 """The keys of a URDF robot entry."""
 _ARMS: dict[str, Robot] = {}
 _CACHE_SIZE = 8
 
 
-def _digest(path: Path) -> str:
-    data = _reading.read_bytes(path, "URDF file", ConfigError, limit=MAX_URDF_BYTES)
+def _digest(path: Path, what: str = "URDF file") -> str:
+    data = _reading.read_bytes(path, what, ConfigError, limit=MAX_URDF_BYTES)
     return hashlib.sha256(data).hexdigest()
 
 
@@ -109,6 +112,18 @@ def check_robot(where: str, value: Any, folder: Path) -> str | dict:
     for key in ("base_link", "tip_link"):
         if key in value:
             entry[key] = _text(f"{where}.{key}", value[key])
+    if "srdf" in value:
+        entry["srdf"] = _text(f"{where}.srdf", value["srdf"])
+        srdf = Path(_absolute(entry["srdf"], folder))
+        try:
+            entry["srdf_sha256"] = _digest(srdf, "SRDF file")
+        except ConfigError as exc:
+            raise ConfigError(f"{where}.srdf: {exc}") from None
+        if "srdf_sha256" in value and value["srdf_sha256"] != entry["srdf_sha256"]:
+            raise ConfigError(f"{where}.srdf_sha256: the file {str(srdf)!r} has SHA-256 "
+                              f"{entry['srdf_sha256']}, not {value['srdf_sha256']!r}")
+    elif "srdf_sha256" in value:
+        raise ConfigError(f"{where}.srdf_sha256 goes with srdf (the file it pins)")
     path = Path(_absolute(entry["urdf"], folder))
     try:
         digest = _digest(path)
@@ -130,6 +145,8 @@ def resolve(value: Any, folder: Path) -> Any:
         return value
     out = dict(value)
     out["urdf"] = _absolute(value["urdf"], folder)
+    if "srdf" in value:
+        out["srdf"] = _absolute(value["srdf"], folder)
     dirs = value.get("package_dirs")
     if isinstance(dirs, Mapping):
         out["package_dirs"] = {k: _absolute(v, folder) for k, v in dirs.items()}
@@ -156,11 +173,14 @@ def arm(value: Any) -> Robot:
         raise ConfigError(f"robot: the URDF {str(path)!r} changed since the experiment was "
                           f"checked (SHA-256 {str(value.get('sha256'))[:12]}..., now "
                           f"{digest[:12]}...): restore it, or run the experiment again")
+    if "srdf" in value and _digest(Path(value["srdf"]), "SRDF file") != value.get("srdf_sha256"):
+        raise ConfigError(f"robot: the SRDF {value['srdf']!r} changed since the experiment was "
+                          "checked: restore it, or run the experiment again")
     if key not in _ARMS:
         try:
             robot = load_urdf(path, base_link=value.get("base_link"),
                               tip_link=value.get("tip_link"),
-                              package_dirs=value.get("package_dirs"))
+                              package_dirs=value.get("package_dirs"), srdf=value.get("srdf"))
         except MoikError as exc:
             raise ConfigError(f"robot: {exc}") from None
         if len(_ARMS) >= _CACHE_SIZE:

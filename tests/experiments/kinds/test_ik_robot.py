@@ -235,3 +235,23 @@ def test_a_link_without_geometry_is_refused_or_left_unchecked_by_the_config(fold
                                         'self_collision = true\nmissing_geometry = "skip"'))
     with pytest.raises(ConfigError, match="missing_geometry"):
         load_config(config)
+
+
+def test_an_srdf_is_read_from_the_configs_folder_pinned_and_given_to_the_arm(folder):
+    """``srdf`` (the robot's MoveIt SRDF): read relative to the config, its SHA-256 recorded
+    and checked where the arm is loaded; the arm's default model leaves its pairs out."""
+    srdf = folder / "arms" / "ur5.srdf"
+    srdf.write_text('<robot name="ur5"><disable_collisions link1="base_link" '
+                    'link2="wrist_3_link" reason="Never"/></robot>')
+    path = _with_robot(folder, '{ urdf = "arms/ur5_robot.urdf", package_dirs = '
+                               '["arms/packages"], tip_link = "tool0", srdf = "arms/ur5.srdf" }')
+    cfg = load_config(path)
+    assert cfg.robot["srdf"] == str(srdf)
+    assert cfg.robot["srdf_sha256"] == hashlib.sha256(srdf.read_bytes()).hexdigest()
+    assert Path(arm(cfg.robot).description.srdf) == srdf.resolve()
+    srdf.write_text(srdf.read_text() + "\n")
+    with pytest.raises(ConfigError, match="SRDF .* changed since the experiment was checked"):
+        arm(dict(cfg.robot, tip_link="wrist_3_link"))  # not loaded before: checked now
+    with pytest.raises(ConfigError, match=r"robot.srdf: .*missing.srdf"):
+        load_config(_with_robot(folder, '{ urdf = "arms/ur5_robot.urdf", '
+                                        'srdf = "arms/missing.srdf" }'))

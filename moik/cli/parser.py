@@ -86,6 +86,13 @@ def _robot_arguments(p: argparse.ArgumentParser, optional: bool = False) -> None
                    help="catalog name (see `moik robots`) or URDF file")
     p.add_argument("--base", metavar="LINK", type=nonempty, help="URDF: first link of the chain")
     p.add_argument("--tip", metavar="LINK", type=nonempty, help="URDF: last link of the chain")
+    _urdf_files(p)
+    p.add_argument("--json", action="store_true",
+                   help="print JSON (see `python -m pydoc moik.cli`)")
+
+
+def _urdf_files(p: argparse.ArgumentParser) -> None:
+    """A URDF arm's mesh packages and SRDF."""
     p.add_argument("--package-dir", action="append", metavar="DIR", dest="package_dirs",
                    type=nonempty,
                    help="URDF: a folder holding the packages its package:// meshes name "
@@ -93,8 +100,6 @@ def _robot_arguments(p: argparse.ArgumentParser, optional: bool = False) -> None
     p.add_argument("--srdf", metavar="FILE", type=nonempty,
                    help="URDF: the robot's MoveIt SRDF; the link pairs it disables are not "
                         "checked for self-collision")
-    p.add_argument("--json", action="store_true",
-                   help="print JSON (see `python -m pydoc moik.cli`)")
 
 
 def _check_arguments(p: argparse.ArgumentParser) -> None:
@@ -175,6 +180,7 @@ def _batch_arguments(sub) -> None:
     p.add_argument("robot", help="catalog name (see `moik robots`) or URDF file")
     p.add_argument("--base", metavar="LINK", help="URDF: first link of the chain")
     p.add_argument("--tip", metavar="LINK", help="URDF: last link of the chain")
+    _urdf_files(p)
     p.add_argument("targets", metavar="TARGETS", help="the targets: FILE.npy or FILE.csv")
     p.add_argument("--out", metavar="RESULT", required=True,
                    help="results file: RESULT.npz (arrays) or RESULT.csv (one line per target)")

@@ -176,6 +176,23 @@ def test_a_urdf_arm_with_its_meshes(tmp_path, capsys):
     assert "kuka_kr16_support" in err and "give --package-dir" in err
 
 
+def test_a_batch_of_a_urdf_arm_with_its_meshes(tmp_path, capsys):
+    """moik batch takes --package-dir as moik solve does (it had no such option: a URDF
+    arm's package:// meshes were found through ROS_PACKAGE_PATH only)."""
+    from moik import load_urdf
+
+    robot = load_urdf(URDF_DIR / "kr16_2.urdf", tip_link="tool0")
+    targets = tmp_path / "targets.npy"
+    np.save(targets, robot.fk(robot.random_q(3, rng=np.random.default_rng(0)))[:, :3, 3])
+    out = tmp_path / "out.npz"
+    argv = ["batch", str(URDF_DIR / "kr16_2.urdf"), "--tip", "tool0", str(targets),
+            "--out", str(out), "--self-collision", "--no-progress"]
+    assert main([*argv, "--package-dir", str(URDF_DIR / "packages")]) in (0, 1)
+    capsys.readouterr()
+    with np.load(out) as res:
+        assert res["q"].shape == (3, robot.dof) and np.all(np.isfinite(res["min_distance"]))
+
+
 BARE = """<robot name="two">
   <link name="base"><collision><origin xyz="0 0 0.05"/><geometry><box size="0.2 0.2 0.1"/>
     </geometry></collision></link>

@@ -14,11 +14,15 @@ moik's sampling never allows by itself (:mod:`moik.collision.acm`).
 moik checks self pairs per body (a chain link and the links fixed to it), an SRDF per
 link: a body pair is left unchecked only when the SRDF disables every pair of links with
 geometry on the two bodies. Links of the URDF that are not on the chain (another arm, a
-head) are ignored; a link the URDF does not have is an error (another robot's SRDF).
+head) are ignored. Entries naming links the URDF does not have (the whole robot's SRDF
+beside a URDF of one arm) are skipped with a :class:`~moik.exceptions.GeometryWarning`
+naming them, as MoveIt skips them; an SRDF none of whose entries names the URDF's links
+is an error (another robot's SRDF).
 """
 
 from __future__ import annotations
 
+import warnings
 import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import Any
@@ -26,7 +30,7 @@ from typing import Any
 from moik._validate.reading import read_bytes
 from moik._validate.reading import text as decoded_text
 from moik.collision.model import CollisionModel
-from moik.exceptions import GeometryError
+from moik.exceptions import GeometryError, GeometryWarning
 
 MAX_SRDF_BYTES = 16 * 2**20
 
@@ -60,12 +64,14 @@ def srdf_rules(source: Any, urdf_links: set[str]) -> tuple[Rules, str]:
 
     Raises:
         GeometryError: Unreadable, not XML, not ``<robot>``, an element without its link
-            names, or a link that ``urdf_links`` (every link of the URDF) does not have.
+            names, or entries none of which names only links of the URDF (``urdf_links``).
     """
     root, label = _root(source)
     disabled: set[frozenset[str]] = set()
     every: set[str] = set()
     enabled: set[frozenset[str]] = set()
+    skipped: set[str] = set()
+    entries = 0
     for el in root:
         if el.tag == "disable_default_collisions":
             names = [el.get("link")]
@@ -76,16 +82,26 @@ def srdf_rules(source: Any, urdf_links: set[str]) -> tuple[Rules, str]:
         if not all(isinstance(n, str) and n for n in names):
             raise GeometryError(f"SRDF {label!r}: <{el.tag}> needs "
                                 f"{'link=' if len(names) == 1 else 'link1= and link2='}")
-        unknown = sorted(str(n) for n in names if n not in urdf_links)
+        entries += 1
+        unknown = {str(n) for n in names if n not in urdf_links}
         if unknown:
-            raise GeometryError(f"SRDF {label!r} names links the URDF does not have: {unknown} "
-                                "(is it this robot's SRDF?)")
+            skipped |= unknown
+            continue
         if el.tag == "disable_default_collisions":
             every.add(str(names[0]))
         elif el.tag == "disable_collisions":
             disabled.add(frozenset(str(n) for n in names))
         else:
             enabled.add(frozenset(str(n) for n in names))
+    if skipped:
+        if not (disabled or every or enabled):
+            raise GeometryError(f"SRDF {label!r}: none of its {entries} entries names only "
+                                f"links of the URDF (it names {sorted(skipped)[:5]}...): is it "
+                                "this robot's SRDF?")
+        warnings.warn(f"SRDF {label!r}: entries naming links the URDF does not have are "
+                      f"skipped: {', '.join(sorted(skipped)[:8])}"
+                      f"{f' and {len(skipped) - 8} more' if len(skipped) > 8 else ''}",
+                      GeometryWarning, stacklevel=4)
     return (disabled, every, enabled), label
 
 

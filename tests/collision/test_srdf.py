@@ -72,9 +72,18 @@ def test_default_collisions_and_enable_collisions():
         (("base", "b"), ("base", "c"))
 
 
+def test_entries_naming_other_links_are_skipped_with_a_warning():
+    """The whole robot's SRDF beside a URDF of one arm: the entries naming links the URDF
+    does not have are skipped, named in a warning; the others are used."""
+    with pytest.warns(GeometryWarning, match="skipped: elbow, leg"):
+        pairs, _ = _checked(_srdf(A_C, A_F, '<disable_collisions link1="a" link2="elbow"/>',
+                                  '<disable_default_collisions link="leg"/>'))
+    assert pairs == (("base", "b"), ("base", "c"))
+
+
 @pytest.mark.parametrize(("srdf", "match"), [
     (_srdf('<disable_collisions link1="a" link2="elbow"/>'),
-     r"names links the URDF does not have: \['elbow'\]"),
+     r"none of its 1 entries names only links of the URDF .*'elbow'"),
     (_srdf('<disable_collisions link1="a"/>'), "needs link1= and link2="),
     (_srdf('<disable_default_collisions/>'), "needs link="),
     ("<robot", "cannot read SRDF"),

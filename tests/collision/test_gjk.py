@@ -6,11 +6,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from moik.collision import Box, Capsule, ConvexHull, HalfSpace, Sphere
-from moik.collision.compiled import collision_set
-from moik.collision.kernels import pair_distances
-from moik.collision.shapes import Compound, expand_compounds, hull_arrays, refinements, shape_arrays
+from moik.collision.shapes import Compound
 from moik.exceptions import MoikError
 from moik.robots import get_robot
+from tests.world_pair import world_pair
 
 coal = pytest.importorskip("coal")
 ROBOT = get_robot("planar2")
@@ -27,19 +26,6 @@ def _pose(rng, spread=0.3):
     T[:3, :3] = _rotation(rng)
     T[:3, 3] = rng.uniform(-spread, spread, 3)
     return T
-
-
-def _moik_pair(A, B) -> tuple:
-    """Every output of the kernels for the pair (A, B), both placed in the world."""
-    shapes, bodies, parts = expand_compounds([A, B], [-1, -1])
-    kinds, local, sizes = shape_arrays(shapes)
-    points, ranges = hull_arrays(shapes, sizes)
-    cs = collision_set(chain=ROBOT.chain_model, body=np.array(bodies), local=local,
-                       kinds=kinds, sizes=sizes, pairs=np.array([[0, 1]]), hull_points=points,
-                       hull_ranges=ranges, refine=refinements([(0, 1)], parts))
-    out = np.empty((1, 1))
-    pair_distances(cs, np.zeros((1, ROBOT.dof)), out)
-    return out[0, 0], cs
 
 
 def _coal_geometry(s):
@@ -89,7 +75,7 @@ def test_hull_distances_match_coal(kind, seed, swap):
     hull = ConvexHull(points=rng.normal(size=(rng.integers(4, 60), 3)) * 0.1, pose=_pose(rng))
     other = _other(kind, rng)
     A, B = (other, hull) if swap else (hull, other)
-    d, _ = _moik_pair(A, B)
+    d, _ = world_pair(A, B)
     ref = _coal_distance(A, B)
     if ref > 1e-9:
         assert d == pytest.approx(ref, abs=1e-9)
@@ -113,7 +99,7 @@ def test_flat_and_tiny_point_sets_are_kept_as_they_are():
     assert len(flat.points) == 5
     one = ConvexHull(points=[[1.0, 2.0, 3.0]])
     np.testing.assert_allclose(one.pose[:3, 3], [1, 2, 3])
-    d, _ = _moik_pair(one, Sphere(radius=0.5))
+    d, _ = world_pair(one, Sphere(radius=0.5))
     assert d == pytest.approx(np.linalg.norm([1, 2, 3]) - 0.5, abs=1e-12)
 
 
@@ -126,8 +112,8 @@ def test_the_hull_of_a_box_is_the_box():
         hull = ConvexHull(points=corners * size / 2, pose=pose)
         box = Box(size=size, pose=pose)
         other = _other("capsule", rng)
-        d_box, _ = _moik_pair(box, other)
-        d_hull, _ = _moik_pair(hull, other)
+        d_box, _ = world_pair(box, other)
+        d_hull, _ = world_pair(hull, other)
         if d_box > 0:
             assert d_hull == pytest.approx(d_box, abs=1e-9)
         else:
@@ -158,8 +144,8 @@ def test_a_compound_pair_is_its_parts_closest_pair(seed):
     rng = np.random.default_rng(seed)
     A = _compound(rng, _pose(rng, 0.25))
     B = _compound(rng, _pose(rng, 0.25))
-    d, cs = _moik_pair(A, B)
-    parts = min(_moik_pair(a, b)[0] for a in A.parts for b in B.parts)
+    d, cs = world_pair(A, B)
+    parts = min(world_pair(a, b)[0] for a in A.parts for b in B.parts)
     assert d == pytest.approx(parts, abs=1e-9)
     ref = min(_coal_distance(a, b) for a in A.parts for b in B.parts)
     if ref > 1e-9:

@@ -7,29 +7,18 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from moik.collision import Capsule, ConvexHull
-from moik.collision.compiled import collision_set
-from moik.collision.kernels import pair_distances
 from moik.collision.prism import SIDES, cylinder_compound, prism_points
-from moik.collision.shapes import Compound, expand_compounds, hull_arrays, refinements, shape_arrays
+from moik.collision.shapes import Compound
 from moik.exceptions import MoikError
-from moik.robots import get_robot
+from tests.world_pair import world_pair
 
 coal = pytest.importorskip("coal")
-ROBOT = get_robot("planar2")
 EXCESS = 1.0 / np.cos(np.pi / SIDES) - 1.0  # the prism's largest excess, a fraction of r
 
 
 def _distance(A, B) -> float:
     """moik's compiled distance of two world shapes (compounds measured on their parts)."""
-    shapes, bodies, parts = expand_compounds([A, B], [-1, -1])
-    kinds, local, sizes = shape_arrays(shapes)
-    points, ranges = hull_arrays(shapes, sizes)
-    cs = collision_set(chain=ROBOT.chain_model, body=np.array(bodies), local=local,
-                       kinds=kinds, sizes=sizes, pairs=np.array([[0, 1]]), hull_points=points,
-                       hull_ranges=ranges, refine=refinements([(0, 1)], parts))
-    out = np.empty((1, 1))
-    pair_distances(cs, np.zeros((1, ROBOT.dof)), out)
-    return float(out[0, 0])
+    return float(world_pair(A, B)[0])
 
 
 def _coal_cylinders(r1, l1, P1, r2, l2, P2) -> float:

@@ -1,6 +1,7 @@
 """A MoveIt SRDF's disabled pairs as body pairs of a URDF model (moik/collision/srdf.py)."""
 
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -13,27 +14,7 @@ from moik.exceptions import GeometryError, GeometryWarning, ParameterError
 # links a and c overlap in every configuration (c's ball 10 mm below a's, the joints between
 # them turn 0.2 rad at most about one axis); f is fixed to c, with a ball of its own; the
 # base's ball is on c's path near j1 = 1.5 rad
-STUCK = """<robot name="stuck">
-  <link name="base"><collision><origin xyz="0.0212 0.2992 0.19"/><geometry>
-    <sphere radius="0.04"/></geometry></collision></link>
-  <link name="a"><collision><origin xyz="0.3 0 0"/><geometry><sphere radius="0.05"/></geometry>
-    </collision></link>
-  <link name="b"><collision><origin xyz="0 0 0.5"/><geometry><sphere radius="0.02"/></geometry>
-    </collision></link>
-  <link name="c"><collision><origin xyz="0.3 0 -0.01"/><geometry><sphere radius="0.05"/>
-    </geometry></collision></link>
-  <link name="f"><collision><origin xyz="-0.3 0 0"/><geometry><sphere radius="0.02"/>
-    </geometry></collision></link>
-  <link name="head"/>
-  <joint name="j1" type="revolute"><parent link="base"/><child link="a"/>
-    <origin xyz="0 0 0.2"/><axis xyz="0 0 1"/><limit lower="-2" upper="2"/></joint>
-  <joint name="j2" type="revolute"><parent link="a"/><child link="b"/>
-    <axis xyz="0 0 1"/><limit lower="-0.1" upper="0.1"/></joint>
-  <joint name="j3" type="revolute"><parent link="b"/><child link="c"/>
-    <axis xyz="0 0 1"/><limit lower="-0.1" upper="0.1"/></joint>
-  <joint name="fix" type="fixed"><parent link="c"/><child link="f"/></joint>
-  <joint name="neck" type="fixed"><parent link="base"/><child link="head"/></joint>
-</robot>"""
+STUCK = (Path(__file__).resolve().parents[1] / "data" / "urdf" / "stuck.urdf").read_text()
 
 
 def _srdf(*elements: str) -> str:

@@ -282,64 +282,6 @@ def test_a_bad_primitive_names_its_link(old, new, match):
         model_from_urdf(bad, load_urdf(bad), samples=0)
 
 
-def test_sampled_pairs_are_those_never_and_always_below_zero():
-    """The allowed-collision sampling (a compiled pass that measures each pair only to its
-    sign, and no more once it has been seen both in and out of collision) gives the body
-    pairs whose full signed distance is never below 0 on the same random configurations,
-    and those with a shape pair below 0 in all of them."""
-    from moik.collision.acm import ACM_SEED, sample_pairs
-
-    robot = moik.get_robot("ur5")
-    desc = robot.description
-    model = model_from_urdf(desc.source, robot, package_dirs=desc.package_dirs, samples=0)
-    checker = CollisionChecker(model=model, self_collision=True)
-    D = checker.distances(robot.random_q(400, rng=np.random.default_rng(ACM_SEED)))
-    touched = {pair for k, pair in enumerate(checker.pair_bodies) if (D[:, k] < 0).any()}
-    stuck = {pair for k, pair in enumerate(checker.pair_bodies) if (D[:, k] < 0).all()}
-    name = model.links
-    never, always = sample_pairs(model, 400)
-    assert set(never) == {(name[i], name[j]) for i, j in checker.pair_bodies
-                          if (i, j) not in touched}
-    assert 0 < len(never) < len(set(checker.pair_bodies))
-    assert set(always) == {(name[i], name[j]) for i, j in stuck}
-
-
-STUCK = """<robot name="stuck">
-  <link name="base"><collision><geometry><sphere radius="0.05"/></geometry></collision></link>
-  <link name="a"><collision><origin xyz="0.3 0 0"/><geometry><sphere radius="0.05"/></geometry>
-    </collision></link>
-  <link name="b"><collision><origin xyz="0 0 0.5"/><geometry><sphere radius="0.02"/></geometry>
-    </collision></link>
-  <link name="c"><collision><origin xyz="0.3 0 -0.01"/><geometry><sphere radius="0.05"/>
-    </geometry></collision></link>
-  <joint name="j1" type="revolute"><parent link="base"/><child link="a"/>
-    <origin xyz="0 0 0.2"/><axis xyz="0 0 1"/><limit lower="-2" upper="2"/></joint>
-  <joint name="j2" type="revolute"><parent link="a"/><child link="b"/>
-    <axis xyz="0 0 1"/><limit lower="-0.1" upper="0.1"/></joint>
-  <joint name="j3" type="revolute"><parent link="b"/><child link="c"/>
-    <axis xyz="0 0 1"/><limit lower="-0.1" upper="0.1"/></joint>
-</robot>"""
-
-
-def test_a_pair_in_collision_in_every_sample_is_named_not_allowed(tmp_path, monkeypatch):
-    """Links a and c overlap in every configuration (c's ball sits 10 mm below a's, the
-    joints between them turn by at most 0.2 rad about the same axis): the pair stays
-    checked (a pair never checked must never touch), and the model says why every answer
-    will be rejected, on a fresh sampling and from the cache alike."""
-    from moik.exceptions import GeometryWarning
-
-    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
-    robot = load_urdf(STUCK)
-    for _ in range(2):  # sampled, then read from the cache
-        with pytest.warns(GeometryWarning, match="links a - c are in collision in every one"):
-            model = model_from_urdf(STUCK, robot, samples=200)
-        assert frozenset({"a", "c"}) not in model.allowed
-        assert "every answer rejected): a - c" in model.source
-    assert CollisionChecker(model=model, self_collision=True).pair_names == (("a", "c"),)
-    res = solve_ik(robot, robot.fk(np.zeros(3))[:3, 3], self_collision=True, collision=model)
-    assert res.status == "collides"
-
-
 def test_a_high_poly_mesh_is_measured_soundly_and_tightly(tmp_path):
     """A link whose collision mesh is a 5,120-face ellipsoid (its slab hulls have more than
     128 vertices, so they become enclosing polytopes): the distance to a ball is never

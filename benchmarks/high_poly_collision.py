@@ -3,14 +3,14 @@ the enclosing polytopes that replace them (moik.collision.outer_hull).
 
 The panda's own URDF package, copied to a temporary folder with every collision mesh
 Loop-subdivided ``--levels`` times (trimesh; 300 faces become 19,200 at 3 levels:
-smooth, so nearly every vertex of a slab is on its hull, as in a visual mesh shipped as
+smooth, so nearly every vertex of a piece is on its hull, as in a visual mesh shipped as
 the collision one). Two models of it, each built with empty fit and allowed-collision
-caches (build time printed): the hulls of the slabs exact (``max_exact`` unbounded), and
-as moik builds them (a slab hull over 128 vertices replaced by an enclosing polytope).
+caches (build time printed): the hulls of the pieces exact (``max_exact`` unbounded), and
+as moik builds them (a piece's hull over 128 vertices replaced by an enclosing polytope).
 Targets: the FK poses of ``--targets`` random configurations (seed 3) free for both
 models, self-collision only; ``solve_ik_batch(..., self_collision=True, collision=model,
 workers=1)``, median of 3 interleaved calls. The last columns: the largest vertex count
-of a slab's hull in the model; of 2,000 random configurations (seed 4), those free on the
+of a piece's hull in the model; of 2,000 random configurations (seed 4), those free on the
 exact hulls that the model calls colliding, and, where both call them free, how far its
 smallest distance falls below the exact hulls' (never above: the polytopes hold the
 hulls; where bodies overlap the kernels report their overlap along the line of centres,
@@ -34,7 +34,7 @@ from _output import OUT_HELP, table_output
 
 import moik
 from moik import load_urdf, solve_ik_batch
-from moik.collision import CollisionChecker, outer_hull, urdf
+from moik.collision import CollisionChecker, mesh_pieces, outer_hull, urdf
 
 DATA = Path(moik.__file__).parent / "robots" / "data"
 MESHES = Path("example-robot-data") / "robots" / "panda_description" / "meshes" / "collision"
@@ -56,15 +56,16 @@ def high_poly_panda(folder: Path, levels: int) -> Path:
 def build(path: Path, robot, packages: Path, exact: bool, cache: Path):
     """The URDF model with empty caches (under ``cache``), and its build time."""
     os.environ["XDG_CACHE_HOME"] = str(cache)
-    keep = urdf.enclosing_polytope
+    keep = mesh_pieces.enclosing_polytope
     if exact:
-        urdf.enclosing_polytope = lambda P: outer_hull.enclosing_polytope(P, max_exact=10**9)
+        mesh_pieces.enclosing_polytope = (
+            lambda P: outer_hull.enclosing_polytope(P, max_exact=10**9))
     try:
         t0 = time.perf_counter()
         model = urdf.model_from_urdf(path, robot, package_dirs=[packages])
         return model, time.perf_counter() - t0
     finally:
-        urdf.enclosing_polytope = keep
+        mesh_pieces.enclosing_polytope = keep
 
 
 def main() -> None:

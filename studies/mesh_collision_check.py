@@ -8,7 +8,7 @@ checked for self-collision:
 
 * moik: the model's smallest signed distance over its checked pairs, free when >= 0: the
   mesh-true model :func:`moik.collision.urdf.model_from_urdf` (each link's meshes a
-  compound: a fitted capsule holding the hulls of slabs of its triangles, measured on the
+  compound: a fitted capsule holding the hulls of pieces of its triangles, measured on the
   hulls where the capsules come close, compiled GJK; with its sampled allowed-collision
   matrix), the same model with its capsules alone (the bounds, no hulls), and for the
   catalog arms the shipped capsule model, ``moik/collision/data``;

@@ -12,10 +12,12 @@ enclosing capsule holding a 32-sided prism that holds the cylinder
 file paths, :mod:`moik.collision.meshes`) are read and each link's become one
 :class:`~moik.collision.shapes.Compound`: a capsule fitted to their triangles
 (:mod:`moik.collision.mesh_fit`: every triangle inside), cached on disk, holding the
-convex hulls of :data:`HULL_PIECES` slabs of the triangles (every triangle in one slab;
-a hull of a high-poly mesh's slab with more than
-:data:`~moik.collision.outer_hull.MAX_EXACT_VERTICES` vertices is replaced by an enclosing
-polytope with fewer, about 0.5 mm outside it: :mod:`moik.collision.outer_hull`).
+convex hulls of pieces of the triangles (every triangle in one piece: slabs along the
+mesh's principal axis, cut further where a hull holds deep empty space,
+:mod:`moik.collision.decompose`; cached on disk, :mod:`moik.collision.mesh_pieces`; a hull
+of a piece with more than :data:`~moik.collision.outer_hull.MAX_EXACT_VERTICES` vertices is
+replaced by an enclosing polytope with fewer, about 0.5 mm outside it:
+:mod:`moik.collision.outer_hull`).
 The kernels measure a pair on the capsules and, where they come close, on the hulls
 (:mod:`moik.collision.gjk`): the hulls hold the meshes, so a configuration called free
 is free for the meshes, and they follow a link far closer than one capsule. Bodies are
@@ -47,9 +49,9 @@ from moik._validate import choice, integer
 from moik.collision.acm import DEFAULT_SAMPLES, cached_allowed
 from moik.collision.fit import body_axes
 from moik.collision.mesh_fit import cached_link_fit
+from moik.collision.mesh_pieces import cached_parts
 from moik.collision.meshes import LARGEST_SIZE, read_mesh, resolve_mesh
 from moik.collision.model import CollisionModel
-from moik.collision.outer_hull import enclosing_polytope
 from moik.collision.prism import cylinder_compound
 from moik.collision.shapes import Box, Capsule, Compound, ConvexHull, Shape, Sphere
 from moik.collision.srdf import body_pairs
@@ -64,7 +66,6 @@ from moik.robots.urdf_geometry import (
 )
 
 MISSING = ("error", "ignore")
-HULL_PIECES = 12  # convex hulls per link (slabs of its triangles) inside its capsule
 
 
 def _shape(item: dict[str, Any], label: str) -> Shape:
@@ -97,19 +98,6 @@ def _urdf_dir(source: Any) -> Path | None:
     return Path(source).resolve().parent
 
 
-def hull_pieces(vertices: np.ndarray, faces: np.ndarray, pieces: int) -> list[np.ndarray]:
-    """The vertices of ``pieces`` slabs of a mesh's triangles: the triangles sorted by their
-    centroids along the mesh's principal axis and cut into groups of equal count (each
-    triangle in one group, so the groups' hulls hold the mesh; a concave link, e.g. an upper
-    arm with its joint housings, is followed far closer by several hulls than by one)."""
-    centroids = vertices[faces].mean(axis=1)
-    centred = centroids - centroids.mean(axis=0)
-    _, vectors = np.linalg.eigh(centred.T @ centred)
-    order = np.argsort(centroids @ vectors[:, 2], kind="stable")
-    return [np.ascontiguousarray(vertices[np.unique(faces[group])])
-            for group in np.array_split(order, min(pieces, len(faces)))]
-
-
 MESH_REACH_FACTOR = 10.0
 """A link's mesh larger than this many reaches of the arm is refused: a unit mistake (a mesh
 in millimetres without ``scale``, or a scale of 1000), never a link left practically
@@ -129,9 +117,9 @@ def _check_against_reach(mesh: Any, robot: Robot, *, link: str, path: Any, scale
 def mesh_shapes(source: Any, robot: Robot, *, package_dirs: Any = None,
                 use_cache: bool = True, joint_values: Any = None) -> dict[str, Compound]:
     """Every URDF link with ``<collision>`` meshes as a :class:`Compound` in the frame of the
-    body the link is on: a capsule fitted to its triangles holding the hulls of
-    :data:`HULL_PIECES` slabs of them, ``{link: Compound}``. Links behind off-chain joints
-    are placed at ``joint_values`` (:mod:`moik.robots.urdf_joints`): their pose on the body
+    body the link is on: a capsule fitted to its triangles holding the hulls of pieces of
+    them (:mod:`moik.collision.decompose`), ``{link: Compound}``. Links behind off-chain
+    joints are placed at ``joint_values`` (:mod:`moik.robots.urdf_joints`): their pose on the body
     is part of the fit's cache key, so another placement is fitted anew.
 
     Raises:
@@ -163,8 +151,8 @@ def mesh_shapes(source: Any, robot: Robot, *, package_dirs: Any = None,
         V, F = np.vstack(vertices), np.vstack(faces)
         (a, b, r), = cached_link_fit(V, F, identity=identity, axes=candidates[body], capsules=1,
                                      split_gain=0.85, use_cache=use_cache)
-        parts = tuple(ConvexHull(points=enclosing_polytope(P))
-                      for P in hull_pieces(V, F, HULL_PIECES))
+        parts = tuple(ConvexHull(points=P)
+                      for P in cached_parts(V, F, identity=identity, use_cache=use_cache))
         out[link] = Compound(bound=Capsule.between(a.tolist(), b.tolist(), r), parts=parts)
     return out
 
@@ -228,9 +216,9 @@ def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,
         raise GeometryError(f"{label}: bodies {bare} have no <collision> geometry, so their "
                             "collisions cannot be checked; add <collision> elements to the URDF, "
                             "or pass missing='ignore' to leave them unchecked")
-    source_text = (f"<collision> geometry of {label} (meshes: {HULL_PIECES} convex hulls per "
-                   "link in a fitted enclosing capsule; cylinders: a prism holding each, in "
-                   "its enclosing capsule)")
+    source_text = (f"<collision> geometry of {label} (meshes: convex hulls of pieces of each "
+                   "link's triangles in a fitted enclosing capsule; cylinders: a prism holding "
+                   "each, in its enclosing capsule)")
     if placement:
         source_text += ("; off-chain joints placed at "
                         + ", ".join(p.describe(n) for n, p in placement.items()))

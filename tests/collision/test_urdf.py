@@ -283,14 +283,14 @@ def test_a_bad_primitive_names_its_link(old, new, match):
 
 
 def test_a_high_poly_mesh_is_measured_soundly_and_tightly(tmp_path):
-    """A link whose collision mesh is a 5,120-face ellipsoid (its slab hulls have more than
+    """A link whose collision mesh is a 5,120-face ellipsoid (its pieces' hulls have more than
     128 vertices, so they become enclosing polytopes): the distance to a ball is never
     above coal's on the mesh itself, and at most 1 mm below it."""
     import trimesh
     from scipy.spatial import ConvexHull
 
+    from moik.collision.decompose import convex_pieces
     from moik.collision.outer_hull import MAX_EXACT_VERTICES
-    from moik.collision.urdf import HULL_PIECES, hull_pieces
     from tests.coal_oracle import coal
 
     ellipsoid = trimesh.creation.icosphere(subdivisions=4)
@@ -304,8 +304,8 @@ def test_a_high_poly_mesh_is_measured_soundly_and_tightly(tmp_path):
     robot = load_urdf(urdf)
     (item,) = mesh_geometry(urdf, robot)[1]
     mesh = read_mesh(tmp_path / "fore.stl", link="fore", scale=np.ones(3))
-    slabs = hull_pieces(mesh.vertices, mesh.faces, HULL_PIECES)
-    assert max(len(ConvexHull(P).vertices) for P in slabs) > MAX_EXACT_VERTICES
+    pieces = convex_pieces(mesh.vertices, mesh.faces)
+    assert max(len(ConvexHull(P).vertices) for P in pieces) > MAX_EXACT_VERTICES
     rng = np.random.default_rng(5)
     balls = {f"b{k}": Sphere(radius=0.03, pose=np.block([[np.eye(3), rng.uniform(
         [-0.1, -0.3, 0.2], [0.9, 0.3, 1.0])[:, None]], [np.zeros((1, 3)), np.ones((1, 1))]]))

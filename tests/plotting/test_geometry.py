@@ -97,9 +97,10 @@ def test_robot_meshes_are_the_parts_of_each_compound_in_its_bodys_frame():
             assert ends[k] > max(a, b, c) and (k == 0 or min(a, b, c) >= ends[k - 1])
             P = world[(0 if k == 0 else ends[k - 1]):ends[k]]
             n = np.cross(world[b] - world[a], world[c] - world[a])
-            side = (P - world[a]) @ n
-            assert side.min() >= -1e-9 * np.abs(side).max() or \
-                side.max() <= 1e-9 * np.abs(side).max()
+            side = (P - world[a]) @ (n / np.linalg.norm(n))  # metres from its plane
+            # qhull merges facets coplanar to its precision: a drawn triangle may lie a
+            # few nanometres off the exact facet (clipped pieces have such facets)
+            assert side.min() >= -1e-7 or side.max() <= 1e-7
 
 
 def test_a_compound_obstacle_is_drawn_as_its_parts():

@@ -30,8 +30,13 @@ def coal_shape(s):
     return coal.Halfspace(np.array([0.0, 0.0, 1.0]), 0.0)
 
 
-def coal_pair_distance(A, B) -> float:
-    """coal's signed distance of two placed moik shapes.
+def _placed(shape):
+    return coal_shape(shape), coal.Transform3s(shape.pose[:3, :3], shape.pose[:3, 3])
+
+
+def coal_pair_distance(A, B, built: dict | None = None) -> float:
+    """coal's signed distance of two placed moik shapes (``built``: coal's geometry of
+    shapes already built, by ``id``, filled as they are).
 
     Asked for a tolerance of 1e-14, coal's GJK answers 0 for some pairs of convex hulls
     that are far apart (measured: two panda mesh pieces 0.47 m apart, hulls of 84 and 60
@@ -39,8 +44,11 @@ def coal_pair_distance(A, B) -> float:
     is coal's plain (unsigned) GJK at 1e-10 when that finds it apart, and coal's signed
     (GJK then EPA) distance at 1e-14 only for a pair it finds touching.
     """
-    gA, tA = coal_shape(A), coal.Transform3s(A.pose[:3, :3], A.pose[:3, 3])
-    gB, tB = coal_shape(B), coal.Transform3s(B.pose[:3, :3], B.pose[:3, 3])
+    built = {} if built is None else built
+    for s in (A, B):
+        if id(s) not in built:
+            built[id(s)] = _placed(s)
+    (gA, tA), (gB, tB) = built[id(A)], built[id(B)]
     req = coal.DistanceRequest()
     req.gjk_tolerance = 1e-10
     apart = coal.distance(gA, tA, gB, tB, req, coal.DistanceResult())
@@ -54,9 +62,10 @@ def coal_pair_distance(A, B) -> float:
 def coal_distances(checker, q) -> np.ndarray:
     """coal's signed distance of every pair the checker checks, at configuration ``q``."""
     placed = dict(checker.world_shapes(q))
+    built: dict = {}  # each part's coal geometry built once (qhull), for all its pairs
     out = []
     for a, b in checker.pair_names:  # a compound is measured on its parts (the bound culls)
         parts_a = placed[a].parts if isinstance(placed[a], Compound) else (placed[a],)
         parts_b = placed[b].parts if isinstance(placed[b], Compound) else (placed[b],)
-        out.append(min(coal_pair_distance(A, B) for A in parts_a for B in parts_b))
+        out.append(min(coal_pair_distance(A, B, built) for A in parts_a for B in parts_b))
     return np.array(out)

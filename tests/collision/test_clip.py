@@ -22,7 +22,7 @@ def _areas(polygons: Polygons) -> np.ndarray:
 coordinates = st.floats(-1.0, 1.0, allow_nan=False)
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=30, deadline=None)
 @given(corners=st.lists(st.tuples(*[coordinates] * 9), min_size=1, max_size=6),
        normal=st.tuples(*[coordinates] * 3).filter(lambda n: np.linalg.norm(n) > 1e-3),
        offset=st.floats(-1.0, 1.0), again=st.tuples(*[coordinates] * 3))

@@ -83,7 +83,7 @@ def main() -> None:
         print(f"panda, collision meshes Loop-subdivided {args.levels} times (link4: {faces:,} "
               "faces), self-collision only, one worker\n")
         models, build_s = {}, {}
-        for label, exact in (("exact slab hulls", True), ("enclosing polytopes", False)):
+        for label, exact in (("exact piece hulls", True), ("enclosing polytopes", False)):
             models[label], build_s[label] = build(path, robot, folder / "packages", exact,
                                                   folder / f"cache-{exact}")
         checkers = {k: CollisionChecker(model=m, self_collision=True) for k, m in models.items()}
@@ -91,7 +91,7 @@ def main() -> None:
         free = np.all([c.min_distance(Q) >= 0.0 for c in checkers.values()], axis=0)
         T = robot.fk(Q[free][:args.targets])
         R = robot.random_q(2000, rng=np.random.default_rng(4))
-        exact_d = checkers["exact slab hulls"].min_distance(R)
+        exact_d = checkers["exact piece hulls"].min_distance(R)
         times: dict[str, list[float]] = {k: [] for k in models}
         solved: dict[str, int] = {}
         for m in models.values():  # compiled before the clock starts
@@ -103,7 +103,7 @@ def main() -> None:
                 times[k].append(time.perf_counter() - t0)
                 solved[k] = int(np.sum(res.success))
         print("| model | build s (empty caches) | solved | solutions/s | speed vs exact | "
-              "largest slab hull (vertices) | free on the exact hulls, called colliding | "
+              "largest piece hull (vertices) | free on the exact hulls, called colliding | "
               "distance below exact where both free: largest, median (mm) |")
         print("|---|---|---|---|---|---|---|---|")
         base = None

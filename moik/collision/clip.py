@@ -66,12 +66,11 @@ def split(polygons: Polygons, normal: np.ndarray, offset: float) -> tuple[Polygo
     plane, which costs nothing in soundness."""
     P, c = polygons
     k, m = P.shape[:2]
-    s = P @ np.asarray(normal, dtype=float) - offset
-    valid0 = np.arange(m)[None, :] < c[:, None]
-    scale = float(np.abs(P[valid0]).max()) if k else 0.0
-    s[np.abs(s) <= SNAP * (scale + abs(offset))] = 0.0  # on the plane: a corner of both parts
     j = np.arange(m)
     valid = j[None, :] < c[:, None]
+    s = P @ np.asarray(normal, dtype=float) - offset
+    scale = float(np.abs(P[valid]).max()) if k else 0.0
+    s[np.abs(s) <= SNAP * (scale + abs(offset))] = 0.0  # on the plane: a corner of both parts
     nxt = np.where(j[None, :] + 1 < c[:, None], j[None, :] + 1, 0)
     rows = np.arange(k)[:, None]
     Q, sq = P[rows, nxt], s[rows, nxt]

@@ -88,7 +88,8 @@ def run_pareto(args: argparse.Namespace, robot=None) -> int:
         print(f"plot written to {plots[0]} and {plots[1]}")
     if html is not None and len(res.X):
         pareto_explorer(res, robot, html, target=target,
-                        scene=None if check is None else check.checker.scene)
+                        scene=None if check is None else check.checker.scene,
+                        collision=None if check is None else check.checker)
         if not args.json:
             print(f"explorer written to {html}")
     return 0 if len(res.X) else 1

@@ -139,13 +139,16 @@ def test_scene_and_self_collision_check_both(scene_file, capsys):
                                                 abs=1e-12)
 
 
-def test_pareto_explorer_draws_the_scene(scene_file, tmp_path, capsys):
+def test_pareto_explorer_draws_the_scene_and_the_arms_geometry(scene_file, tmp_path, capsys):
     html = tmp_path / "x.html"
     assert main([*PARETO, "--pareto", "manipulability,limit_margin", "--scene", str(scene_file),
                  "--html", str(html)]) == 0
     text = html.read_text()
     data = json.loads(text.split('id="moik-data">', 1)[1].split("</script>", 1)[0])
     assert [t["name"] for t in data["panels"][0]["obstacles"]] == ["table", "shelf"]
+    # and the arm's own geometry the members were checked against (the URDF's mesh parts)
+    shapes = data["panels"][0]["robot_shapes"]
+    assert {s["name"] for s in shapes} >= {"panda_link0", "panda_link5", "panda_link7"}
 
 
 def test_pareto_with_no_member_keeping_the_clearance_says_collides(capsys):

@@ -3,8 +3,9 @@
 The exact stage of a mesh link measures the convex hulls of pieces of its triangles
 (:mod:`moik.collision.gjk`). Any partition of the triangles is sound (each triangle lies in
 its piece's hull, so the hulls hold the mesh); how tight it is depends on the pieces.
-:func:`convex_pieces` starts from :data:`SLABS` slabs along the mesh's principal axis (a
-long link with its joint housings is followed far closer by several hulls than by one) and
+:func:`convex_pieces` starts from :data:`SLABS` slabs along the principal axis of a long
+mesh (a long link with its joint housings is followed far closer by several hulls than by
+one; a compact one, less than :data:`ELONGATED` times longer than wide, starts whole) and
 then cuts where a hull still holds deep empty space, in the spirit of approximate convex
 decomposition (V-HACD, CoACD: a concavity measure, plane cuts, the most concave piece cut
 first), measured on a voxel grid for speed:
@@ -14,18 +15,23 @@ first), measured on a voxel grid for speed:
   they enclose, scipy's ``binary_fill_holes``) and every empty cell gets its distance to
   the solid (scipy's Euclidean distance transform). A piece's concavity is the largest
   distance of an empty cell inside its hull: how deep another link could reach into the
-  hull without touching the mesh; its empty space is the sum of those distances. A mesh
-  that is not closed has no inside: its cells count as empty and it is cut further (still
-  sound, at most :data:`MAX_PIECES` pieces).
+  hull without touching the mesh; its empty space is the sum of those distances. Only the
+  cells inside the whole mesh's hull count (no piece's hull reaches beyond it), the
+  deepest :data:`MAX_EMPTY` of them (keeping the deepest of the whole grid kept only its
+  corners on a compact link, and every piece's concavity read 0: measured on the ABB
+  IRB 140's flange, whose hulls then overlapped the forearm's fork in every
+  configuration). A mesh that is not closed has no inside: its cells count as empty and
+  it is cut further (still sound, at most :data:`MAX_PIECES` pieces).
 * **Cuts.** The most concave piece is cut by the plane, across one of its principal axes
-  at one of :data:`QUANTILES` of its polygons' centroids, that leaves the least empty space
-  in the two hulls. A cut clips the triangles (:func:`moik.collision.clip.split`): each
-  piece is the part of the mesh in a convex cell of the planes, so the pieces tile the
-  surface exactly and a hull reaches across no cut. The slabs are cuts too: planes across
-  the principal axis that split the triangles' area evenly (equal counts of triangles put
-  one slab over a whole tube of long triangles: measured on example-robot-data's UR5 with
-  its gripper, the forearm's tube slab then overlapped the wrist in 66 of the 1,448
-  mesh-free configurations of 2,000).
+  at one of :data:`QUANTILES` of its polygons' centroids or of its extent, that leaves the
+  least empty space in the two hulls (the extent's: a flange's many small triangles put
+  every centroid quantile on the flange, none where its rod meets it). A cut clips the
+  triangles (:func:`moik.collision.clip.split`): each piece is the part of the mesh in a
+  convex cell of the planes, so the pieces tile the surface exactly and a hull reaches
+  across no cut. The slabs are cuts too: planes across the principal axis that split the
+  triangles' area evenly (equal counts of triangles put one slab over a whole tube of long
+  triangles: measured on example-robot-data's UR5 with its gripper, the forearm's tube
+  slab then overlapped the wrist in 66 of the 1,448 mesh-free configurations of 2,000).
 * **Stop** when every piece's concavity is at most :data:`TOLERANCE_CELLS` cells, or there
   are :data:`MAX_PIECES` pieces; a piece no cut improves stays whole.
 
@@ -48,10 +54,12 @@ from moik.collision.clip import Polygons, split
 RESOLUTION = 64  # cells along the mesh's largest extent
 TOLERANCE_CELLS = 1.5  # a piece whose hull holds no empty cell deeper than this is not cut
 SLABS = 12  # slabs along the principal axis, before the cuts
+ELONGATED = 1.5  # a link is cut into slabs only if this many times longer than wide
 MAX_PIECES = 32  # pieces of one link at most (a compound holds at most 62 parts)
 QUANTILES = (0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8)  # where a piece may be cut along an axis
 MAX_EMPTY = 40_000  # empty cells used for the measures at most (the deepest kept)
 _HULL_MARGIN = 1e-9  # relative: a cell centre on a hull's facet counts as inside
+_FACETS = 32  # facets a cell is tested against at a time
 
 Cut = tuple[int, tuple[float, float, float], float]  # (piece, normal, offset)
 
@@ -83,7 +91,8 @@ def _surface_cells(T: np.ndarray, origin: np.ndarray, pitch: float,
 
 def empty_cells(T: np.ndarray, pitch: float) -> tuple[np.ndarray, np.ndarray]:
     """The centres of the cells outside the solid ``(k, 3)`` and their distances to it,
-    the deepest :data:`MAX_EMPTY` (cells within a cell of the surface are left out)."""
+    the deepest :data:`MAX_EMPTY` inside the mesh's hull (cells within a cell of the
+    surface are left out)."""
     from scipy.ndimage import binary_dilation, binary_fill_holes, distance_transform_edt
 
     P = T.reshape(-1, 3)
@@ -95,10 +104,13 @@ def empty_cells(T: np.ndarray, pitch: float) -> tuple[np.ndarray, np.ndarray]:
     keep = depth >= pitch
     idx = np.argwhere(keep)
     d = depth[keep]
+    centres = origin + (idx + 0.5) * pitch
+    inside = _hull_inside(P, centres, np.arange(len(centres)))  # no piece's hull reaches out
+    centres, d = centres[inside], d[inside]
     if len(d) > MAX_EMPTY:
         top = np.argsort(-d, kind="stable")[:MAX_EMPTY]
-        idx, d = idx[top], d[top]
-    return origin + (idx + 0.5) * pitch, d
+        centres, d = centres[top], d[top]
+    return centres, d
 
 
 def _hull_inside(points: np.ndarray, cells: np.ndarray, among: np.ndarray) -> np.ndarray:
@@ -115,9 +127,11 @@ def _hull_inside(points: np.ndarray, cells: np.ndarray, among: np.ndarray) -> np
     lo, hi = points.min(axis=0), points.max(axis=0)
     C = cells[among]
     near = among[np.all((lo <= C) & (hi >= C), axis=1)]
-    scale = float(np.ptp(points, axis=0).max())
-    inside = np.all(cells[near] @ eq[:, :3].T + eq[:, 3] <= _HULL_MARGIN * scale, axis=1)
-    return near[inside]
+    margin = _HULL_MARGIN * float(np.ptp(points, axis=0).max())
+    for start in range(0, len(eq), _FACETS):  # a few facets at a time: most cells leave early
+        E = eq[start:start + _FACETS]
+        near = near[np.all(cells[near] @ E[:, :3].T + E[:, 3] <= margin, axis=1)]
+    return near
 
 
 class _Piece:
@@ -135,15 +149,18 @@ class _Piece:
 
 def _planes(polygons: Polygons) -> list[tuple[np.ndarray, float]]:
     """Candidate cuts of a piece: planes across its principal axes at :data:`QUANTILES` of
-    its polygons' centroids."""
+    its polygons' centroids and of its extent."""
     C = polygons.centroids()
     centred = C - C.mean(axis=0)
     _, axes = np.linalg.eigh(centred.T @ centred)
+    P = polygons.points()
     out = []
     for axis in axes.T[::-1]:
-        t = C @ axis
+        t, s = C @ axis, P @ axis
+        lo, hi = float(s.min()), float(s.max())
         for q in QUANTILES:
             out.append((axis, float(np.quantile(t, q))))
+            out.append((axis, lo + q * (hi - lo)))
     return out
 
 
@@ -169,9 +186,11 @@ def _cut(cuts: list[Cut], k: int, normal: np.ndarray, offset: float) -> None:
     cuts.append((k, (float(normal[0]), float(normal[1]), float(normal[2])), float(offset)))
 
 
-def decompose(vertices: np.ndarray, faces: np.ndarray, *, max_pieces: int = MAX_PIECES
+def decompose(vertices: np.ndarray, faces: np.ndarray, *, max_pieces: int | None = None
               ) -> list[Cut]:
-    """The cuts of the mesh ``vertices`` ``(v, 3)``, ``faces`` ``(f, 3)`` (module docstring)."""
+    """The cuts of the mesh ``vertices`` ``(v, 3)``, ``faces`` ``(f, 3)`` (module docstring;
+    at most ``max_pieces`` pieces, :data:`MAX_PIECES` by default)."""
+    max_pieces = MAX_PIECES if max_pieces is None else max_pieces
     T = vertices[faces]
     pitch = pitch_of(vertices)
     cells, depth = empty_cells(T, pitch)
@@ -184,7 +203,9 @@ def decompose(vertices: np.ndarray, faces: np.ndarray, *, max_pieces: int = MAX_
     cuts: list[Cut] = []
     rest = Polygons.of_triangles(T)
     pieces: list[_Piece] = []
-    for offset in _area_quantiles(T, area, axis, SLABS):
+    spans = np.ptp(T.reshape(-1, 3) @ vectors, axis=0)
+    slabs = SLABS if spans[2] >= ELONGATED * spans[1] else 1  # a compact link: no slabs
+    for offset in _area_quantiles(T, area, axis, slabs):
         below, above = split(rest, axis, offset)
         if len(below.counts) == 0 or len(above.counts) == 0:
             continue
@@ -231,7 +252,7 @@ def apply_cuts(vertices: np.ndarray, faces: np.ndarray, cuts: Sequence[Cut]) -> 
     return [p for p in pieces if len(p.counts)]
 
 
-def convex_pieces(vertices: np.ndarray, faces: np.ndarray, *, max_pieces: int = MAX_PIECES
+def convex_pieces(vertices: np.ndarray, faces: np.ndarray, *, max_pieces: int | None = None
                   ) -> list[np.ndarray]:
     """The corners of each piece's polygons: point sets whose convex hulls hold the mesh."""
     cuts = decompose(vertices, faces, max_pieces=max_pieces)

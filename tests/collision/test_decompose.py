@@ -78,9 +78,35 @@ def test_a_fork_is_cut_along_its_gap():
     assert not _inside_some(pieces, gap).any()
 
 
-def test_a_convex_mesh_keeps_its_slabs():
-    mesh = trimesh.creation.icosphere(subdivisions=3)
-    assert len(convex_pieces(np.asarray(mesh.vertices), np.asarray(mesh.faces))) == SLABS
+def _mushroom() -> trimesh.Trimesh:
+    """A rod (radius 0.035 m, 0.13 m long, along x) under a flange (radius 0.1 m, 0.04 m
+    thick): a compact link (a wrist flange) with empty space around its rod."""
+    rod = trimesh.creation.cylinder(radius=0.035, height=0.13, sections=24)
+    flange = trimesh.creation.cylinder(radius=0.1, height=0.04, sections=48)
+    flange.apply_translation([0, 0, 0.085])
+    mesh = trimesh.util.concatenate([rod, flange])
+    mesh.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 2, [0, 1, 0]))
+    return mesh
+
+
+def test_the_space_around_a_flange_rod_is_left_out():
+    """The empty space beside the rod, under the flange, is outside every piece. Measured
+    on the ABB IRB 140's flange (rtb-data): its concavity was read as 0 when the measure
+    kept the deepest empty cells of the whole grid (the corners, outside every hull), and
+    its slabs were cut across the flange, so the forearm's fork, 6-9 mm from the flange's
+    mesh, overlapped its pieces in every configuration."""
+    mesh = _mushroom()
+    V, F = np.asarray(mesh.vertices), np.asarray(mesh.faces)
+    beside = np.array([[x, r * np.cos(a), r * np.sin(a)] for x in (-0.04, 0.0, 0.03)
+                       for r in (0.06, 0.08) for a in np.linspace(0, 2 * np.pi, 8, endpoint=False)])
+    assert not _inside_some(convex_pieces(V, F), beside).any()
+
+
+def test_a_compact_convex_mesh_stays_whole_and_a_long_one_keeps_its_slabs():
+    ball = trimesh.creation.icosphere(subdivisions=3)
+    assert len(convex_pieces(np.asarray(ball.vertices), np.asarray(ball.faces))) == 1
+    rod = trimesh.creation.capsule(0.6, 0.05)
+    assert len(convex_pieces(np.asarray(rod.vertices), np.asarray(rod.faces))) == SLABS
 
 
 def test_the_pieces_are_cached_and_a_damaged_entry_recomputed(tmp_path, monkeypatch):

@@ -23,7 +23,7 @@ from moik.collision import decompose
 from moik.collision.mesh_fit import digest, load_cached, store_cached
 from moik.collision.outer_hull import enclosing_polytope
 
-PIECES_VERSION = 3  # bump when the decomposition changes: old cache entries are not read
+PIECES_VERSION = 4  # bump when the decomposition changes: old cache entries are not read
 
 
 def _read(payload: Any) -> list[decompose.Cut] | None:
@@ -50,6 +50,7 @@ def cached_parts(vertices: np.ndarray, faces: np.ndarray, *, identity: Sequence[
     docstring); its cuts read from / written to the disk cache under the digest of
     ``identity`` (the meshes' digests, scales and poses) and the settings."""
     settings = {"version": PIECES_VERSION, "resolution": decompose.RESOLUTION,
+                "max_resolution": decompose.MAX_RESOLUTION, "fine_pitch": decompose.FINE_PITCH,
                 "slabs": decompose.SLABS, "elongated": decompose.ELONGATED,
                 "tolerance_cells": decompose.TOLERANCE_CELLS,
                 "max_pieces": decompose.MAX_PIECES, "quantiles": list(decompose.QUANTILES),

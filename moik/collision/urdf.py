@@ -49,7 +49,7 @@ from moik._validate import choice, integer
 from moik.collision.acm import DEFAULT_SAMPLES, cached_allowed
 from moik.collision.fit import body_axes
 from moik.collision.mesh_fit import cached_link_fit
-from moik.collision.mesh_pieces import cached_parts
+from moik.collision.mesh_pieces import parts_of_meshes
 from moik.collision.meshes import LARGEST_SIZE, read_mesh, resolve_mesh
 from moik.collision.model import CollisionModel
 from moik.collision.prism import cylinder_compound
@@ -133,7 +133,7 @@ def mesh_shapes(source: Any, robot: Robot, *, package_dirs: Any = None,
     for item in items:
         by_link.setdefault(item["link"], []).append(item)
     candidates = body_axes(robot) if by_link else []
-    out: dict[str, Compound] = {}
+    meshes, bounds = [], []
     for link, group in by_link.items():
         body = group[0]["body"]
         vertices, faces, identity = [], [], []
@@ -151,10 +151,11 @@ def mesh_shapes(source: Any, robot: Robot, *, package_dirs: Any = None,
         V, F = np.vstack(vertices), np.vstack(faces)
         (a, b, r), = cached_link_fit(V, F, identity=identity, axes=candidates[body], capsules=1,
                                      split_gain=0.85, use_cache=use_cache)
-        parts = tuple(ConvexHull(points=P)
-                      for P in cached_parts(V, F, identity=identity, use_cache=use_cache))
-        out[link] = Compound(bound=Capsule.between(a.tolist(), b.tolist(), r), parts=parts)
-    return out
+        meshes.append((V, F, identity))
+        bounds.append(Capsule.between(a.tolist(), b.tolist(), r))
+    parts = parts_of_meshes(meshes, use_cache=use_cache)  # the links side by side
+    return {link: Compound(bound=bound, parts=tuple(ConvexHull(points=P) for P in pieces))
+            for link, bound, pieces in zip(by_link, bounds, parts, strict=True)}
 
 
 def model_from_urdf(source: Any, robot: Robot, *, package_dirs: Any = None,

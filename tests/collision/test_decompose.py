@@ -167,3 +167,17 @@ def test_the_cuts_scale_with_the_mesh(scale):
     base = convex_pieces(V, F)
     scaled = convex_pieces(V * scale, F)
     assert len(scaled) == len(base)
+
+
+def test_links_decomposed_side_by_side_give_the_same_cuts(monkeypatch):
+    """Several links are decomposed in child processes (one per CPU): the cuts are the
+    same as one after the other, and a child that cannot start leaves its links to this
+    process."""
+    meshes = [(np.asarray(m.vertices), np.asarray(m.faces), [name]) for name, m in
+              (("fork", _fork()), ("mushroom", _mushroom()), ("box", MESHES["box"]()))]
+    serial = [decompose.decompose(V, F) for V, F, _ in meshes]
+    monkeypatch.setattr(mesh_pieces, "PARALLEL_FACES", 0)
+    monkeypatch.setattr(mesh_pieces, "_cpus", lambda: 2)
+    assert mesh_pieces._decompose_all(meshes) == serial
+    monkeypatch.setattr(mesh_pieces, "CHILD", "raise SystemExit(3)")
+    assert mesh_pieces._decompose_all(meshes) == serial

@@ -56,7 +56,7 @@ def fake_popen(monkeypatch):
 
     FakePopen.started = []
     monkeypatch.setattr(_background.subprocess, "Popen", FakePopen)
-    monkeypatch.setattr(_background, "cpus", lambda: 2)
+    monkeypatch.setattr(_background, "available_cores", lambda: 2)
     monkeypatch.setattr(_background, "idle_cpus", lambda: 2.0)
     monkeypatch.setattr(_jit, "is_cached", lambda kernel: False)
     monkeypatch.delenv(_background.ENV_SWITCH, raising=False)

@@ -28,6 +28,7 @@ from typing import Any
 
 import numpy as np
 
+from moik._machine import available_cores
 from moik.collision import decompose
 from moik.collision.mesh_fit import digest, load_cached, store_cached
 from moik.collision.outer_hull import enclosing_polytope
@@ -67,13 +68,6 @@ def _key(identity: Sequence[Any]) -> str:
     return digest([settings, *identity])
 
 
-def _cpus() -> int:
-    try:
-        return len(os.sched_getaffinity(0))
-    except AttributeError:  # not on every platform
-        return os.cpu_count() or 1
-
-
 CHILD = "from moik.collision.mesh_pieces import child; child()"
 
 
@@ -104,7 +98,7 @@ def _decompose_all(meshes: Sequence[Mesh]) -> list[list[decompose.Cut]]:
     others'), else one after the other; the same cuts either way. What a child does not
     deliver (it cannot start, fails) is computed here."""
     done: dict[int, list[decompose.Cut]] = {}
-    workers = min(len(meshes), _cpus())
+    workers = min(len(meshes), available_cores())
     if workers > 1 and sum(len(F) for _, F, _ in meshes) >= PARALLEL_FACES:
         shares: list[list[int]] = [[] for _ in range(workers)]  # the largest first, each
         loads = [0] * workers  # to the share with the fewest triangles so far

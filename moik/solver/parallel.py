@@ -24,13 +24,13 @@ from __future__ import annotations
 
 import math
 import multiprocessing
-import os
 import signal
 import time
 from collections.abc import Callable, Iterable, Sequence
 from concurrent.futures import ThreadPoolExecutor, as_completed
 from typing import Any
 
+from moik._machine import available_cores
 from moik._validate import integer
 from moik.exceptions import ParameterError
 
@@ -45,14 +45,6 @@ POOL_START_S = 0.1  # or sooner: once the items left, at the pace so far, would 
 # share: a tail of slow items goes to the pool after its first item
 SPAWN_MIN_TASKS = 8  # where processes are spawned (each imports moik and loads its kernels)
 TASK_RETRIES = 2  # a Dask task that raised is run again this often
-
-
-def available_cores() -> int:
-    """The CPUs this process may run on (its affinity where the platform tells it)."""
-    try:
-        return len(os.sched_getaffinity(0))
-    except AttributeError:  # macOS, Windows
-        return os.cpu_count() or 1
 
 
 def worker_count(workers: Any) -> int:

@@ -31,27 +31,20 @@ from pathlib import Path
 from typing import Any
 
 from moik import _jit
+from moik._machine import available_cores
 
 ENV_SWITCH = "MOIK_BACKGROUND_COMPILE"
 CHILD_MODULE = "moik.warmup"  # what the child runs (``python -m``)
 MIN_IDLE = 0.5  # CPUs the last minute's load average must leave idle for a child to start
 
 
-def cpus() -> int:
-    """CPUs this process may run on."""
-    try:
-        return len(os.sched_getaffinity(0))
-    except AttributeError:  # not on every platform
-        return os.cpu_count() or 1
-
-
 def idle_cpus() -> float:
     """CPUs this process may run on less the load average of the last minute (all CPUs
     where the platform has no load average)."""
     try:
-        return cpus() - os.getloadavg()[0]
+        return available_cores() - os.getloadavg()[0]
     except (AttributeError, OSError):  # not on every platform
-        return float(cpus())
+        return float(available_cores())
 
 
 class Background:
@@ -74,7 +67,7 @@ def start(family: str, arguments: Any, probes: Sequence[Any]) -> Background | No
     docstring): ``probes`` (kernels of the family) are all cached already, or
     ``arguments`` cannot be pickled."""
     switch = os.environ.get(ENV_SWITCH)
-    if (switch == "0" or cpus() < 2 or (switch != "1" and idle_cpus() < MIN_IDLE)
+    if (switch == "0" or available_cores() < 2 or (switch != "1" and idle_cpus() < MIN_IDLE)
             or all(_jit.is_cached(kernel) for kernel in probes)):
         return None
     try:

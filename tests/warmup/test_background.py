@@ -30,7 +30,7 @@ def test_the_child_imports_its_parents_moik_from_any_working_folder(tmp_path, mo
     (other / "__main__.py").write_text("raise SystemExit(3)")  # the other moik's child
     monkeypatch.chdir(tmp_path)
     monkeypatch.setattr(_jit, "is_cached", lambda kernel: False)
-    monkeypatch.setattr(background, "cpus", lambda: 2)
+    monkeypatch.setattr(background, "available_cores", lambda: 2)
     monkeypatch.setattr(background, "idle_cpus", lambda: 2.0)
     monkeypatch.delenv(background.ENV_SWITCH, raising=False)
     handle = background.start("no-such-family", None, probes=[object()])
@@ -46,7 +46,7 @@ def test_does_not_start_where_it_cannot_help(fake_popen, monkeypatch, why):
     if why == "switched off":
         monkeypatch.setenv(background.ENV_SWITCH, "0")
     elif why == "one cpu":
-        monkeypatch.setattr(background, "cpus", lambda: 1)
+        monkeypatch.setattr(background, "available_cores", lambda: 1)
     elif why == "busy":  # every CPU ran something else over the last minute
         monkeypatch.setattr(background, "idle_cpus", lambda: 0.3)
     elif why == "cached":
@@ -64,7 +64,7 @@ def test_the_switch_at_1_starts_a_child_on_a_busy_machine_too(fake_popen, monkey
 
 
 def test_idle_cpus_are_the_cpus_less_the_load(monkeypatch):
-    monkeypatch.setattr(background, "cpus", lambda: 2)
+    monkeypatch.setattr(background, "available_cores", lambda: 2)
     monkeypatch.setattr(background.os, "getloadavg", lambda: (1.5, 0.0, 0.0))
     assert background.idle_cpus() == 0.5
 

@@ -1,0 +1,14 @@
+"""The machine moik runs on: the CPUs this process may use (the batch solver's workers,
+the background compiles, the side-by-side decomposition of an arm's links)."""
+
+from __future__ import annotations
+
+import os
+
+
+def available_cores() -> int:
+    """The CPUs this process may run on (its affinity where the platform tells it)."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # macOS, Windows
+        return os.cpu_count() or 1

@@ -1,5 +1,5 @@
-"""The machine moik runs on: the CPUs this process may use (the batch solver's workers,
-the background compiles, the side-by-side decomposition of an arm's links)."""
+"""The machine moik runs on: the CPUs this process may use (the batch solver's workers and
+the background compiles; the collision package, below them, counts its own)."""
 
 from __future__ import annotations
 

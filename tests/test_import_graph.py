@@ -6,7 +6,7 @@ import ast
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1] / "moik"
-ORDER = ("exceptions", "_toml", "_validate", "_paths", "_machine", "_kernel_cache", "_jit",
+ORDER = ("exceptions", "_toml", "_validate", "_paths", "_kernel_cache", "_jit",
          "_version", "_lazy", "robots", "kinematics", "collision", "fronts", "problems")
 INDEPENDENT = {"algorithms": {"algorithms", "exceptions", "_validate", "_jit"},
                "metrics": {"metrics", "exceptions", "_validate", "_jit", "_lazy"}}

@@ -28,7 +28,6 @@ from typing import Any
 
 import numpy as np
 
-from moik._machine import available_cores
 from moik.collision import decompose
 from moik.collision.mesh_fit import digest, load_cached, store_cached
 from moik.collision.outer_hull import enclosing_polytope
@@ -56,6 +55,15 @@ def _read(payload: Any) -> list[decompose.Cut] | None:
 
 PARALLEL_FACES = 20_000  # triangles to decompose before the links share the CPUs
 Mesh = tuple[np.ndarray, np.ndarray, Sequence[Any]]  # vertices, faces, identity
+
+
+def _cpus() -> int:
+    """The CPUs this process may run on (as :func:`moik._machine.available_cores`, which the
+    design's dependency direction keeps out of the collision package's reach)."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # macOS, Windows
+        return os.cpu_count() or 1
 
 
 def _key(identity: Sequence[Any]) -> str:
@@ -98,7 +106,7 @@ def _decompose_all(meshes: Sequence[Mesh]) -> list[list[decompose.Cut]]:
     others'), else one after the other; the same cuts either way. What a child does not
     deliver (it cannot start, fails) is computed here."""
     done: dict[int, list[decompose.Cut]] = {}
-    workers = min(len(meshes), available_cores())
+    workers = min(len(meshes), _cpus())
     if workers > 1 and sum(len(F) for _, F, _ in meshes) >= PARALLEL_FACES:
         shares: list[list[int]] = [[] for _ in range(workers)]  # the largest first, each
         loads = [0] * workers  # to the share with the fewest triangles so far

@@ -177,7 +177,7 @@ def test_links_decomposed_side_by_side_give_the_same_cuts(monkeypatch):
               (("fork", _fork()), ("mushroom", _mushroom()), ("box", MESHES["box"]()))]
     serial = [decompose.decompose(V, F) for V, F, _ in meshes]
     monkeypatch.setattr(mesh_pieces, "PARALLEL_FACES", 0)
-    monkeypatch.setattr(mesh_pieces, "available_cores", lambda: 2)
+    monkeypatch.setattr(mesh_pieces, "_cpus", lambda: 2)
     assert mesh_pieces._decompose_all(meshes) == serial
     monkeypatch.setattr(mesh_pieces, "CHILD", "raise SystemExit(3)")
     assert mesh_pieces._decompose_all(meshes) == serial

@@ -195,6 +195,29 @@ def is_cached(dispatcher: Any) -> bool:
     return False
 
 
+WAIT_LIMIT = 120.0  # seconds a kernel waits for another process compiling it (at most)
+_ELSEWHERE: list[tuple[tuple[Any, ...], Callable[[float], object]]] = []
+
+
+def compiled_elsewhere(kernels: Sequence[Any], wait: Callable[[float], object]) -> None:
+    """Say that another process compiles ``kernels`` into the cache: ``wait(seconds)``
+    returns when it has ended or the seconds have passed (:mod:`moik.warmup.background`
+    registers its children so)."""
+    _ELSEWHERE.append((tuple(kernels), wait))
+
+
+def await_elsewhere(dispatcher: Any) -> None:
+    """Before a call that would compile ``dispatcher``: where it is neither compiled here
+    nor cached but another process compiles it (:func:`compiled_elsewhere`), wait until
+    that process ends (at most :data:`WAIT_LIMIT` seconds), so that the call loads it
+    instead of compiling it a second time side by side."""
+    if not _ELSEWHERE or getattr(dispatcher, "overloads", None) or is_cached(dispatcher):
+        return
+    for kernels, wait in _ELSEWHERE:
+        if any(k is dispatcher for k in kernels):
+            wait(WAIT_LIMIT)
+
+
 def kernel_array(values: Any) -> np.ndarray:
     """``values`` as a C-contiguous, writeable ``float64`` array (no copy when it is one).
 

@@ -10,6 +10,11 @@ seen once is seen again. ``pytest --hypothesis-profile explore`` draws new rando
 examples at each run, to look for cases the fixed ones miss.
 """
 
+import os
+import shutil
+import tempfile
+from pathlib import Path
+
 import pytest
 from hypothesis import settings
 
@@ -61,3 +66,25 @@ def fake_popen(monkeypatch):
     monkeypatch.setattr(_jit, "is_cached", lambda kernel: False)
     monkeypatch.delenv(_background.ENV_SWITCH, raising=False)
     return FakePopen
+
+
+SEEDS = Path(__file__).parent / "data" / "collision_cache"
+
+
+@pytest.fixture(scope="session", autouse=True)
+def seeded_collision_cache():
+    """The collision cache entries of the test arms (tests/data/collision_cache/README.md)
+    copied into moik's collision cache where absent (atomically: two workers may copy)."""
+    from moik.collision.mesh_fit import cache_dir
+
+    folder = cache_dir()
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        for seed in SEEDS.glob("*.json"):
+            if not (folder / seed.name).exists():
+                fd, tmp = tempfile.mkstemp(dir=folder, suffix=".tmp")
+                os.close(fd)
+                shutil.copyfile(seed, tmp)
+                os.replace(tmp, folder / seed.name)
+    except OSError:  # an unwritable cache: the tests compute what they need
+        pass

@@ -1,8 +1,10 @@
 """A :class:`~moik.collision.CollisionChecker`'s arrays as one compiled value (numba StructRef).
 
-The solver's start loop (:func:`moik.solver.starts.run_starts`) tests each converged
-end against the collision check in the same compiled call, so a colliding exact
-answer is rejected and the next start tried without a return to Python. A
+The batch's start loop (:func:`moik.solver.starts.run_starts` in
+:func:`moik.solver.starts.run_batch`) tests each converged end against the collision
+check in the same compiled call, so a colliding exact answer is rejected and the next
+start tried without a return to Python (one solve calls the test between compiled runs
+of a plain loop instead: :mod:`moik.solver.tested_starts`). A
 :class:`CollisionSet` carries what :func:`moik.collision.kernels.min_distance_of`
 needs (the arm's :class:`~moik.robots.chain_model.ChainModel`, the shapes and the pairs)
 and is typed by numba as one value (see :mod:`moik.robots.chain_model` for why a StructRef);

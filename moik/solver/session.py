@@ -20,6 +20,7 @@ from moik.solver.collision import CollisionGuard
 from moik.solver.context import ik_context
 from moik.solver.polish import polish as polish_q
 from moik.solver.starts import CHECK, PATIENT, found_table, is_distinct, run_starts
+from moik.solver.tested_starts import run_tested_starts
 
 
 def pose_errors(robot: Robot, target, Q: np.ndarray, *, reference: bool = False
@@ -100,9 +101,9 @@ class SolveSession:
         self.n_rejected = 0  # exact answers rejected for collision
         # why no exact answer can keep the clearance: (pair, its distance), set when proven
         self.collision_proof: tuple[tuple[str, str] | None, float] | None = None
-        self.ctx = ik_context(robot, target, stop=tol.stop, tol=tol, distinct=distinct,
-                              collision=None if guard is None else guard.checker.compiled,
-                              clearance=0.0 if guard is None else guard.clearance)
+        # the start loop's context has no collision set: with a guard the loop runs as
+        # run_tested_starts (the compiled test between compiled runs of a plain loop)
+        self.ctx = ik_context(robot, target, stop=tol.stop, tol=tol, distinct=distinct)
 
     def refine(self, q0: np.ndarray, do_polish: bool, max_nfev: int = 60) -> None:
         """Least-squares polish of ``q0`` (or only clipping), then :meth:`consider`."""
@@ -124,9 +125,9 @@ class SolveSession:
         The rows of ``Q0`` are overwritten by the ends (pass a copy to keep them).
         Each converged end is re-checked by an FK pass of its own in the same compiled
         call (:func:`~moik.solver.starts.run_starts`), as :meth:`consider` does; with a
-        collision check, an exact end in collision is rejected there too (the loop goes on
-        with the next start), counted in :attr:`n_rejected`, the farthest from contact kept
-        as :attr:`colliding`."""
+        collision check, an exact end in collision is rejected too (the loop goes on with
+        the next start; :func:`~moik.solver.tested_starts.run_tested_starts`), counted in
+        :attr:`n_rejected`, the farthest from contact kept as :attr:`colliding`."""
         dof, n_known = self.robot.dof, len(self.found)
         starts = kernel_array(Q0)  # overwritten by the ends: the callers' rows are fresh
         found = found_table(self.wanted, dof, self.found, self.found_errors)
@@ -134,7 +135,12 @@ class SolveSession:
         best[0] = np.inf if self.best is None else self.best[0]
         ends = np.empty((len(starts), 3))
         policy = (CHECK | (PATIENT if patient else 0), max(self.max_evals - self.n_eval, 1))
-        n_found, n_eval, used = run_starts(self.ctx, starts, policy, found, best, ends)
+        if self.guard is None or self.guard.checker.n_pairs == 0:
+            n_found, n_eval, used = run_starts(self.ctx, starts, policy, found, best, ends)
+        else:
+            n_found, n_eval, used = run_tested_starts(
+                self.ctx, self.guard.checker.compiled, self.guard.clearance, starts, policy,
+                found, best, ends)
         self.n_eval += int(n_eval)
         for row in found[n_known:n_found]:
             self.found.append(row[:dof])

@@ -76,6 +76,14 @@ def keep_found(ctx, ws, found, n_found, q):
 
 
 @jit
+def solution_cost(ctx):
+    """The largest cost ``0.5 |r|^2`` of an end within both of ``ctx``'s tolerances (an end
+    costing more cannot be a solution; one costing less is re-checked)."""
+    tp, to = ctx.tol_position * ctx.chain.inv_reach, ctx.tol_orientation
+    return 0.5 * (tp * tp + to * to)
+
+
+@jit
 def improve_best(ctx, ws, best, q):
     """``best = [scaled error, q]`` replaced by ``q`` when its re-checked (``ws.err``)
     error ``pos / L + ori`` is smaller."""
@@ -129,8 +137,7 @@ def run_starts(ctx, starts, policy, found, best, ends):
             ends[s, 0], ends[s, 1], ends[s, 2] = conv, cost, np.nan
         return 0, n_eval, n
     want, check = found.shape[0], flags & CHECK != 0
-    tp, to = ctx.tol_position * ctx.chain.inv_reach, ctx.tol_orientation
-    tol_cost = 0.5 * (tp * tp + to * to)  # an end within both tolerances costs at most this
+    tol_cost = solution_cost(ctx)
     collide = checks_pairs(ctx.collision)
     scratch = end_scratch(ctx.collision)
     n_known = 0

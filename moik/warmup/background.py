@@ -9,9 +9,9 @@ what the child has written by the time it needs it and compiles the rest itself,
 child changes nothing but time: a child that fails, is slow or is stopped only leaves
 more for this process to compile.
 
-A child starts only where it can help: this process may use more than one CPU and the
-load average of the last minute left at least half of one idle (:func:`idle_cpus`; a
-process timing cold starts one after another keeps about one busy): on a busy machine
+A child starts only where it can help: this process may use more than one CPU and at
+least half of one was idle over the last tenth of a second (:func:`idle_cpus`; the load
+average of the last minute where the system's CPU times cannot be read): on a busy machine
 the child only takes CPU time from its parent (``benchmarks/startup.py
 --without-background`` measured it so); ``MOIK_BACKGROUND_COMPILE`` is not ``0`` (a child
 runs with it ``0``: no grandchild; so do ``moik compile``'s workers); and a probe kernel
@@ -22,10 +22,12 @@ machine too (to measure it).
 from __future__ import annotations
 
 import atexit
+import contextlib
 import os
 import pickle
 import subprocess
 import sys
+import time
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -38,9 +40,34 @@ CHILD_MODULE = "moik.warmup"  # what the child runs (``python -m``)
 MIN_IDLE = 0.5  # CPUs the last minute's load average must leave idle for a child to start
 
 
+IDLE_WINDOW = 0.1  # seconds over which idle CPU time is measured (idle_cpus)
+PROC_STAT = "/proc/stat"
+
+
+def _cpu_times() -> tuple[float, float] | None:
+    """(idle, total) CPU time of the system so far (Linux's /proc/stat), or None."""
+    try:
+        with open(PROC_STAT) as f:
+            fields = [float(x) for x in f.readline().split()[1:]]
+    except (OSError, ValueError):
+        return None
+    if len(fields) < 5:
+        return None
+    return fields[3] + fields[4], sum(fields[:8])  # idle + iowait; user .. steal
+
+
 def idle_cpus() -> float:
-    """CPUs this process may run on less the load average of the last minute (all CPUs
-    where the platform has no load average)."""
+    """CPUs this process may run on times the share of the system's CPU time that was
+    idle over the last :data:`IDLE_WINDOW` seconds; where that cannot be read, the CPUs
+    less the load average of the last minute (all of them where there is none either).
+    The present, not the last minute: the load average still counts a command that has
+    just ended (a first solve right after another reads a busy machine for a minute)."""
+    before = _cpu_times()
+    if before is not None:
+        time.sleep(IDLE_WINDOW)
+        after = _cpu_times()
+        if after is not None and after[1] > before[1]:
+            return available_cores() * (after[0] - before[0]) / (after[1] - before[1])
     try:
         return available_cores() - os.getloadavg()[0]
     except (AttributeError, OSError):  # not on every platform
@@ -53,6 +80,11 @@ class Background:
     def __init__(self, process: subprocess.Popen):
         self.process = process
         atexit.register(self.stop)
+
+    def wait(self, seconds: float) -> None:
+        """Return when the child has ended or ``seconds`` have passed."""
+        with contextlib.suppress(subprocess.TimeoutExpired):
+            self.process.wait(timeout=seconds)
 
     def stop(self) -> None:
         """Stop the child if it still runs."""
@@ -67,8 +99,9 @@ def start(family: str, arguments: Any, probes: Sequence[Any]) -> Background | No
     docstring): ``probes`` (kernels of the family) are all cached already, or
     ``arguments`` cannot be pickled."""
     switch = os.environ.get(ENV_SWITCH)
-    if (switch == "0" or available_cores() < 2 or (switch != "1" and idle_cpus() < MIN_IDLE)
-            or all(_jit.is_cached(kernel) for kernel in probes)):
+    if (switch == "0" or available_cores() < 2
+            or all(_jit.is_cached(kernel) for kernel in probes)
+            or (switch != "1" and idle_cpus() < MIN_IDLE)):  # last: it takes a tenth of a second
         return None
     try:
         payload = pickle.dumps((family, arguments))
@@ -89,7 +122,9 @@ def start(family: str, arguments: Any, probes: Sequence[Any]) -> Background | No
         process.stdin.close()
     except (OSError, ValueError):  # no interpreter to start, no pipe: compile here
         return None
-    return Background(process)
+    child = Background(process)
+    _jit.compiled_elsewhere(probes, child.wait)
+    return child
 
 
 def child_arguments() -> tuple[str, Any]:

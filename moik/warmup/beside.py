@@ -18,13 +18,14 @@ check of the answer. :func:`beside_solve` given such a target has the child comp
 the damped step, that batch FK and that check: on two CPUs a child compiling kernels the
 parent never needs takes CPU time from it.
 
-``"collision-leaves"``: a cold first collision-aware solve compiles the same start loop
-with a collision test of each end, whose distance kernels (the pairs' bounds, GJK on the
-hulls, the box and primitive distances: about half of that solve's compiling) only the
-test calls. :func:`beside_collision` has a child build the solve's own checker (pickled:
-the same collision set, of the same numba type) and call that test once, then the batch
-distance the answer reports, while the parent compiles the FK and LM kernels; the ``moik``
-command starts it before a ``solve`` with ``--scene`` or ``--self-collision``.
+``"collision-leaves"``: a cold first collision-aware solve compiles the start loop of a
+plain solve and the collision test it calls on each exact end between compiled runs
+(:mod:`moik.solver.tested_starts`; the answers' distances too, row by row), whose
+distance kernels (the pairs' bounds, GJK on the hulls, the box and primitive distances:
+about half of that solve's compiling) nothing else calls. :func:`beside_collision` has a
+child build the solve's own checker (pickled: the same collision set, of the same numba
+type) and call that test once, while the parent compiles the FK and LM kernels; the
+``moik`` command starts it before a ``solve`` with ``--scene`` or ``--self-collision``.
 
 ``"pareto-search"``: a cold first Pareto solve of a redundant arm
 (:func:`~moik.solver.pareto.solve_ik_pareto`) compiles two independent families one
@@ -197,12 +198,10 @@ def beside_collision(checker: CollisionChecker) -> background.Background | None:
 
 def collision_leaves(checker: CollisionChecker) -> None:
     """The ``"collision-leaves"`` child: the distance test of an end (every distance kernel
-    it calls) on the solve's own collision set, at the middle of the joint ranges, then the
-    smallest distance of a batch (the answer's reported distance, needed last)."""
+    it calls) on the solve's own collision set, at the middle of the joint ranges."""
     cs = checker.compiled
     q = np.ascontiguousarray((checker.robot.lower + checker.robot.upper) / 2.0, dtype=np.float64)
     distance_below(cs, q, distance_scratch(cs), 0.0)
-    checker.min_distance_batch(q[None])
 
 
 def _stand_in_start(robot: Robot) -> tuple[Any, Any, np.ndarray]:

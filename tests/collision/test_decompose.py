@@ -173,8 +173,10 @@ def test_links_decomposed_side_by_side_give_the_same_cuts(monkeypatch):
     """Several links are decomposed in child processes (one per CPU): the cuts are the
     same as one after the other, and a child that cannot start leaves its links to this
     process."""
-    meshes = [(np.asarray(m.vertices), np.asarray(m.faces), [name]) for name, m in
-              (("fork", _fork()), ("mushroom", _mushroom()), ("box", MESHES["box"]()))]
+    fork = _fork()  # three meshes of a second or less each (a mushroom takes five)
+    meshes = [(np.asarray(m.vertices) * stretch, np.asarray(m.faces), [name])
+              for name, m, stretch in (("fork", fork, 1.0), ("box", MESHES["box"](), 1.0),
+                                       ("long fork", fork, np.array([1.0, 1.5, 0.8])))]
     serial = [decompose.decompose(V, F) for V, F, _ in meshes]
     monkeypatch.setattr(mesh_pieces, "PARALLEL_FACES", 0)
     monkeypatch.setattr(mesh_pieces, "_cpus", lambda: 2)

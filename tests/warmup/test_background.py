@@ -63,7 +63,21 @@ def test_the_switch_at_1_starts_a_child_on_a_busy_machine_too(fake_popen, monkey
     assert background.start("some-family", (1,), probes=[object()]) is not None
 
 
-def test_idle_cpus_are_the_cpus_less_the_load(monkeypatch):
+def test_idle_cpus_are_the_idle_share_of_the_last_tenth_of_a_second(monkeypatch, tmp_path):
+    """Two readings of the system's CPU times (user nice system idle iowait irq softirq
+    steal): 300 of 400 ticks between them idle or waiting, on 2 CPUs: 1.5 idle."""
+    stat = tmp_path / "stat"
+    readings = iter(["cpu  100 0 100 1000 0 0 0 0 0 0\n", "cpu  150 0 150 1250 50 0 0 0 0 0\n"])
+    monkeypatch.setattr(background, "PROC_STAT", str(stat))
+    monkeypatch.setattr(background.time, "sleep", lambda s: stat.write_text(next(readings)))
+    stat.write_text(next(readings))
+    monkeypatch.setattr(background, "available_cores", lambda: 2)
+    monkeypatch.setattr(background.os, "getloadavg", lambda: (2.0, 0.0, 0.0))  # not read
+    assert background.idle_cpus() == 1.5
+
+
+def test_idle_cpus_fall_back_to_the_cpus_less_the_load(monkeypatch, tmp_path):
+    monkeypatch.setattr(background, "PROC_STAT", str(tmp_path / "absent"))
     monkeypatch.setattr(background, "available_cores", lambda: 2)
     monkeypatch.setattr(background.os, "getloadavg", lambda: (1.5, 0.0, 0.0))
     assert background.idle_cpus() == 0.5

@@ -24,7 +24,7 @@ from moik.problems.targets import Target
 from moik.robots import Robot
 from moik.solver import solve_ik
 from moik.solver.session import pose_errors
-from moik.warmup.beside import beside_collision, beside_solve
+from moik.warmup.beside import beside_collision, beside_collision_early, beside_solve
 
 PLOT_FORMATS = (".png", ".pdf", ".svg")
 
@@ -66,6 +66,10 @@ def cmd_solve(args: argparse.Namespace) -> int:
     plots = plot_files(args.plot)
     html = pareto.html_file(args.html)
     arm = robot(args)
+    scene = getattr(args, "scene", None) is not None
+    # on a cold first run: the distance kernels, compiled while the checker is built
+    early = (beside_collision_early(arm, scene=scene)
+             if scene or getattr(args, "self_collision", False) else None)
     goal = target(args)
     q_current = (None if args.q_current is None
                  else joint_values(arm, args.q_current, args.deg, "--q-current"))
@@ -73,7 +77,7 @@ def cmd_solve(args: argparse.Namespace) -> int:
     if check is None:
         beside_solve(arm, goal)  # on a cold first run: the leaf kernels of its path
     else:
-        beside_collision(check.checker)  # on a cold first run: the distance kernels
+        beside_collision(check.checker, early=early)  # that child, or one on the checker
     with library_call(SOLVE_OPTIONS), compiling() as compiled:
         res = solve_ik(arm, goal, q_current=q_current, **search,
                        **collision.solver_options(check))

@@ -17,10 +17,13 @@ the reference and every folder it was looked for in.
 :func:`read_mesh` reads STL, OBJ, PLY and (with pycollada installed) COLLADA ``.dae``
 with trimesh (a core dependency: most URDF arms describe their collision geometry as
 meshes; trimesh's only required dependency is numpy, and it is imported at the first
-mesh read, never by ``import moik``). The file's vertices are checked: at least one
-triangle, finite coordinates, and after ``scale`` a size between 1 micrometre and
-100 m (the unit is metres: a mesh in millimetres without ``scale="0.001 0.001 0.001"`` is
-refused).
+mesh read, never by ``import moik``). A binary STL (the usual URDF collision mesh: an
+80-byte header, a triangle count, 50 bytes per triangle) is read with numpy instead
+(:func:`binary_stl`: the arrays trimesh gives it, tested equal), because importing
+trimesh takes most of a second of every collision-aware command. The file's vertices are
+checked: at least one triangle, finite coordinates, and after ``scale`` a size between 1
+micrometre and 100 m (the unit is metres: a mesh in millimetres without
+``scale="0.001 0.001 0.001"`` is refused).
 """
 
 from __future__ import annotations
@@ -159,23 +162,34 @@ def _trimesh() -> Any:
     return trimesh
 
 
+STL_TRIANGLE = np.dtype([("normal", "<f4", (3,)), ("corners", "<f4", (3, 3)),
+                         ("attribute", "<u2")])  # one binary STL record (50 bytes)
+
+
+def binary_stl(data: bytes) -> tuple[np.ndarray, np.ndarray] | None:
+    """The vertices ``(3 n, 3)`` and faces ``(n, 3)`` of a binary STL file's bytes, as
+    trimesh reads them without processing (each triangle's corners in order, none merged),
+    or None when ``data`` is not exactly an 80-byte header, a count ``n >= 1`` and ``n``
+    records (an ASCII STL, a damaged file: left to trimesh)."""
+    if len(data) < 84:
+        return None
+    n = int(np.frombuffer(data, dtype="<u4", count=1, offset=80)[0])
+    if n == 0 or len(data) != 84 + n * STL_TRIANGLE.itemsize:
+        return None
+    records = np.frombuffer(data, dtype=STL_TRIANGLE, count=n, offset=84)
+    vertices = records["corners"].reshape(-1, 3).astype(np.float64)
+    return vertices, np.arange(3 * n, dtype=np.int64).reshape(-1, 3)
+
+
 def file_digest(path: Path) -> str:
     """The sha256 of a file's bytes (a mesh's identity in the fit cache)."""
     return hashlib.sha256(path.read_bytes()).hexdigest()
 
 
-def read_mesh(path: Path, *, link: str, scale: Any = (1.0, 1.0, 1.0)) -> Mesh:
-    """A mesh file's triangles, scaled and checked (see the module doc).
-
-    Raises:
-        GeometryError: Unreadable file, no triangles, non-finite vertices, or a size
-            (after ``scale``) outside [1 um, 100 m].
-        MoikError: trimesh is not installed.
-    """
+def _trimesh_arrays(path: Path, what: str) -> tuple[np.ndarray, np.ndarray]:
+    """The vertices and faces trimesh reads from ``path`` (unprocessed)."""
     trimesh = _trimesh()
-    what = f"link {link!r}: mesh {str(path)!r}"
     try:
-        digest = file_digest(path)
         loaded = trimesh.load(str(path), force="mesh", process=False)
     except OSError as exc:
         raise GeometryError(f"{what} cannot be read: {exc}") from None
@@ -186,9 +200,30 @@ def read_mesh(path: Path, *, link: str, scale: Any = (1.0, 1.0, 1.0)) -> Mesh:
                             f"{type(exc).__name__}: {exc}") from None
     if not isinstance(loaded, trimesh.Trimesh) or len(loaded.faces) == 0:
         raise GeometryError(f"{what} holds no triangles")
+    return (np.asarray(loaded.vertices, dtype=float),
+            np.asarray(loaded.faces, dtype=np.int64))
+
+
+def read_mesh(path: Path, *, link: str, scale: Any = (1.0, 1.0, 1.0)) -> Mesh:
+    """A mesh file's triangles, scaled and checked (see the module doc).
+
+    Raises:
+        GeometryError: Unreadable file, no triangles, non-finite vertices, or a size
+            (after ``scale``) outside [1 um, 100 m].
+        MoikError: trimesh is not installed.
+    """
+    what = f"link {link!r}: mesh {str(path)!r}"
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise GeometryError(f"{what} cannot be read: {exc}") from None
+    digest = hashlib.sha256(data).hexdigest()
+    stl = binary_stl(data) if path.suffix.lower() == ".stl" else None
+    if stl is None:
+        V, faces = _trimesh_arrays(path, what)
+    else:
+        V, faces = stl
     with np.errstate(all="ignore"):
-        V = np.asarray(loaded.vertices, dtype=float)
-        faces = np.asarray(loaded.faces, dtype=np.int64)
         s = np.asarray(scale, dtype=float)
         if not np.all(np.isfinite(V)):
             raise GeometryError(f"{what} has non-finite (NaN or infinite) vertices")

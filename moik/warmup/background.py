@@ -37,7 +37,7 @@ from moik._machine import available_cores
 
 ENV_SWITCH = "MOIK_BACKGROUND_COMPILE"
 CHILD_MODULE = "moik.warmup"  # what the child runs (``python -m``)
-MIN_IDLE = 0.5  # CPUs the last minute's load average must leave idle for a child to start
+MIN_IDLE = 0.5  # CPUs that must be idle (idle_cpus) for a child to start
 
 
 IDLE_WINDOW = 0.1  # seconds over which idle CPU time is measured (idle_cpus)

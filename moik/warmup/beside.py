@@ -27,6 +27,16 @@ child build the solve's own checker (pickled: the same collision set, of the sam
 type) and call that test once, while the parent compiles the FK and LM kernels; the
 ``moik`` command starts it before a ``solve`` with ``--scene`` or ``--self-collision``.
 
+``"collision-stand-in"``: the same distance test on a stand-in collision set of the solve's
+numba type, so that the child starts before the solve's checker exists (building it reads
+the arm's meshes and compiles its off-chain frames: seconds in which the child would
+wait). :func:`beside_collision_early` guesses the type from the command line (a
+:class:`~moik.collision.compiled.CompoundSet` for self pairs alone, a
+:class:`~moik.collision.compiled.CollisionSet` with a scene: true of the catalog's arms but
+iiwa14 with a scene); :func:`beside_collision` given that child keeps it where the
+checker's set is of the guessed type, and otherwise stops it and starts
+``"collision-leaves"`` on the checker.
+
 ``"pareto-search"``: a cold first Pareto solve of a redundant arm
 (:func:`~moik.solver.pareto.solve_ik_pareto`) compiles two independent families one
 after the other: the kinematic kernels (the Levenberg-Marquardt start loop of its
@@ -50,6 +60,7 @@ from __future__ import annotations
 import importlib
 import inspect
 from collections.abc import Callable
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -58,6 +69,8 @@ from pymoo.core.problem import Problem
 from moik.algorithms import get_algorithm
 from moik.algorithms.archive.fronts import nondominated_mask
 from moik.algorithms.registry import accepted_parameters
+from moik.collision.compiled import CollisionSet, CompoundSet, collision_set
+from moik.collision.distance import BOX, CAPSULE, HULL
 from moik.collision.kernels import distance_below, distance_scratch
 from moik.collision.model import CollisionChecker
 from moik.kinematics.criteria import CRITERIA, joint_distance
@@ -186,14 +199,64 @@ def beside_solve(robot: Robot, target=None) -> background.Background | None:
     return background.start(family, {"robot": robot}, [kernel(path) for path in probes])
 
 
-def beside_collision(checker: CollisionChecker) -> background.Background | None:
+def beside_collision(checker: CollisionChecker, early: StandIn | None = None
+                     ) -> background.Background | None:
     """Start the ``"collision-leaves"`` child for a first collision-aware solve checked by
     ``checker`` (a :class:`~moik.collision.CollisionChecker`; module docstring), or return
-    None where it cannot help (:mod:`moik.warmup.background`)."""
+    None where it cannot help (:mod:`moik.warmup.background`). ``early``: the
+    ``"collision-stand-in"`` child started before the checker existed
+    (:func:`beside_collision_early`), kept where it compiles the checker's set type."""
     if not isinstance(checker, CollisionChecker) or checker.n_pairs == 0:
+        if early is not None:
+            early.child.stop()
         return None
+    if early is not None:
+        if isinstance(checker.compiled, CompoundSet) == early.compound:
+            return early.child
+        early.child.stop()  # a set of the other type: its kernels would be of no use
     probes = [kernel(path) for path in COLLISION_PROBES]
     return background.start("collision-leaves", {"checker": checker}, probes)
+
+
+@dataclass(frozen=True)
+class StandIn:
+    """A running ``"collision-stand-in"`` child and the set type it compiles."""
+
+    child: background.Background
+    compound: bool  # CompoundSet (else CollisionSet)
+
+
+def beside_collision_early(robot: Robot, *, scene: bool) -> StandIn | None:
+    """Start the ``"collision-stand-in"`` child for a first collision-aware solve of
+    ``robot`` (``scene``: with obstacles) before its checker is built (module docstring), or
+    return None where it cannot help."""
+    if not isinstance(robot, Robot):
+        return None
+    compound = not scene
+    child = background.start("collision-stand-in", {"robot": robot, "compound": compound},
+                             [kernel(path) for path in COLLISION_PROBES])
+    return None if child is None else StandIn(child, compound)
+
+
+def stand_in_set(robot: Robot, compound: bool) -> CollisionSet:
+    """A collision set of ``robot``'s chain of the numba type a checker's has: two shapes
+    on the first two joints' frames (a capsule and a hull: a
+    :class:`~moik.collision.compiled.CompoundSet`; a box and a capsule: a
+    :class:`~moik.collision.compiled.CollisionSet`) and their pair."""
+    tetra = 0.05 * np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
+    kinds = [CAPSULE, HULL] if compound else [BOX, CAPSULE]
+    return collision_set(chain=robot.chain_model, body=np.array([1, min(2, robot.dof)]),
+                         local=np.tile(np.eye(4), (2, 1, 1)), kinds=np.array(kinds),
+                         sizes=np.array([[0.05, 0.1, 0.05], [0.05, 0.1, 0.0]]),
+                         pairs=np.array([[0, 1]]), hull_points=tetra,
+                         hull_ranges=np.array([[0, 4]]))
+
+
+def collision_stand_in(robot: Robot, compound: bool) -> None:
+    """The ``"collision-stand-in"`` child: the distance test on :func:`stand_in_set`."""
+    cs = stand_in_set(robot, compound)
+    q = np.ascontiguousarray((robot.lower + robot.upper) / 2.0, dtype=np.float64)
+    distance_below(cs, q, distance_scratch(cs), 0.0)
 
 
 def collision_leaves(checker: CollisionChecker) -> None:
@@ -235,6 +298,7 @@ def front_leaves(robot: Robot) -> None:
 
 BESIDE: dict[str, Callable[..., None]] = {"front-leaves": front_leaves,
                                           "collision-leaves": collision_leaves,
+                                          "collision-stand-in": collision_stand_in,
                                           "pareto-search": pareto_search,
                                           "solve-leaves": solve_leaves}
 """Each background family's child workload, by name (run by ``python -m moik.warmup``)."""

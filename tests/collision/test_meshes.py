@@ -2,11 +2,13 @@
 
 import os
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
 
-from moik.collision.meshes import package_search, read_mesh, resolve_mesh
+import moik
+from moik.collision.meshes import binary_stl, package_search, read_mesh, resolve_mesh
 from moik.exceptions import GeometryError, MoikError
 
 trimesh = pytest.importorskip("trimesh")
@@ -94,11 +96,51 @@ def test_bad_meshes_are_clear_errors(tmp_path):
         read_mesh(box, link="l", scale=(0.0, 1.0, 1.0))
 
 
-def test_without_trimesh_the_error_says_what_to_install(package, monkeypatch):
+def test_without_trimesh_the_error_says_what_to_install(package, monkeypatch, tmp_path):
+    """A binary STL is read without trimesh (numpy); any other file needs it."""
     _, mesh = package
+    obj = tmp_path / "tri.obj"
+    obj.write_text("v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nf 1 2 3\n")
     monkeypatch.setitem(sys.modules, "trimesh", None)
+    assert read_mesh(mesh, link="l").faces.shape == (12, 3)
     with pytest.raises(MoikError, match="needs trimesh.*pip install"):
-        read_mesh(mesh, link="l")
+        read_mesh(obj, link="l")
+
+
+FOLDERS = (Path(moik.__file__).parent, Path(__file__).parents[1] / "data")
+STL_FILES = sorted(path for folder in FOLDERS for path in folder.rglob("*")
+                   if path.suffix.lower() == ".stl")
+
+
+def test_binary_stl_gives_the_arrays_trimesh_reads():
+    """Every binary STL that moik ships or tests with (its arms' collision meshes): the
+    numpy reader's vertices and faces are trimesh's (unprocessed), to the bit."""
+    read = 0
+    for path in STL_FILES:
+        arrays = binary_stl(path.read_bytes())
+        if arrays is None:
+            continue
+        loaded = trimesh.load(str(path), force="mesh", process=False)
+        np.testing.assert_array_equal(arrays[0], np.asarray(loaded.vertices, dtype=float))
+        np.testing.assert_array_equal(arrays[1], np.asarray(loaded.faces))
+        read += 1
+    assert read >= 20
+
+
+def test_an_ascii_or_truncated_stl_is_left_to_trimesh(tmp_path):
+    box = trimesh.creation.box(extents=(0.1, 0.2, 0.3))
+    text = trimesh.exchange.stl.export_stl_ascii(box).encode()
+    data = trimesh.exchange.stl.export_stl(box)
+    assert binary_stl(text) is None and binary_stl(data[:-10]) is None
+    assert binary_stl(data[:80] + bytes(4)) is None  # no triangle
+    ascii_file = tmp_path / "box.stl"
+    ascii_file.write_bytes(text)
+    np.testing.assert_allclose(np.ptp(read_mesh(ascii_file, link="l").vertices, axis=0),
+                               [0.1, 0.2, 0.3])
+    truncated = tmp_path / "cut.stl"
+    truncated.write_bytes(data[:-10])
+    with pytest.raises(GeometryError, match="link 'l'.*cut.stl"):
+        read_mesh(truncated, link="l")
 
 
 def test_a_mesh_path_that_is_not_a_regular_file_is_named_so(tmp_path):

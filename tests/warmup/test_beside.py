@@ -145,8 +145,8 @@ def test_a_cold_first_pareto_solve_loads_the_algorithm_kernels_the_child_compile
 
 
 def test_every_background_family_has_a_child_workload():
-    assert set(beside.BESIDE) == {"collision-leaves", "front-leaves", "pareto-search",
-                                  "solve-leaves"}
+    assert set(beside.BESIDE) == {"collision-leaves", "collision-stand-in", "front-leaves",
+                                  "pareto-search", "solve-leaves"}
 
 
 def test_starts_the_solve_leaves_child_for_the_arm(fake_popen):

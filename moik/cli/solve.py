@@ -24,7 +24,8 @@ from moik.problems.targets import Target
 from moik.robots import Robot
 from moik.solver import solve_ik
 from moik.solver.session import pose_errors
-from moik.warmup.beside import beside_collision, beside_collision_early, beside_solve
+from moik.warmup.beside import beside_solve
+from moik.warmup.beside_collision import beside_collision, beside_collision_early
 
 PLOT_FORMATS = (".png", ".pdf", ".svg")
 

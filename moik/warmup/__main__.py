@@ -1,8 +1,11 @@
 """``python -m moik.warmup``: a background family's child (:mod:`moik.warmup.background`)."""
 
+import importlib
+
+from moik.warmup import BESIDE
 from moik.warmup.background import child_arguments
-from moik.warmup.beside import BESIDE
 
 if __name__ == "__main__":
     family, arguments = child_arguments()
-    BESIDE[family](**arguments)
+    module, name = BESIDE[family].split(":")
+    getattr(importlib.import_module(module), name)(**arguments)

@@ -1,5 +1,6 @@
 """Background families: kernels a child process compiles beside a cold first use
-(:mod:`moik.warmup.background`), each named by a string (:data:`BESIDE`).
+(:mod:`moik.warmup.background`), each named by a string (:data:`moik.warmup.BESIDE`; the
+collision-aware solve's are in :mod:`moik.warmup.beside_collision`).
 
 ``"solve-leaves"``: a cold first :func:`~moik.solver.solve_ik.solve_ik` compiles the start
 loop (:func:`~moik.solver.starts.run_starts`) as one tree, one kernel at a time, each
@@ -17,25 +18,6 @@ runs no start loop: its cold first solve compiles the weighted-sum front
 check of the answer. :func:`beside_solve` given such a target has the child compile only
 the damped step, that batch FK and that check: on two CPUs a child compiling kernels the
 parent never needs takes CPU time from it.
-
-``"collision-leaves"``: a cold first collision-aware solve compiles the start loop of a
-plain solve and the collision test it calls on each exact end between compiled runs
-(:mod:`moik.solver.tested_starts`; the answers' distances too, row by row), whose
-distance kernels (the pairs' bounds, GJK on the hulls, the box and primitive distances:
-about half of that solve's compiling) nothing else calls. :func:`beside_collision` has a
-child build the solve's own checker (pickled: the same collision set, of the same numba
-type) and call that test once, while the parent compiles the FK and LM kernels; the
-``moik`` command starts it before a ``solve`` with ``--scene`` or ``--self-collision``.
-
-``"collision-stand-in"``: the same distance test on a stand-in collision set of the solve's
-numba type, so that the child starts before the solve's checker exists (building it reads
-the arm's meshes and compiles its off-chain frames: seconds in which the child would
-wait). :func:`beside_collision_early` guesses the type from the command line (a
-:class:`~moik.collision.compiled.CompoundSet` for self pairs alone, a
-:class:`~moik.collision.compiled.CollisionSet` with a scene: true of the catalog's arms but
-iiwa14 with a scene); :func:`beside_collision` given that child keeps it where the
-checker's set is of the guessed type, and otherwise stops it and starts
-``"collision-leaves"`` on the checker.
 
 ``"pareto-search"``: a cold first Pareto solve of a redundant arm
 (:func:`~moik.solver.pareto.solve_ik_pareto`) compiles two independent families one
@@ -59,8 +41,6 @@ from __future__ import annotations
 
 import importlib
 import inspect
-from collections.abc import Callable
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -69,10 +49,6 @@ from pymoo.core.problem import Problem
 from moik.algorithms import get_algorithm
 from moik.algorithms.archive.fronts import nondominated_mask
 from moik.algorithms.registry import accepted_parameters
-from moik.collision.compiled import CollisionSet, CompoundSet, collision_set
-from moik.collision.distance import BOX, CAPSULE, HULL
-from moik.collision.kernels import distance_below, distance_scratch
-from moik.collision.model import CollisionChecker
 from moik.kinematics.criteria import CRITERIA, joint_distance
 from moik.kinematics.jacobian import parts_and_jacobian
 from moik.problems.pareto_ik import ParetoIK
@@ -92,8 +68,6 @@ LEAF_PROBES = ("moik.solver.starts:run_starts", "moik.solver.lm:damped_step")
 """The start loop and a leaf the ``"solve-leaves"`` child writes: both cached, no child."""
 FRONT_PROBES = ("moik.solver.starts:lm_front", "moik.solver.lm:damped_step")
 """The front's loop and a leaf the ``"front-leaves"`` child writes."""
-COLLISION_PROBES = ("moik.collision.kernels:distance_below",)
-"""The collision test of a start's end, which the ``"collision-leaves"`` child writes."""
 METHOD_PROBES = {"moeosma": "moik.algorithms.moo.moeosma_kernels:generation_draws"}
 """A kernel of each algorithm whose compiled kernels the child writes (``module:name``):
 a family all of whose probes are cached starts no child."""
@@ -199,74 +173,6 @@ def beside_solve(robot: Robot, target=None) -> background.Background | None:
     return background.start(family, {"robot": robot}, [kernel(path) for path in probes])
 
 
-def beside_collision(checker: CollisionChecker, early: StandIn | None = None
-                     ) -> background.Background | None:
-    """Start the ``"collision-leaves"`` child for a first collision-aware solve checked by
-    ``checker`` (a :class:`~moik.collision.CollisionChecker`; module docstring), or return
-    None where it cannot help (:mod:`moik.warmup.background`). ``early``: the
-    ``"collision-stand-in"`` child started before the checker existed
-    (:func:`beside_collision_early`), kept where it compiles the checker's set type."""
-    if not isinstance(checker, CollisionChecker) or checker.n_pairs == 0:
-        if early is not None:
-            early.child.stop()
-        return None
-    if early is not None:
-        if isinstance(checker.compiled, CompoundSet) == early.compound:
-            return early.child
-        early.child.stop()  # a set of the other type: its kernels would be of no use
-    probes = [kernel(path) for path in COLLISION_PROBES]
-    return background.start("collision-leaves", {"checker": checker}, probes)
-
-
-@dataclass(frozen=True)
-class StandIn:
-    """A running ``"collision-stand-in"`` child and the set type it compiles."""
-
-    child: background.Background
-    compound: bool  # CompoundSet (else CollisionSet)
-
-
-def beside_collision_early(robot: Robot, *, scene: bool) -> StandIn | None:
-    """Start the ``"collision-stand-in"`` child for a first collision-aware solve of
-    ``robot`` (``scene``: with obstacles) before its checker is built (module docstring), or
-    return None where it cannot help."""
-    if not isinstance(robot, Robot):
-        return None
-    compound = not scene
-    child = background.start("collision-stand-in", {"robot": robot, "compound": compound},
-                             [kernel(path) for path in COLLISION_PROBES])
-    return None if child is None else StandIn(child, compound)
-
-
-def stand_in_set(robot: Robot, compound: bool) -> CollisionSet:
-    """A collision set of ``robot``'s chain of the numba type a checker's has: two shapes
-    on the first two joints' frames (a capsule and a hull: a
-    :class:`~moik.collision.compiled.CompoundSet`; a box and a capsule: a
-    :class:`~moik.collision.compiled.CollisionSet`) and their pair."""
-    tetra = 0.05 * np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
-    kinds = [CAPSULE, HULL] if compound else [BOX, CAPSULE]
-    return collision_set(chain=robot.chain_model, body=np.array([1, min(2, robot.dof)]),
-                         local=np.tile(np.eye(4), (2, 1, 1)), kinds=np.array(kinds),
-                         sizes=np.array([[0.05, 0.1, 0.05], [0.05, 0.1, 0.0]]),
-                         pairs=np.array([[0, 1]]), hull_points=tetra,
-                         hull_ranges=np.array([[0, 4]]))
-
-
-def collision_stand_in(robot: Robot, compound: bool) -> None:
-    """The ``"collision-stand-in"`` child: the distance test on :func:`stand_in_set`."""
-    cs = stand_in_set(robot, compound)
-    q = np.ascontiguousarray((robot.lower + robot.upper) / 2.0, dtype=np.float64)
-    distance_below(cs, q, distance_scratch(cs), 0.0)
-
-
-def collision_leaves(checker: CollisionChecker) -> None:
-    """The ``"collision-leaves"`` child: the distance test of an end (every distance kernel
-    it calls) on the solve's own collision set, at the middle of the joint ranges."""
-    cs = checker.compiled
-    q = np.ascontiguousarray((checker.robot.lower + checker.robot.upper) / 2.0, dtype=np.float64)
-    distance_below(cs, q, distance_scratch(cs), 0.0)
-
-
 def _stand_in_start(robot: Robot) -> tuple[Any, Any, np.ndarray]:
     """A context and workspace of the numba types a plain solve's have (any target: the
     types do not depend on it), and a joint vector to call the leaves at."""
@@ -294,11 +200,3 @@ def front_leaves(robot: Robot) -> None:
     damped_step(ctx, ws, LAMBDA0, q)
     robot.fk_parts(q[None])
     robot.check_q(q)
-
-
-BESIDE: dict[str, Callable[..., None]] = {"front-leaves": front_leaves,
-                                          "collision-leaves": collision_leaves,
-                                          "collision-stand-in": collision_stand_in,
-                                          "pareto-search": pareto_search,
-                                          "solve-leaves": solve_leaves}
-"""Each background family's child workload, by name (run by ``python -m moik.warmup``)."""

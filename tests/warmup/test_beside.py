@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 import moik
-from moik import _jit
+from moik import _jit, warmup
 from moik.algorithms.archive.fronts import nondominated_mask
 from moik.kinematics.criteria import Criterion
 from moik.robots import get_robot
@@ -145,8 +145,10 @@ def test_a_cold_first_pareto_solve_loads_the_algorithm_kernels_the_child_compile
 
 
 def test_every_background_family_has_a_child_workload():
-    assert set(beside.BESIDE) == {"collision-leaves", "collision-stand-in", "front-leaves",
+    assert set(warmup.BESIDE) == {"collision-leaves", "collision-stand-in", "front-leaves",
                                   "pareto-search", "solve-leaves"}
+    for path in warmup.BESIDE.values():
+        assert callable(beside.kernel(path))
 
 
 def test_starts_the_solve_leaves_child_for_the_arm(fake_popen):

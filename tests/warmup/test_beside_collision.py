@@ -13,7 +13,7 @@ from moik.collision import Box, CollisionChecker, HalfSpace, Scene
 from moik.robots import get_robot
 from moik.robots.transforms import translation
 from moik.solver.collision import collision_guard, default_model
-from moik.warmup.beside import (
+from moik.warmup.beside_collision import (
     beside_collision,
     beside_collision_early,
     collision_stand_in,
@@ -37,7 +37,7 @@ def robot_model_of(name: str):
 COLD_COLLISION = COLD_SOLVE.replace(
     "from moik.warmup.beside import beside_solve",
     "from moik.solver.collision import collision_guard\n"
-    "from moik.warmup.beside import beside_collision").replace(
+    "from moik.warmup.beside_collision import beside_collision").replace(
     'robot = moik.get_robot("puma560")\nbeside_solve(robot)',
     'robot = moik.get_robot("panda")\nguard = collision_guard(robot, self_collision=True)\n'
     "beside_collision(guard.checker)").replace(

@@ -195,6 +195,22 @@ def is_cached(dispatcher: Any) -> bool:
     return False
 
 
+def is_cached_for(dispatcher: Any, signature: tuple) -> bool:
+    """Whether ``dispatcher`` (a :func:`jit` kernel) has a version for the argument types
+    ``signature`` (``tuple(dispatcher.typeof_pyval(a) for a in args)``) compiled in this
+    process, or in the kernel cache from the current sources (a call then loads it)."""
+    if signature in dispatcher.overloads:
+        return True
+    cache = getattr(dispatcher, "_cache", None)
+    if not isinstance(cache, KernelCache):
+        return False
+    digest = sources_digest()
+    with contextlib.suppress(Exception):  # an unreadable index: as if empty
+        return any(key[0] == signature and key[-1] == digest
+                   for key in cache._cache_file._load_index())
+    return False
+
+
 WAIT_LIMIT = 120.0  # seconds a kernel waits for another process compiling it (at most)
 _ELSEWHERE: list[tuple[tuple[Any, ...], Callable[[float], object]]] = []
 

@@ -9,6 +9,8 @@ already found.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from moik._jit import jit, kernel_array
@@ -20,7 +22,7 @@ from moik.solver.collision import CollisionGuard
 from moik.solver.context import ik_context
 from moik.solver.polish import polish as polish_q
 from moik.solver.starts import CHECK, PATIENT, found_table, is_distinct, run_starts
-from moik.solver.tested_starts import run_tested_starts
+from moik.solver.tested_starts import run_collision_starts
 
 
 def pose_errors(robot: Robot, target, Q: np.ndarray, *, reference: bool = False
@@ -101,9 +103,10 @@ class SolveSession:
         self.n_rejected = 0  # exact answers rejected for collision
         # why no exact answer can keep the clearance: (pair, its distance), set when proven
         self.collision_proof: tuple[tuple[str, str] | None, float] | None = None
-        # the start loop's context has no collision set: with a guard the loop runs as
-        # run_tested_starts (the compiled test between compiled runs of a plain loop)
+        # the start loop's context; with a guard also one with the collision set (the loop
+        # runs on one or the other: moik.solver.tested_starts.run_collision_starts)
         self.ctx = ik_context(robot, target, stop=tol.stop, tol=tol, distinct=distinct)
+        self._collision_ctx: Any = None
 
     def refine(self, q0: np.ndarray, do_polish: bool, max_nfev: int = 60) -> None:
         """Least-squares polish of ``q0`` (or only clipping), then :meth:`consider`."""
@@ -126,7 +129,7 @@ class SolveSession:
         Each converged end is re-checked by an FK pass of its own in the same compiled
         call (:func:`~moik.solver.starts.run_starts`), as :meth:`consider` does; with a
         collision check, an exact end in collision is rejected too (the loop goes on with
-        the next start; :func:`~moik.solver.tested_starts.run_tested_starts`), counted in
+        the next start; :func:`~moik.solver.tested_starts.run_collision_starts`), counted in
         :attr:`n_rejected`, the farthest from contact kept as :attr:`colliding`."""
         dof, n_known = self.robot.dof, len(self.found)
         starts = kernel_array(Q0)  # overwritten by the ends: the callers' rows are fresh
@@ -138,9 +141,9 @@ class SolveSession:
         if self.guard is None or self.guard.checker.n_pairs == 0:
             n_found, n_eval, used = run_starts(self.ctx, starts, policy, found, best, ends)
         else:
-            n_found, n_eval, used = run_tested_starts(
-                self.ctx, self.guard.checker.compiled, self.guard.clearance, starts, policy,
-                found, best, ends)
+            n_found, n_eval, used = run_collision_starts(
+                self.ctx, self.collision_context, self.guard.checker.compiled,
+                self.guard.clearance, starts, policy, found, best, ends)
         self.n_eval += int(n_eval)
         for row in found[n_known:n_found]:
             self.found.append(row[:dof])
@@ -156,6 +159,16 @@ class SolveSession:
                 if self.colliding is None or d[k] > self.colliding[0]:
                     self.colliding = (float(d[k]), starts[k].copy())
         return len(self.found) > n_known
+
+    def collision_context(self) -> Any:
+        """The solve's context with the guard's collision set (built at the first call)."""
+        if self._collision_ctx is None:
+            assert self.guard is not None
+            self._collision_ctx = ik_context(
+                self.robot, self.target, stop=self.tol.stop, tol=self.tol,
+                distinct=self.distinct, collision=self.guard.checker.compiled,
+                clearance=self.guard.clearance)
+        return self._collision_ctx
 
     def _collision_free(self, Q: np.ndarray) -> np.ndarray:
         """Which exact answers keep the clearance; the others are counted, the farthest

@@ -33,7 +33,9 @@ from moik.collision.compiled import CollisionSet, CompoundSet, collision_set
 from moik.collision.distance import BOX, CAPSULE, HULL
 from moik.collision.kernels import distance_below, distance_scratch
 from moik.collision.model import CollisionChecker
+from moik.problems.targets import as_target
 from moik.robots import Robot
+from moik.solver.context import ik_context
 from moik.warmup import background
 
 COLLISION_PROBES = (distance_below,)
@@ -93,8 +95,14 @@ def stand_in_set(robot: Robot, compound: bool) -> CollisionSet:
 
 
 def collision_stand_in(robot: Robot, compound: bool) -> None:
-    """The ``"collision-stand-in"`` child: the distance test on :func:`stand_in_set`."""
+    """The ``"collision-stand-in"`` child: the constructors of a solve's contexts, without
+    and with the collision set (:class:`~moik.solver.session.SolveSession` builds them
+    early, while the child has time to spare; any target: the types do not depend on it),
+    then the distance test on :func:`stand_in_set`."""
     cs = stand_in_set(robot, compound)
+    for collision in (None, cs):
+        ik_context(robot, as_target(np.zeros(3)), stop=(0.0, 0.0), tol=(0.0, 0.0),
+                   distinct=0.1, collision=collision, clearance=0.0)
     q = np.ascontiguousarray((robot.lower + robot.upper) / 2.0, dtype=np.float64)
     distance_below(cs, q, distance_scratch(cs), 0.0)
 

@@ -81,3 +81,49 @@ def test_rejections_happen_and_are_kept_apart(arm):
         rejected += int(np.sum(~np.isnan(d) & (d < 0.02)))
         kept += tested[0][0]
     assert rejected > 0 and kept > 0
+
+
+def test_the_compiled_loop_is_called_where_it_is_at_hand(arm, monkeypatch):
+    """run_collision_starts: run_starts on the collision context once that loop is compiled
+    (here, or in the kernel cache), run_tested_starts before; the same answers."""
+    from moik.solver import tested_starts
+
+    robot, checker = arm
+    rng = np.random.default_rng(5)
+    target = as_target(robot.fk(robot.random_q(1, rng=rng)[0]))
+    starts = robot.random_q(10, rng=rng)
+    ctx, cctx = (ik_context(robot, target, stop=STOP, tol=TOL, distinct=0.1,
+                            collision=cs, clearance=0.02) for cs in (None, checker.compiled))
+    calls = []
+
+    def tested(*args):
+        calls.append("tested")
+        return run_tested_starts(*args)
+
+    monkeypatch.setattr(tested_starts, "run_tested_starts", tested)
+    answers = []
+    for ready in (False, True):
+        monkeypatch.setattr(tested_starts, "loop_at_hand", lambda kind, sig, r=ready: r)
+        found, best = found_table(2, robot.dof), np.full(robot.dof + 1, np.inf)
+        ends = np.full((len(starts), 3), -7.0)
+        counts = tested_starts.run_collision_starts(ctx, lambda: cctx, checker.compiled, 0.02,
+                                                    starts.copy(), (CHECK, 2**62), found,
+                                                    best, ends)
+        answers.append((counts, found, best, ends))
+    assert calls == ["tested"]
+    assert answers[0][0] == answers[1][0]
+    for a, b in zip(answers[0][1:], answers[1][1:], strict=True):
+        np.testing.assert_array_equal(a, b)
+
+
+def test_is_cached_for_knows_a_signature_compiled_here(arm):
+    from numba import types
+
+    from moik import _jit
+    from moik.solver.starts import solution_cost
+
+    robot, _ = arm
+    ctx = ik_context(robot, as_target(np.zeros(3)), stop=STOP, tol=TOL)
+    solution_cost(ctx)
+    assert _jit.is_cached_for(solution_cost, (solution_cost.typeof_pyval(ctx),))
+    assert not _jit.is_cached_for(solution_cost, (types.float64,))  # never compiled

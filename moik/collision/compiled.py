@@ -21,7 +21,7 @@ from numba.extending import overload
 
 from moik._jit import StructType, define_struct, jit
 from moik.collision.distance import CAPSULE, HULL
-from moik.collision.kernels import distance_below, distance_scratch
+from moik.collision.kernels import distance_below, distance_scratch, min_distances
 from moik.collision.shapes import hull_capsule
 from moik.robots.chain_model import ChainModel
 
@@ -114,6 +114,26 @@ def collision_set(*, chain: ChainModel, body: np.ndarray, local: np.ndarray, kin
     new = _new_compound_set if bounds_only(kinds, pairs, refine) else _new_set
     return new(chain, (body, local, kinds, sizes), (pairs, refine),
                (hull_points, hull_ranges, hull_caps))
+
+
+FEW_ROWS = 16  # rows whose smallest distances smallest_distances measures one by one
+
+
+def smallest_distances(cs, Q2: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Smallest distance of each row of ``Q2`` (C-contiguous float64) over the pairs of
+    ``cs`` and the pair attaining it (-1: none): :func:`~moik.collision.kernels.min_distances`,
+    or for at most :data:`FEW_ROWS` rows the same distance test row by row from Python (the
+    kernel one solve's start loop calls: a first solve compiles no batch kernel for its
+    answers' distances)."""
+    n = Q2.shape[0]
+    d, which = np.empty(n), np.empty(n, dtype=np.int64)
+    if n > FEW_ROWS:
+        min_distances(cs, Q2, d, which)
+        return d, which
+    scratch = distance_scratch(cs)
+    for i in range(n):
+        d[i], which[i] = distance_below(cs, Q2[i], scratch, np.inf)
+    return d, which
 
 
 def end_distance(cs, q, scratch, clearance):

@@ -25,7 +25,7 @@ import numpy as np
 
 from moik._validate import flag
 from moik.collision import kernels
-from moik.collision.compiled import CollisionSet, collision_set
+from moik.collision.compiled import CollisionSet, collision_set, smallest_distances
 from moik.collision.shapes import (
     Box,
     Compound,
@@ -295,9 +295,6 @@ def shape_names(model: CollisionModel) -> list[str]:
     return names
 
 
-FEW_ROWS = 16  # rows whose smallest distances are measured one by one (CollisionChecker)
-
-
 def keeps_clearance(distances, clearance: float):
     """Whether signed distances keep ``clearance`` (``distance >= clearance``; NaN never
     does): the one place moik writes this rule (a bool, or a bool array for an array)."""
@@ -406,29 +403,14 @@ class CollisionChecker:
 
     def min_distance_batch(self, Q: np.ndarray) -> np.ndarray:
         """:meth:`min_distance` of a 2-D batch without the finiteness check (hot path)."""
-        return self._smallest(self.robot.kernel_batch(Q))[0]
-
-    def _smallest(self, Q2: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Smallest distance of each row of ``Q2`` (C-contiguous float64) and the pair
-        attaining it (-1: none): :func:`~moik.collision.kernels.min_distances`, or for at
-        most :data:`FEW_ROWS` rows the same distance test row by row from here (the kernel
-        a solve's start loop calls: a first solve compiles no batch kernel for its answers)."""
-        n = Q2.shape[0]
-        d, which = np.empty(n), np.empty(n, dtype=np.int64)
-        if n > FEW_ROWS:
-            kernels.min_distances(self.compiled, Q2, d, which)
-            return d, which
-        scratch = kernels.distance_scratch(self.compiled)
-        for i in range(n):
-            d[i], which[i] = kernels.distance_below(self.compiled, Q2[i], scratch, np.inf)
-        return d, which
+        return smallest_distances(self.compiled, self.robot.kernel_batch(Q))[0]
 
     def closest_pair(self, q) -> tuple[float, tuple[str, str] | None]:
         """The smallest distance of one joint vector and the names of the pair attaining it."""
         Q = self.robot.check_q(q, "q")
         if Q.ndim != 1:
             raise GeometryError(f"closest_pair takes one joint vector, got shape {Q.shape}")
-        d, which = self._smallest(Q[None])
+        d, which = smallest_distances(self.compiled, Q[None])
         return float(d[0]), (self.pair_names[which[0]] if which[0] >= 0 else None)
 
     def min_distance_and_gradient(self, q) -> tuple[np.ndarray, np.ndarray]:

@@ -102,6 +102,8 @@ def run_collision_starts(ctx, collision_ctx: Callable[[], Any], cs, clearance: f
     ``collision_ctx()`` (the context with ``cs`` and ``clearance``, built when needed) where
     that compiled loop is at hand (module docstring), else :func:`run_tested_starts` on
     ``ctx`` (the context without a check): the same answers either way."""
+    if not hasattr(run_starts, "typeof_pyval"):  # NUMBA_DISABLE_JIT: every kernel is Python
+        return run_starts(collision_ctx(), starts, policy, found, best, ends)
     kind = type(cs)
     signature = _LOOP_SIGNATURES.get(kind)
     if signature is None:

@@ -7,8 +7,8 @@ the loop, seconds of a cold first collision-aware solve that nothing else needs.
 :func:`run_tested_starts` gives the same answers with the loop of a plain solve (a
 context without a check: the kernel a plain solve compiles) and the compiled distance
 test (:func:`~moik.collision.kernels.distance_below`, which a background child compiles
-meanwhile, :mod:`moik.warmup.beside`) called from Python between its runs: each run stops
-at its first new solution (its ``found`` table one row longer than the known ones), whose
+meanwhile: :mod:`moik.warmup.beside_collision`) called from Python between its runs: each
+run stops at its first new solution (its ``found`` table one row longer than the known ones), whose
 distance then decides whether it stays. Used by :func:`~moik.solver.solve_ik.solve_ik`
 (one target: a Python call per new solution costs microseconds); the batch keeps the
 compiled test inside its loop (:func:`~moik.solver.starts.run_batch`).

@@ -15,6 +15,7 @@ import json
 import math
 import os
 import stat
+import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import Any
 
@@ -158,3 +159,16 @@ def read_toml(path: str | Path, what: str, error: type[MoikError]) -> dict[str, 
     if why is not None and "non-finite" not in why:  # TOML's inf/nan: the config checks them
         raise error(f"{label}: holds {why}")
     return value
+
+
+def robot_xml(text: str, label: str, kind: str, error: type[MoikError]) -> ET.Element:
+    """The root ``<robot>`` element of a URDF or SRDF document (``kind``: its name in the
+    messages, with its article: ``"a URDF"``), or ``error`` naming ``label``: not XML, or
+    another root element."""
+    try:
+        root = ET.fromstring(text)
+    except ET.ParseError as exc:
+        raise error(f"cannot read {kind.split()[-1]} {label!r}: {exc}") from None
+    if root.tag != "robot":
+        raise error(f"{label!r} is not {kind} file: root element <{root.tag}>")
+    return root

@@ -27,7 +27,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import Any
 
-from moik._validate.reading import read_bytes
+from moik._validate.reading import read_bytes, robot_xml
 from moik._validate.reading import text as decoded_text
 from moik.collision.model import CollisionModel
 from moik.exceptions import GeometryError, GeometryWarning
@@ -45,13 +45,7 @@ def _root(source: Any) -> tuple[ET.Element, str]:
         label = str(source)
         text = decoded_text(read_bytes(Path(source), "SRDF", GeometryError,
                                        limit=MAX_SRDF_BYTES), f"SRDF {label!r}", GeometryError)
-    try:
-        root = ET.fromstring(text)
-    except ET.ParseError as exc:
-        raise GeometryError(f"cannot read SRDF {label!r}: {exc}") from None
-    if root.tag != "robot":
-        raise GeometryError(f"{label!r} is not an SRDF file: root element <{root.tag}>")
-    return root, label
+    return robot_xml(text, label, "an SRDF", GeometryError), label
 
 
 Rules = tuple[set[frozenset[str]], set[str], set[frozenset[str]]]

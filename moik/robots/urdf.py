@@ -35,7 +35,7 @@ from typing import Any
 
 import numpy as np
 
-from moik._validate.reading import read_bytes
+from moik._validate.reading import read_bytes, robot_xml
 from moik._validate.reading import text as decoded_text
 from moik.exceptions import MoikError, ParameterError, UnknownNameError, URDFError
 from moik.robots.chain import Robot
@@ -112,12 +112,7 @@ def _read(source) -> tuple[ET.Element, str]:
                             f"(`xacro {path.name} > {path.stem}.urdf`) and load the URDF")
         text = decoded_text(read_bytes(path, "URDF", URDFError, limit=MAX_URDF_BYTES),
                             f"URDF {label!r}", URDFError)
-    try:
-        root = ET.fromstring(text)
-    except ET.ParseError as exc:
-        raise URDFError(f"cannot read URDF {label!r}: {exc}") from None
-    if root.tag != "robot":
-        raise URDFError(f"{label!r} is not a URDF file: root element <{root.tag}>")
+    root = robot_xml(text, label, "a URDF", URDFError)
     if any(el.tag.startswith("{") and "xacro" in el.tag for el in root.iter()):
         raise URDFError(f"{label!r} contains xacro elements: run xacro first")
     return root, label

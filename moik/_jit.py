@@ -187,12 +187,16 @@ def is_cached(dispatcher: Any) -> bool:
     compiled from the current sources, for any signature; also True when it has no cache
     (nothing another process compiles could reach it)."""
     cache = getattr(dispatcher, "_cache", None)
-    if not isinstance(cache, KernelCache):
-        return True
+    return not isinstance(cache, KernelCache) or bool(_current_keys(cache))
+
+
+def _current_keys(cache: KernelCache) -> list:
+    """The index keys of ``cache`` compiled from the current sources (none where the index
+    cannot be read)."""
     digest = sources_digest()
     with contextlib.suppress(Exception):  # an unreadable index: as if empty
-        return any(key[-1] == digest for key in cache._cache_file._load_index())
-    return False
+        return [key for key in cache._cache_file._load_index() if key[-1] == digest]
+    return []
 
 
 def is_cached_for(dispatcher: Any, signature: tuple) -> bool:
@@ -202,13 +206,8 @@ def is_cached_for(dispatcher: Any, signature: tuple) -> bool:
     if signature in dispatcher.overloads:
         return True
     cache = getattr(dispatcher, "_cache", None)
-    if not isinstance(cache, KernelCache):
-        return False
-    digest = sources_digest()
-    with contextlib.suppress(Exception):  # an unreadable index: as if empty
-        return any(key[0] == signature and key[-1] == digest
-                   for key in cache._cache_file._load_index())
-    return False
+    return isinstance(cache, KernelCache) and any(key[0] == signature
+                                                  for key in _current_keys(cache))
 
 
 WAIT_LIMIT = 120.0  # seconds a kernel waits for another process compiling it (at most)

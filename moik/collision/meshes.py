@@ -181,11 +181,6 @@ def binary_stl(data: bytes) -> tuple[np.ndarray, np.ndarray] | None:
     return vertices, np.arange(3 * n, dtype=np.int64).reshape(-1, 3)
 
 
-def file_digest(path: Path) -> str:
-    """The sha256 of a file's bytes (a mesh's identity in the fit cache)."""
-    return hashlib.sha256(path.read_bytes()).hexdigest()
-
-
 def _trimesh_arrays(path: Path, what: str) -> tuple[np.ndarray, np.ndarray]:
     """The vertices and faces trimesh reads from ``path`` (unprocessed)."""
     trimesh = _trimesh()
@@ -217,7 +212,7 @@ def read_mesh(path: Path, *, link: str, scale: Any = (1.0, 1.0, 1.0)) -> Mesh:
         data = path.read_bytes()
     except OSError as exc:
         raise GeometryError(f"{what} cannot be read: {exc}") from None
-    digest = hashlib.sha256(data).hexdigest()
+    digest = hashlib.sha256(data).hexdigest()  # the mesh's identity in the fit cache
     stl = binary_stl(data) if path.suffix.lower() == ".stl" else None
     if stl is None:
         V, faces = _trimesh_arrays(path, what)

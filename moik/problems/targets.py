@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from moik._validate import flag, integer, positive, real_array
+from moik._validate import finite_array, flag, integer, positive, real_array
 from moik._validate import seed as seed_value
 from moik.exceptions import (
     NonFiniteError,
@@ -25,6 +25,7 @@ from moik.exceptions import (
 )
 from moik.kinematics.orientation import (
     ROTATION_ATOL,
+    _all_rotations,
     check_rotation,
     pose_matrix_status,
     rotation_from_eosma_euler,
@@ -207,6 +208,52 @@ def check_unit_range(target: Target, robot: Robot) -> None:
             f"{robot.name!r}, more than {UNIT_RANGE_FACTOR:g}x its reach "
             f"({robot.reach:.4g} {robot.unit}); expected a position in {robot.unit}"
         )
+
+
+def batch_targets(targets) -> tuple[np.ndarray, np.ndarray | None]:
+    """Positions ``(n, 3)`` and rotations ``(n, 3, 3)`` (or ``None``) of a batch of poses
+    ``(n, 4, 4)`` or positions ``(n, 3)``, checked; the first bad target is named."""
+    arr = finite_array("targets", targets, error=ShapeError)
+    if arr.ndim == 3 and arr.shape[1:] == (4, 4):
+        if not np.all(np.abs(arr[:, 3] - (0.0, 0.0, 0.0, 1.0)) <= 1e-8):
+            bad = int(np.flatnonzero(np.any(np.abs(arr[:, 3] - (0, 0, 0, 1)) > 1e-8, 1))[0])
+            raise TargetError(f"targets[{bad}]: pose last row must be [0, 0, 0, 1], got "
+                              f"{arr[bad, 3]}")
+        positions, rotations = arr[:, :3, 3].copy(), _batch_rotations(arr[:, :3, :3])
+    elif arr.ndim == 2 and arr.shape[1] == 3:
+        positions, rotations = arr, None
+    else:
+        raise ShapeError(f"targets must have shape (n, 4, 4) (poses) or (n, 3) (positions), "
+                         f"got {arr.shape}")
+    if len(positions) == 0:
+        raise ShapeError("targets is an empty batch: give at least one target")
+    return positions, rotations
+
+
+def _batch_rotations(R: np.ndarray) -> np.ndarray:
+    """The batch's rotations, checked; the first that is not one is named."""
+    R = np.ascontiguousarray(R)
+    try:
+        return check_rotation(R, "target rotations", batch=True)
+    except TargetError:
+        bad = next(i for i in range(len(R)) if not _all_rotations(R[i:i + 1], ROTATION_ATOL))
+        raise TargetError(f"targets[{bad}]: rotation must be a rotation matrix (orthonormal, "
+                          f"det +1), got {R[bad].tolist()}") from None
+
+
+def check_batch_reach(robot: Robot, positions: np.ndarray) -> None:
+    """Each target within :data:`UNIT_RANGE_FACTOR` times the reach
+    (as ``solve_ik`` checks one, here before any is solved), the first beyond it named."""
+    check_has_reach(robot)
+    with np.errstate(over="ignore"):  # 1e300 is simply beyond the reach (inf)
+        dist = np.linalg.norm(positions, axis=1)
+    far = np.flatnonzero(dist > UNIT_RANGE_FACTOR * robot.reach)
+    if len(far):
+        i = int(far[0])
+        raise TargetError(f"targets[{i}]: position {positions[i]} is {dist[i]:.4g} "
+                          f"{robot.unit} from the base of {robot.name!r}, more than "
+                          f"{UNIT_RANGE_FACTOR:g}x its reach ({robot.reach:.4g} {robot.unit}); "
+                          f"expected positions in {robot.unit}")
 
 
 def random_reachable_targets(robot: Robot, n: int, *, seed, with_orientation: bool = True

@@ -26,13 +26,12 @@ from typing import Any
 import numpy as np
 
 from moik._jit import kernel_array
-from moik._validate import finite_array, optional_callable
+from moik._validate import optional_callable
 from moik.collision.compiled import collision_set
-from moik.exceptions import ParameterError, ShapeError, TargetError
+from moik.exceptions import ParameterError, ShapeError
 from moik.kinematics.criteria import nearest_copies
-from moik.kinematics.orientation import ROTATION_ATOL, _all_rotations, check_rotation
 from moik.kinematics.tolerance import Tolerance
-from moik.problems.targets import UNIT_RANGE_FACTOR, Target, check_has_reach
+from moik.problems.targets import Target, batch_targets, check_batch_reach
 from moik.robots.catalog import as_robot
 from moik.robots.chain import Robot
 from moik.solver import parallel
@@ -41,7 +40,7 @@ from moik.solver.context import ik_context
 from moik.solver.options import STARTS_KEY, search_options, seed_sequence
 from moik.solver.session import pose_errors
 from moik.solver.solve_ik import FIRST_STARTS, solve_ik
-from moik.solver.start_streams import draw_rows, start_streams
+from moik.solver.start_streams import draw_rows, start_streams, streams_match
 from moik.solver.starts import PATIENT, run_batch
 
 
@@ -124,51 +123,6 @@ def _child(root: np.random.SeedSequence, i: int) -> np.random.SeedSequence:
                                   pool_size=root.pool_size)
 
 
-def _targets(targets) -> tuple[np.ndarray, np.ndarray | None]:
-    """Positions ``(n, 3)`` and rotations ``(n, 3, 3)`` (or ``None``) of a batch."""
-    arr = finite_array("targets", targets, error=ShapeError)
-    if arr.ndim == 3 and arr.shape[1:] == (4, 4):
-        if not np.all(np.abs(arr[:, 3] - (0.0, 0.0, 0.0, 1.0)) <= 1e-8):
-            bad = int(np.flatnonzero(np.any(np.abs(arr[:, 3] - (0, 0, 0, 1)) > 1e-8, 1))[0])
-            raise TargetError(f"targets[{bad}]: pose last row must be [0, 0, 0, 1], got "
-                              f"{arr[bad, 3]}")
-        positions, rotations = arr[:, :3, 3].copy(), _rotations(arr[:, :3, :3])
-    elif arr.ndim == 2 and arr.shape[1] == 3:
-        positions, rotations = arr, None
-    else:
-        raise ShapeError(f"targets must have shape (n, 4, 4) (poses) or (n, 3) (positions), "
-                         f"got {arr.shape}")
-    if len(positions) == 0:
-        raise ShapeError("targets is an empty batch: give at least one target")
-    return positions, rotations
-
-
-def _rotations(R: np.ndarray) -> np.ndarray:
-    """The batch's rotations, checked; the first that is not one is named."""
-    R = np.ascontiguousarray(R)
-    try:
-        return check_rotation(R, "target rotations", batch=True)
-    except TargetError:
-        bad = next(i for i in range(len(R)) if not _all_rotations(R[i:i + 1], ROTATION_ATOL))
-        raise TargetError(f"targets[{bad}]: rotation must be a rotation matrix (orthonormal, "
-                          f"det +1), got {R[bad].tolist()}") from None
-
-
-def _check_reach(robot: Robot, positions: np.ndarray) -> None:
-    """Each target within :data:`~moik.problems.targets.UNIT_RANGE_FACTOR` times the reach
-    (as ``solve_ik`` checks one, here before any is solved), the first beyond it named."""
-    check_has_reach(robot)
-    with np.errstate(over="ignore"):  # 1e300 is simply beyond the reach (inf)
-        dist = np.linalg.norm(positions, axis=1)
-    far = np.flatnonzero(dist > UNIT_RANGE_FACTOR * robot.reach)
-    if len(far):
-        i = int(far[0])
-        raise TargetError(f"targets[{i}]: position {positions[i]} is {dist[i]:.4g} "
-                          f"{robot.unit} from the base of {robot.name!r}, more than "
-                          f"{UNIT_RANGE_FACTOR:g}x its reach ({robot.reach:.4g} {robot.unit}); "
-                          f"expected positions in {robot.unit}")
-
-
 def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=None,
                    self_collision: bool = False, clearance: float = 0.0, collision=None,
                    workers: int | None = None, client=None,
@@ -221,8 +175,8 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=No
                       "collision": collision}
     guard = collision_guard(robot, **collision_args)  # validated before the targets
     Tolerance.of(tol, robot.reach)
-    positions, rotations = _targets(targets)
-    _check_reach(robot, positions)
+    positions, rotations = batch_targets(targets)
+    check_batch_reach(robot, positions)
     n = len(positions)
     qc = None
     if q_current is not None:
@@ -358,11 +312,15 @@ def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
 
     with pool or contextlib.nullcontext():
         if opts.polish and (qc is not None or opts.starts):
+            # once for every chunk (Python that would hold the GIL once per chunk)
+            common = (Target(positions[0], None if rotations is None else rotations[0]),
+                      streams_match(job.root, STARTS_KEY, job.first))
+
             def chunk(lo: int, hi: int) -> None:  # a thread's rows: compiled calls, no GIL
                 own = None if guard is None else _own_guard(guard)
                 _first_stage(robot, (positions[lo:hi], None if rotations is None
                                      else rotations[lo:hi]), None if qc is None else qc[lo:hi],
-                             opts, tolerance, (job.root, job.first + lo), own,
+                             opts, tolerance, (job.root, job.first + lo, common), own,
                              (out_Q[lo:hi], solved[lo:hi], n_evals[lo:hi]))
                 done = lo + np.flatnonzero(solved[lo:hi])
                 if qc is not None and len(done):
@@ -419,12 +377,14 @@ def _first_stage(robot, targets, qc, opts, tol, seeds, guard, out):
     :data:`~moik.solver.solve_ik.FIRST_STARTS` random starts, then the rest for the unsolved.
     With a collision ``guard`` an end in collision is rejected inside the loop, as
     ``solve_ik``'s start loop does. ``targets = (positions, rotations)``; ``seeds = (root,
-    first)``: row ``i``'s starts are those of child ``first + i`` of ``root``; ``out =
-    (out_Q, solved, n_evals)``, written. Its own context: threads run it on chunks."""
-    (positions, rotations), (root, first_child) = targets, seeds
+    first, (target, checked))``: row ``i``'s starts are those of child ``first + i`` of
+    ``root``; ``target``, any target of the batch (the context's first, replaced row by
+    row), and ``checked``, :func:`~moik.solver.start_streams.streams_match` of the batch,
+    are the same for every chunk; ``out = (out_Q, solved, n_evals)``, written. Its own
+    context: threads run it on chunks."""
+    (positions, rotations), (root, first_child, (first, checked)) = targets, seeds
     out_Q, solved, n_evals = out
     n, dof = len(positions), robot.dof
-    first = Target(positions[0], None if rotations is None else rotations[0])
     ctx = ik_context(robot, first, stop=tol.stop, distinct=opts.distinct,
                      chain=robot.new_chain_model(),  # the thread's own (module doc)
                      collision=None if guard is None else guard.checker.compiled,
@@ -435,7 +395,8 @@ def _first_stage(robot, targets, qc, opts, tol, seeds, guard, out):
     if qc is not None:
         current = np.array(qc[:, None], dtype=np.float64, copy=True)  # run_batch moves it
         run_batch(ctx, current, targets, (PATIENT, opts.max_evals), found, n_evals)
-    states = start_streams(root, STARTS_KEY, n, first_child)  # solve_ik's start generators
+    states = start_streams(root, STARTS_KEY, n, first_child,  # solve_ik's start generators
+                           checked=checked)
     first_n = min(opts.starts, FIRST_STARTS)  # then the rest, for the unsolved only
     run_batch(ctx, draw_rows(states, np.arange(n), first_n, robot.lower, robot.upper),
               targets, (0, opts.max_evals), found, n_evals)

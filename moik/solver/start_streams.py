@@ -215,13 +215,22 @@ def numpy_state(root: np.random.SeedSequence, key: int, i: int) -> np.ndarray:
                     dtype=np.uint64)
 
 
-def start_streams(root: np.random.SeedSequence, key: int, n: int, first: int = 0
-                  ) -> np.ndarray:
+def streams_match(root: np.random.SeedSequence, key: int, i: int) -> bool:
+    """Whether :func:`streams` gives stream ``i`` as numpy seeds it (:func:`numpy_state`)."""
+    return bool(np.array_equal(streams(root, key, 1, i)[0], numpy_state(root, key, i)))
+
+
+def start_streams(root: np.random.SeedSequence, key: int, n: int, first: int = 0, *,
+                  checked: bool | None = None) -> np.ndarray:
     """:func:`streams` (of the children ``first .. first + n - 1``), checked on the first
     against numpy's seeding (should numpy ever seed otherwise, every stream is taken from
-    numpy's, slowly but equal)."""
+    numpy's, slowly but equal). ``checked``: the check's answer where the caller has it
+    already (:func:`streams_match` once for a batch cut in chunks: its Python, about
+    0.1 ms, would otherwise hold the GIL once per chunk)."""
     states = streams(root, key, n, first)
-    if not np.array_equal(states[0], numpy_state(root, key, first)):
+    if checked is None:
+        checked = bool(np.array_equal(states[0], numpy_state(root, key, first)))
+    if not checked:
         states = np.array([numpy_state(root, key, first + i) for i in range(n)],
                           dtype=np.uint64)
     return states

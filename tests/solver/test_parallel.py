@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from moik.exceptions import ParameterError
-from moik.solver import parallel
+from moik.solver import parallel, task_pool
 
 
 def test_chunks_cover_the_range_once_in_order():
@@ -135,41 +135,10 @@ def test_a_tail_of_slow_items_gets_a_pool_after_its_first(monkeypatch):
     assert all(pid == os.getpid() for _, pid in out)
 
 
-def _fail_on_three(shared, item):
-    if item == 3:
-        raise ValueError("item three")
-    return item + shared, os.getpid()
-
-
-@pytest.mark.skipif(not parallel.can_fork(), reason="TaskPool forks")
-def test_a_task_pool_takes_items_as_they_come_and_answers_each_once():
-    with parallel.TaskPool(_square_plus, 1, 2, 10) as pool:
-        pool.submit([4, 2])
-        pool.submit([])
-        pool.submit(np.array([7]))  # numpy integers too
-        out = pool.results()
-    assert {k: v for k, (v, _) in out.items()} == {4: 17, 2: 5, 7: 50}
-    assert all(pid != os.getpid() for _, pid in out.values())
-    with parallel.TaskPool(_fail_on_three, 0, 2, 10) as pool:
-        pool.submit([1, 3])
-        with pytest.raises(ValueError, match="item three"):
-            pool.results()
-
-
-def test_process_pools_never_exceed_the_cpus_or_the_items(monkeypatch):
+def test_a_process_pool_never_exceeds_the_cpus_or_the_items(monkeypatch):
     """Before: a collision-aware batch with workers=1000 asked for Pool(processes=1000)
     (`moik batch --workers 99999999999999999999` forked that many)."""
-    monkeypatch.setattr(parallel, "available_cores", lambda: 3)
-    assert parallel.process_count(10**20, 50) == 3
-    assert parallel.process_count(10**20, 2) == 2
-    assert parallel.process_count(2, 50) == 2
-    assert parallel.process_count(4, 0) == 1
-    if parallel.can_fork():
-        with parallel.TaskPool(_square_plus, 1, 10**20, 10) as pool:
-            assert pool.processes == 3
-            pool.submit(range(5))
-            assert {k: v for k, (v, _) in pool.results().items()} == {
-                i: i * i + 1 for i in range(5)}
+    monkeypatch.setattr(task_pool, "available_cores", lambda: 3)
     sizes = []
 
     class Pool:  # records the size map_processes asks for, runs the items here

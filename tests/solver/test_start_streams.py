@@ -4,6 +4,7 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from moik.solver import start_streams as start_streams_module
 from moik.solver.options import STARTS_KEY
 from moik.solver.start_streams import (
     draw_rows,
@@ -11,6 +12,7 @@ from moik.solver.start_streams import (
     seed_state,
     start_streams,
     streams,
+    streams_match,
     uint32_words,
 )
 
@@ -51,6 +53,18 @@ def test_seeding_equals_numpy_and_is_checked():
     states = start_streams(root, STARTS_KEY, 3)
     for i in range(3):
         assert np.array_equal(states[i], numpy_state(root, STARTS_KEY, i))
+
+
+def test_a_compiled_stream_that_differs_from_numpy_is_replaced_by_numpy(monkeypatch):
+    root = np.random.SeedSequence(99, spawn_key=(3,))
+    expected = np.array([numpy_state(root, STARTS_KEY, 5 + i) for i in range(4)])
+    assert streams_match(root, STARTS_KEY, 5)
+    assert np.array_equal(start_streams(root, STARTS_KEY, 4, 5, checked=True), expected)
+    monkeypatch.setattr(start_streams_module, "batch_streams",  # should numpy ever seed otherwise
+                        lambda base, spawn, rows, states: states.fill(1))
+    assert not streams_match(root, STARTS_KEY, 5)
+    for checked in (None, False):  # checked here, or by the caller once for its chunks
+        assert np.array_equal(start_streams(root, STARTS_KEY, 4, 5, checked=checked), expected)
 
 
 def test_uint32_words_as_numpy():

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import math
 import multiprocessing
+import signal
 import time
 from collections.abc import Callable, Iterable, Sequence
 from concurrent.futures import ThreadPoolExecutor, as_completed
@@ -32,7 +33,7 @@ from typing import Any
 from moik._machine import available_cores
 from moik._validate import integer
 from moik.exceptions import ParameterError
-from moik.solver.task_pool import TaskPool, can_fork, init_pool_worker, process_count, run_task
+from moik.solver.task_pool import TaskPool, can_fork, process_count
 
 __all__ = ["TaskPool", "can_fork", "check_client", "chunk_bounds", "client_workers",
            "map_chunks", "map_client", "map_processes", "process_count", "worker_count"]
@@ -111,6 +112,23 @@ def map_chunks(fn: Callable[[int, int], None], n: int, workers: int,
         future.result()
 
 
+_TASK: dict[str, Any] = {}  # a pool worker's function and its common argument
+
+
+def _init_pool_worker(fn: Callable, common: Any) -> None:
+    """A pool worker: Ctrl-C reaches only the parent (which ends the pool), and SIGTERM
+    (the pool's end) ends it at once: a handler inherited from the parent (``moik``'s
+    command raises on SIGTERM) would raise inside the pool's queue locks instead, print
+    a traceback and could leave the parent waiting for a worker that never exits."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    _TASK["fn"], _TASK["common"] = fn, common
+
+
+def _run_task(item: Any) -> tuple[Any, Any]:
+    return item, _TASK["fn"](_TASK["common"], item)
+
+
 def map_processes(fn: Callable[[Any, Any], Any], shared: Any, items: Iterable,
                   workers: int) -> list:
     """``[fn(shared, item) for item in items]``, in up to ``workers`` processes (at most
@@ -144,9 +162,9 @@ def map_processes(fn: Callable[[Any, Any], Any], shared: Any, items: Iterable,
     if not rest:
         return out
     ctx = multiprocessing.get_context(method)
-    with ctx.Pool(process_count(workers, len(rest)), initializer=init_pool_worker,
+    with ctx.Pool(process_count(workers, len(rest)), initializer=_init_pool_worker,
                   initargs=(fn, shared)) as pool:
-        done = dict(pool.imap_unordered(run_task, rest))
+        done = dict(pool.imap_unordered(_run_task, rest))
     return out + [done[item] for item in rest]
 
 

@@ -39,7 +39,7 @@ from moik.solver.collision import CollisionGuard, collision_guard
 from moik.solver.context import ik_context
 from moik.solver.options import STARTS_KEY, search_options, seed_sequence
 from moik.solver.session import pose_errors
-from moik.solver.solve_ik import FIRST_STARTS, solve_ik
+from moik.solver.solve_ik import FIRST_STARTS, STATUSES, solve_ik
 from moik.solver.start_streams import draw_rows, start_streams, streams_match
 from moik.solver.starts import PATIENT, run_batch
 
@@ -194,7 +194,7 @@ def solve_ik_batch(robot, targets, *, seed=0, q_current=None, tol=1e-9, scene=No
     else:
         rows = solve_rows(job, workers=n_workers, progress=progress)
     q, status, pos, ori, success, n_evals, dist, known = rows
-    return IKBatchResult(q=q, status=status.astype(str), position_error=pos,
+    return IKBatchResult(q=q, status=status_names(status), position_error=pos,
                          orientation_error=ori, success=success, n_eval=n_evals,
                          time=time.perf_counter() - t0,
                          distances=None if guard is None else BatchDistances(guard, q, dist,
@@ -268,7 +268,8 @@ end; else after the chunks (:func:`~moik.solver.parallel.map_processes`)."""
 
 
 def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
-    """The answers of the job's targets (seeds ``first + i``): ``(q, status, position error,
+    """The answers of the job's targets (seeds ``first + i``): ``(q, status code (an index of
+    :data:`~moik.solver.solve_ik.STATUSES`), position error,
     orientation error, success, n_eval, min distance, whether that distance is exact)``, the
     first stage on ``workers`` threads, the hard tail on as many processes (or, up to
     :data:`TAIL_HERE_MAX_WORKERS`, the tail of a chunk that has ended in this thread while
@@ -284,7 +285,7 @@ def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
     n_evals = np.zeros(n, dtype=np.int64)
     pos, ori, dist = np.zeros(n), np.zeros(n), np.full(n, np.nan)
     known = np.zeros(n, dtype=np.bool_)  # rows whose distance is exact (the tail's)
-    status = np.full(n, "not-converged", dtype=object)
+    status = np.full(n, STATUSES.index("not-converged"), dtype=np.int8)  # (status_names)
     early: dict[int, tuple] = {}  # tail answers found while chunks still ran
     chunked = workers > 1 and n > parallel.MIN_CHUNK and opts.polish and (
         qc is not None or opts.starts)
@@ -301,7 +302,7 @@ def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
             if guard is not None:  # each q's clearance, tested again by its chunk's thread
                 ok &= guard.keeps(dist[k])
             pos[k], ori[k], solved[k] = p_k, o_k, ok
-            status[k[ok]] = "solved"
+            status[k[ok]] = STATUSES.index("solved")
         if pool is not None:  # its tail, to the processes, beside the chunks left
             pool.submit(map(int, lo + np.flatnonzero(~solved[lo:hi])))
             return
@@ -339,12 +340,21 @@ def solve_rows(job: BatchJob, *, workers: int = 1, progress=None) -> Rows:
                        strict=True))
     for i in map(int, tail):
         q, st, p, o, ne, ok, d = early[i] if i in early else answers[i]
-        out_Q[i], status[i], pos[i], ori[i], n_evals[i], solved[i], dist[i] = q, st, p, o, ne, \
-            ok, d
+        out_Q[i], status[i], pos[i], ori[i], n_evals[i], solved[i], dist[i] = \
+            q, STATUSES.index(st), p, o, ne, ok, d
     known[tail] = True
     if progress is not None and len(tail):
         progress(len(tail))
     return out_Q, status, pos, ori, solved, n_evals, dist, known
+
+
+def status_names(codes: np.ndarray) -> np.ndarray:
+    """The statuses of codes (indices of :data:`~moik.solver.solve_ik.STATUSES`), as a
+    string array as wide as its longest (numpy's ``astype(str)`` of the names; a string per
+    row would be Python work per target)."""
+    present = np.flatnonzero(np.bincount(codes, minlength=len(STATUSES)))
+    width = max(len(STATUSES[c]) for c in present) if len(present) else 1
+    return np.array(STATUSES, dtype=f"<U{width}")[codes]
 
 
 def _own_guard(guard: CollisionGuard) -> CollisionGuard:

@@ -226,3 +226,15 @@ def test_progress_must_be_a_function():
     callable."""
     with pytest.raises(ParameterError, match="progress must be a function"):
         solve_ik_batch("panda", np.array([[0.4, 0.1, 0.5]]), progress=5)
+
+
+def test_status_codes_read_as_numpy_reads_the_names():
+    """The batch keeps a status code per target (no Python string per row); its names are
+    the strings numpy's astype(str) gives, as wide as the longest present."""
+    from moik.solver.solve_ik import STATUSES
+    rng = np.random.default_rng(2)
+    for codes in ([0, 0, 0], [2, 0], [3, 1, 0, 2], list(rng.integers(0, 4, 50)), [1]):
+        codes = np.array(codes, dtype=np.int8)
+        names = batch.status_names(codes)
+        expected = np.array([STATUSES[c] for c in codes], dtype=object).astype(str)
+        assert names.dtype == expected.dtype and np.array_equal(names, expected)

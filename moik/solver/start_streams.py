@@ -176,7 +176,7 @@ def draw_starts(states, lower, upper, out):
 def _modulo_2_64() -> contextlib.AbstractContextManager:
     """Overflow warnings off where the kernels run as plain Python (``NUMBA_DISABLE_JIT``:
     numpy's uint64 arithmetic wraps modulo 2**64, as compiled code does, but warns); a
-    no-op where they are compiled (``np.errstate`` costs ~15 us, under the GIL, per call)."""
+    no-op where they are compiled (``np.errstate`` is Python under the GIL, per chunk)."""
     if getattr(numba.config, "DISABLE_JIT", False):
         return np.errstate(over="ignore")
     return contextlib.nullcontext()
@@ -235,8 +235,8 @@ def start_streams(root: np.random.SeedSequence, key: int, n: int, first: int = 0
     """:func:`streams` (of the children ``first .. first + n - 1``), checked on the first
     against numpy's seeding (should numpy ever seed otherwise, every stream is taken from
     numpy's, slowly but equal). ``checked``: the check's answer where the caller has it
-    already (:func:`streams_match` once for a batch cut in chunks: its Python, about
-    0.1 ms, would otherwise hold the GIL once per chunk)."""
+    already (:func:`streams_match` once for a batch cut in chunks: its Python would
+    otherwise hold the GIL once per chunk)."""
     states = streams(root, key, n, first)
     if checked is None:
         checked = bool(np.array_equal(states[0], numpy_state(root, key, first)))

@@ -3,12 +3,12 @@
 A collision-aware batch on many workers solves its hard tail (the whole of ``solve_ik``,
 Python under the GIL) in processes beside its threaded chunks, as each chunk ends. The
 processes must be forked before the chunks' threads start (a process forked while threads
-run may inherit a lock one of them holds), and forking ``W`` processes costs the caller
-``W`` forks of a large process (measured, panda with a scene, 2-CPU host: a 16-process
-``multiprocessing.Pool`` took 0.07-0.10 s to start and 0.04-0.06 s to end), time in which
-no chunk runs; and a ``Pool`` hands out no task before its last process is forked.
+run may inherit a lock one of them holds), and forking ``W`` processes of a large process
+costs the caller ``W`` forks, time in which no chunk runs (``docs/batch.md`` gives the
+measured cost of a ``multiprocessing.Pool``); and a ``Pool`` hands out no task before its
+last process is forked.
 
-So the caller forks one process, the *lead* (one fork: about 5 ms), and goes on. The lead
+So the caller forks one process, the *lead* (a single fork), and goes on. The lead
 forks the ``W`` workers (from a process without threads: the caller's state, inherited),
 each taking items as soon as it exists, then waits for them. Items go from the caller to
 the workers through one pipe (each worker reads an item under a lock), results from the

@@ -16,9 +16,11 @@ ideal cores (each as fast as this one, nothing shared but what the design shares
   measured here with W real processes); else, W processes after the chunks;
 - what runs before and after (validation, the assembly of the answers).
 
-The modelled time is where the last piece ends; the speed-up, the measured ``workers=1``
-time over it. GIL load: the GIL's busy time over the modelled time (near 1, the GIL would
-cap the threads). A host's own limits (two virtual CPUs on one core, memory bandwidth,
+The modelled time is where the last piece ends; ``serial s``, the instrumented call's own
+time (its pieces one after another: about what ``workers=1`` takes, measured in the same
+call, so that a busy host inflates both alike); the speed-up, the one over the other.
+GIL load: the GIL's busy time over the modelled time (near 1, the GIL would cap the
+threads). A host's own limits (two virtual CPUs on one core, memory bandwidth,
 clock) are not modelled: ``batch_scaling.py``'s ``machine`` row measures those. Targets as
 in ``batch_scaling.py``.
 
@@ -200,7 +202,7 @@ def block(title: str, robot, targets, kw: dict, counts: list[int], repeats: int)
     lines = [title, f"workers=1 measured: {t1:.3f} s (median of {repeats})",
              f"{'workers':>8s} {'chunks':>7s} {'glue ms':>8s} {'settle ms':>10s} "
              f"{'tail':>5s} {'tail s':>7s} {'pool ms':>8s} {'fixed ms':>9s} {'model s':>8s} "
-             f"{'speed-up':>9s} "
+             f"{'serial s':>9s} {'speed-up':>9s} "
              f"{'GIL load':>9s}"]
     for w in counts:
         runs = []
@@ -210,8 +212,8 @@ def block(title: str, robot, targets, kw: dict, counts: list[int], repeats: int)
             solve_ik_batch(robot, targets, seed=0, workers=w, **kw)
             total = time.perf_counter() - t
             pieces = sum(g + k + s for g, k, s in REC.chunks) + sum(REC.tail.values())
-            runs.append((total - pieces, REC))
-        fixed, rec = sorted(runs, key=lambda r: r[0])[len(runs) // 2]
+            runs.append((total, total - pieces, REC))
+        total, fixed, rec = sorted(runs, key=lambda r: r[0])[len(runs) // 2]
         uses_pool = bool(kw) and w > batch.TAIL_HERE_MAX_WORKERS
         pool = pool_costs(w) if uses_pool else None
         end, gil = schedule(rec, w, max(fixed, 0.0), pool)
@@ -220,7 +222,7 @@ def block(title: str, robot, targets, kw: dict, counts: list[int], repeats: int)
                      f"{sum(rec.tail.values()):7.3f} "
                      f"{'-' if pool is None else f'{1e3 * pool[0]:.1f}':>8s} "
                      f"{1e3 * max(fixed, 0.0):9.1f} {end:8.3f} "
-                     f"{t1 / end:8.2f}x {gil / end:9.2f}")
+                     f"{total:9.3f} {total / end:8.2f}x {gil / end:9.2f}")
     return lines
 
 
@@ -247,7 +249,9 @@ def main() -> None:
               "glue: the chunks' Python under the GIL; settle: the calling thread's re-check; "
               "tail: targets left to solve_ik and their time; pool: the caller's time to "
               "start and end the tail's processes; fixed: the call's own time before and "
-              "after the chunks (validation, assembly); model s: where the last piece ends")
+              "after the chunks (validation, assembly); model s: where the last piece ends; "
+              "serial s: the instrumented call's time (its pieces one after another); "
+              "speed-up: serial s / model s")
         for title, targets, kw in (
                 (f"\nplain: {len(poses)} random reachable poses", poses, {}),
                 (f"\nwith a scene (table, shelf, side wall) and self pairs: {len(scene_poses)} "

@@ -38,12 +38,9 @@ from typing import Any
 
 import numpy as np
 from _output import OUT_HELP, table_output
-from batch_scaling import shelf_scene
+from batch_scaling import batch_targets
 
 import moik.collision.kernels as collision_kernels
-from moik.collision import CollisionChecker
-from moik.collision.catalog import collision_model
-from moik.robots import get_robot
 from moik.solver import batch, parallel, solve_ik_batch, start_streams, task_pool
 
 NOGIL = [(batch, "run_batch"), (start_streams, "batch_streams"), (start_streams, "draw_starts"),
@@ -234,14 +231,7 @@ def main() -> None:
     ap.add_argument("--repeats", type=int, default=3, help="instrumented calls per row")
     ap.add_argument("--out", help=OUT_HELP)
     args = ap.parse_args()
-    robot = get_robot("panda")
-    model = collision_model("panda")
-    scene = shelf_scene(model)
-    checker = CollisionChecker(model=model, scene=scene, self_collision=True)
-    rng = np.random.default_rng(0)
-    poses = robot.fk(robot.random_q(args.n, rng=rng))
-    Q = robot.random_q(20 * args.n_scene, rng=rng)
-    scene_poses = robot.fk(Q[checker.min_distance(Q) >= 0.0][:args.n_scene])
+    robot, scene, poses, scene_poses = batch_targets(args.n, args.n_scene)
     instrument()
     with table_output(args.out):
         print("solve_ik_batch on panda, tol 1e-9: each piece of a workers=W call timed on one "

@@ -76,6 +76,19 @@ def shelf_scene(model) -> Scene:
                  allowed=frozenset(base))
 
 
+def batch_targets(n: int, n_scene: int) -> tuple:
+    """``(panda, the shelf scene, n random reachable poses, n_scene collision-free ones)``,
+    seeded (module doc)."""
+    robot = get_robot("panda")
+    model = collision_model("panda")
+    scene = shelf_scene(model)
+    checker = CollisionChecker(model=model, scene=scene, self_collision=True)
+    rng = np.random.default_rng(0)
+    poses = robot.fk(robot.random_q(n, rng=rng))
+    Q = robot.random_q(20 * n_scene, rng=rng)
+    return robot, scene, poses, robot.fk(Q[checker.min_distance(Q) >= 0.0][:n_scene])
+
+
 def worker_counts(cores: int) -> list[int]:
     """1, 2, 4, ... below ``cores``, and ``cores``."""
     counts, w = [], 1
@@ -150,15 +163,7 @@ def main() -> None:
     ap.add_argument("--no-dask", action="store_true", help="no Dask LocalCluster row")
     ap.add_argument("--out", help=OUT_HELP)
     args = ap.parse_args()
-    robot = get_robot("panda")
-    model = collision_model("panda")
-    scene = shelf_scene(model)
-    checker = CollisionChecker(model=model, scene=scene, self_collision=True)
-    rng = np.random.default_rng(0)
-    poses = robot.fk(robot.random_q(args.n, rng=rng))
-    Q = robot.random_q(20 * args.n_scene, rng=rng)
-    free = Q[checker.min_distance(Q) >= 0.0][:args.n_scene]
-    scene_poses = robot.fk(free)
+    robot, scene, poses, scene_poses = batch_targets(args.n, args.n_scene)
     cores = available_cores()
     rows: list = [(f"workers={w}", {"workers": w}) for w in worker_counts(cores)]
     blocks = [(f"\nplain: {len(poses)} random reachable poses", poses, {}),
